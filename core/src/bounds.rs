@@ -1,0 +1,221 @@
+//! Stage 2 — per-tile (u, v, t) bounds, behind one replaceable interface.
+//!
+//! A [`BoundsStrategy`] prepares per-triangle coefficients once (counted as setup) and then, for
+//! a bounds tile (1×1 … 8×8 pixels, clipped to the footprint), returns intervals u ∈ [u0, u1],
+//! v ∈ [v0, v1], t ∈ [t0, t1] or `None` (skip the tile). Contract: **a sample that the sample
+//! test covers never lies outside its tile's intervals.** Tighter strategies (2D swept-footprint
+//! culling, Wu 2014 lens-dependent time bounds, Zmin/Zmax) are new implementations of the trait.
+//!
+//! [`Laine2011`] (clipless dual-space bounds) — why each part is conservative:
+//! - **u (and v):** setup's lens-corner boxes floor the minimum and ceil the maximum over the
+//!   front vertices, at lens −1 and +1. For any (t, u) every covered sample's ξ lies in the box of
+//!   the triangle at (t, u), whose minimum is ≥ the chord between the corner minima (min of affine
+//!   functions of u is concave; vertex projections at time t lie between their t = 0 and t = 1
+//!   projections while w > 0; a side that may cross the camera plane is unbounded). So, with
+//!   s = (u+1)/2, a covered sample in tile [X0, X1) needs `m⁻ + s(m⁺ − m⁻) ≤ X1` and
+//!   `M⁻ + s(M⁺ − M⁻) ≥ X0`: two linear constraints in s with slopes fixed per triangle, solved
+//!   with precomputed reciprocals rounded so the ends move outward ([`RecipConstraint`]).
+//! - **t:** dual space δ_k(ξ) = (a_k + w_k)·E − 2·w_k·ξ (zero on the sightline at pixel ξ; no
+//!   division, valid for w ≤ 0). Coverage needs min_k δ_k ≤ 0 ≤ max_k δ_k. Lens: bias by ∓|c|·E.
+//!   In t: each δ_k − |c_k(t)|·E is concave (|c(t)| is convex), so the minimum is above the chord
+//!   of its t = 0 and t = 1 values; the maximum is below its chord. In ξ: the minimum over k is
+//!   concave, so the line through its values at the footprint ends ξa, ξb is below it on [ξa, ξb]
+//!   (Laine's bounding lines); a tile takes the lower of that line's values at its two ends. All of
+//!   this is exact integer arithmetic (values scaled by ξb − ξa > 0 instead of divided); only the
+//!   final `t·d ≤ n` solve divides, and it rounds outward ([`solve_le`]).
+//! - Both axes' intervals and setup's frustum time span are intersected.
+//!
+//! The margin is therefore zero beyond outward rounding: the sample test is exact, sample (u, v, t)
+//! are on the same 2^-16 grid the bounds round to, and tile extents cover every sub-pixel offset.
+
+use crate::formats::{DualDelta, PX_FRAC};
+use crate::input::{PixelRect, Triangle, W};
+use crate::interval::{solve_le, Interval, RecipConstraint};
+use crate::setup::{axis_coord, Setup};
+use crate::stats::Ops;
+
+/// The (u, v, t) box of one bounds tile.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct UvtBox {
+    /// lens u
+    pub u: Interval,
+    /// lens v
+    pub v: Interval,
+    /// time t
+    pub t: Interval,
+}
+
+impl UvtBox {
+    /// The whole domain.
+    pub const FULL: UvtBox = UvtBox { u: Interval::LENS, v: Interval::LENS, t: Interval::UNIT };
+
+    /// Whether a sample's (u, v, t) raw values lie inside.
+    #[inline]
+    pub fn contains(&self, u: i32, v: i32, t: i32) -> bool {
+        self.u.contains(u) && self.v.contains(v) && self.t.contains(t)
+    }
+}
+
+/// A per-tile bounds algorithm.
+pub trait BoundsStrategy {
+    /// Per-triangle coefficients, computed once in setup.
+    type Coeffs: Copy;
+    /// Short name for reports.
+    fn name(&self) -> &'static str;
+    /// Per-triangle preparation (counted in `ops.setup`).
+    fn prepare(&self, setup: &Setup, ops: &mut Ops) -> Self::Coeffs;
+    /// Bounds of one tile inside the triangle's footprint (counted in `ops.bounds`).
+    fn tile(&self, setup: &Setup, c: &Self::Coeffs, tile: PixelRect, ops: &mut Ops) -> Option<UvtBox>;
+}
+
+/// The bounding-box scan: every sample of the footprint is tested (Laine 2011 "Bbox scan").
+#[derive(Clone, Copy, Debug, Default)]
+pub struct BboxScan;
+
+impl BoundsStrategy for BboxScan {
+    type Coeffs = ();
+    fn name(&self) -> &'static str {
+        "bbox"
+    }
+    fn prepare(&self, _: &Setup, _: &mut Ops) {}
+    fn tile(&self, setup: &Setup, _: &(), _: PixelRect, _: &mut Ops) -> Option<UvtBox> {
+        Some(UvtBox { t: setup.span, ..UvtBox::FULL })
+    }
+}
+
+/// Laine et al. 2011 clipless dual-space bounds.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Laine2011;
+
+/// One side of one axis's lens bound: `s·d ≤ n(tile)` with `n = sign·(tile edge − base)`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LensSide {
+    /// box value at lens −1 (raw pixel coordinate)
+    pub base: i64,
+    /// slope and its reciprocals
+    pub c: RecipConstraint,
+}
+
+/// Lens bound of one axis; `None` sides are unbounded.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LensAxis {
+    /// box minimum side: `s·(m⁺ − m⁻) ≤ X1 − m⁻`
+    pub lo: Option<LensSide>,
+    /// box maximum side: `s·(M⁻ − M⁺) ≤ M⁻ − X0`
+    pub hi: Option<LensSide>,
+}
+
+/// Dual-space bounding values of one axis: δmin/δmax at the footprint ends, t = 0 and 1.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct DualAxis {
+    /// footprint start ξa and end ξb (pixels)
+    pub xi: [i64; 2],
+    /// δmin `[t][end]`
+    pub lo: [[DualDelta; 2]; 2],
+    /// δmax `[t][end]`
+    pub hi: [[DualDelta; 2]; 2],
+}
+
+/// [`Laine2011`] coefficients: lens bounds per axis (defocus only), dual lines (motion only).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LaineCoeffs {
+    /// `[x → u, y → v]`
+    pub lens: [Option<LensAxis>; 2],
+    /// `[x, y]`
+    pub dual: [Option<DualAxis>; 2],
+}
+
+fn lens_axis(setup: &Setup, axis: usize, ops: &mut Ops) -> LensAxis {
+    let b = setup.axes.get(axis).copied();
+    let lo = b.and_then(|b| b.lo).map(|[m0, m1]| LensSide { base: m0, c: RecipConstraint::new(m1 - m0) });
+    let hi = b.and_then(|b| b.hi).map(|[h0, h1]| LensSide { base: h0, c: RecipConstraint::new(h0 - h1) });
+    ops.setup += 8;
+    LensAxis { lo, hi }
+}
+
+fn dual_axis(tri: &Triangle, fp: &PixelRect, axis: usize, extent: i64, ops: &mut Ops) -> DualAxis {
+    let xi = if axis == 0 { [fp.x0 as i64, fp.x1 as i64] } else { [fp.y0 as i64, fp.y1 as i64] };
+    let mut lo = [[DualDelta::MAX; 2]; 2];
+    let mut hi = [[DualDelta::MIN; 2]; 2];
+    for ((ends, lo_t), hi_t) in tri.v.iter().zip(lo.iter_mut()).zip(hi.iter_mut()) {
+        for p in ends.iter() {
+            let (a, cs) = axis_coord(p, axis);
+            let w = p[W] as i64;
+            // |a + w| < 2^31, E, ξ ≤ 2^11, |c| ≤ 2^29: |δ ± |c|E| < 2^44.
+            let bias = cs.abs() * extent;
+            for ((l, h), x) in lo_t.iter_mut().zip(hi_t.iter_mut()).zip(xi.iter()) {
+                let delta = (a + w) * extent - 2 * w * x;
+                *l = (*l).min(delta - bias);
+                *h = (*h).max(delta + bias);
+                ops.setup += 7;
+            }
+        }
+    }
+    DualAxis { xi, lo, hi }
+}
+
+/// t interval of one axis for a tile [x0, x1] ⊆ [ξa, ξb].
+fn dual_t(d: &DualAxis, x0: i64, x1: i64, ops: &mut Ops) -> Option<Interval> {
+    let [xa, xb] = d.xi;
+    // Scaled by D = ξb − ξa > 0: |value| < 2^44 · 2^12 = 2^56.
+    let line = |v: &[DualDelta; 2], x: i64| v[0] as i128 * (xb - x) as i128 + v[1] as i128 * (x - xa) as i128;
+    let [lo0, lo1] = [0usize, 1].map(|t| line(&d.lo[t], x0).min(line(&d.lo[t], x1)));
+    let [hi0, hi1] = [0usize, 1].map(|t| line(&d.hi[t], x0).max(line(&d.hi[t], x1)));
+    ops.bounds += 24;
+    // (1−t)·lo0 + t·lo1 ≤ 0  and  (1−t)·hi0 + t·hi1 ≥ 0.
+    let a = solve_le(lo1 - lo0, -lo0)?;
+    let b = solve_le(hi0 - hi1, hi0)?;
+    ops.bounds += 8;
+    a.meet(b)
+}
+
+/// s interval (lens parameter) of one axis for tile columns [x0, x1).
+fn lens_s(l: &LensAxis, x0: i64, x1: i64, ops: &mut Ops) -> Option<Interval> {
+    let mut s = Interval::UNIT;
+    if let Some(side) = l.lo {
+        s = s.meet(side.c.solve((x1 << PX_FRAC) - side.base)?)?;
+        ops.bounds += 4;
+    }
+    if let Some(side) = l.hi {
+        s = s.meet(side.c.solve(side.base - (x0 << PX_FRAC))?)?;
+        ops.bounds += 4;
+    }
+    Some(s)
+}
+
+impl BoundsStrategy for Laine2011 {
+    type Coeffs = LaineCoeffs;
+    fn name(&self) -> &'static str {
+        "laine2011"
+    }
+
+    fn prepare(&self, setup: &Setup, ops: &mut Ops) -> LaineCoeffs {
+        let defocus = setup.class.defocus();
+        let motion = setup.class.motion();
+        let ext = [setup.viewport.w as i64, setup.viewport.h as i64];
+        let lens = [0usize, 1].map(|a| defocus.then(|| lens_axis(setup, a, ops)));
+        let dual = [0usize, 1].map(|a| {
+            motion.then(|| dual_axis(&setup.tri, &setup.footprint, a, ext[a], ops))
+        });
+        LaineCoeffs { lens, dual }
+    }
+
+    fn tile(&self, setup: &Setup, c: &LaineCoeffs, tile: PixelRect, ops: &mut Ops) -> Option<UvtBox> {
+        let xs = [(tile.x0 as i64, tile.x1 as i64), (tile.y0 as i64, tile.y1 as i64)];
+        let mut b = UvtBox { t: setup.span, ..UvtBox::FULL };
+        for (axis, &(p0, p1)) in xs.iter().enumerate() {
+            if let Some(Some(l)) = c.lens.get(axis) {
+                let lens = lens_s(l, p0, p1, ops)?.s_to_lens();
+                if axis == 0 {
+                    b.u = lens;
+                } else {
+                    b.v = lens;
+                }
+            }
+            if let Some(Some(d)) = c.dual.get(axis) {
+                b.t = b.t.meet(dual_t(d, p0, p1, ops)?)?;
+            }
+        }
+        Some(b)
+    }
+}

@@ -1,0 +1,117 @@
+//! Errors returned by the core. The core never panics; every refusal names what is wrong.
+
+use core::fmt;
+
+/// Which field of a vertex.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Field {
+    /// clip x
+    X,
+    /// clip y
+    Y,
+    /// clip z
+    Z,
+    /// clip w
+    W,
+    /// circle-of-confusion radius
+    Coc,
+}
+
+impl fmt::Display for Field {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Field::X => "x",
+            Field::Y => "y",
+            Field::Z => "z",
+            Field::W => "w",
+            Field::Coc => "coc",
+        })
+    }
+}
+
+/// Everything the core can refuse.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Error {
+    /// A vertex coordinate is outside the declared domain |v| ≤ 2^13.
+    CoordOutOfDomain {
+        /// vertex index 0..3
+        vertex: u8,
+        /// 0 for shutter open, 1 for close
+        time: u8,
+        /// which field
+        field: Field,
+        /// the raw I16F16 bits
+        raw: i32,
+    },
+    /// Viewport width or height is 0 or above 2048.
+    Viewport {
+        /// requested width
+        width: u16,
+        /// requested height
+        height: u16,
+    },
+    /// The sample table's length is not block² × spp, or block/spp is 0 or too large.
+    PatternShape {
+        /// block side N
+        block: u16,
+        /// samples per pixel S
+        spp: u16,
+        /// number of samples supplied
+        len: usize,
+    },
+    /// A sample's t is outside [0, 1] or u/v outside [-1, 1].
+    SampleOutOfDomain {
+        /// index in the table
+        index: usize,
+    },
+    /// The tile framebuffer's sample count differs from the pattern's spp.
+    SppMismatch {
+        /// framebuffer samples per pixel
+        tile: u16,
+        /// pattern samples per pixel
+        pattern: u16,
+    },
+    /// Bounds-tile size not 1, 2, 4 or 8, or it does not divide the screen tile.
+    BoundsTile {
+        /// requested size
+        size: u8,
+    },
+    /// More triangles than the renderer's fixed capacity.
+    TooManyTriangles {
+        /// capacity
+        capacity: usize,
+    },
+    /// A pixel outside the viewport was asked for.
+    PixelOutOfRange,
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match *self {
+            Error::CoordOutOfDomain { vertex, time, field, raw } => write!(
+                f,
+                "vertex {vertex} at t{time}: {field} = raw {raw:#010x} is outside the domain |v| <= 8192"
+            ),
+            Error::Viewport { width, height } => {
+                write!(f, "viewport {width}x{height}: each side must be 1..=2048")
+            }
+            Error::PatternShape { block, spp, len } => write!(
+                f,
+                "sample table: block {block}, spp {spp} need block*block*spp samples (1..=64 each), got {len}"
+            ),
+            Error::SampleOutOfDomain { index } => {
+                write!(f, "sample {index}: t must be in [0,1] and u, v in [-1,1]")
+            }
+            Error::SppMismatch { tile, pattern } => {
+                write!(f, "tile buffer has {tile} samples per pixel, the pattern {pattern}")
+            }
+            Error::BoundsTile { size } => {
+                write!(f, "bounds tile {size}: must be 1, 2, 4 or 8 and divide the screen tile")
+            }
+            Error::TooManyTriangles { capacity } => {
+                write!(f, "more than {capacity} triangles for this renderer")
+            }
+            Error::PixelOutOfRange => f.write_str("pixel outside the viewport"),
+        }
+    }
+}

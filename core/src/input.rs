@@ -1,0 +1,216 @@
+//! Checked inputs: triangles, viewport, sample table. Constructors refuse anything outside the
+//! declared domain of `formats.rs`, so every later stage may rely on those ranges.
+
+use crate::error::{Error, Field};
+use crate::formats::{Coord, Lens, SubPixel, Time, COORD_LIMIT_RAW, MAX_VIEWPORT, TUV_ONE};
+
+/// One vertex at one end of the shutter: clip-space position and signed CoC radius.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct Vertex {
+    /// clip x
+    pub x: Coord,
+    /// clip y
+    pub y: Coord,
+    /// clip z (only used for depth)
+    pub z: Coord,
+    /// clip w
+    pub w: Coord,
+    /// signed circle-of-confusion radius, clip units
+    pub coc: Coord,
+}
+
+impl Vertex {
+    /// A vertex from raw I16F16 bits `[x, y, z, w, coc]`.
+    pub fn from_bits(b: [i32; 5]) -> Vertex {
+        Vertex {
+            x: Coord::from_bits(b[0]),
+            y: Coord::from_bits(b[1]),
+            z: Coord::from_bits(b[2]),
+            w: Coord::from_bits(b[3]),
+            coc: Coord::from_bits(b[4]),
+        }
+    }
+
+    /// Raw bits `[x, y, z, w, coc]`.
+    pub fn bits(&self) -> [i32; 5] {
+        [self.x.to_bits(), self.y.to_bits(), self.z.to_bits(), self.w.to_bits(), self.coc.to_bits()]
+    }
+}
+
+/// A time-continuous triangle: three vertices at t = 0 and at t = 1, linear in between.
+/// Only [`Triangle::new`] builds one, so every coordinate is inside the domain.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Triangle {
+    pub(crate) v: [[[i32; 5]; 3]; 2],
+}
+
+/// Field order of the raw arrays.
+pub(crate) const X: usize = 0;
+pub(crate) const Y: usize = 1;
+pub(crate) const Z: usize = 2;
+pub(crate) const W: usize = 3;
+pub(crate) const C: usize = 4;
+
+const FIELDS: [Field; 5] = [Field::X, Field::Y, Field::Z, Field::W, Field::Coc];
+
+impl Triangle {
+    /// Checked constructor: every coordinate must satisfy |v| ≤ 2^13.
+    pub fn new(t0: [Vertex; 3], t1: [Vertex; 3]) -> Result<Triangle, Error> {
+        let mut v = [[[0i32; 5]; 3]; 2];
+        for (time, ends) in [t0, t1].iter().enumerate() {
+            for (k, vert) in ends.iter().enumerate() {
+                for ((f, raw), slot) in FIELDS.iter().zip(vert.bits()).zip(v[time][k].iter_mut()) {
+                    if raw.unsigned_abs() > COORD_LIMIT_RAW as u32 {
+                        return Err(Error::CoordOutOfDomain {
+                            vertex: k as u8,
+                            time: time as u8,
+                            field: *f,
+                            raw,
+                        });
+                    }
+                    *slot = raw;
+                }
+            }
+        }
+        Ok(Triangle { v })
+    }
+
+    /// A static triangle (same vertices at both ends).
+    pub fn new_static(v: [Vertex; 3]) -> Result<Triangle, Error> {
+        Triangle::new(v, v)
+    }
+
+    /// The vertices at shutter open (`time = 0`) or close (`time = 1`).
+    pub fn vertices(&self, time: usize) -> [Vertex; 3] {
+        let ends = if time == 0 { &self.v[0] } else { &self.v[1] };
+        [Vertex::from_bits(ends[0]), Vertex::from_bits(ends[1]), Vertex::from_bits(ends[2])]
+    }
+}
+
+/// Viewport size in pixels, 1..=2048 per side.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Viewport {
+    pub(crate) w: u16,
+    pub(crate) h: u16,
+}
+
+impl Viewport {
+    /// Checked constructor.
+    pub fn new(width: u16, height: u16) -> Result<Viewport, Error> {
+        if width == 0 || height == 0 || width > MAX_VIEWPORT || height > MAX_VIEWPORT {
+            return Err(Error::Viewport { width, height });
+        }
+        Ok(Viewport { w: width, h: height })
+    }
+    /// Width in pixels.
+    pub fn width(&self) -> u16 {
+        self.w
+    }
+    /// Height in pixels.
+    pub fn height(&self) -> u16 {
+        self.h
+    }
+}
+
+/// A half-open pixel rectangle `[x0, x1) × [y0, y1)`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct PixelRect {
+    /// first column
+    pub x0: u16,
+    /// first row
+    pub y0: u16,
+    /// one past the last column
+    pub x1: u16,
+    /// one past the last row
+    pub y1: u16,
+}
+
+impl PixelRect {
+    /// True when it holds no pixel.
+    pub fn is_empty(&self) -> bool {
+        self.x0 >= self.x1 || self.y0 >= self.y1
+    }
+    /// Intersection.
+    pub fn intersect(&self, o: &PixelRect) -> PixelRect {
+        PixelRect {
+            x0: self.x0.max(o.x0),
+            y0: self.y0.max(o.y0),
+            x1: self.x1.min(o.x1),
+            y1: self.y1.min(o.y1),
+        }
+    }
+    /// Whether pixel (x, y) is inside.
+    pub fn contains(&self, x: u16, y: u16) -> bool {
+        x >= self.x0 && x < self.x1 && y >= self.y0 && y < self.y1
+    }
+}
+
+/// One sample of the table: sub-pixel position, lens point and time.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub struct Sample {
+    /// sub-pixel x in [0, 1)
+    pub sx: SubPixel,
+    /// sub-pixel y in [0, 1), downward
+    pub sy: SubPixel,
+    /// lens u in [-1, 1]
+    pub u: Lens,
+    /// lens v in [-1, 1]
+    pub v: Lens,
+    /// time in [0, 1]
+    pub t: Time,
+}
+
+/// The caller's sample table: an N×N pixel block with S samples per pixel, repeated over the
+/// screen. Sample `s` of pixel (x, y) is `samples[((y mod N)·N + (x mod N))·S + s]`.
+#[derive(Clone, Copy, Debug)]
+pub struct SamplePattern<'a> {
+    block: u16,
+    spp: u16,
+    samples: &'a [Sample],
+}
+
+/// Largest block side and samples per pixel.
+pub const MAX_PATTERN: u16 = 64;
+
+impl<'a> SamplePattern<'a> {
+    /// Checked constructor: 1 ≤ N, S ≤ 64, `len = N²·S`, every t in [0,1], u and v in [-1,1].
+    pub fn new(block: u16, spp: u16, samples: &'a [Sample]) -> Result<Self, Error> {
+        let shape = Error::PatternShape { block, spp, len: samples.len() };
+        if block == 0 || spp == 0 || block > MAX_PATTERN || spp > MAX_PATTERN {
+            return Err(shape);
+        }
+        if samples.len() != block as usize * block as usize * spp as usize {
+            return Err(shape);
+        }
+        for (index, s) in samples.iter().enumerate() {
+            let t = s.t.to_bits();
+            let ok_t = (0..=TUV_ONE).contains(&t);
+            let ok_uv = [s.u, s.v].iter().all(|l| (-TUV_ONE..=TUV_ONE).contains(&l.to_bits()));
+            if !(ok_t && ok_uv) {
+                return Err(Error::SampleOutOfDomain { index });
+            }
+        }
+        Ok(SamplePattern { block, spp, samples })
+    }
+
+    /// Samples per pixel.
+    pub fn spp(&self) -> u16 {
+        self.spp
+    }
+    /// Block side N.
+    pub fn block(&self) -> u16 {
+        self.block
+    }
+    /// The whole table.
+    pub fn samples(&self) -> &'a [Sample] {
+        self.samples
+    }
+
+    /// The samples of pixel (x, y) (a slice of length S).
+    pub fn pixel(&self, x: u16, y: u16) -> &'a [Sample] {
+        let n = self.block as usize;
+        let s = self.spp as usize;
+        let start = ((y as usize % n) * n + (x as usize % n)) * s;
+        self.samples.get(start..start + s).unwrap_or(&[])
+    }
+}

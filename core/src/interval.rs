@@ -1,0 +1,186 @@
+//! Closed intervals of t, u or v in the raw t/u/v format, and the two solvers every bound uses.
+//!
+//! Both solvers answer "for which s ∈ [0, 1] does `s·d ≤ n` hold?" for exact integers `d`, `n`
+//! and round the answer outward to the t/u/v grid (upper ends up, lower ends down). Every bound in
+//! `setup.rs` and `bounds.rs` is a conjunction of such linear constraints.
+
+use crate::formats::{ceil_div, floor_div, TUV_FRAC, TUV_ONE};
+
+/// Inclusive interval `[lo, hi]` of raw t/u/v values (`TUV_FRAC` fraction bits); never empty.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Interval {
+    /// lower end, raw
+    pub lo: i32,
+    /// upper end, raw
+    pub hi: i32,
+}
+
+impl Interval {
+    /// t ∈ [0, 1] (or a lens parameter s ∈ [0, 1]).
+    pub const UNIT: Interval = Interval { lo: 0, hi: TUV_ONE };
+    /// u or v ∈ [-1, 1].
+    pub const LENS: Interval = Interval { lo: -TUV_ONE, hi: TUV_ONE };
+
+    /// Intersection, `None` when empty.
+    #[inline]
+    pub fn meet(self, o: Interval) -> Option<Interval> {
+        let lo = self.lo.max(o.lo);
+        let hi = self.hi.min(o.hi);
+        (lo <= hi).then_some(Interval { lo, hi })
+    }
+
+    /// Whether raw value `x` lies inside.
+    #[inline]
+    pub fn contains(&self, x: i32) -> bool {
+        self.lo <= x && x <= self.hi
+    }
+
+    /// Map a lens parameter s ∈ [0, 1] to the lens coordinate u = 2s − 1 (exact).
+    #[inline]
+    pub fn s_to_lens(self) -> Interval {
+        Interval { lo: 2 * self.lo - TUV_ONE, hi: 2 * self.hi - TUV_ONE }
+    }
+}
+
+#[inline]
+fn clamp_raw(x: i128) -> i32 {
+    x.clamp(0, TUV_ONE as i128) as i32
+}
+
+/// `{ s ∈ [0,1] : s·d ≤ n }` by exact division, ends rounded outward; `None` if empty.
+///
+/// Cases: d > 0 gives s ≤ n/d (ceil), d < 0 gives s ≥ (−n)/(−d) (floor), d = 0 gives all or
+/// nothing. If `n·2^16` would overflow (|n| ≥ 2^111, far outside the documented ranges) the
+/// answer is the whole unit interval or, where the sign already decides, empty: conservative.
+pub fn solve_le(d: i128, n: i128) -> Option<Interval> {
+    let full = Some(Interval::UNIT);
+    if d > 0 {
+        if n < 0 {
+            return None;
+        }
+        if n >= d {
+            return full;
+        }
+        match n.checked_mul(1 << TUV_FRAC).and_then(|m| ceil_div(m, d)) {
+            Some(hi) => Some(Interval { lo: 0, hi: clamp_raw(hi) }),
+            None => full,
+        }
+    } else if d < 0 {
+        let (a, b) = (d.checked_neg()?, n.checked_neg()?);
+        if b <= 0 {
+            return full;
+        }
+        if b > a {
+            return None;
+        }
+        match b.checked_mul(1 << TUV_FRAC).and_then(|m| floor_div(m, a)) {
+            Some(lo) => Some(Interval { lo: clamp_raw(lo), hi: TUV_ONE }),
+            None => full,
+        }
+    } else if n >= 0 {
+        full
+    } else {
+        None
+    }
+}
+
+/// A precomputed constraint `s·d ≤ n(tile)` whose `d` is fixed per triangle: the two reciprocals
+/// `r_up = ceil(2^K/|d|)` and `r_dn = floor(2^K/|d|)` (K = `RECIP_SHIFT`) let each tile solve it
+/// with one multiply instead of a division (Laine 2011 §3.1, "u' = a·x − b").
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct RecipConstraint {
+    /// the fixed slope d (raw pixel units)
+    pub d: i64,
+    /// ceil(2^K / |d|), 0 when d = 0
+    pub r_up: i128,
+    /// floor(2^K / |d|), 0 when d = 0
+    pub r_dn: i128,
+}
+
+impl RecipConstraint {
+    /// Precompute the reciprocals of `d` (setup, once per triangle).
+    pub fn new(d: i64) -> RecipConstraint {
+        let k = 1i128 << crate::formats::RECIP_SHIFT;
+        let a = (d as i128).abs();
+        let (r_up, r_dn) = match (ceil_div(k, a), floor_div(k, a)) {
+            (Some(u), Some(l)) => (u, l),
+            _ => (0, 0),
+        };
+        RecipConstraint { d, r_up, r_dn }
+    }
+
+    /// `{ s ∈ [0,1] : s·d ≤ n }` rounded outward, using the reciprocals.
+    ///
+    /// Proof of outwardness: for d > 0 and 0 ≤ n < d the true end is n/d ≤ n·r_up/2^K, and the
+    /// shift to 16 fraction bits rounds up (ceil); for d < 0 and 0 < −n ≤ |d| the true end is
+    /// (−n)/|d| ≥ (−n)·r_dn/2^K and the shift floors. Range: n < |d| < 2^60 and r ≤ 2^80 +1, so
+    /// the product is < 2^K + 2^60 < 2^81 (no overflow in i128).
+    pub fn solve(&self, n: i64) -> Option<Interval> {
+        let shift = crate::formats::RECIP_SHIFT - TUV_FRAC;
+        let sh = 1i128 << shift;
+        let (d, n) = (self.d as i128, n as i128);
+        if d > 0 {
+            if n < 0 {
+                return None;
+            }
+            if n >= d {
+                return Some(Interval::UNIT);
+            }
+            let hi = ceil_div(n * self.r_up, sh).unwrap_or(TUV_ONE as i128);
+            Some(Interval { lo: 0, hi: clamp_raw(hi) })
+        } else if d < 0 {
+            let (a, b) = (-d, -n);
+            if b <= 0 {
+                return Some(Interval::UNIT);
+            }
+            if b > a {
+                return None;
+            }
+            let lo = floor_div(b * self.r_dn, sh).unwrap_or(0);
+            Some(Interval { lo: clamp_raw(lo), hi: TUV_ONE })
+        } else if n >= 0 {
+            Some(Interval::UNIT)
+        } else {
+            None
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn solve_le_cases() {
+        // s·4 ≤ 1 → s ≤ 1/4 exactly.
+        assert_eq!(solve_le(4, 1), Some(Interval { lo: 0, hi: TUV_ONE / 4 }));
+        // s·3 ≤ 1 → s ≤ 0.3333…, rounded up.
+        assert_eq!(solve_le(3, 1), Some(Interval { lo: 0, hi: 21846 }));
+        // s·(−3) ≤ −1 → s ≥ 1/3, rounded down.
+        assert_eq!(solve_le(-3, -1), Some(Interval { lo: 21845, hi: TUV_ONE }));
+        assert_eq!(solve_le(1, -1), None);
+        assert_eq!(solve_le(-1, -2), None);
+        assert_eq!(solve_le(0, 0), Some(Interval::UNIT));
+        assert_eq!(solve_le(0, -1), None);
+        assert_eq!(solve_le(2, 5), Some(Interval::UNIT));
+    }
+
+    #[test]
+    fn recip_agrees_with_exact_or_is_wider() {
+        for d in [-1000i64, -7, -3, -1, 1, 3, 7, 1000, 1 << 40] {
+            let c = RecipConstraint::new(d);
+            for n in [-2000i64, -999, -5, -1, 0, 1, 2, 5, 999, 2000, 1 << 39] {
+                let exact = solve_le(d as i128, n as i128);
+                let fast = c.solve(n);
+                match (exact, fast) {
+                    (None, None) => {}
+                    (Some(e), Some(f)) => {
+                        assert!(f.lo <= e.lo && f.hi >= e.hi, "d={d} n={n} {e:?} {f:?}");
+                        assert!(e.lo - f.lo <= 1 && f.hi - e.hi <= 1, "d={d} n={n}");
+                    }
+                    _ => panic!("emptiness differs d={d} n={n}"),
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,40 @@
+//! # uvt-core
+//!
+//! A bit-accurate fixed-point reference model of a fixed-function stochastic rasterizer with
+//! motion blur and defocus blur: the golden model RTL is checked against. `no_std`, no heap, no
+//! floating point, no panics: every input outside the declared domain is refused with an
+//! [`Error`].
+//!
+//! Pipeline, one module per stage (read them in this order):
+//! 1. [`setup`] — once per triangle: class, culling, lens-corner boxes, footprint, time span.
+//! 2. [`bounds`] — per bounds tile: (u, v, t) intervals, behind the [`BoundsStrategy`] trait
+//!    ([`Laine2011`] dual-space bounds; [`BboxScan`] as the baseline).
+//! 3. [`sample`] — the exact 5D sample test with a fill rule, and depth.
+//! 4. [`tile`] — the tile framebuffer, resolve and the render loop.
+//!
+//! Number formats are all in [`formats`]; `core/README.md` has the full width table.
+#![cfg_attr(not(test), no_std)]
+#![forbid(unsafe_code)]
+#![deny(missing_docs)]
+
+pub mod bounds;
+pub mod error;
+pub mod formats;
+pub mod input;
+pub mod interval;
+pub mod sample;
+pub mod setup;
+pub mod stats;
+pub mod tile;
+pub mod wide;
+
+pub use bounds::{BboxScan, BoundsStrategy, Laine2011, UvtBox};
+pub use embedded_graphics_core::pixelcolor::Rgb888;
+pub use error::{Error, Field};
+pub use formats::{Coord, Depth, Lens, SubPixel, Time};
+pub use input::{PixelRect, Sample, SamplePattern, Triangle, Vertex, Viewport};
+pub use interval::Interval;
+pub use sample::{sample_test, Hit, ScreenPos};
+pub use setup::{setup, Class, Cull, Outcome, Setup};
+pub use stats::{Ops, Stats};
+pub use tile::{PixelStats, Prim, RenderError, Renderer, TileBuffer};

@@ -1,0 +1,215 @@
+//! Stage 3 — the 5D sample test: does the triangle at the sample's (t, u, v) cover the sample's
+//! screen position, and at what depth? (Olano & Greer 1997 homogeneous edge functions;
+//! Akenine-Möller 2007 §3.3.2 time-continuous triangles; `shared/notes/bounds-math.md` §1.)
+//!
+//! **Exact.** Vertex positions at the sample's (t, u, v) are formed without any rounding at the
+//! class's scale (`F` fraction bits: 16 static, 32 motion-only or defocus-only, 48 both):
+//! `P = q·2^16 + T·(r − q)` (T = raw t) and `x += U·c(t)`, `y += V·c(t)`. The sample direction is
+//! `d = ((2Xs − 256W)·H, (256H − 2Ys)·W, 256·W·H)` (NDC scaled by 256·W·H > 0; Xs, Ys in 1/256 px).
+//! Edge normals `n_k = P_{k+1} × P_{k+2}` are exact `i128`; edge values `E_k = n_k·d` and
+//! `det = P_0·n_0` are exact 192-bit ([`Wide`]). Coverage is decided on signs only, so it is
+//! the exact rational answer for the quantized inputs: nothing in it rounds.
+//!
+//! **Coverage.** With `s = sign(det)`: covered iff `det ≠ 0` and for every edge `s·E_k > 0`, or
+//! `E_k = 0` and the fill rule accepts. **Fill rule:** on `E_k = 0` accept iff `s·a_k > 0`, or
+//! `s·a_k = 0` and `s·b_k > 0`, where `(a_k, b_k)` are the first two components of `n_k`. This is
+//! the sign of `s·E_k` at the sample displaced by an infinitesimal `(ε, ε²)` in `d`, the same
+//! displacement for every triangle, so every sample behaves like one in general position: two
+//! triangles sharing an edge (whose `n` are exact negatives because the cross product of the same
+//! two exact vertices is antisymmetric) never both take nor both leave a sample on it, at any
+//! (t, u, v). Vertices behind the camera need no special case: the ray `λ·d, λ > 0` only reaches
+//! points with `w > 0`, and a hit behind the camera has all `E_k/det ≤ 0` with one `< 0`.
+//!
+//! **Depth** `z/w` at the hit equals `Σ E_k z_k / Σ E_k w_k`. The `E_k` are first shifted right
+//! by a common amount (floor) so the largest keeps [`DEPTH_EDGE_BITS`] significant bits, then
+//! `floor(num·2^24 / den)` after orienting `den > 0`; saturated to the `Depth` range, and the far
+//! value `i32::MAX` if the shifted `den` is not positive. Depth never influences coverage.
+
+use crate::formats::{DEPTH_EDGE_BITS, DEPTH_FRAC, SUBPIXEL_BITS, TUV_FRAC};
+use crate::input::{Sample, Viewport, C, W, X, Y, Z};
+use crate::setup::{Class, Setup};
+use crate::stats::Ops;
+use crate::wide::Wide;
+
+/// A sample's screen position in 1/256 pixel: `xs = 256·column + sx`, `ys = 256·row + sy`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct ScreenPos {
+    /// x in 1/256 pixels
+    pub xs: u32,
+    /// y in 1/256 pixels (downward)
+    pub ys: u32,
+}
+
+impl ScreenPos {
+    /// Position of `sample` in pixel (`px`, `py`).
+    pub fn of(px: u16, py: u16, sample: &Sample) -> ScreenPos {
+        ScreenPos {
+            xs: ((px as u32) << SUBPIXEL_BITS) + sample.sx.to_bits() as u32,
+            ys: ((py as u32) << SUBPIXEL_BITS) + sample.sy.to_bits() as u32,
+        }
+    }
+}
+
+/// The scaled direction `d` of a screen position (|d_i| ≤ 2^30 for viewports ≤ 2048).
+pub fn direction(vp: Viewport, pos: ScreenPos) -> [i64; 3] {
+    let (w, h) = (vp.w as i64, vp.h as i64);
+    let one = 1i64 << SUBPIXEL_BITS;
+    [
+        (2 * pos.xs as i64 - one * w) * h,
+        (one * h - 2 * pos.ys as i64) * w,
+        one * w * h,
+    ]
+}
+
+/// Result of a sample test that covers: the depth z/w, raw I8F24.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Hit {
+    /// z/w at the hit, raw `Depth` bits (i32::MAX = far, see module docs)
+    pub depth: i32,
+}
+
+/// Exact vertex positions `(x, y, w, z)` at (t, u, v) for the triangle's class, and their
+/// fraction bits. Ranges: |q| ≤ 2^29, |r − q| ≤ 2^30, |T| ≤ 2^16, |U| ≤ 2^16, so every value is
+/// ≤ 2^14 in real terms and |raw| ≤ 2^62 at 48 fraction bits.
+fn positions(setup: &Setup, s: &Sample, ops: &mut Ops) -> ([[i64; 4]; 3], u32) {
+    let [v0, v1] = &setup.tri.v;
+    let t = s.t.to_bits() as i64;
+    let (u, v) = (s.u.to_bits() as i64, s.v.to_bits() as i64);
+    let mut out = [[0i64; 4]; 3];
+    let frac = match setup.class {
+        Class::Static => {
+            for (q, o) in v0.iter().zip(out.iter_mut()) {
+                *o = [q[X] as i64, q[Y] as i64, q[W] as i64, q[Z] as i64];
+            }
+            16
+        }
+        Class::Motion => {
+            for ((q, r), o) in v0.iter().zip(v1.iter()).zip(out.iter_mut()) {
+                let lerp = |f: usize| ((q[f] as i64) << TUV_FRAC) + t * (r[f] as i64 - q[f] as i64);
+                *o = [lerp(X), lerp(Y), lerp(W), lerp(Z)];
+                ops.sample += 8;
+            }
+            32
+        }
+        Class::Defocus => {
+            for (q, o) in v0.iter().zip(out.iter_mut()) {
+                let c = q[C] as i64;
+                *o = [
+                    ((q[X] as i64) << TUV_FRAC) + u * c,
+                    ((q[Y] as i64) << TUV_FRAC) + v * c,
+                    (q[W] as i64) << TUV_FRAC,
+                    (q[Z] as i64) << TUV_FRAC,
+                ];
+                ops.sample += 4;
+            }
+            32
+        }
+        Class::MotionDefocus => {
+            for ((q, r), o) in v0.iter().zip(v1.iter()).zip(out.iter_mut()) {
+                let lerp = |f: usize| ((q[f] as i64) << TUV_FRAC) + t * (r[f] as i64 - q[f] as i64);
+                let c = lerp(C);
+                *o = [
+                    (lerp(X) << TUV_FRAC) + u * c,
+                    (lerp(Y) << TUV_FRAC) + v * c,
+                    lerp(W) << TUV_FRAC,
+                    lerp(Z) << TUV_FRAC,
+                ];
+                ops.sample += 14;
+            }
+            48
+        }
+    };
+    (out, frac)
+}
+
+/// Cross product of the (x, y, w) parts, exact: |P| ≤ 2^62 so each term < 2^124, sum < 2^125.
+#[inline]
+fn cross(a: &[i64; 4], b: &[i64; 4]) -> [i128; 3] {
+    let (ax, ay, aw) = (a[0] as i128, a[1] as i128, a[2] as i128);
+    let (bx, by, bw) = (b[0] as i128, b[1] as i128, b[2] as i128);
+    [ay * bw - aw * by, aw * bx - ax * bw, ax * by - ay * bx]
+}
+
+#[inline]
+fn dot_wide(n: &[i128; 3], d: &[i64; 3]) -> Wide {
+    let mut acc = Wide::ZERO;
+    for (a, b) in n.iter().zip(d.iter()) {
+        acc.mul_add(*a, *b);
+    }
+    acc
+}
+
+/// Fill-rule decision for an edge whose value is exactly zero.
+#[inline]
+fn fill_rule(n: &[i128; 3], det_sign: i32) -> bool {
+    let (a, b) = if det_sign > 0 { (n[0], n[1]) } else { (-n[0], -n[1]) };
+    a > 0 || (a == 0 && b > 0)
+}
+
+/// Coverage from the edge values and normals; `None` if not covered.
+#[inline]
+fn decide(e: &[Wide; 3], n: &[[i128; 3]; 3], det_sign: i32) -> bool {
+    if det_sign == 0 {
+        return false;
+    }
+    e.iter().zip(n.iter()).all(|(ek, nk)| match ek.signum() * det_sign {
+        1 => true,
+        0 => fill_rule(nk, det_sign),
+        _ => false,
+    })
+}
+
+/// Depth z/w from the edge values and the vertices' (w, z), see module docs.
+fn depth(e: &[Wide; 3], wz: &[(i64, i64); 3], det_sign: i32) -> i32 {
+    let len = e.iter().map(Wide::bit_len).max().unwrap_or(0);
+    let sh = len.saturating_sub(DEPTH_EDGE_BITS);
+    let (mut num, mut den) = (0i128, 0i128);
+    for (ek, &(w, z)) in e.iter().zip(wz.iter()) {
+        // |e'| ≤ 2^32 and |w|, |z| ≤ 2^62: each product < 2^94, sums < 2^96.
+        let ek = ek.shr_floor(sh);
+        num += ek * z as i128;
+        den += ek * w as i128;
+    }
+    if det_sign < 0 {
+        num = -num;
+        den = -den;
+    }
+    if den <= 0 {
+        return i32::MAX;
+    }
+    // |num·2^24| < 2^120.
+    let q = (num << DEPTH_FRAC).div_euclid(den);
+    q.clamp(i32::MIN as i128, i32::MAX as i128) as i32
+}
+
+/// The sample test for one sample of a visible triangle. Counts its arithmetic in `ops.sample`.
+pub fn sample_test(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> Option<Hit> {
+    let d = direction(setup.viewport, pos);
+    ops.sample += 5;
+    if let (Class::Static, Some(st)) = (setup.class, setup.edges.as_ref()) {
+        // Plain 2D test: normals precomputed in setup, |n·d| < 2^92.
+        let e = st.n.map(|n| Wide::from_i128(n[0] * d[0] as i128 + n[1] * d[1] as i128 + n[2] * d[2] as i128));
+        ops.sample += 18;
+        if !decide(&e, &st.n, st.det_sign) {
+            return None;
+        }
+        let wz = setup.tri.v[0].map(|q| (q[W] as i64, q[Z] as i64));
+        ops.sample += 12;
+        return Some(Hit { depth: depth(&e, &wz, st.det_sign) });
+    }
+    let (p, _frac) = positions(setup, s, ops);
+    let n = [cross(&p[1], &p[2]), cross(&p[2], &p[0]), cross(&p[0], &p[1])];
+    let e = n.map(|nk| dot_wide(&nk, &d));
+    let mut det = Wide::ZERO;
+    for (nc, pc) in n[0].iter().zip(p[0].iter()) {
+        det.mul_add(*nc, *pc);
+    }
+    ops.sample += 18 + 15 + 5 + 6;
+    let det_sign = det.signum();
+    if !decide(&e, &n, det_sign) {
+        return None;
+    }
+    let wz = p.map(|q| (q[2], q[3]));
+    ops.sample += 12;
+    Some(Hit { depth: depth(&e, &wz, det_sign) })
+}

@@ -1,0 +1,356 @@
+//! Stage 1 — triangle setup, exactly once per triangle (Laine 2011 §3).
+//!
+//! Classifies the triangle (static / motion / defocus / both), culls it when it is outside the
+//! frustum for the whole shutter or degenerate at every (t, u, v), and otherwise computes:
+//! - per screen axis, the two lens-corner bounding boxes (§3.1) of the six vertices, each side
+//!   either a finite pixel coordinate or unbounded when the moving, lens-extended triangle may
+//!   cross the camera plane on that side (separating-line test, §3.1 "Vertices behind camera");
+//! - the screen footprint: the union of both boxes, clamped to the viewport;
+//! - the time span the triangle may spend inside the frustum (§3.2 last paragraphs);
+//! - what the sample test needs: per-vertex base and delta terms, and for a static in-focus
+//!   triangle its three edge normals and determinant (a plain 2D test).
+//!
+//! Axis convention: both axes are handled by one code path on a coordinate `a` that grows with
+//! the pixel index: `a = x` (columns, extent W) and `a = −y` (rows, extent H). A lens coordinate
+//! moves `a` by `lens·cs` with `cs = c` for x and `cs = −c` for y. Pixel position of a point in
+//! front of the camera: `ξ = (a + w)·E / (2w)`.
+
+use crate::formats::{ceil_div, floor_div, PixelCoord, PX_FRAC};
+use crate::input::{PixelRect, Triangle, Viewport, C, W, X, Y, Z};
+use crate::interval::{solve_le, Interval};
+use crate::stats::Ops;
+
+/// Which effects a triangle has; the class decides which work is skipped.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Class {
+    /// no motion, in focus: plain 2D test, no bounds
+    Static,
+    /// motion only: t bounds, no lens terms
+    Motion,
+    /// defocus only: u/v bounds, no t terms
+    Defocus,
+    /// both: everything
+    MotionDefocus,
+}
+
+impl Class {
+    /// Index 0..4 for counters.
+    pub fn index(self) -> usize {
+        match self {
+            Class::Static => 0,
+            Class::Motion => 1,
+            Class::Defocus => 2,
+            Class::MotionDefocus => 3,
+        }
+    }
+    /// Whether the triangle moves (any of x, y, z, w, or the CoC of a defocused triangle).
+    pub fn motion(self) -> bool {
+        matches!(self, Class::Motion | Class::MotionDefocus)
+    }
+    /// Whether any CoC is non-zero.
+    pub fn defocus(self) -> bool {
+        matches!(self, Class::Defocus | Class::MotionDefocus)
+    }
+}
+
+/// Why a triangle was culled in setup.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Cull {
+    /// outside the frustum (or the viewport) for the whole shutter and lens
+    Outside,
+    /// zero determinant at every (t, u, v): covers no sample
+    Degenerate,
+}
+
+/// One axis's lens-corner boxes, raw [`PixelCoord`]s at lens = −1 (`[0]`) and lens = +1 (`[1]`).
+/// `None`: unbounded on that side for every lens point (camera-plane crossing on that side).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct AxisBoxes {
+    /// floor of the box minimum at each lens corner
+    pub lo: Option<[PixelCoord; 2]>,
+    /// ceil of the box maximum at each lens corner
+    pub hi: Option<[PixelCoord; 2]>,
+}
+
+/// Static in-focus edge data: normals `n_k = P_{k+1} × P_{k+2}` and `det`, raw 2·16 fraction bits.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct StaticEdges {
+    /// edge normals (a, b, c) per edge
+    pub n: [[i128; 3]; 3],
+    /// sign of P0·(P1×P2): −1 or 1 (0 is culled)
+    pub det_sign: i32,
+}
+
+/// Everything later stages need about one triangle.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Setup {
+    /// effects present
+    pub class: Class,
+    /// pixels to visit
+    pub footprint: PixelRect,
+    /// t span inside the frustum
+    pub span: Interval,
+    /// lens-corner boxes, `[x axis, y axis]`
+    pub axes: [AxisBoxes; 2],
+    /// the input triangle
+    pub tri: Triangle,
+    /// viewport
+    pub viewport: Viewport,
+    /// static in-focus edge data (class `Static` only)
+    pub edges: Option<StaticEdges>,
+}
+
+/// Result of setup. (No heap in core, so the large variant stays inline.)
+#[allow(clippy::large_enum_variant)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Outcome {
+    /// culled, with the reason
+    Culled(Cull),
+    /// visible: the setup
+    Visible(Setup),
+}
+
+/// Axis coordinate `a` of raw vertex `p` (x, or −y) and its lens coefficient `cs`.
+#[inline]
+pub(crate) fn axis_coord(p: &[i32; 5], axis: usize) -> (i64, i64) {
+    if axis == 0 {
+        (p[X] as i64, p[C] as i64)
+    } else {
+        (-(p[Y] as i64), -(p[C] as i64))
+    }
+}
+
+/// Classify: motion if any field differs between the ends (the CoC only counts when non-zero
+/// somewhere), defocus if any CoC is non-zero.
+pub fn classify(tri: &Triangle) -> Class {
+    let [v0, v1] = &tri.v;
+    let defocus = v0.iter().chain(v1.iter()).any(|p| p[C] != 0);
+    let motion = v0.iter().zip(v1.iter()).any(|(a, b)| {
+        a[X] != b[X] || a[Y] != b[Y] || a[Z] != b[Z] || a[W] != b[W] || (defocus && a[C] != b[C])
+    });
+    match (motion, defocus) {
+        (false, false) => Class::Static,
+        (true, false) => Class::Motion,
+        (false, true) => Class::Defocus,
+        (true, true) => Class::MotionDefocus,
+    }
+}
+
+/// Does the convex hull of `pts` (points (a, w)) meet the half-line {(s·dir, 0) : s ≥ 0}?
+///
+/// In 2D a direction lies in the cone of a point set iff it lies in the cone of one point or of
+/// two points less than π apart (Carathéodory), and the hull meets the camera point iff a point is
+/// the origin or two points are opposite. All products are exact (|a| ≤ 2^30, |w| ≤ 2^29 raw).
+pub fn crosses_camera_plane(pts: &[(i64, i64)], dir: i64, ops: &mut Ops) -> bool {
+    for &(a, w) in pts {
+        ops.setup += 2;
+        if w == 0 && (a == 0 || a * dir > 0) {
+            return true;
+        }
+    }
+    for (i, &(ai, wi)) in pts.iter().enumerate() {
+        for &(aj, wj) in pts.iter().skip(i + 1) {
+            ops.setup += 6;
+            let cr = ai as i128 * wj as i128 - wi as i128 * aj as i128;
+            let dot = ai as i128 * aj as i128 + wi as i128 * wj as i128;
+            if cr == 0 && dot < 0 {
+                return true;
+            }
+            // e = (dir, 0) in cone(p, q) for cross(p, q) > 0 iff cross(p, e) ≥ 0 ≤ cross(e, q),
+            // with cross(p, e) = −w_p·dir and cross(e, q) = dir·w_q.
+            let (p, q) = if cr > 0 { (wi, wj) } else { (wj, wi) };
+            if cr != 0 && -p * dir >= 0 && dir * q >= 0 {
+                return true;
+            }
+        }
+    }
+    false
+}
+
+/// Pixel position `(a + w)·E·2^16 / (2w)` of a front point (w > 0), floored or ceiled.
+#[inline]
+fn project(a: i64, w: i64, extent: i64, up: bool) -> PixelCoord {
+    // |a + w| < 2^31, E ≤ 2^11: numerator < 2^58 (i128 for headroom); w > 0 checked by caller.
+    let num = (a as i128 + w as i128) * extent as i128 * (1i128 << PX_FRAC);
+    let den = 2 * w as i128;
+    let q = if up { ceil_div(num, den) } else { floor_div(num, den) };
+    // |q| ≤ |num| < 2^58: fits i64.
+    q.unwrap_or(0) as PixelCoord
+}
+
+/// Lens-corner boxes of one axis (Laine §3.1), with the separating-line test per side.
+fn axis_boxes(tri: &Triangle, axis: usize, extent: i64, ops: &mut Ops) -> AxisBoxes {
+    let mut left = [(0i64, 0i64); 6];
+    let mut right = [(0i64, 0i64); 6];
+    let mut i = 0;
+    for ends in tri.v.iter() {
+        for p in ends.iter() {
+            let (a, cs) = axis_coord(p, axis);
+            let w = p[W] as i64;
+            if let (Some(l), Some(r)) = (left.get_mut(i), right.get_mut(i)) {
+                *l = (a - cs.abs(), w);
+                *r = (a + cs.abs(), w);
+            }
+            i += 1;
+            ops.setup += 2;
+        }
+    }
+    let unbounded_lo = crosses_camera_plane(&left, -1, ops);
+    let unbounded_hi = crosses_camera_plane(&right, 1, ops);
+    let mut lo = [PixelCoord::MAX; 2];
+    let mut hi = [PixelCoord::MIN; 2];
+    let mut any_front = false;
+    for ends in tri.v.iter() {
+        for p in ends.iter() {
+            let (a, cs) = axis_coord(p, axis);
+            let w = p[W] as i64;
+            if w <= 0 {
+                continue;
+            }
+            any_front = true;
+            for (corner, lens) in [-1i64, 1].into_iter().enumerate() {
+                let au = a + lens * cs;
+                ops.setup += 6;
+                if let (Some(l), Some(h)) = (lo.get_mut(corner), hi.get_mut(corner)) {
+                    *l = (*l).min(project(au, w, extent, false));
+                    *h = (*h).max(project(au, w, extent, true));
+                }
+            }
+        }
+    }
+    AxisBoxes {
+        lo: (!unbounded_lo && any_front).then_some(lo),
+        hi: (!unbounded_hi && any_front).then_some(hi),
+    }
+}
+
+/// Footprint columns (or rows) `[p0, p1)` of one axis from its boxes, clamped to `[0, E]`.
+/// A sample at ξ is in column floor(ξ); ξ ≤ max means columns up to floor(max) are needed.
+fn axis_range(b: &AxisBoxes, extent: i64) -> (u16, u16) {
+    let p0 = match b.lo {
+        Some([l0, l1]) => l0.min(l1) >> PX_FRAC,
+        None => 0,
+    };
+    let p1 = match b.hi {
+        Some([h0, h1]) => (h0.max(h1) >> PX_FRAC).saturating_add(1),
+        None => extent,
+    };
+    (p0.clamp(0, extent) as u16, p1.clamp(0, extent) as u16)
+}
+
+/// Time span inside the frustum: for each plane w ∓ a ≥ 0 (both axes, widened by |c| for the
+/// lens), the largest vertex distance is convex in t and lies below its chord; the chord's
+/// non-negative part is a conservative span. The camera plane uses max w > 0 the same way.
+fn frustum_span(tri: &Triangle, ops: &mut Ops) -> Option<Interval> {
+    let [v0, v1] = &tri.v;
+    let mut span = Interval::UNIT;
+    // camera plane: a hit needs w > 0, so both ends' max w ≤ 0 means never visible.
+    let wmax = |v: &[[i32; 5]; 3]| v.iter().map(|p| p[W] as i128).max().unwrap_or(0);
+    let (a, b) = (wmax(v0), wmax(v1));
+    ops.setup += 6;
+    if a <= 0 && b <= 0 {
+        return None;
+    }
+    span = span.meet(solve_le(a - b, a)?)?;
+    for axis in 0..2 {
+        for sign in [-1i128, 1] {
+            let dist = |v: &[[i32; 5]; 3]| {
+                v.iter()
+                    .map(|p| {
+                        let (x, cs) = axis_coord(p, axis);
+                        p[W] as i128 + sign * x as i128 + (cs as i128).abs()
+                    })
+                    .max()
+                    .unwrap_or(0)
+            };
+            let (a, b) = (dist(v0), dist(v1));
+            ops.setup += 14;
+            span = span.meet(solve_le(a - b, a)?)?;
+        }
+    }
+    Some(span)
+}
+
+/// det(P0, P1, P2) of raw (x, y, w) triples, exact in i128 (|P| < 2^33 here, so |det| < 2^102).
+#[inline]
+pub(crate) fn det3(p: &[[i128; 3]; 3]) -> i128 {
+    let [a, b, c] = p;
+    a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
+        + a[2] * (b[0] * c[1] - b[1] * c[0])
+}
+
+/// Whether det(t, u, v) is zero for every t, u, v. det is cubic in t and bilinear in (u, v), so it
+/// vanishes identically iff it vanishes at t ∈ {0, 1/3, 2/3, 1} × (u, v) ∈ {0, 1}² (evaluated
+/// exactly, scaled by 3 so every point is an integer).
+fn degenerate(tri: &Triangle, class: Class, ops: &mut Ops) -> bool {
+    let [v0, v1] = &tri.v;
+    let tj: &[i128] = if class.motion() { &[0, 1, 2, 3] } else { &[0] };
+    let lens: &[i128] = if class.defocus() { &[0, 1] } else { &[0] };
+    for &j in tj {
+        for &u in lens {
+            for &v in lens {
+                let mut p = [[0i128; 3]; 3];
+                for ((q, r), out) in v0.iter().zip(v1.iter()).zip(p.iter_mut()) {
+                    let lerp = |f: usize| (3 - j) * q[f] as i128 + j * r[f] as i128;
+                    let c = lerp(C);
+                    *out = [lerp(X) + u * c, lerp(Y) + v * c, lerp(W)];
+                }
+                ops.setup += 30;
+                if det3(&p) != 0 {
+                    return false;
+                }
+            }
+        }
+    }
+    true
+}
+
+impl Setup {
+    /// The sample-test data of a triangle without culling or bounds (footprint = whole
+    /// viewport, span = [0, 1]). For verification only: it lets tests and the host ask whether a
+    /// triangle that [`setup`] culled really covers no sample.
+    pub fn unculled(tri: &Triangle, vp: Viewport) -> Setup {
+        let class = classify(tri);
+        let full = AxisBoxes { lo: None, hi: None };
+        let footprint = PixelRect { x0: 0, y0: 0, x1: vp.w, y1: vp.h };
+        let edges = (class == Class::Static).then(|| static_edges(tri));
+        Setup { class, footprint, span: Interval::UNIT, axes: [full, full], tri: *tri, viewport: vp, edges }
+    }
+}
+
+fn static_edges(tri: &Triangle) -> StaticEdges {
+    let p = tri.v[0].map(|q| [q[X] as i128, q[Y] as i128, q[W] as i128]);
+    let det = det3(&p);
+    let n = [0usize, 1, 2].map(|k| {
+        let a = p[(k + 1) % 3];
+        let b = p[(k + 2) % 3];
+        [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+    });
+    StaticEdges { n, det_sign: det.signum() as i32 }
+}
+
+/// Run setup on one triangle. Counts its arithmetic in `ops.setup`.
+pub fn setup(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> Outcome {
+    let class = classify(tri);
+    ops.setup += 30;
+    let span = match frustum_span(tri, ops) {
+        Some(s) => s,
+        None => return Outcome::Culled(Cull::Outside),
+    };
+    if degenerate(tri, class, ops) {
+        return Outcome::Culled(Cull::Degenerate);
+    }
+    let (ew, eh) = (vp.w as i64, vp.h as i64);
+    let axes = [axis_boxes(tri, 0, ew, ops), axis_boxes(tri, 1, eh, ops)];
+    let (x0, x1) = axis_range(&axes[0], ew);
+    let (y0, y1) = axis_range(&axes[1], eh);
+    let footprint = PixelRect { x0, y0, x1, y1 };
+    if footprint.is_empty() {
+        return Outcome::Culled(Cull::Outside);
+    }
+    let edges = (class == Class::Static).then(|| {
+        ops.setup += 30;
+        static_edges(tri)
+    });
+    Outcome::Visible(Setup { class, footprint, span, axes, tri: *tri, viewport: vp, edges })
+}

@@ -1,0 +1,254 @@
+//! Shared helpers for uvt's integration tests: float-to-fixed builders (test side only), a seeded
+//! RNG, random sample tables, and the brute-force checkers for conservativeness and
+//! watertightness. Failures are reported as strings with the inputs in decimal and raw hex.
+
+use uvt_core::bounds::BoundsStrategy;
+use uvt_core::{
+    sample_test, setup, Coord, Lens, Outcome, PixelRect, Sample, SamplePattern, ScreenPos, Setup,
+    Stats, SubPixel, Time, Triangle, Vertex, Viewport,
+};
+
+/// Environment variable holding the seed of the seeded-random tests.
+pub const SEED_VAR: &str = "UVT_SEED";
+/// Environment variable that switches on the slow extensive mode.
+pub const EXTENSIVE_VAR: &str = "UVT_EXTENSIVE";
+
+/// The seed for seeded-random tests: `UVT_SEED` or a fixed default.
+pub fn seed() -> u64 {
+    std::env::var(SEED_VAR).ok().and_then(|s| s.parse().ok()).unwrap_or(0x5eed_0001)
+}
+
+/// Whether the slow extensive mode is on.
+pub fn extensive() -> bool {
+    std::env::var(EXTENSIVE_VAR).is_ok_and(|v| v != "0")
+}
+
+/// Number of cases: `quick` normally, `slow` in extensive mode.
+pub fn cases(quick: u32, slow: u32) -> u32 {
+    if extensive() {
+        slow
+    } else {
+        quick
+    }
+}
+
+/// SplitMix64: small, well-known, deterministic.
+#[derive(Clone, Debug)]
+pub struct Rng(pub u64);
+
+impl Rng {
+    /// Next 64 random bits.
+    pub fn next_u64(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+        z ^ (z >> 31)
+    }
+    /// Uniform in [0, 1).
+    pub fn unit(&mut self) -> f64 {
+        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
+    }
+    /// Uniform in [lo, hi).
+    pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
+        lo + (hi - lo) * self.unit()
+    }
+    /// Uniform integer in [0, n).
+    pub fn below(&mut self, n: u64) -> u64 {
+        self.next_u64() % n.max(1)
+    }
+}
+
+/// I16F16 from f64, rounded to nearest and clamped to the declared domain.
+pub fn c(v: f64) -> Coord {
+    let lim = (1i64 << 29) as f64;
+    Coord::from_bits((v * 65536.0).round().clamp(-lim, lim) as i32)
+}
+
+/// A vertex from f64 clip coordinates and CoC.
+pub fn vtx(x: f64, y: f64, z: f64, w: f64, coc: f64) -> Vertex {
+    Vertex { x: c(x), y: c(y), z: c(z), w: c(w), coc: c(coc) }
+}
+
+/// A triangle from two f64 vertex arrays `[x, y, z, w, coc]`.
+pub fn tri(t0: [[f64; 5]; 3], t1: [[f64; 5]; 3]) -> Triangle {
+    let mk = |a: [f64; 5]| vtx(a[0], a[1], a[2], a[3], a[4]);
+    Triangle::new(t0.map(mk), t1.map(mk)).expect("test triangle inside the domain")
+}
+
+/// Raw dump of a triangle, decimal and hex, for failure messages.
+pub fn dump(t: &Triangle) -> String {
+    let mut s = String::new();
+    for time in 0..2 {
+        for (k, v) in t.vertices(time).iter().enumerate() {
+            let b = v.bits();
+            s += &format!(
+                "  t{time} v{k}: x {:.6} y {:.6} z {:.6} w {:.6} c {:.6}  raw [{:#010x} {:#010x} {:#010x} {:#010x} {:#010x}]\n",
+                v.x.to_num::<f64>(), v.y.to_num::<f64>(), v.z.to_num::<f64>(), v.w.to_num::<f64>(),
+                v.coc.to_num::<f64>(), b[0], b[1], b[2], b[3], b[4]
+            );
+        }
+    }
+    s
+}
+
+/// A random sample table (block × block pixels × spp), quantized to the core's formats.
+pub fn random_samples(rng: &mut Rng, block: u16, spp: u16) -> Vec<Sample> {
+    (0..block as usize * block as usize * spp as usize)
+        .map(|_| Sample {
+            sx: SubPixel::from_bits(rng.below(256) as u8),
+            sy: SubPixel::from_bits(rng.below(256) as u8),
+            u: Lens::from_bits(rng.below(2 * 65536 + 1) as i32 - 65536),
+            v: Lens::from_bits(rng.below(2 * 65536 + 1) as i32 - 65536),
+            t: Time::from_bits(rng.below(65537) as i32),
+        })
+        .collect()
+}
+
+/// A sample table on a coarse grid (sub-pixel 0 or 1/2, u/v/t on quarters) that lands samples
+/// exactly on edges and vertices of meshes built on a matching grid.
+pub fn grid_samples(rng: &mut Rng, block: u16, spp: u16) -> Vec<Sample> {
+    let q = |rng: &mut Rng, lo: i32| Lens::from_bits(lo + rng.below(5) as i32 * 16384 * if lo < 0 { 2 } else { 1 });
+    (0..block as usize * block as usize * spp as usize)
+        .map(|_| Sample {
+            sx: SubPixel::from_bits(if rng.below(2) == 0 { 0 } else { 128 }),
+            sy: SubPixel::from_bits(if rng.below(2) == 0 { 0 } else { 128 }),
+            u: q(rng, -65536),
+            v: q(rng, -65536),
+            t: q(rng, 0),
+        })
+        .collect()
+}
+
+/// Describe a sample for failure messages.
+pub fn dump_sample(px: u16, py: u16, s: &Sample) -> String {
+    format!(
+        "pixel ({px},{py}) sx {} sy {} u {:.6} ({:#x}) v {:.6} ({:#x}) t {:.6} ({:#x})",
+        s.sx.to_bits(), s.sy.to_bits(), s.u.to_num::<f64>(), s.u.to_bits(), s.v.to_num::<f64>(),
+        s.v.to_bits(), s.t.to_num::<f64>(), s.t.to_bits()
+    )
+}
+
+/// Brute-force conservativeness check of one triangle for one bounds strategy and tile size:
+/// every sample of the viewport that the sample test covers must be (1) in a non-culled
+/// triangle, (2) inside the footprint, and (3) inside its bounds tile's (u, v, t) intervals.
+/// Returns the number of covered samples, or a description of the first violation.
+pub fn check_conservative<B: BoundsStrategy>(
+    strat: &B,
+    t: &Triangle,
+    vp: Viewport,
+    pat: &SamplePattern<'_>,
+    bt: u16,
+) -> Result<u64, String> {
+    let mut ops = Default::default();
+    let full = Setup::unculled(t, vp);
+    let out = setup(t, vp, &mut ops);
+    let visible = match out {
+        Outcome::Visible(s) => Some((s, strat.prepare(&s, &mut ops))),
+        Outcome::Culled(_) => None,
+    };
+    let mut covered = 0;
+    for py in 0..vp.height() {
+        for px in 0..vp.width() {
+            // The bounds tile containing this pixel, clipped to the footprint (as the renderer).
+            let tile_box = visible.as_ref().map(|(s, co)| {
+                let cell = PixelRect { x0: px - px % bt, y0: py - py % bt, x1: px - px % bt + bt, y1: py - py % bt + bt }
+                    .intersect(&s.footprint);
+                (s.footprint.contains(px, py), if cell.is_empty() { None } else { strat.tile(s, co, cell, &mut ops) })
+            });
+            for (si, smp) in pat.pixel(px, py).iter().enumerate() {
+                let hit = sample_test(&full, ScreenPos::of(px, py, smp), smp, &mut ops);
+                if hit.is_none() {
+                    continue;
+                }
+                covered += 1;
+                let why = match &tile_box {
+                    None => Some(format!("setup culled it ({out:?})")),
+                    Some((false, _)) => Some("pixel outside the footprint".to_string()),
+                    Some((true, None)) => Some(format!("{}x{bt} tile bounds empty", bt)),
+                    Some((true, Some(b))) => (!b.contains(smp.u.to_bits(), smp.v.to_bits(), smp.t.to_bits()))
+                        .then(|| format!("outside tile box {b:?}")),
+                };
+                if let Some(why) = why {
+                    let fp = visible.as_ref().map(|(s, _)| s.footprint);
+                    return Err(format!(
+                        "conservativeness violated ({}, tile {bt}): {why}\n  sample {si}: {}\n  footprint {fp:?}\n  viewport {}x{}\n{}",
+                        strat.name(), dump_sample(px, py, smp), vp.width(), vp.height(), dump(t)
+                    ));
+                }
+            }
+        }
+    }
+    Ok(covered)
+}
+
+/// Count, for every sample of the viewport, how many of `tris` cover it (no bounds involved).
+pub fn coverage_counts(tris: &[Triangle], vp: Viewport, pat: &SamplePattern<'_>) -> Vec<u8> {
+    let setups: Vec<Setup> = tris.iter().map(|t| Setup::unculled(t, vp)).collect();
+    let mut ops = Default::default();
+    let mut out = Vec::new();
+    for py in 0..vp.height() {
+        for px in 0..vp.width() {
+            for smp in pat.pixel(px, py) {
+                let pos = ScreenPos::of(px, py, smp);
+                out.push(setups.iter().filter(|s| sample_test(s, pos, smp, &mut ops).is_some()).count() as u8);
+            }
+        }
+    }
+    out
+}
+
+/// A planar mesh covering far more than the screen at every (t, u, v): a jittered grid of
+/// `g×g` vertices on a tilted plane in front of the camera, moved at t = 1 by a small rotation,
+/// translation and depth scale, with CoC = a·w + b per vertex (`coc = None`: in focus).
+/// Shared vertices are bit-identical in every triangle that uses them.
+pub fn planar_mesh(rng: &mut Rng, g: usize, motion: bool, coc: Option<(f64, f64)>) -> Vec<Triangle> {
+    let span = 3.6;
+    let step = span / (g - 1) as f64;
+    let w0 = rng.range(1.0, 4.0);
+    let (ax, ay) = (rng.range(-0.15, 0.15), rng.range(-0.15, 0.15));
+    let (rot, tx, ty, sz) = if motion {
+        (rng.range(-0.08, 0.08), rng.range(-0.1, 0.1) * w0, rng.range(-0.1, 0.1) * w0, rng.range(0.9, 1.1))
+    } else {
+        (0.0, 0.0, 0.0, 1.0)
+    };
+    let mut verts = Vec::new();
+    for j in 0..g {
+        for i in 0..g {
+            let jx = rng.range(-0.1, 0.1) * step;
+            let jy = rng.range(-0.1, 0.1) * step;
+            let (nx, ny) = (-span / 2.0 + i as f64 * step + jx, -span / 2.0 + j as f64 * step + jy);
+            let w = w0 * (1.0 + ax * nx + ay * ny);
+            let (x, y, z) = (nx * w, ny * w, 0.5 * w);
+            let (cr, sr) = (rot.cos(), rot.sin());
+            let (x1, y1, w1) = (cr * x - sr * y + tx, sr * x + cr * y + ty, w * sz);
+            let cc = |w: f64| coc.map_or(0.0, |(a, b)| a * w + b);
+            verts.push(([x, y, z, w, cc(w)], [x1, y1, 0.5 * w1, w1, cc(w1)]));
+        }
+    }
+    let mut tris = Vec::new();
+    for j in 0..g - 1 {
+        for i in 0..g - 1 {
+            let id = |a: usize, b: usize| verts[b * g + a];
+            let (a, b, cq, d) = (id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+            // alternate the diagonal so both shared-edge directions occur
+            let quads = if (i + j) % 2 == 0 { [[a, b, cq], [a, cq, d]] } else { [[a, b, d], [b, cq, d]] };
+            for q in quads {
+                tris.push(tri(q.map(|v| v.0), q.map(|v| if motion || coc.is_some() { v.1 } else { v.0 })));
+            }
+        }
+    }
+    tris
+}
+
+/// STE of one strategy over a triangle list rendered with the real render loop.
+pub fn render_stats<B: BoundsStrategy>(strat: B, prims: &[uvt_core::Prim], vp: Viewport, pat: &SamplePattern<'_>, bt: u8) -> Stats {
+    let mut r = uvt_core::Renderer::<B, 256>::new(strat, vp, prims).expect("setup");
+    match pat.spp() {
+        4 => r.render_with::<8, 8, 4>(pat, bt, uvt_core::Rgb888::new(0, 0, 0), |_, _, _, _| {}),
+        16 => r.render_with::<8, 8, 16>(pat, bt, uvt_core::Rgb888::new(0, 0, 0), |_, _, _, _| {}),
+        other => panic!("render_stats: spp {other} not instantiated"),
+    }
+    .expect("render");
+    r.stats
+}
