@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# The one command that runs every uvt test on a fresh machine (README.md names it; .ci/run calls it).
+# Installs what the tests need, then: thumbv7 build of the core, clippy and tests with warnings as
+# errors. UVT_SEED and UVT_EXTENSIVE=1 are passed through to the tests.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export RUSTFLAGS="${RUSTFLAGS:-} -D warnings"
+export CARGO_TERM_COLOR=never
+
+echo "== installing test prerequisites"
+rustup target add thumbv7em-none-eabihf >/dev/null
+rustup component add clippy >/dev/null 2>&1 || true
+
+echo "== core for Cortex-M4F (thumbv7em-none-eabihf)"
+cargo build --locked -p uvt-core --target thumbv7em-none-eabihf --release
+
+echo "== clippy (warnings are errors)"
+cargo clippy --locked --workspace --all-targets -- -D warnings
+
+echo "== tests"
+cargo test --locked --workspace
