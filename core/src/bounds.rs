@@ -68,7 +68,8 @@ pub trait BoundsStrategy {
     fn tile(&self, setup: &Setup, c: &Self::Coeffs, tile: PixelRect, ops: &mut Ops) -> Option<UvtBox>;
 }
 
-/// The bounding-box scan: every sample of the footprint is tested (Laine 2011 "Bbox scan").
+/// The bounding-box scan: every sample of the footprint is tested, whatever its (u, v, t)
+/// (Laine 2011 "Bbox scan": a box that covers the triangle for all (u, v, t)).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct BboxScan;
 
@@ -78,8 +79,8 @@ impl BoundsStrategy for BboxScan {
         "bbox"
     }
     fn prepare(&self, _: &Setup, _: &mut Ops) {}
-    fn tile(&self, setup: &Setup, _: &(), _: PixelRect, _: &mut Ops) -> Option<UvtBox> {
-        Some(UvtBox { t: setup.span, ..UvtBox::FULL })
+    fn tile(&self, _: &Setup, _: &(), _: PixelRect, _: &mut Ops) -> Option<UvtBox> {
+        Some(UvtBox::FULL)
     }
 }
 

@@ -1,0 +1,443 @@
+//! The host's frame driver: runs one pipeline (the fixed-point core or the f64 reference) over a
+//! whole frame with the same tile walk as `uvt_core::Renderer<_, N>` with 8×8 screen tiles, in
+//! parallel over bands of 8 rows (rayon), and measures it.
+//!
+//! Per triangle and band: bounds tiles aligned to the bounds-tile grid, clipped to footprint ∩
+//! band (identical cells to the core renderer's, since 1, 2, 4, 8 divide 8); samples inside the
+//! tile's intervals are tested; covered ones are depth-tested (strictly nearer wins, triangles in
+//! submission order) and resolved with round-half-up like `TileBuffer::resolve`.
+//! Also counted: the bounding-box scan's tests (every sample of the footprint) and the oracle's —
+//! per bounds tile, the samples inside the tightest axis-aligned (u, v, t) box around the samples
+//! the pipeline actually covered there and around [`ORACLE_POINTS`] dense points of the tile's
+//! (x, y, u, v, t) box that the exact triangle covers (dense points are drawn only in tiles where
+//! the pattern covered a sample, to keep the full benchmark within minutes). A bound computed without knowing the
+//! samples must contain the whole covered region, so this box approaches (from inside) the limit
+//! any axis-aligned bound can reach.
+
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::{Duration, Instant};
+
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use rayon::prelude::*;
+use uvt_core::bounds::BoundsStrategy;
+use uvt_core::{Class, Cull, Ops, Outcome, PixelRect, Triangle, Viewport};
+
+use crate::pattern::Pattern;
+use crate::reference;
+use crate::scene::SceneTri;
+
+/// Setup result of a pipeline.
+pub enum SetupOut<S> {
+    /// visible, with its class
+    Visible(S, Class),
+    /// culled
+    Culled(Cull),
+}
+
+/// One rasterization pipeline the driver can run.
+pub trait Pipeline: Sync {
+    /// per-triangle data
+    type Setup: Send + Sync;
+    /// per-tile bounds
+    type Bounds: Copy;
+    /// setup of triangle `i`
+    fn setup(&self, i: usize, ops: &mut Ops) -> SetupOut<Self::Setup>;
+    /// footprint of a setup
+    fn footprint(&self, s: &Self::Setup) -> PixelRect;
+    /// bounds of one tile
+    fn bounds(&self, s: &Self::Setup, cell: PixelRect, ops: &mut Ops) -> Option<Self::Bounds>;
+    /// whether sample `idx` of the table lies inside the bounds
+    fn inside(&self, b: &Self::Bounds, idx: usize) -> bool;
+    /// (u, v, t) of sample `idx` as this pipeline sees it
+    fn uvt(&self, idx: usize) -> [f64; 3];
+    /// sample test: depth on a hit
+    fn test(&self, s: &Self::Setup, px: u16, py: u16, idx: usize, ops: &mut Ops) -> Option<f64>;
+    /// the far depth the buffer is cleared to
+    fn far(&self) -> f64;
+    /// the bounds as real (u, v, t) ranges
+    fn ranges(&self, b: &Self::Bounds) -> [(f64, f64); 3];
+}
+
+/// The fixed-point core with bounds strategy `B`.
+pub struct Fixed<'a, B> {
+    /// bounds strategy
+    pub strat: B,
+    /// viewport
+    pub vp: Viewport,
+    /// core triangles
+    pub tris: &'a [Triangle],
+    /// sample table
+    pub pattern: &'a Pattern,
+}
+
+impl<B: BoundsStrategy + Sync> Pipeline for Fixed<'_, B>
+where
+    B::Coeffs: Send + Sync,
+{
+    type Setup = (uvt_core::Setup, B::Coeffs);
+    type Bounds = uvt_core::UvtBox;
+    fn setup(&self, i: usize, ops: &mut Ops) -> SetupOut<Self::Setup> {
+        match uvt_core::setup(&self.tris[i], self.vp, ops) {
+            Outcome::Visible(s) => {
+                let c = self.strat.prepare(&s, ops);
+                SetupOut::Visible((s, c), s.class)
+            }
+            Outcome::Culled(c) => SetupOut::Culled(c),
+        }
+    }
+    fn footprint(&self, s: &Self::Setup) -> PixelRect {
+        s.0.footprint
+    }
+    fn bounds(&self, s: &Self::Setup, cell: PixelRect, ops: &mut Ops) -> Option<Self::Bounds> {
+        self.strat.tile(&s.0, &s.1, cell, ops)
+    }
+    fn inside(&self, b: &Self::Bounds, idx: usize) -> bool {
+        let q = &self.pattern.quant[idx];
+        b.contains(q.u.to_bits(), q.v.to_bits(), q.t.to_bits())
+    }
+    fn uvt(&self, idx: usize) -> [f64; 3] {
+        let q = &self.pattern.quant[idx];
+        [q.u.to_num(), q.v.to_num(), q.t.to_num()]
+    }
+    fn test(&self, s: &Self::Setup, px: u16, py: u16, idx: usize, ops: &mut Ops) -> Option<f64> {
+        let q = &self.pattern.quant[idx];
+        uvt_core::sample_test(&s.0, uvt_core::ScreenPos::of(px, py, q), q, ops).map(|h| h.depth as f64)
+    }
+    fn far(&self) -> f64 {
+        i32::MAX as f64
+    }
+    fn ranges(&self, b: &Self::Bounds) -> [(f64, f64); 3] {
+        let r = |i: uvt_core::Interval| (i.lo as f64 / 65536.0, i.hi as f64 / 65536.0);
+        [r(b.u), r(b.v), r(b.t)]
+    }
+}
+
+/// The f64 reference (Laine bounds in f64, ray-cast sample test) on exact inputs.
+pub struct Reference<'a> {
+    /// viewport (W, H)
+    pub vp: (u16, u16),
+    /// f64 triangles
+    pub tris: &'a [SceneTri],
+    /// sample table (its exact values are used)
+    pub pattern: &'a Pattern,
+}
+
+impl Pipeline for Reference<'_> {
+    type Setup = reference::setup::Setup;
+    type Bounds = reference::bounds::UvtBox;
+    fn setup(&self, i: usize, _: &mut Ops) -> SetupOut<Self::Setup> {
+        match reference::setup::setup(&self.tris[i], self.vp) {
+            Ok(s) => SetupOut::Visible(s, s.class),
+            Err(c) => SetupOut::Culled(c),
+        }
+    }
+    fn footprint(&self, s: &Self::Setup) -> PixelRect {
+        s.footprint
+    }
+    fn bounds(&self, s: &Self::Setup, cell: PixelRect, _: &mut Ops) -> Option<Self::Bounds> {
+        reference::bounds::tile(s, cell)
+    }
+    fn inside(&self, b: &Self::Bounds, idx: usize) -> bool {
+        let e = &self.pattern.exact[idx];
+        b.contains(e[2], e[3], e[4])
+    }
+    fn uvt(&self, idx: usize) -> [f64; 3] {
+        let e = &self.pattern.exact[idx];
+        [e[2], e[3], e[4]]
+    }
+    fn test(&self, s: &Self::Setup, px: u16, py: u16, idx: usize, _: &mut Ops) -> Option<f64> {
+        let e = &self.pattern.exact[idx];
+        reference::sample::sample_test(&s.tri, self.vp, px as f64 + e[0], py as f64 + e[1], e[2], e[3], e[4])
+    }
+    fn far(&self) -> f64 {
+        f64::INFINITY
+    }
+    fn ranges(&self, b: &Self::Bounds) -> [(f64, f64); 3] {
+        [b.u, b.v, b.t]
+    }
+}
+
+/// Counters of one frame.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+pub struct FrameStats {
+    /// triangles submitted
+    pub triangles: u64,
+    /// culled outside
+    pub culled_outside: u64,
+    /// culled degenerate
+    pub culled_degenerate: u64,
+    /// visible by class: static, motion, defocus, motion+defocus
+    pub by_class: [u64; 4],
+    /// bounds tiles computed
+    pub tiles_visited: u64,
+    /// of which empty
+    pub tiles_skipped: u64,
+    /// samples tested (inside the tile intervals)
+    pub samples_tested: u64,
+    /// samples covered
+    pub samples_covered: u64,
+    /// samples the bounding-box scan tests: all samples of every footprint pixel
+    pub footprint_samples: u64,
+    /// samples inside the per-tile oracle boxes
+    pub oracle_tested: u64,
+    /// operation counts (fixed pipeline only)
+    pub ops_setup: u64,
+    /// per-tile bounds ops
+    pub ops_bounds: u64,
+    /// sample-test ops
+    pub ops_sample: u64,
+}
+
+impl FrameStats {
+    fn add(&mut self, o: &FrameStats) {
+        let a = [&mut self.triangles, &mut self.culled_outside, &mut self.culled_degenerate, &mut self.tiles_visited,
+            &mut self.tiles_skipped, &mut self.samples_tested, &mut self.samples_covered, &mut self.footprint_samples,
+            &mut self.oracle_tested, &mut self.ops_setup, &mut self.ops_bounds, &mut self.ops_sample];
+        let b = [o.triangles, o.culled_outside, o.culled_degenerate, o.tiles_visited, o.tiles_skipped, o.samples_tested,
+            o.samples_covered, o.footprint_samples, o.oracle_tested, o.ops_setup, o.ops_bounds, o.ops_sample];
+        for (x, y) in a.into_iter().zip(b) {
+            *x += y;
+        }
+        for (x, y) in self.by_class.iter_mut().zip(o.by_class) {
+            *x += y;
+        }
+    }
+    fn add_ops(&mut self, o: &Ops) {
+        self.ops_setup += o.setup;
+        self.ops_bounds += o.bounds;
+        self.ops_sample += o.sample;
+    }
+    /// STE of the pipeline's bounds (covered / tested), in [0, 1].
+    pub fn ste(&self) -> f64 {
+        ratio(self.samples_covered, self.samples_tested)
+    }
+    /// STE of the bounding-box scan.
+    pub fn ste_bbox(&self) -> f64 {
+        ratio(self.samples_covered, self.footprint_samples)
+    }
+    /// STE of the oracle boxes.
+    pub fn ste_oracle(&self) -> f64 {
+        ratio(self.samples_covered, self.oracle_tested)
+    }
+}
+
+fn ratio(a: u64, b: u64) -> f64 {
+    if b == 0 { 0.0 } else { a as f64 / b as f64 }
+}
+
+/// A rendered frame.
+pub struct Frame {
+    /// counters
+    pub stats: FrameStats,
+    /// resolved RGB per pixel, row-major (empty if not requested)
+    pub image: Vec<[u8; 3]>,
+    /// sample tests per pixel, row-major
+    pub heat: Vec<u32>,
+    /// wall time
+    pub time: Duration,
+}
+
+/// Options of a frame run.
+pub struct RunOpts<'a> {
+    /// viewport (W, H)
+    pub vp: (u16, u16),
+    /// samples per pixel
+    pub spp: u16,
+    /// bounds tile size
+    pub tile: u8,
+    /// triangle colors
+    pub colors: &'a [[u8; 3]],
+    /// background
+    pub clear: [u8; 3],
+    /// keep the image
+    pub image: bool,
+    /// label for the progress bar (shown only when the frame takes more than a second)
+    pub label: &'a str,
+    /// exact triangles for the oracle's dense sampling (`None`: no oracle)
+    pub oracle: Option<&'a [SceneTri]>,
+}
+
+/// Dense points per bounds tile for the oracle box (5D Sobol, Owen-scrambled, fixed seed).
+pub const ORACLE_POINTS: u32 = 16;
+
+fn oracle_points() -> Vec<[f64; 5]> {
+    (0..ORACLE_POINTS).map(|i| [0, 1, 2, 3, 4].map(|d| sobol_burley::sample(i, d, 0x0ac1e) as f64)).collect()
+}
+
+const BAND: u16 = 8;
+
+/// Run a pipeline over a frame.
+pub fn run<P: Pipeline>(p: &P, pattern: &Pattern, o: &RunOpts<'_>) -> Frame {
+    let start = Instant::now();
+    let n = o.colors.len();
+    let setups: Vec<(SetupOut<P::Setup>, Ops)> = (0..n)
+        .into_par_iter()
+        .map(|i| {
+            let mut ops = Ops::default();
+            (p.setup(i, &mut ops), ops)
+        })
+        .collect();
+    let mut stats = FrameStats { triangles: n as u64, ..Default::default() };
+    let (w, h) = (o.vp.0 as usize, o.vp.1 as usize);
+    let bands = h.div_ceil(BAND as usize);
+    let mut bins: Vec<Vec<u32>> = vec![Vec::new(); bands];
+    for (i, (s, ops)) in setups.iter().enumerate() {
+        stats.add_ops(ops);
+        match s {
+            SetupOut::Culled(Cull::Outside) => stats.culled_outside += 1,
+            SetupOut::Culled(Cull::Degenerate) => stats.culled_degenerate += 1,
+            SetupOut::Visible(st, class) => {
+                stats.by_class[class.index()] += 1;
+                let fp = p.footprint(st);
+                stats.footprint_samples += (fp.x1 - fp.x0) as u64 * (fp.y1 - fp.y0) as u64 * o.spp as u64;
+                for b in (fp.y0 / BAND) as usize..=((fp.y1 - 1) / BAND) as usize {
+                    bins[b].push(i as u32);
+                }
+            }
+        }
+    }
+    let done = AtomicUsize::new(0);
+    let bar = ProgressBar::with_draw_target(Some(bands as u64), ProgressDrawTarget::hidden());
+    let shown = std::sync::Once::new();
+    let results: Vec<(FrameStats, Vec<[u8; 3]>, Vec<u32>)> = bins
+        .par_iter()
+        .enumerate()
+        .map(|(b, list)| {
+            let r = band(p, pattern, o, &setups, b as u16, list);
+            done.fetch_add(1, Ordering::Relaxed);
+            if start.elapsed() > Duration::from_secs(1) {
+                shown.call_once(|| {
+                    bar.set_draw_target(ProgressDrawTarget::stderr());
+                    bar.set_style(ProgressStyle::with_template("{msg:>14} [{bar:40}] {pos}/{len} bands {elapsed}").unwrap_or_else(|_| ProgressStyle::default_bar()));
+                    bar.set_message(o.label.to_string());
+                });
+            }
+            bar.set_position(done.load(Ordering::Relaxed) as u64);
+            r
+        })
+        .collect();
+    bar.finish_and_clear();
+    let mut image = if o.image { Vec::with_capacity(w * h) } else { Vec::new() };
+    let mut heat = Vec::with_capacity(w * h);
+    for (s, img, ht) in results {
+        stats.add(&s);
+        image.extend(img);
+        heat.extend(ht);
+    }
+    Frame { stats, image, heat, time: start.elapsed() }
+}
+
+fn band<P: Pipeline>(p: &P, pat: &Pattern, o: &RunOpts<'_>, setups: &[(SetupOut<P::Setup>, Ops)], b: u16, list: &[u32]) -> (FrameStats, Vec<[u8; 3]>, Vec<u32>) {
+    let (w, s) = (o.vp.0 as usize, o.spp as usize);
+    let y0 = b * BAND;
+    let y1 = (y0 + BAND).min(o.vp.1);
+    let rows = (y1 - y0) as usize;
+    let mut depth = vec![p.far(); w * rows * s];
+    let mut color = vec![o.clear; if o.image { w * rows * s } else { 0 }];
+    let mut heat = vec![0u32; w * rows];
+    let mut st = FrameStats::default();
+    let mut ops = Ops::default();
+    let screen = PixelRect { x0: 0, y0, x1: o.vp.0, y1 };
+    let bt = o.tile as u16;
+    let mut cell_samples: Vec<(usize, bool)> = Vec::new();
+    let dense = if o.oracle.is_some() { oracle_points() } else { Vec::new() };
+    for &i in list {
+        let SetupOut::Visible(setup, _) = &setups[i as usize].0 else { continue };
+        let region = p.footprint(setup).intersect(&screen);
+        if region.is_empty() {
+            continue;
+        }
+        let col = o.colors[i as usize];
+        let mut by = region.y0 - region.y0 % bt;
+        while by < region.y1 {
+            let mut bx = region.x0 - region.x0 % bt;
+            while bx < region.x1 {
+                let cell = PixelRect { x0: bx, y0: by, x1: bx + bt, y1: by + bt }.intersect(&region);
+                bx += bt;
+                if cell.is_empty() {
+                    continue;
+                }
+                st.tiles_visited += 1;
+                let Some(bounds) = p.bounds(setup, cell, &mut ops) else {
+                    st.tiles_skipped += 1;
+                    continue;
+                };
+                cell_samples.clear();
+                let mut lo = [f64::MAX; 3];
+                let mut hi = [f64::MIN; 3];
+                for py in cell.y0..cell.y1 {
+                    for px in cell.x0..cell.x1 {
+                        let pix = (py - y0) as usize * w + px as usize;
+                        for si in 0..s {
+                            let idx = pat.index(px, py, si);
+                            if !p.inside(&bounds, idx) {
+                                continue;
+                            }
+                            st.samples_tested += 1;
+                            heat[pix] += 1;
+                            let hit = p.test(setup, px, py, idx, &mut ops);
+                            cell_samples.push((idx, hit.is_some()));
+                            if let Some(d) = hit {
+                                st.samples_covered += 1;
+                                let uvt = p.uvt(idx);
+                                for k in 0..3 {
+                                    lo[k] = lo[k].min(uvt[k]);
+                                    hi[k] = hi[k].max(uvt[k]);
+                                }
+                                let slot = pix * s + si;
+                                if d < depth[slot] {
+                                    depth[slot] = d;
+                                    if o.image {
+                                        color[slot] = col;
+                                    }
+                                }
+                            }
+                        }
+                    }
+                }
+                // Oracle: the box also grows around densely sampled covered points of the tile
+                // (exact geometry, f64 ray test), so it approaches the covered region's true box.
+                if let (Some(tris), true) = (o.oracle, lo[0] <= hi[0]) {
+                    let r = p.ranges(&bounds);
+                    let tri = &tris[i as usize];
+                    for d in &dense {
+                        let x = cell.x0 as f64 + d[0] * (cell.x1 - cell.x0) as f64;
+                        let y = cell.y0 as f64 + d[1] * (cell.y1 - cell.y0) as f64;
+                        let uvt = [0, 1, 2].map(|k| r[k].0 + d[k + 2] * (r[k].1 - r[k].0));
+                        if reference::sample::sample_test(tri, o.vp, x, y, uvt[0], uvt[1], uvt[2]).is_some() {
+                            for k in 0..3 {
+                                lo[k] = lo[k].min(uvt[k]);
+                                hi[k] = hi[k].max(uvt[k]);
+                            }
+                        }
+                    }
+                }
+                st.oracle_tested += cell_samples
+                    .iter()
+                    .filter(|(idx, _)| {
+                        let uvt = p.uvt(*idx);
+                        (0..3).all(|k| lo[k] <= uvt[k] && uvt[k] <= hi[k])
+                    })
+                    .count() as u64;
+            }
+            by += bt;
+        }
+    }
+    st.add_ops(&ops);
+    let image = if o.image {
+        (0..w * rows)
+            .map(|pix| {
+                let mut sum = [0u32; 3];
+                for c in &color[pix * s..pix * s + s] {
+                    for k in 0..3 {
+                        sum[k] += c[k] as u32;
+                    }
+                }
+                sum.map(|v| ((v + s as u32 / 2) / s as u32).min(255) as u8)
+            })
+            .collect()
+    } else {
+        Vec::new()
+    };
+    (st, image, heat)
+}

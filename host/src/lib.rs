@@ -1,0 +1,17 @@
+//! # uvt-host
+//!
+//! What users run on a workstation: scenes, sample patterns, an independent f64 reference of
+//! every stage, a frame driver that runs the fixed-point core and the reference side by side,
+//! images, reports and the STE benchmark table. The binary is `uvt` (`src/main.rs`).
+#![forbid(unsafe_code)]
+#![deny(missing_docs)]
+
+pub mod bench;
+pub mod compare;
+pub mod frame;
+pub mod mesh;
+pub mod pattern;
+pub mod reference;
+pub mod render;
+pub mod scene;
+pub mod scenes;

@@ -1,0 +1,90 @@
+//! Sample tables: an N×N pixel block × S samples, repeated over the screen, each sample with
+//! sub-pixel (x, y) ∈ [0,1), lens (u, v) ∈ [-1,1] and time t ∈ [0,1). Kept twice: the exact f64
+//! values (used by the f64 reference) and their quantization to the core's formats (sub-pixel
+//! floored to 1/256, t/u/v rounded to nearest 2^-16 and clamped).
+
+use rand::{Rng, SeedableRng};
+use uvt_core::{Lens, Sample, SamplePattern, SubPixel, Time};
+
+use crate::scene::PatternKind;
+
+/// Block side of every table uvt generates.
+pub const BLOCK: u16 = 8;
+
+/// A generated table.
+#[derive(Clone, Debug)]
+pub struct Pattern {
+    /// block side N
+    pub block: u16,
+    /// samples per pixel S
+    pub spp: u16,
+    /// exact values `[sx, sy, u, v, t]`
+    pub exact: Vec<[f64; 5]>,
+    /// quantized for the core
+    pub quant: Vec<Sample>,
+}
+
+/// Quantize one exact sample to the core's formats.
+pub fn quantize(s: &[f64; 5]) -> Sample {
+    let sub = |x: f64| SubPixel::from_bits((x * 256.0).floor().clamp(0.0, 255.0) as u8);
+    let tuv = |x: f64, lo: f64| (x * 65536.0).round().clamp(lo * 65536.0, 65536.0) as i32;
+    Sample { sx: sub(s[0]), sy: sub(s[1]), u: Lens::from_bits(tuv(s[2], -1.0)), v: Lens::from_bits(tuv(s[3], -1.0)), t: Time::from_bits(tuv(s[4], 0.0)) }
+}
+
+impl Pattern {
+    /// Generate a table.
+    pub fn new(kind: PatternKind, spp: u16, seed: u64) -> Pattern {
+        let n = BLOCK as usize * BLOCK as usize;
+        let s = spp as usize;
+        let mut exact = Vec::with_capacity(n * s);
+        let mut rng = rand_pcg::Pcg64::seed_from_u64(seed);
+        for pixel in 0..n {
+            match kind {
+                PatternKind::Sobol => {
+                    // One Owen scramble per pixel (seed mixes the table seed and pixel index).
+                    let ps = (seed as u32).wrapping_mul(0x9e37_79b9) ^ (pixel as u32).wrapping_mul(0x85eb_ca6b);
+                    for i in 0..s {
+                        let d = |dim: u32| sobol_burley::sample(i as u32, dim, ps) as f64;
+                        exact.push([d(0), d(1), 2.0 * d(2) - 1.0, 2.0 * d(3) - 1.0, d(4)]);
+                    }
+                }
+                PatternKind::Random => {
+                    for _ in 0..s {
+                        let mut r = || rng.gen::<f64>();
+                        exact.push([r(), r(), 2.0 * r() - 1.0, 2.0 * r() - 1.0, r()]);
+                    }
+                }
+                PatternKind::Stratified => {
+                    // Latin hypercube: each dimension has one sample per stratum of width 1/S.
+                    let mut dims = [[0.0; 64]; 5];
+                    for d in dims.iter_mut() {
+                        let mut perm: Vec<usize> = (0..s).collect();
+                        for i in (1..s).rev() {
+                            perm.swap(i, rng.gen_range(0..=i));
+                        }
+                        for (i, p) in perm.iter().enumerate() {
+                            d[i] = (*p as f64 + rng.gen::<f64>()) / s as f64;
+                        }
+                    }
+                    for i in 0..s {
+                        exact.push([dims[0][i], dims[1][i], 2.0 * dims[2][i] - 1.0, 2.0 * dims[3][i] - 1.0, dims[4][i]]);
+                    }
+                }
+            }
+        }
+        let quant = exact.iter().map(quantize).collect();
+        Pattern { block: BLOCK, spp, exact, quant }
+    }
+
+    /// The core's view of the table.
+    pub fn core(&self) -> SamplePattern<'_> {
+        SamplePattern::new(self.block, self.spp, &self.quant).expect("generated table is in the domain")
+    }
+
+    /// Index of sample `s` of pixel (x, y) in both tables.
+    #[inline]
+    pub fn index(&self, x: u16, y: u16, s: usize) -> usize {
+        let n = self.block as usize;
+        ((y as usize % n) * n + (x as usize % n)) * self.spp as usize + s
+    }
+}
