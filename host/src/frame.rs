@@ -290,8 +290,8 @@ pub fn run<P: Pipeline>(p: &P, pattern: &Pattern, o: &RunOpts<'_>) -> Frame {
                 stats.by_class[class.index()] += 1;
                 let fp = p.footprint(st);
                 stats.footprint_samples += (fp.x1 - fp.x0) as u64 * (fp.y1 - fp.y0) as u64 * o.spp as u64;
-                for b in (fp.y0 / BAND) as usize..=((fp.y1 - 1) / BAND) as usize {
-                    bins[b].push(i as u32);
+                for bin in &mut bins[(fp.y0 / BAND) as usize..=((fp.y1 - 1) / BAND) as usize] {
+                    bin.push(i as u32);
                 }
             }
         }

@@ -275,7 +275,7 @@ pub fn build(cam: &Value, meshes: &Value, viewport: (u16, u16), base: &std::path
         } else if let Some(g) = m.get("grid") {
             let s = num_array(g.get("size").unwrap_or(&Value::Null), 2, &format!("{f}.grid.size"))?;
             let c = num_array(g.get("cells").unwrap_or(&Value::Null), 2, &format!("{f}.grid.cells"))?;
-            if c.iter().any(|&x| x < 1.0 || x > 2048.0 || x.fract() != 0.0) {
+            if c.iter().any(|&x| !(1.0..=2048.0).contains(&x) || x.fract() != 0.0) {
                 bail!("{f}.grid.cells: whole numbers in 1..=2048");
             }
             grid((s[0], s[1]), (c[0] as u32, c[1] as u32))

@@ -66,8 +66,9 @@ impl Pattern {
                             d[i] = (*p as f64 + rng.gen::<f64>()) / s as f64;
                         }
                     }
-                    for i in 0..s {
-                        exact.push([dims[0][i], dims[1][i], 2.0 * dims[2][i] - 1.0, 2.0 * dims[3][i] - 1.0, dims[4][i]]);
+                    let [d0, d1, d2, d3, d4] = &dims;
+                    for ((((a, b), c), d), e) in d0.iter().zip(d1).zip(d2).zip(d3).zip(d4).take(s) {
+                        exact.push([*a, *b, 2.0 * c - 1.0, 2.0 * d - 1.0, *e]);
                     }
                 }
             }

@@ -92,7 +92,7 @@ fn params() -> impl Strategy<Value = [f64; NP]> {
 }
 
 fn config() -> ProptestConfig {
-    ProptestConfig { cases: cases(48, 2000), failure_persistence: None, ..ProptestConfig::default() }
+    ProptestConfig { cases: cases(200, 5000), failure_persistence: None, ..ProptestConfig::default() }
 }
 
 macro_rules! kind_test {

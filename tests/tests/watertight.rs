@@ -66,7 +66,7 @@ fn exact_ties_on_pixel_grid() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: cases(16, 400), failure_persistence: None, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: cases(48, 1000), failure_persistence: None, ..ProptestConfig::default() })]
     #[test]
     fn watertight_static(seed in any::<u64>(), grid in any::<bool>()) {
         if let Err(m) = check_mesh(seed, false, None, grid) { prop_assert!(false, "{}", m); }
