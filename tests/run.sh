@@ -10,6 +10,16 @@ export CARGO_TERM_COLOR=never
 echo "== installing test prerequisites"
 rustup target add thumbv7em-none-eabihf >/dev/null
 rustup component add clippy >/dev/null 2>&1 || true
+# Debian packages: qemu-system-arm (the Cortex-M4F run).
+missing=()
+for pkg in qemu-system-arm; do
+  dpkg -s "$pkg" >/dev/null 2>&1 || missing+=("$pkg")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  sudo=""; [ "$(id -u)" -ne 0 ] && sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
 
 echo "== core for Cortex-M4F (thumbv7em-none-eabihf)"
 cargo build --locked -p uvt-core --target thumbv7em-none-eabihf --release

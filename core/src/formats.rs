@@ -66,6 +66,11 @@ pub fn floor_div(n: i128, d: i128) -> Option<i128> {
     if d <= 0 {
         return None;
     }
+    // Same exact quotient through a 64-bit divide when both operands fit (much cheaper on a
+    // 32-bit core than the 128-bit library divide); d > 0 so `div_euclid` is the floor.
+    if let (Ok(n64), Ok(d64)) = (i64::try_from(n), i64::try_from(d)) {
+        return Some(n64.div_euclid(d64) as i128);
+    }
     Some(n.div_euclid(d))
 }
 

@@ -18,6 +18,7 @@
 #![deny(missing_docs)]
 
 pub mod bounds;
+pub mod demo;
 pub mod error;
 pub mod formats;
 pub mod input;

@@ -151,8 +151,9 @@ pub fn crosses_camera_plane(pts: &[(i64, i64)], dir: i64, ops: &mut Ops) -> bool
     for (i, &(ai, wi)) in pts.iter().enumerate() {
         for &(aj, wj) in pts.iter().skip(i + 1) {
             ops.setup += 6;
-            let cr = ai as i128 * wj as i128 - wi as i128 * aj as i128;
-            let dot = ai as i128 * aj as i128 + wi as i128 * wj as i128;
+            // |a| ≤ 2^30, |w| ≤ 2^29: each product < 2^60, sums < 2^61, exact in i64.
+            let cr = ai * wj - wi * aj;
+            let dot = ai * aj + wi * wj;
             if cr == 0 && dot < 0 {
                 return true;
             }

@@ -1,0 +1,140 @@
+//! The built-in demo scene (`uvt_core::demo`) rendered through the tile framebuffer, printing the
+//! image checksum, the core's counters and per-stage cost.
+//!
+//! On `thumbv7em-none-eabihf` it is a bare-metal Cortex-M4F program for QEMU's `mps2-an386`
+//! (cortex-m-rt, output over semihosting). Run under `-icount shift=0` QEMU advances virtual time
+//! 1 ns per executed instruction and SysTick counts the 25 MHz system clock, so one SysTick tick
+//! is 40 instructions: the cost lines report instructions per stage call. It also paints the
+//! stack and reports its peak use. On the host the same program prints the same checksum and
+//! counters, and the cost in nanoseconds.
+#![cfg_attr(target_os = "none", no_std)]
+#![cfg_attr(target_os = "none", no_main)]
+
+/// Print the checksum and counters lines (identical format on target and host).
+macro_rules! report {
+    ($out:ident, $r:expr) => {{
+        let r = $r;
+        let s = r.stats;
+        $out!("checksum {:#010x}", r.checksum);
+        $out!(
+            "stats triangles={} culled_outside={} culled_degenerate={} static={} motion={} defocus={} motion_defocus={} tiles_visited={} tiles_skipped={} samples_tested={} samples_covered={} ops_setup={} ops_bounds={} ops_sample={}",
+            s.triangles, s.culled_outside, s.culled_degenerate, s.by_class[0], s.by_class[1], s.by_class[2], s.by_class[3],
+            s.tiles_visited, s.tiles_skipped, s.samples_tested, s.samples_covered, s.ops.setup, s.ops.bounds, s.ops.sample
+        );
+    }};
+}
+
+#[cfg(target_os = "none")]
+mod target {
+    use cortex_m::peripheral::syst::SystClkSource;
+    use cortex_m_rt::entry;
+    use cortex_m_semihosting::{debug, hprintln};
+    use uvt_core::demo;
+
+    const PAINT: u32 = 0x5AA5_C33C;
+    /// Instructions per SysTick tick under `-icount shift=0` on mps2-an386 (25 MHz SYSCLK).
+    const INSN_PER_TICK: u64 = 40;
+
+    extern "C" {
+        static mut __sheap: u32;
+        static _stack_start: u32;
+    }
+
+    fn sp() -> usize {
+        cortex_m::register::msp::read() as usize
+    }
+
+    /// Fill the free stack below the current frame with a pattern.
+    fn paint() {
+        let lo = core::ptr::addr_of!(__sheap) as usize;
+        let hi = sp() - 256;
+        let mut p = lo;
+        while p < hi {
+            // SAFETY: [__sheap, sp − 256) is unused RAM between .bss and the live stack.
+            unsafe { core::ptr::write_volatile(p as *mut u32, PAINT) };
+            p += 4;
+        }
+    }
+
+    /// Deepest stack use since `paint`, in bytes.
+    fn peak() -> usize {
+        let lo = core::ptr::addr_of!(__sheap) as usize;
+        let top = core::ptr::addr_of!(_stack_start) as usize;
+        let mut p = lo;
+        // SAFETY: reading the painted region back.
+        while p < top && unsafe { core::ptr::read_volatile(p as *const u32) } == PAINT {
+            p += 4;
+        }
+        top - p
+    }
+
+    fn ticks(syst: &mut cortex_m::peripheral::SYST, f: impl FnOnce() -> u64) -> (u64, u64) {
+        syst.clear_current();
+        let start = cortex_m::peripheral::SYST::get_current();
+        let calls = f();
+        let end = cortex_m::peripheral::SYST::get_current();
+        let t = (start.wrapping_sub(end) & 0x00ff_ffff) as u64;
+        (calls, t * INSN_PER_TICK)
+    }
+
+    #[entry]
+    fn main() -> ! {
+        let mut cp = cortex_m::Peripherals::take().expect("peripherals");
+        cp.SYST.set_clock_source(SystClkSource::Core);
+        cp.SYST.set_reload(0x00ff_ffff);
+        cp.SYST.enable_counter();
+        paint();
+        // Calibration: cortex-m 0.7's delay(n) runs n+1 iterations of a 2-instruction loop, so
+        // 8,000,002 instructions are expected; this checks the 40-instructions-per-tick factor.
+        let (_, cal) = ticks(&mut cp.SYST, || {
+            cortex_m::asm::delay(4_000_000);
+            0
+        });
+        match demo::render() {
+            Ok(r) => {
+                report!(hprintln, r);
+            }
+            Err(e) => {
+                hprintln!("error {}", e);
+                debug::exit(debug::EXIT_FAILURE);
+            }
+        }
+        hprintln!("stack_peak_bytes {}", peak());
+        hprintln!("calibration delay(4000000) insn={}", cal);
+        let (c, i) = ticks(&mut cp.SYST, || demo::cost::setup_all(20).unwrap_or(0));
+        hprintln!("cost setup calls={} insn={}", c, i);
+        let (c, i) = ticks(&mut cp.SYST, || demo::cost::bounds_all(5).unwrap_or(0));
+        hprintln!("cost bounds calls={} insn={}", c, i);
+        let (c, i) = ticks(&mut cp.SYST, || demo::cost::samples_all(2).unwrap_or(0));
+        hprintln!("cost sample calls={} insn={}", c, i);
+        debug::exit(debug::EXIT_SUCCESS);
+        loop {}
+    }
+
+    #[panic_handler]
+    fn panic(_: &core::panic::PanicInfo) -> ! {
+        hprintln!("panic");
+        debug::exit(debug::EXIT_FAILURE);
+        loop {}
+    }
+}
+
+#[cfg(not(target_os = "none"))]
+fn main() {
+    use uvt_core::demo;
+    match demo::render() {
+        Ok(r) => report!(println, r),
+        Err(e) => {
+            eprintln!("error {e}");
+            std::process::exit(1);
+        }
+    }
+    let time = |name: &str, f: &dyn Fn() -> u64| {
+        let t = std::time::Instant::now();
+        let calls = f();
+        println!("cost {name} calls={calls} ns={}", t.elapsed().as_nanos());
+    };
+    time("setup", &|| demo::cost::setup_all(2000).unwrap_or(0));
+    time("bounds", &|| demo::cost::bounds_all(500).unwrap_or(0));
+    time("sample", &|| demo::cost::samples_all(200).unwrap_or(0));
+}

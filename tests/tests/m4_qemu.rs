@@ -1,0 +1,56 @@
+//! The core on an emulated Cortex-M4F: `core/examples/m4_render.rs` is built for
+//! `thumbv7em-none-eabihf`, run under `qemu-system-arm -machine mps2-an386` with a time limit, and
+//! its checksum and counters must equal the host's for the same scene through the same core.
+
+use std::path::PathBuf;
+use std::process::Command;
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..")
+}
+
+/// The lines the program prints for checksum and counters, computed on the host.
+fn host_lines() -> (String, String) {
+    let r = uvt_core::demo::render().expect("demo renders on the host");
+    let s = r.stats;
+    (
+        format!("checksum {:#010x}", r.checksum),
+        format!(
+            "stats triangles={} culled_outside={} culled_degenerate={} static={} motion={} defocus={} motion_defocus={} tiles_visited={} tiles_skipped={} samples_tested={} samples_covered={} ops_setup={} ops_bounds={} ops_sample={}",
+            s.triangles, s.culled_outside, s.culled_degenerate, s.by_class[0], s.by_class[1], s.by_class[2], s.by_class[3],
+            s.tiles_visited, s.tiles_skipped, s.samples_tested, s.samples_covered, s.ops.setup, s.ops.bounds, s.ops.sample
+        ),
+    )
+}
+
+#[test]
+fn cortex_m4f_under_qemu_is_bit_exact_with_host() {
+    // Build in a separate target directory so the outer `cargo test` lock is not contended.
+    let tdir = root().join("target").join("m4-test");
+    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
+    let st = Command::new(cargo)
+        .current_dir(root())
+        .args(["build", "--release", "-p", "uvt-core", "--example", "m4_render", "--target", "thumbv7em-none-eabihf"])
+        .env("CARGO_TARGET_DIR", &tdir)
+        .status()
+        .expect("run cargo");
+    assert!(st.success(), "building the Cortex-M4F program failed (is the thumbv7em-none-eabihf target installed? tests/run.sh installs it)");
+    let elf = tdir.join("thumbv7em-none-eabihf/release/examples/m4_render");
+    let out = Command::new("timeout")
+        .args(["120", "qemu-system-arm", "-machine", "mps2-an386", "-cpu", "cortex-m4", "-nographic", "-monitor", "none",
+               "-semihosting-config", "enable=on,target=native", "-icount", "shift=0", "-kernel"])
+        .arg(&elf)
+        .output()
+        .expect("qemu-system-arm not runnable: tests/run.sh installs the Debian package qemu-system-arm");
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(out.status.success(), "qemu exited {:?} (124 = time limit)\nstdout:\n{text}\nstderr:\n{}", out.status, String::from_utf8_lossy(&out.stderr));
+    let line = |p: &str| text.lines().find(|l| l.starts_with(p)).unwrap_or_else(|| panic!("no '{p}' line in:\n{text}")).to_string();
+    let (checksum, stats) = host_lines();
+    assert_eq!(line("checksum "), checksum, "image checksum differs between Cortex-M4F and host");
+    assert_eq!(line("stats "), stats, "counters differ between Cortex-M4F and host");
+    // The cost measurement's calibration: 8,000,002 instructions, SysTick resolution 40.
+    let cal: u64 = line("calibration ").rsplit('=').next().unwrap().parse().unwrap();
+    assert!(cal.abs_diff(8_000_002) <= 80, "instruction calibration off: {cal}");
+    let stack: u64 = line("stack_peak_bytes ").rsplit(' ').next().unwrap().parse().unwrap();
+    assert!(stack > 1024 && stack < 1 << 20, "implausible stack peak {stack}");
+}
