@@ -24,8 +24,9 @@ fi
 echo "== core for Cortex-M4F (thumbv7em-none-eabihf)"
 cargo build --locked -p uvt-core --target thumbv7em-none-eabihf --release
 
-echo "== clippy (warnings are errors)"
+echo "== clippy (warnings are errors), host and the bare-metal program"
 cargo clippy --locked --workspace --all-targets -- -D warnings
+cargo clippy --locked -p uvt-core --example m4_render --target thumbv7em-none-eabihf -- -D warnings
 
 echo "== tests"
 cargo test --locked --workspace

@@ -108,14 +108,18 @@ mod target {
         let (c, i) = ticks(&mut cp.SYST, || demo::cost::samples_all(2).unwrap_or(0));
         hprintln!("cost sample calls={} insn={}", c, i);
         debug::exit(debug::EXIT_SUCCESS);
-        loop {}
+        loop {
+            cortex_m::asm::wfi();
+        }
     }
 
     #[panic_handler]
     fn panic(_: &core::panic::PanicInfo) -> ! {
         hprintln!("panic");
         debug::exit(debug::EXIT_FAILURE);
-        loop {}
+        loop {
+            cortex_m::asm::wfi();
+        }
     }
 }
 

@@ -78,8 +78,11 @@ const fn v(a: [i32; 5]) -> Vertex {
     }
 }
 
-/// Raw geometry `[t0 vertices, t1 vertices]` in 1/256 units, and colors.
-const GEOMETRY: [([[i32; 5]; 3], [[i32; 5]; 3], [u8; 3]); NTRIS] = [
+/// Three vertices `[x, y, z, w, coc]` in 1/256 clip units.
+type RawEnd = [[i32; 5]; 3];
+
+/// Raw geometry `(t0 vertices, t1 vertices, color)`.
+const GEOMETRY: [(RawEnd, RawEnd, [u8; 3]); NTRIS] = [
     // a floor-like static in-focus triangle
     ([[-400, -300, 200, 400, 0], [400, -300, 200, 400, 0], [0, 100, 200, 400, 0]], [[-400, -300, 200, 400, 0], [400, -300, 200, 400, 0], [0, 100, 200, 400, 0]], [90, 110, 80]),
     // moving right, in focus
