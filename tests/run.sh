@@ -10,9 +10,9 @@ export CARGO_TERM_COLOR=never
 echo "== installing test prerequisites"
 rustup target add thumbv7em-none-eabihf >/dev/null
 rustup component add clippy >/dev/null 2>&1 || true
-# Debian packages: qemu-system-arm (the Cortex-M4F run).
+# Debian packages: qemu-system-arm (the Cortex-M4F run), iverilog (the RTL testbench).
 missing=()
-for pkg in qemu-system-arm; do
+for pkg in qemu-system-arm iverilog; do
   dpkg -s "$pkg" >/dev/null 2>&1 || missing+=("$pkg")
 done
 if [ ${#missing[@]} -gt 0 ]; then

@@ -182,20 +182,33 @@ fn depth(e: &[Wide; 3], wz: &[(i64, i64); 3], det_sign: i32) -> i32 {
     q.clamp(i32::MIN as i128, i32::MAX as i128) as i32
 }
 
-/// The sample test for one sample of a visible triangle. Counts its arithmetic in `ops.sample`.
-pub fn sample_test(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> Option<Hit> {
+/// Everything the sample test computed for one sample: the exact edge values, the determinant and
+/// the decision. Golden vectors export it so RTL can be checked stage-internally.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SampleEval {
+    /// edge values E_0, E_1, E_2 (exact)
+    pub e: [Wide; 3],
+    /// det = P_0 · (P_1 × P_2) (exact; for static triangles only its sign is kept: ±1 or 0)
+    pub det: Wide,
+    /// coverage and depth
+    pub hit: Option<Hit>,
+}
+
+/// The sample test with its intermediates. Counts its arithmetic in `ops.sample`.
+pub fn sample_eval(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> SampleEval {
     let d = direction(setup.viewport, pos);
     ops.sample += 5;
     if let (Class::Static, Some(st)) = (setup.class, setup.edges.as_ref()) {
         // Plain 2D test: normals precomputed in setup, |n·d| < 2^92.
         let e = st.n.map(|n| Wide::from_i128(n[0] * d[0] as i128 + n[1] * d[1] as i128 + n[2] * d[2] as i128));
         ops.sample += 18;
+        let det = Wide::from_i128(st.det_sign as i128);
         if !decide(&e, &st.n, st.det_sign) {
-            return None;
+            return SampleEval { e, det, hit: None };
         }
         let wz = setup.tri.v[0].map(|q| (q[W] as i64, q[Z] as i64));
         ops.sample += 12;
-        return Some(Hit { depth: depth(&e, &wz, st.det_sign) });
+        return SampleEval { e, det, hit: Some(Hit { depth: depth(&e, &wz, st.det_sign) }) };
     }
     let (p, _frac) = positions(setup, s, ops);
     let n = [cross(&p[1], &p[2]), cross(&p[2], &p[0]), cross(&p[0], &p[1])];
@@ -207,9 +220,14 @@ pub fn sample_test(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> 
     ops.sample += 18 + 15 + 5 + 6;
     let det_sign = det.signum();
     if !decide(&e, &n, det_sign) {
-        return None;
+        return SampleEval { e, det, hit: None };
     }
     let wz = p.map(|q| (q[2], q[3]));
     ops.sample += 12;
-    Some(Hit { depth: depth(&e, &wz, det_sign) })
+    SampleEval { e, det, hit: Some(Hit { depth: depth(&e, &wz, det_sign) }) }
+}
+
+/// The sample test for one sample of a visible triangle: the depth on a hit.
+pub fn sample_test(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> Option<Hit> {
+    sample_eval(setup, pos, s, ops).hit
 }

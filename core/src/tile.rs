@@ -91,22 +91,30 @@ impl<const TW: usize, const TH: usize, const S: usize> TileBuffer<TW, TH, S> {
         self.stats.get(y).and_then(|r| r.get(x)).copied().unwrap_or_default()
     }
 
-    /// Resolved color: per channel `(Σ + S/2) / S` (round half up).
+    /// Resolved color: per channel `(Σ + S/2) / S` (round half up), see [`resolve_colors`].
     pub fn resolve(&self, x: usize, y: usize) -> Rgb888 {
-        let px = match self.color.get(y).and_then(|r| r.get(x)) {
-            Some(p) if S > 0 => p,
-            _ => return Rgb888::BLACK,
-        };
-        let mut sum = [0u32; 3];
-        for c in px.iter() {
-            sum[0] += c.r() as u32;
-            sum[1] += c.g() as u32;
-            sum[2] += c.b() as u32;
+        match self.color.get(y).and_then(|r| r.get(x)) {
+            Some(p) => resolve_colors(p),
+            None => Rgb888::BLACK,
         }
-        let n = S as u32;
-        let avg = sum.map(|v| ((v + n / 2) / n).min(255) as u8);
-        Rgb888::new(avg[0], avg[1], avg[2])
     }
+}
+
+/// Resolve one pixel's sample colors: per channel `(Σ + S/2) / S` with S = `colors.len()`
+/// (round half up; S ≤ 64 keeps Σ + S/2 < 2^15). Black for S = 0.
+pub fn resolve_colors(colors: &[Rgb888]) -> Rgb888 {
+    let n = colors.len() as u32;
+    if n == 0 {
+        return Rgb888::BLACK;
+    }
+    let mut sum = [0u32; 3];
+    for c in colors {
+        sum[0] += c.r() as u32;
+        sum[1] += c.g() as u32;
+        sum[2] += c.b() as u32;
+    }
+    let avg = sum.map(|v| ((v + n / 2) / n).min(255) as u8);
+    Rgb888::new(avg[0], avg[1], avg[2])
 }
 
 /// Renders a triangle list with bounds strategy `B`, holding at most `N` visible setups.

@@ -15,3 +15,4 @@ pub mod reference;
 pub mod render;
 pub mod scene;
 pub mod scenes;
+pub mod vectors;

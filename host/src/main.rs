@@ -41,6 +41,32 @@ enum Cmd {
         #[arg(long)]
         row: Option<String>,
     },
+    /// Golden test vectors for RTL.
+    #[command(subcommand)]
+    Vectors(VecCmd),
+}
+
+#[derive(Subcommand)]
+enum VecCmd {
+    /// Write vectors: without --scene the committed set (unit/, frame_a/, frame_b/) into DIR.
+    Export {
+        /// frame-level vectors of this scene file only
+        #[arg(long)]
+        scene: Option<PathBuf>,
+        /// output directory
+        #[arg(long)]
+        out: PathBuf,
+        /// seed of the unit-level random inputs
+        #[arg(long, default_value_t = uvt_host::vectors::DEFAULT_SEED)]
+        seed: u64,
+    },
+    /// Re-run the core on the vectors in DIR and compare bit for bit.
+    Check {
+        /// a vector set, or a folder of sets
+        dir: PathBuf,
+    },
+    /// Print the bit-layout tables of every file (Markdown).
+    Layout,
 }
 
 fn main() -> ExitCode {
@@ -85,6 +111,28 @@ fn run(cli: Cli) -> Result<()> {
             print!("{}", bench::table_md(&rows));
             if let Some(p) = json {
                 std::fs::write(&p, serde_json::to_string_pretty(&rows)? + "\n")?;
+            }
+        }
+        Cmd::Vectors(VecCmd::Export { scene, out, seed }) => {
+            match scene {
+                Some(p) => uvt_host::vectors::export_scene(&p, &out)?,
+                None => uvt_host::vectors::export_default(&out, seed)?,
+            }
+            println!("wrote vectors to {}", out.display());
+        }
+        Cmd::Vectors(VecCmd::Check { dir }) => {
+            let c = uvt_host::vectors::check::check(&dir)?;
+            for s in &c.sets {
+                println!("ok {}", s.display());
+            }
+            println!("{} records match the core bit for bit", c.records);
+        }
+        Cmd::Vectors(VecCmd::Layout) => {
+            for st in uvt_host::vectors::format::STAGES {
+                for io in ["in", "out"] {
+                    let spp = if st == "resolve" { 4 } else { 0 };
+                    println!("{}", uvt_host::vectors::format::layout_md(&format!("{st}_{io}"), spp));
+                }
             }
         }
     }

@@ -161,3 +161,23 @@ fn bad_missing_file() {
     assert!(!o.status.success());
     assert!(String::from_utf8_lossy(&o.stderr).contains("cannot read scene file"));
 }
+
+#[test]
+fn vectors_export_and_check_cli() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = write(dir.path(), "small.json", SMALL);
+    let out = dir.path().join("v");
+    let o = uvt(&["vectors", "export", "--scene", &scene, "--out", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = uvt(&["vectors", "check", out.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("match the core bit for bit"));
+    // Truncate a file: non-zero exit naming it.
+    let f = out.join("sample_in.hex");
+    let t = std::fs::read_to_string(&f).unwrap();
+    std::fs::write(&f, &t[..t.len() - 10]).unwrap();
+    let o = uvt(&["vectors", "check", out.to_str().unwrap()]);
+    assert!(!o.status.success());
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(e.contains("sample_in.hex") && e.contains("corrupted or truncated"), "{e}");
+}

@@ -1,0 +1,175 @@
+//! Golden vectors: the committed set matches the core bit for bit; a fresh export with the
+//! documented arguments reproduces it byte for byte (so any change in the core's bits fails here
+//! until the vectors are regenerated on purpose); damage is caught with a clear message; frame
+//! vectors agree with the renderer; and an RTL unit consumes them under Icarus Verilog.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use uvt_host::vectors::{self, check::check, format::sha256};
+
+fn committed() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../vectors")
+}
+
+const SETS: [&str; 3] = ["unit", "frame_a", "frame_b"];
+
+fn copy_set(from: &Path, to: &Path) {
+    std::fs::create_dir_all(to).unwrap();
+    for e in std::fs::read_dir(from).unwrap() {
+        let p = e.unwrap().path();
+        std::fs::copy(&p, to.join(p.file_name().unwrap())).unwrap();
+    }
+}
+
+#[test]
+fn committed_vectors_match_the_core() {
+    let c = check(&committed()).unwrap_or_else(|e| panic!("{e:#}"));
+    assert_eq!(c.sets.len(), 3);
+    assert!(c.records > 20_000, "{c:?}");
+}
+
+#[test]
+fn regenerated_vectors_are_byte_identical() {
+    let dir = tempfile::tempdir().unwrap();
+    vectors::export_default(dir.path(), vectors::DEFAULT_SEED).unwrap();
+    for set in SETS {
+        for e in std::fs::read_dir(dir.path().join(set)).unwrap() {
+            let p = e.unwrap().path();
+            let name = p.file_name().unwrap().to_string_lossy().into_owned();
+            let fresh = std::fs::read(&p).unwrap();
+            let old = std::fs::read(committed().join(set).join(&name)).unwrap_or_default();
+            assert!(
+                fresh == old,
+                "vectors/{set}/{name} differs from a fresh export: the core's bits (or the format) changed. \
+                 If that is intended, regenerate with `cargo run --release -p uvt-host -- vectors export --out vectors` and commit."
+            );
+        }
+    }
+    // Deterministic: a second export is identical too.
+    let again = tempfile::tempdir().unwrap();
+    vectors::export_default(again.path(), vectors::DEFAULT_SEED).unwrap();
+    let a = std::fs::read(dir.path().join("unit/sample_out.hex")).unwrap();
+    let b = std::fs::read(again.path().join("unit/sample_out.hex")).unwrap();
+    assert_eq!(sha256(&a), sha256(&b));
+}
+
+#[test]
+fn truncated_or_corrupted_file_is_caught_by_its_checksum() {
+    let dir = tempfile::tempdir().unwrap();
+    let set = dir.path().join("unit");
+    copy_set(&committed().join("unit"), &set);
+    let f = set.join("bounds_out.hex");
+    let text = std::fs::read_to_string(&f).unwrap();
+    std::fs::write(&f, &text[..text.len() / 2]).unwrap();
+    let e = format!("{:#}", check(&set).unwrap_err());
+    assert!(e.contains("bounds_out.hex") && e.contains("corrupted or truncated"), "{e}");
+}
+
+#[test]
+fn a_changed_bit_is_reported_with_file_line_and_field() {
+    let dir = tempfile::tempdir().unwrap();
+    let set = dir.path().join("frame_b");
+    copy_set(&committed().join("frame_b"), &set);
+    // Change the depth (word 1) of the first covered sample, and fix the manifest checksum so
+    // the change reaches the bit comparison.
+    let f = set.join("sample_out.hex");
+    let text = std::fs::read_to_string(&f).unwrap();
+    let mut lines: Vec<String> = text.lines().map(String::from).collect();
+    let idx = lines.iter().position(|l| l.starts_with("00000003") || l.starts_with("00000007")).expect("a covered sample");
+    let mut words: Vec<String> = lines[idx].split(' ').map(String::from).collect();
+    let d = u32::from_str_radix(&words[1], 16).unwrap() ^ 1;
+    words[1] = format!("{d:08x}");
+    lines[idx] = words.join(" ");
+    let new = lines.join("\n") + "\n";
+    std::fs::write(&f, &new).unwrap();
+    let m = set.join("manifest.json");
+    let mt = std::fs::read_to_string(&m).unwrap().replace(&sha256(text.as_bytes()), &sha256(new.as_bytes()));
+    std::fs::write(&m, mt).unwrap();
+    let e = format!("{:#}", check(&set).unwrap_err());
+    assert!(e.contains(&format!("sample_out.hex line {} field depth", idx + 1)) && e.contains("expected 0x") && e.contains("observed 0x"), "{e}");
+}
+
+/// Frame vectors' resolved pixels (trace) equal the renderer's image for the same scene.
+#[test]
+fn frame_vectors_agree_with_the_renderer() {
+    use uvt_host::frame::{run, Fixed, RunOpts};
+    for (set, text) in [("frame_a", vectors::FRAME_A), ("frame_b", vectors::FRAME_B)] {
+        let s = uvt_host::scene::Scene::parse(text, set, Path::new(".")).unwrap();
+        let pat = uvt_host::pattern::Pattern::new(s.pattern, s.spp, s.seed);
+        let core = s.core_tris().unwrap();
+        let colors: Vec<[u8; 3]> = s.tris.iter().map(|t| t.color).collect();
+        let o = RunOpts { vp: s.viewport, spp: s.spp, tile: s.tile, colors: &colors, clear: [24, 24, 32], image: true, label: "", oracle: None };
+        let f = run(&Fixed { strat: uvt_core::Laine2011, vp: s.core_viewport(), tris: &core, pattern: &pat }, &pat, &o);
+        let trace = std::fs::read_to_string(committed().join(set).join("trace.jsonl")).unwrap();
+        let mut n = 0;
+        for line in trace.lines().filter(|l| l.contains("\"type\":\"pixel\"")) {
+            let v: serde_json::Value = serde_json::from_str(line).unwrap();
+            let (x, y) = (v["px"].as_u64().unwrap() as usize, v["py"].as_u64().unwrap() as usize);
+            let rgb: Vec<u8> = v["rgb"].as_array().unwrap().iter().map(|c| c.as_u64().unwrap() as u8).collect();
+            assert_eq!(rgb, f.image[y * s.viewport.0 as usize + x].to_vec(), "{set} pixel ({x},{y})");
+            n += 1;
+        }
+        assert_eq!(n, 32 * 32);
+        // Every traced sample outside its tile's box is uncovered (conservativeness, re-checkable).
+        for line in trace.lines().filter(|l| l.contains("\"type\":\"sample\"")) {
+            let v: serde_json::Value = serde_json::from_str(line).unwrap();
+            assert!(v["inside"].as_bool().unwrap() || !v["covered"].as_bool().unwrap(), "{set}: {line}");
+        }
+    }
+}
+
+fn iverilog(set: &Path, tb: &Path) -> String {
+    let n = std::fs::read_to_string(set.join("select_out.hex")).unwrap().lines().count();
+    let out = Command::new("vvp")
+        .arg("-n")
+        .arg(tb)
+        .arg(format!("+IN={}", set.join("select_in.hex").display()))
+        .arg(format!("+OUT={}", set.join("select_out.hex").display()))
+        .arg(format!("+N={n}"))
+        .output()
+        .expect("vvp (Debian package iverilog; tests/run.sh installs it)");
+    assert!(out.status.success(), "vvp failed: {}", String::from_utf8_lossy(&out.stderr));
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+#[test]
+fn rtl_interval_check_passes_every_exported_record() {
+    let dir = tempfile::tempdir().unwrap();
+    let tb = dir.path().join("tb.vvp");
+    let rtl = committed().join("rtl");
+    let st = Command::new("iverilog")
+        .args(["-g2005", "-Wall", "-o"])
+        .arg(&tb)
+        .arg(rtl.join("uvt_interval_check.v"))
+        .arg(rtl.join("tb_interval_check.v"))
+        .status()
+        .expect("iverilog (Debian package iverilog; tests/run.sh installs it)");
+    assert!(st.success());
+    for set in SETS {
+        let out = iverilog(&committed().join(set), &tb);
+        assert!(out.contains("PASS"), "{set}: {out}");
+    }
+    // The testbench can fail: flip one expected bit in a copy.
+    let bad = dir.path().join("bad");
+    copy_set(&committed().join("frame_a"), &bad);
+    let f = bad.join("select_out.hex");
+    let t = std::fs::read_to_string(&f).unwrap();
+    let flipped = if t.starts_with("00000001") { t.replacen("00000001", "00000000", 1) } else { t.replacen("00000000", "00000001", 1) };
+    std::fs::write(&f, flipped).unwrap();
+    let out = iverilog(&bad, &tb);
+    assert!(out.contains("FAIL 1 of") && out.contains("MISMATCH line 1"), "{out}");
+}
+
+/// vectors/README.md carries the current bit-layout tables.
+#[test]
+fn readme_layout_tables_are_current() {
+    let readme = std::fs::read_to_string(committed().join("README.md")).unwrap();
+    for st in vectors::format::STAGES {
+        for io in ["in", "out"] {
+            let spp = if st == "resolve" { 4 } else { 0 };
+            let table = vectors::format::layout_md(&format!("{st}_{io}"), spp);
+            assert!(readme.contains(&table), "vectors/README.md lacks the current layout of {st}_{io}; paste `uvt vectors layout`");
+        }
+    }
+}
