@@ -26,9 +26,12 @@
 //! - Both axes' intervals and setup's frustum time span are intersected.
 //!
 //! The margin is therefore zero beyond outward rounding: the sample test is exact, sample (u, v, t)
-//! are on the same 2^-16 grid the bounds round to, and tile extents cover every sub-pixel offset.
+//! are on the same grid the bounds round to (2^-16 by default; `P::TUV_FRAC` bits for a narrower
+//! precision, where every interval is additionally rounded outward to that grid and box
+//! coordinates are floored/ceiled to `P::BOUND_FRAC` bits), and tile extents cover every
+//! sub-pixel offset.
 
-use crate::formats::{DualDelta, PX_FRAC};
+use crate::formats::DualDelta;
 use crate::input::{PixelRect, Triangle, W};
 use crate::interval::{solve_le, Interval, RecipConstraint};
 use crate::setup::{axis_coord, Setup};
@@ -171,14 +174,14 @@ fn dual_t(d: &DualAxis, x0: i64, x1: i64, ops: &mut Ops) -> Option<Interval> {
 }
 
 /// s interval (lens parameter) of one axis for tile columns [x0, x1).
-fn lens_s(l: &LensAxis, x0: i64, x1: i64, ops: &mut Ops) -> Option<Interval> {
+fn lens_s(l: &LensAxis, x0: i64, x1: i64, bnd: u32, ops: &mut Ops) -> Option<Interval> {
     let mut s = Interval::UNIT;
     if let Some(side) = l.lo {
-        s = s.meet(side.c.solve((x1 << PX_FRAC) - side.base)?)?;
+        s = s.meet(side.c.solve((x1 << bnd) - side.base)?)?;
         ops.bounds += 4;
     }
     if let Some(side) = l.hi {
-        s = s.meet(side.c.solve(side.base - (x0 << PX_FRAC))?)?;
+        s = s.meet(side.c.solve(side.base - (x0 << bnd))?)?;
         ops.bounds += 4;
     }
     Some(s)
@@ -206,7 +209,7 @@ impl BoundsStrategy for Laine2011 {
         let mut b = UvtBox { t: setup.span, ..UvtBox::FULL };
         for (axis, &(p0, p1)) in xs.iter().enumerate() {
             if let Some(Some(l)) = c.lens.get(axis) {
-                let lens = lens_s(l, p0, p1, ops)?.s_to_lens();
+                let lens = lens_s(l, p0, p1, setup.prec.bnd, ops)?.s_to_lens().round_out(setup.prec.tuv);
                 if axis == 0 {
                     b.u = lens;
                 } else {
@@ -214,7 +217,7 @@ impl BoundsStrategy for Laine2011 {
                 }
             }
             if let Some(Some(d)) = c.dual.get(axis) {
-                b.t = b.t.meet(dual_t(d, p0, p1, ops)?)?;
+                b.t = b.t.meet(dual_t(d, p0, p1, ops)?.round_out(setup.prec.tuv))?;
             }
         }
         Some(b)

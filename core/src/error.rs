@@ -43,6 +43,19 @@ pub enum Error {
         /// the raw I16F16 bits
         raw: i32,
     },
+    /// A vertex coordinate has bits below the configured precision's position grid.
+    CoordOffGrid {
+        /// vertex index 0..3
+        vertex: u8,
+        /// 0 for shutter open, 1 for close
+        time: u8,
+        /// which field
+        field: Field,
+        /// the raw I16F16 bits
+        raw: i32,
+        /// the precision's position fraction bits
+        frac: u8,
+    },
     /// Viewport width or height is 0 or above 2048.
     Viewport {
         /// requested width
@@ -63,6 +76,13 @@ pub enum Error {
     SampleOutOfDomain {
         /// index in the table
         index: usize,
+    },
+    /// A sample's t, u or v has bits below the configured precision's t/u/v grid.
+    SampleOffGrid {
+        /// index in the table
+        index: usize,
+        /// the precision's t/u/v fraction bits
+        frac: u8,
     },
     /// The tile framebuffer's sample count differs from the pattern's spp.
     SppMismatch {
@@ -92,6 +112,13 @@ impl fmt::Display for Error {
                 f,
                 "vertex {vertex} at t{time}: {field} = raw {raw:#010x} is outside the domain |v| <= 8192"
             ),
+            Error::CoordOffGrid { vertex, time, field, raw, frac } => write!(
+                f,
+                "vertex {vertex} at t{time}: {field} = raw {raw:#010x} is not on the {frac}-fraction-bit grid of the configured precision"
+            ),
+            Error::SampleOffGrid { index, frac } => {
+                write!(f, "sample {index}: t, u, v must lie on the {frac}-fraction-bit grid of the configured precision")
+            }
             Error::Viewport { width, height } => {
                 write!(f, "viewport {width}x{height}: each side must be 1..=2048")
             }

@@ -59,6 +59,65 @@ pub const RECIP_SHIFT: u32 = 80;
 /// Significant bits kept of each edge value for the depth interpolation, see `sample.rs`.
 pub const DEPTH_EDGE_BITS: u32 = 32;
 
+/// A precision configuration: the fraction bits of the positions (clip x, y, z, w and CoC), of
+/// t/u/v, and of the bound arithmetic (the pixel grid the bounds' box coordinates are rounded to).
+///
+/// Narrower formats are modelled inside the default containers: a value with F < 16 fraction bits
+/// is stored in its I16F16 container with its low 16 − F bits zero (the checked constructors
+/// `Triangle::new_with` and `SamplePattern::new_with` refuse anything else). The sample test is
+/// exact on its inputs and the bounds round to the configuration's grids, so every output is the
+/// one a datapath of exactly these widths produces. The integer bits and the domain are fixed.
+pub trait Precision: Copy + Default + core::fmt::Debug + 'static {
+    /// fraction bits of positions and CoC (2..=16)
+    const POS_FRAC: u32;
+    /// fraction bits of t, u, v (2..=16)
+    const TUV_FRAC: u32;
+    /// fraction bits of the bounds' pixel coordinates (0..=16)
+    const BOUND_FRAC: u32;
+}
+
+/// The precision with `POS`, `TUV` and `BND` fraction bits (checked at compile time).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Prec<const POS: u32, const TUV: u32, const BND: u32>;
+
+impl<const POS: u32, const TUV: u32, const BND: u32> Precision for Prec<POS, TUV, BND> {
+    const POS_FRAC: u32 = {
+        assert!(POS >= 2 && POS <= 16, "POS fraction bits must be 2..=16");
+        POS
+    };
+    const TUV_FRAC: u32 = {
+        assert!(TUV >= 2 && TUV <= 16, "TUV fraction bits must be 2..=16");
+        TUV
+    };
+    const BOUND_FRAC: u32 = {
+        assert!(BND <= 16, "bound fraction bits must be 0..=16");
+        BND
+    };
+}
+
+/// The documented default: 16 fraction bits everywhere.
+pub type DefaultPrecision = Prec<16, 16, 16>;
+
+/// The fraction bits of a [`Precision`], carried at run time by a setup.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PrecisionBits {
+    /// positions
+    pub pos: u32,
+    /// t, u, v
+    pub tuv: u32,
+    /// bound pixel coordinates
+    pub bnd: u32,
+}
+
+impl PrecisionBits {
+    /// The bits of `P`.
+    pub const fn of<P: Precision>() -> PrecisionBits {
+        PrecisionBits { pos: P::POS_FRAC, tuv: P::TUV_FRAC, bnd: P::BOUND_FRAC }
+    }
+    /// The default's.
+    pub const DEFAULT: PrecisionBits = PrecisionBits::of::<DefaultPrecision>();
+}
+
 /// Floor division of `n` by a positive `d` (rounds toward -∞). `d > 0` is the caller's duty and
 /// is checked: a non-positive `d` returns `None`.
 #[inline]

@@ -2,7 +2,7 @@
 //! declared domain of `formats.rs`, so every later stage may rely on those ranges.
 
 use crate::error::{Error, Field};
-use crate::formats::{Coord, Lens, SubPixel, Time, COORD_LIMIT_RAW, MAX_VIEWPORT, TUV_ONE};
+use crate::formats::{Coord, DefaultPrecision, Lens, Precision, SubPixel, Time, COORD_FRAC, COORD_LIMIT_RAW, MAX_VIEWPORT, TUV_FRAC, TUV_ONE};
 
 /// One vertex at one end of the shutter: clip-space position and signed CoC radius.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -54,8 +54,15 @@ pub(crate) const C: usize = 4;
 const FIELDS: [Field; 5] = [Field::X, Field::Y, Field::Z, Field::W, Field::Coc];
 
 impl Triangle {
-    /// Checked constructor: every coordinate must satisfy |v| ≤ 2^13.
+    /// Checked constructor: every coordinate must satisfy |v| ≤ 2^13 (default precision).
     pub fn new(t0: [Vertex; 3], t1: [Vertex; 3]) -> Result<Triangle, Error> {
+        Triangle::new_with::<DefaultPrecision>(t0, t1)
+    }
+
+    /// Checked constructor for precision `P`: |v| ≤ 2^13 and every coordinate on `P`'s position
+    /// grid (low 16 − `P::POS_FRAC` bits zero).
+    pub fn new_with<P: Precision>(t0: [Vertex; 3], t1: [Vertex; 3]) -> Result<Triangle, Error> {
+        let grid = (1i32 << (COORD_FRAC - P::POS_FRAC)) - 1;
         let mut v = [[[0i32; 5]; 3]; 2];
         for (time, ends) in [t0, t1].iter().enumerate() {
             for (k, vert) in ends.iter().enumerate() {
@@ -66,6 +73,15 @@ impl Triangle {
                             time: time as u8,
                             field: *f,
                             raw,
+                        });
+                    }
+                    if raw & grid != 0 {
+                        return Err(Error::CoordOffGrid {
+                            vertex: k as u8,
+                            time: time as u8,
+                            field: *f,
+                            raw,
+                            frac: P::POS_FRAC as u8,
                         });
                     }
                     *slot = raw;
@@ -175,6 +191,13 @@ pub const MAX_PATTERN: u16 = 64;
 impl<'a> SamplePattern<'a> {
     /// Checked constructor: 1 ≤ N, S ≤ 64, `len = N²·S`, every t in [0,1], u and v in [-1,1].
     pub fn new(block: u16, spp: u16, samples: &'a [Sample]) -> Result<Self, Error> {
+        SamplePattern::new_with::<DefaultPrecision>(block, spp, samples)
+    }
+
+    /// Checked constructor for precision `P`: as [`SamplePattern::new`], and every t, u, v on
+    /// `P`'s t/u/v grid.
+    pub fn new_with<P: Precision>(block: u16, spp: u16, samples: &'a [Sample]) -> Result<Self, Error> {
+        let grid = (1i32 << (TUV_FRAC - P::TUV_FRAC)) - 1;
         let shape = Error::PatternShape { block, spp, len: samples.len() };
         if block == 0 || spp == 0 || block > MAX_PATTERN || spp > MAX_PATTERN {
             return Err(shape);
@@ -188,6 +211,9 @@ impl<'a> SamplePattern<'a> {
             let ok_uv = [s.u, s.v].iter().all(|l| (-TUV_ONE..=TUV_ONE).contains(&l.to_bits()));
             if !(ok_t && ok_uv) {
                 return Err(Error::SampleOutOfDomain { index });
+            }
+            if [s.t, s.u, s.v].iter().any(|x| x.to_bits() & grid != 0) {
+                return Err(Error::SampleOffGrid { index, frac: P::TUV_FRAC as u8 });
             }
         }
         Ok(SamplePattern { block, spp, samples })

@@ -35,6 +35,19 @@ impl Interval {
         self.lo <= x && x <= self.hi
     }
 
+    /// Round outward to the grid of `frac` fraction bits (in the 16-fraction-bit container):
+    /// the low end down, the high end up, then clamp the high end to 1. A no-op for `frac` ≥ 16.
+    #[inline]
+    pub fn round_out(self, frac: u32) -> Interval {
+        if frac >= TUV_FRAC {
+            return self;
+        }
+        let step = 1i32 << (TUV_FRAC - frac);
+        let lo = self.lo.div_euclid(step) * step;
+        let hi = (-((-self.hi).div_euclid(step)) * step).min(TUV_ONE);
+        Interval { lo, hi }
+    }
+
     /// Map a lens parameter s ∈ [0, 1] to the lens coordinate u = 2s − 1 (exact).
     #[inline]
     pub fn s_to_lens(self) -> Interval {

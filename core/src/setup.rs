@@ -15,7 +15,7 @@
 //! moves `a` by `lens·cs` with `cs = c` for x and `cs = −c` for y. Pixel position of a point in
 //! front of the camera: `ξ = (a + w)·E / (2w)`.
 
-use crate::formats::{ceil_div, floor_div, PixelCoord, PX_FRAC};
+use crate::formats::{ceil_div, floor_div, DefaultPrecision, PixelCoord, Precision, PrecisionBits};
 use crate::input::{PixelRect, Triangle, Viewport, C, W, X, Y, Z};
 use crate::interval::{solve_le, Interval};
 use crate::stats::Ops;
@@ -98,6 +98,8 @@ pub struct Setup {
     pub viewport: Viewport,
     /// static in-focus edge data (class `Static` only)
     pub edges: Option<StaticEdges>,
+    /// the precision this setup (and its bounds) use
+    pub prec: PrecisionBits,
 }
 
 /// Result of setup. (No heap in core, so the large variant stays inline.)
@@ -168,11 +170,12 @@ pub fn crosses_camera_plane(pts: &[(i64, i64)], dir: i64, ops: &mut Ops) -> bool
     false
 }
 
-/// Pixel position `(a + w)·E·2^16 / (2w)` of a front point (w > 0), floored or ceiled.
+/// Pixel position `(a + w)·E·2^bnd / (2w)` of a front point (w > 0), floored or ceiled to the
+/// bound grid of `bnd` fraction bits.
 #[inline]
-fn project(a: i64, w: i64, extent: i64, up: bool) -> PixelCoord {
-    // |a + w| < 2^31, E ≤ 2^11: numerator < 2^58 (i128 for headroom); w > 0 checked by caller.
-    let num = (a as i128 + w as i128) * extent as i128 * (1i128 << PX_FRAC);
+fn project(a: i64, w: i64, extent: i64, up: bool, bnd: u32) -> PixelCoord {
+    // |a + w| < 2^31, E ≤ 2^11, bnd ≤ 16: numerator < 2^58 (i128 for headroom); w > 0 checked.
+    let num = (a as i128 + w as i128) * extent as i128 * (1i128 << bnd);
     let den = 2 * w as i128;
     let q = if up { ceil_div(num, den) } else { floor_div(num, den) };
     // |q| ≤ |num| < 2^58: fits i64.
@@ -180,7 +183,7 @@ fn project(a: i64, w: i64, extent: i64, up: bool) -> PixelCoord {
 }
 
 /// Lens-corner boxes of one axis (Laine §3.1), with the separating-line test per side.
-fn axis_boxes(tri: &Triangle, axis: usize, extent: i64, ops: &mut Ops) -> AxisBoxes {
+fn axis_boxes(tri: &Triangle, axis: usize, extent: i64, bnd: u32, ops: &mut Ops) -> AxisBoxes {
     let mut left = [(0i64, 0i64); 6];
     let mut right = [(0i64, 0i64); 6];
     let mut i = 0;
@@ -213,8 +216,8 @@ fn axis_boxes(tri: &Triangle, axis: usize, extent: i64, ops: &mut Ops) -> AxisBo
                 let au = a + lens * cs;
                 ops.setup += 6;
                 if let (Some(l), Some(h)) = (lo.get_mut(corner), hi.get_mut(corner)) {
-                    *l = (*l).min(project(au, w, extent, false));
-                    *h = (*h).max(project(au, w, extent, true));
+                    *l = (*l).min(project(au, w, extent, false, bnd));
+                    *h = (*h).max(project(au, w, extent, true, bnd));
                 }
             }
         }
@@ -227,13 +230,13 @@ fn axis_boxes(tri: &Triangle, axis: usize, extent: i64, ops: &mut Ops) -> AxisBo
 
 /// Footprint columns (or rows) `[p0, p1)` of one axis from its boxes, clamped to `[0, E]`.
 /// A sample at ξ is in column floor(ξ); ξ ≤ max means columns up to floor(max) are needed.
-fn axis_range(b: &AxisBoxes, extent: i64) -> (u16, u16) {
+fn axis_range(b: &AxisBoxes, extent: i64, bnd: u32) -> (u16, u16) {
     let p0 = match b.lo {
-        Some([l0, l1]) => l0.min(l1) >> PX_FRAC,
+        Some([l0, l1]) => l0.min(l1) >> bnd,
         None => 0,
     };
     let p1 = match b.hi {
-        Some([h0, h1]) => (h0.max(h1) >> PX_FRAC).saturating_add(1),
+        Some([h0, h1]) => (h0.max(h1) >> bnd).saturating_add(1),
         None => extent,
     };
     (p0.clamp(0, extent) as u16, p1.clamp(0, extent) as u16)
@@ -315,7 +318,7 @@ impl Setup {
         let full = AxisBoxes { lo: None, hi: None };
         let footprint = PixelRect { x0: 0, y0: 0, x1: vp.w, y1: vp.h };
         let edges = (class == Class::Static).then(|| static_edges(tri));
-        Setup { class, footprint, span: Interval::UNIT, axes: [full, full], tri: *tri, viewport: vp, edges }
+        Setup { class, footprint, span: Interval::UNIT, axes: [full, full], tri: *tri, viewport: vp, edges, prec: PrecisionBits::DEFAULT }
     }
 }
 
@@ -330,21 +333,28 @@ fn static_edges(tri: &Triangle) -> StaticEdges {
     StaticEdges { n, det_sign: det.signum() as i32 }
 }
 
-/// Run setup on one triangle. Counts its arithmetic in `ops.setup`.
+/// Run setup on one triangle at the default precision. Counts its arithmetic in `ops.setup`.
 pub fn setup(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> Outcome {
+    setup_with::<DefaultPrecision>(tri, vp, ops)
+}
+
+/// Run setup at precision `P`: box coordinates on `P`'s bound grid, the time span rounded
+/// outward to `P`'s t grid.
+pub fn setup_with<P: Precision>(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> Outcome {
+    let prec = PrecisionBits::of::<P>();
     let class = classify(tri);
     ops.setup += 30;
     let span = match frustum_span(tri, ops) {
-        Some(s) => s,
+        Some(s) => s.round_out(prec.tuv),
         None => return Outcome::Culled(Cull::Outside),
     };
     if degenerate(tri, class, ops) {
         return Outcome::Culled(Cull::Degenerate);
     }
     let (ew, eh) = (vp.w as i64, vp.h as i64);
-    let axes = [axis_boxes(tri, 0, ew, ops), axis_boxes(tri, 1, eh, ops)];
-    let (x0, x1) = axis_range(&axes[0], ew);
-    let (y0, y1) = axis_range(&axes[1], eh);
+    let axes = [axis_boxes(tri, 0, ew, prec.bnd, ops), axis_boxes(tri, 1, eh, prec.bnd, ops)];
+    let (x0, x1) = axis_range(&axes[0], ew, prec.bnd);
+    let (y0, y1) = axis_range(&axes[1], eh, prec.bnd);
     let footprint = PixelRect { x0, y0, x1, y1 };
     if footprint.is_empty() {
         return Outcome::Culled(Cull::Outside);
@@ -353,5 +363,5 @@ pub fn setup(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> Outcome {
         ops.setup += 30;
         static_edges(tri)
     });
-    Outcome::Visible(Setup { class, footprint, span, axes, tri: *tri, viewport: vp, edges })
+    Outcome::Visible(Setup { class, footprint, span, axes, tri: *tri, viewport: vp, edges, prec })
 }

@@ -16,7 +16,8 @@ use crate::bounds::BoundsStrategy;
 use crate::error::Error;
 use crate::input::{PixelRect, SamplePattern, Triangle, Viewport};
 use crate::sample::{sample_test, ScreenPos};
-use crate::setup::{setup, Cull, Outcome, Setup};
+use crate::formats::{DefaultPrecision, Precision};
+use crate::setup::{setup_with, Cull, Outcome, Setup};
 use crate::stats::{Ops, Stats};
 
 /// A triangle with its flat color.
@@ -117,8 +118,10 @@ pub fn resolve_colors(colors: &[Rgb888]) -> Rgb888 {
     Rgb888::new(avg[0], avg[1], avg[2])
 }
 
-/// Renders a triangle list with bounds strategy `B`, holding at most `N` visible setups.
-pub struct Renderer<B: BoundsStrategy, const N: usize> {
+/// Renders a triangle list with bounds strategy `B`, holding at most `N` visible setups, at
+/// precision `P` (default: [`DefaultPrecision`]).
+pub struct Renderer<B: BoundsStrategy, const N: usize, P: Precision = DefaultPrecision> {
+    prec: core::marker::PhantomData<P>,
     bounds: B,
     vp: Viewport,
     setups: heapless::Vec<(Setup, B::Coeffs, Rgb888), N>,
@@ -126,13 +129,13 @@ pub struct Renderer<B: BoundsStrategy, const N: usize> {
     pub stats: Stats,
 }
 
-impl<B: BoundsStrategy, const N: usize> Renderer<B, N> {
+impl<B: BoundsStrategy, const N: usize, P: Precision> Renderer<B, N, P> {
     /// Set every triangle up exactly once. Fails if more than `N` triangles are visible.
     pub fn new(bounds: B, vp: Viewport, prims: &[Prim]) -> Result<Self, Error> {
-        let mut r = Renderer { bounds, vp, setups: heapless::Vec::new(), stats: Stats::default() };
+        let mut r = Renderer { prec: core::marker::PhantomData, bounds, vp, setups: heapless::Vec::new(), stats: Stats::default() };
         for p in prims {
             r.stats.triangles += 1;
-            match setup(&p.tri, vp, &mut r.stats.ops) {
+            match setup_with::<P>(&p.tri, vp, &mut r.stats.ops) {
                 Outcome::Culled(Cull::Outside) => r.stats.culled_outside += 1,
                 Outcome::Culled(Cull::Degenerate) => r.stats.culled_degenerate += 1,
                 Outcome::Visible(s) => {

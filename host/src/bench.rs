@@ -47,7 +47,7 @@ pub fn run_table(quick: bool, scenes: &[Bench], rows: &[Row]) -> Vec<BenchRow> {
             let colors: Vec<[u8; 3]> = s.tris.iter().map(|t| t.color).collect();
             let label = s.name.clone();
             let o = RunOpts { vp: s.viewport, spp: s.spp, tile: s.tile, colors: &colors, clear: [0; 3], image: false, label: &label, oracle: None };
-            let f = run(&Fixed { strat: Laine2011, vp, tris: &core, pattern: &pattern }, &pattern, &RunOpts { oracle: Some(&s.tris), ..o });
+            let f = run(&Fixed::new(Laine2011, vp, &core, &pattern), &pattern, &RunOpts { oracle: Some(&s.tris), ..o });
             let r = run(&Reference { vp: s.viewport, tris: &s.tris, pattern: &pattern }, &pattern, &o);
             let st = &f.stats;
             let visible: u64 = st.by_class.iter().sum();

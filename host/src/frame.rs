@@ -58,8 +58,10 @@ pub trait Pipeline: Sync {
     fn ranges(&self, b: &Self::Bounds) -> [(f64, f64); 3];
 }
 
-/// The fixed-point core with bounds strategy `B`.
-pub struct Fixed<'a, B> {
+/// The fixed-point core with bounds strategy `B` at precision `P`.
+pub struct Fixed<'a, B, P = uvt_core::DefaultPrecision> {
+    /// precision
+    pub prec: std::marker::PhantomData<P>,
     /// bounds strategy
     pub strat: B,
     /// viewport
@@ -70,14 +72,21 @@ pub struct Fixed<'a, B> {
     pub pattern: &'a Pattern,
 }
 
-impl<B: BoundsStrategy + Sync> Pipeline for Fixed<'_, B>
+impl<'a, B> Fixed<'a, B> {
+    /// The core at the default precision.
+    pub fn new(strat: B, vp: Viewport, tris: &'a [Triangle], pattern: &'a Pattern) -> Self {
+        Fixed { prec: std::marker::PhantomData, strat, vp, tris, pattern }
+    }
+}
+
+impl<B: BoundsStrategy + Sync, P: uvt_core::Precision + Sync> Pipeline for Fixed<'_, B, P>
 where
     B::Coeffs: Send + Sync,
 {
     type Setup = (uvt_core::Setup, B::Coeffs);
     type Bounds = uvt_core::UvtBox;
     fn setup(&self, i: usize, ops: &mut Ops) -> SetupOut<Self::Setup> {
-        match uvt_core::setup(&self.tris[i], self.vp, ops) {
+        match uvt_core::setup_with::<P>(&self.tris[i], self.vp, ops) {
             Outcome::Visible(s) => {
                 let c = self.strat.prepare(&s, ops);
                 SetupOut::Visible((s, c), s.class)

@@ -11,6 +11,7 @@ pub mod compare;
 pub mod frame;
 pub mod mesh;
 pub mod pattern;
+pub mod precision;
 pub mod reference;
 pub mod render;
 pub mod scene;

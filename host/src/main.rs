@@ -41,6 +41,21 @@ enum Cmd {
         #[arg(long)]
         row: Option<String>,
     },
+    /// Sweep precisions against the f64 reference (error, run time, epsilon).
+    Precision {
+        /// small sizes and fewer rows (for tests)
+        #[arg(long)]
+        quick: bool,
+        /// output directory for precision.md, precision.json, precision.svg
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+    },
+    /// Stiff and extreme cases: STE, error against f64 and conservativeness per scene file.
+    Stress {
+        /// folder of scene files
+        #[arg(default_value = "host/stress")]
+        dir: PathBuf,
+    },
     /// Golden test vectors for RTL.
     #[command(subcommand)]
     Vectors(VecCmd),
@@ -111,6 +126,29 @@ fn run(cli: Cli) -> Result<()> {
             print!("{}", bench::table_md(&rows));
             if let Some(p) = json {
                 std::fs::write(&p, serde_json::to_string_pretty(&rows)? + "\n")?;
+            }
+        }
+        Cmd::Precision { quick, out } => {
+            let sw = if quick {
+                uvt_host::precision::Sweep { scenes: vec![scenes::Bench::Game, scenes::Bench::Dense], rows: vec![scenes::Row::Static, scenes::Row::Both], tiles: vec![1, 2, 4, 8], shrink: 2 }
+            } else {
+                uvt_host::precision::Sweep { scenes: vec![scenes::Bench::Game, scenes::Bench::Dense], rows: scenes::Row::ALL.to_vec(), tiles: vec![1, 2, 4, 8], shrink: 1 }
+            };
+            let rows = uvt_host::precision::sweep(&sw);
+            let md = uvt_host::precision::table_md(&rows);
+            std::fs::create_dir_all(&out)?;
+            std::fs::write(out.join("precision.md"), &md)?;
+            std::fs::write(out.join("precision.json"), serde_json::to_string_pretty(&rows)? + "\n")?;
+            uvt_host::precision::plot_svg(&rows, &out.join("precision.svg"))?;
+            print!("{md}");
+        }
+        Cmd::Stress { dir } => {
+            let scenes = uvt_host::precision::stress_scenes(&dir)?;
+            let rows: Vec<_> = scenes.iter().map(|s| (s.name.clone(), s.tris.len(), uvt_host::precision::stress_row(s))).collect();
+            print!("{}", uvt_host::precision::stress_md(&rows));
+            let bad: Vec<_> = rows.iter().filter(|r| r.2.violations > 0 || r.2.beyond_bound > 0).map(|r| r.0.clone()).collect();
+            if !bad.is_empty() {
+                anyhow::bail!("conservativeness or error-bound failures in: {}", bad.join(", "));
             }
         }
         Cmd::Vectors(VecCmd::Export { scene, out, seed }) => {

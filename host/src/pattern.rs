@@ -77,6 +77,14 @@ impl Pattern {
         Pattern { block: BLOCK, spp, exact, quant }
     }
 
+    /// The same table quantized to `tuv` fraction bits for t/u/v (round to nearest on that grid).
+    pub fn with_tuv(&self, tuv: u32) -> Pattern {
+        let step = 1i32 << (16 - tuv);
+        let snap = |x: Lens, lo: i32| Lens::from_bits(((x.to_bits() as f64 / step as f64).round() as i32 * step).clamp(lo, 65536));
+        let quant = self.quant.iter().map(|s| Sample { u: snap(s.u, -65536), v: snap(s.v, -65536), t: snap(s.t, 0), ..*s }).collect();
+        Pattern { quant, ..self.clone() }
+    }
+
     /// The core's view of the table.
     pub fn core(&self) -> SamplePattern<'_> {
         SamplePattern::new(self.block, self.spp, &self.quant).expect("generated table is in the domain")

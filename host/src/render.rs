@@ -34,9 +34,9 @@ pub fn render(scene: &Scene) -> Result<Rendered> {
     let vp = scene.core_viewport();
     let colors: Vec<[u8; 3]> = scene.tris.iter().map(|t| t.color).collect();
     let opts = |label| RunOpts { vp: scene.viewport, spp: scene.spp, tile: scene.tile, colors: &colors, clear: [24, 24, 32], image: true, label, oracle: None };
-    let fixed = run(&Fixed { strat: Laine2011, vp, tris: &core, pattern: &pattern }, &pattern, &RunOpts { oracle: Some(&scene.tris), ..opts("uvt fixed") });
+    let fixed = run(&Fixed::new(Laine2011, vp, &core, &pattern), &pattern, &RunOpts { oracle: Some(&scene.tris), ..opts("uvt fixed") });
     let f64 = run(&Reference { vp: scene.viewport, tris: &scene.tris, pattern: &pattern }, &pattern, &opts("uvt f64"));
-    let bbox = run(&Fixed { strat: BboxScan, vp, tris: &core, pattern: &pattern }, &pattern, &opts("bbox scan"));
+    let bbox = run(&Fixed::new(BboxScan, vp, &core, &pattern), &pattern, &opts("bbox scan"));
     let coverage = compare(&scene.tris, &core, vp, &pattern);
     let report = report_json(scene, &fixed, &f64, &bbox, &coverage);
     Ok(Rendered { fixed, f64, bbox, coverage, report })

@@ -74,6 +74,14 @@ impl SceneTri {
         Triangle::new(self.t0.map(q), self.t1.map(q))
     }
 
+    /// The core triangle at precision `P`: coordinates rounded to nearest on `P`'s grid.
+    pub fn to_core_with<P: uvt_core::Precision>(&self) -> Result<Triangle, uvt_core::Error> {
+        let step = (1i64 << (16 - P::POS_FRAC)) as f64 / 65536.0;
+        let q = |x: f64| Coord::from_bits(((x / step).round() * step * 65536.0) as i32);
+        let v = |a: [f64; 5]| Vertex { x: q(a[0]), y: q(a[1]), z: q(a[2]), w: q(a[3]), coc: q(a[4]) };
+        Triangle::new_with::<P>(self.t0.map(v), self.t1.map(v))
+    }
+
     /// The f64 values the core actually sees (after quantization), for the reference when it is
     /// asked to run on identical inputs.
     pub fn quantized(&self) -> SceneTri {

@@ -4,7 +4,7 @@
 
 use uvt_core::bounds::BoundsStrategy;
 use uvt_core::{
-    sample_test, setup, Coord, Lens, Outcome, PixelRect, Sample, SamplePattern, ScreenPos, Setup,
+    sample_test, Coord, Lens, Outcome, PixelRect, Sample, SamplePattern, ScreenPos, Setup,
     Stats, SubPixel, Time, Triangle, Vertex, Viewport,
 };
 
@@ -140,9 +140,20 @@ pub fn check_conservative<B: BoundsStrategy>(
     pat: &SamplePattern<'_>,
     bt: u16,
 ) -> Result<u64, String> {
+    check_conservative_with::<B, uvt_core::DefaultPrecision>(strat, t, vp, pat, bt)
+}
+
+/// [`check_conservative`] at precision `P` (triangle and samples must be on `P`'s grids).
+pub fn check_conservative_with<B: BoundsStrategy, P: uvt_core::Precision>(
+    strat: &B,
+    t: &Triangle,
+    vp: Viewport,
+    pat: &SamplePattern<'_>,
+    bt: u16,
+) -> Result<u64, String> {
     let mut ops = Default::default();
     let full = Setup::unculled(t, vp);
-    let out = setup(t, vp, &mut ops);
+    let out = uvt_core::setup_with::<P>(t, vp, &mut ops);
     let visible = match out {
         Outcome::Visible(s) => Some((s, strat.prepare(&s, &mut ops))),
         Outcome::Culled(_) => None,
@@ -251,4 +262,19 @@ pub fn render_stats<B: BoundsStrategy>(strat: B, prims: &[uvt_core::Prim], vp: V
     }
     .expect("render");
     r.stats
+}
+
+/// Round a triangle's coordinates to nearest on `P`'s position grid.
+pub fn snap_tri<P: uvt_core::Precision>(t: &Triangle) -> Triangle {
+    let step = 1i64 << (16 - P::POS_FRAC);
+    let q = |c: Coord| Coord::from_bits((((c.to_bits() as i64 + step / 2).div_euclid(step)) * step).clamp(-(1 << 29), 1 << 29) as i32);
+    let v = |x: Vertex| Vertex { x: q(x.x), y: q(x.y), z: q(x.z), w: q(x.w), coc: q(x.coc) };
+    Triangle::new_with::<P>(t.vertices(0).map(v), t.vertices(1).map(v)).expect("snapped triangle on the grid")
+}
+
+/// Round samples' t, u, v to nearest on `P`'s grid.
+pub fn snap_samples<P: uvt_core::Precision>(s: &[Sample]) -> Vec<Sample> {
+    let step = 1i32 << (16 - P::TUV_FRAC);
+    let q = |x: Lens, lo: i32| Lens::from_bits((((x.to_bits() + step / 2).div_euclid(step)) * step).clamp(lo, 65536));
+    s.iter().map(|x| Sample { u: q(x.u, -65536), v: q(x.v, -65536), t: q(x.t, 0), ..*x }).collect()
 }

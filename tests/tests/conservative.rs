@@ -80,6 +80,29 @@ fn check_all(kind: Kind, p: &[f64; NP], pat_seed: u64) -> Result<u64, String> {
     Ok(covered)
 }
 
+/// The same check at narrow precisions: triangles and samples snapped to the grids.
+fn check_narrow(kind: Kind, p: &[f64; NP], pat_seed: u64) -> Result<(), String> {
+    use uvt_core::Prec;
+    let t = make(kind, p);
+    let vp = Viewport::new(24, 20).unwrap();
+    let mut rng = Rng(pat_seed);
+    let samples = random_samples(&mut rng, 2, 8);
+    macro_rules! at {
+        ($p:ty) => {{
+            let tt = snap_tri::<$p>(&t);
+            let ss = snap_samples::<$p>(&samples);
+            let pat = SamplePattern::new_with::<$p>(2, 8, &ss).unwrap();
+            for bt in [1u16, 2, 4, 8] {
+                check_conservative_with::<_, $p>(&Laine2011, &tt, vp, &pat, bt)?;
+            }
+        }};
+    }
+    at!(Prec<6, 6, 2>);
+    at!(Prec<8, 8, 4>);
+    at!(Prec<12, 10, 0>);
+    Ok(())
+}
+
 fn params() -> impl Strategy<Value = [f64; NP]> {
     proptest::array::uniform32(-1.0f64..=1.0).prop_flat_map(|a| {
         proptest::array::uniform16(-1.0f64..=1.0).prop_map(move |b| {
@@ -115,6 +138,17 @@ kind_test!(conservative_defocused, Kind::Defocus);
 kind_test!(conservative_motion_and_defocus, Kind::Both);
 kind_test!(conservative_camera_plane_crossing, Kind::Crossing);
 kind_test!(conservative_domain_extremes, Kind::Extreme);
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: cases(48, 1000), failure_persistence: None, ..ProptestConfig::default() })]
+    #[test]
+    fn conservative_at_narrow_precisions(p in params(), pat_seed in any::<u64>(), k in 0usize..6) {
+        let kind = [Kind::Static, Kind::Moving, Kind::Defocus, Kind::Both, Kind::Crossing, Kind::Extreme][k];
+        if let Err(msg) = check_narrow(kind, &p, pat_seed) {
+            prop_assert!(false, "{}", msg);
+        }
+    }
+}
 
 /// Seeded random sweep over all kinds; prints the seed on failure.
 #[test]

@@ -107,7 +107,7 @@ fn driver_matches() {
     let colors: Vec<[u8; 3]> = s.tris.iter().map(|t| t.color).collect();
     for tile in [1u8, 2, 4, 8] {
         let o = RunOpts { vp: s.viewport, spp: s.spp, tile, colors: &colors, clear: [24, 24, 32], image: true, label: "", oracle: None };
-        let f = run(&Fixed { strat: Laine2011, vp, tris: &core, pattern: &pat }, &pat, &o);
+        let f = run(&Fixed::new(Laine2011, vp, &core, &pat), &pat, &o);
         let prims: Vec<Prim> = core.iter().zip(&colors).map(|(t, c)| Prim { tri: *t, color: Rgb888::new(c[0], c[1], c[2]) }).collect();
         let mut r = Renderer::<Laine2011, 4096>::new(Laine2011, vp, &prims).unwrap();
         let cp = pat.core();

@@ -100,7 +100,7 @@ fn frame_vectors_agree_with_the_renderer() {
         let core = s.core_tris().unwrap();
         let colors: Vec<[u8; 3]> = s.tris.iter().map(|t| t.color).collect();
         let o = RunOpts { vp: s.viewport, spp: s.spp, tile: s.tile, colors: &colors, clear: [24, 24, 32], image: true, label: "", oracle: None };
-        let f = run(&Fixed { strat: uvt_core::Laine2011, vp: s.core_viewport(), tris: &core, pattern: &pat }, &pat, &o);
+        let f = run(&Fixed::new(uvt_core::Laine2011, s.core_viewport(), &core, &pat), &pat, &o);
         let trace = std::fs::read_to_string(committed().join(set).join("trace.jsonl")).unwrap();
         let mut n = 0;
         for line in trace.lines().filter(|l| l.contains("\"type\":\"pixel\"")) {
