@@ -160,8 +160,8 @@ fn one<P: Precision + Sync>(s: &Scene, acc: &mut PrecRow) {
     let per = |a: u64, b: u64| if b == 0 { 0.0 } else { a as f64 / b as f64 };
     let n = acc.times.len() as f64;
     let ops = [per(f.stats.ops_setup, f.stats.triangles), per(f.stats.ops_bounds, f.stats.tiles_visited), per(f.stats.ops_sample, f.stats.samples_tested)];
-    for k in 0..3 {
-        acc.ops[k] += (ops[k] - acc.ops[k]) / n;
+    for (a, o) in acc.ops.iter_mut().zip(ops) {
+        *a += (o - *a) / n;
     }
     acc.counts[0] += f.stats.samples_tested;
     acc.counts[1] += f.stats.samples_covered;
