@@ -24,6 +24,10 @@ fi
 echo "== core for Cortex-M4F (thumbv7em-none-eabihf)"
 cargo build --locked -p uvt-core --target thumbv7em-none-eabihf --release
 
+echo "== rustfmt"
+rustup component add rustfmt >/dev/null 2>&1 || true
+cargo fmt --all --check
+
 echo "== clippy (warnings are errors), host and the bare-metal program"
 cargo clippy --locked --workspace --all-targets -- -D warnings
 cargo clippy --locked -p uvt-core --example m4_render --target thumbv7em-none-eabihf -- -D warnings

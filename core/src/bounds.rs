@@ -50,7 +50,11 @@ pub struct UvtBox {
 
 impl UvtBox {
     /// The whole domain.
-    pub const FULL: UvtBox = UvtBox { u: Interval::LENS, v: Interval::LENS, t: Interval::UNIT };
+    pub const FULL: UvtBox = UvtBox {
+        u: Interval::LENS,
+        v: Interval::LENS,
+        t: Interval::UNIT,
+    };
 
     /// Whether a sample's (u, v, t) raw values lie inside.
     #[inline]
@@ -68,7 +72,13 @@ pub trait BoundsStrategy {
     /// Per-triangle preparation (counted in `ops.setup`).
     fn prepare(&self, setup: &Setup, ops: &mut Ops) -> Self::Coeffs;
     /// Bounds of one tile inside the triangle's footprint (counted in `ops.bounds`).
-    fn tile(&self, setup: &Setup, c: &Self::Coeffs, tile: PixelRect, ops: &mut Ops) -> Option<UvtBox>;
+    fn tile(
+        &self,
+        setup: &Setup,
+        c: &Self::Coeffs,
+        tile: PixelRect,
+        ops: &mut Ops,
+    ) -> Option<UvtBox>;
 }
 
 /// The bounding-box scan: every sample of the footprint is tested, whatever its (u, v, t)
@@ -131,14 +141,24 @@ pub struct LaineCoeffs {
 
 fn lens_axis(setup: &Setup, axis: usize, ops: &mut Ops) -> LensAxis {
     let b = setup.axes.get(axis).copied();
-    let lo = b.and_then(|b| b.lo).map(|[m0, m1]| LensSide { base: m0, c: RecipConstraint::new(m1 - m0) });
-    let hi = b.and_then(|b| b.hi).map(|[h0, h1]| LensSide { base: h0, c: RecipConstraint::new(h0 - h1) });
+    let lo = b.and_then(|b| b.lo).map(|[m0, m1]| LensSide {
+        base: m0,
+        c: RecipConstraint::new(m1 - m0),
+    });
+    let hi = b.and_then(|b| b.hi).map(|[h0, h1]| LensSide {
+        base: h0,
+        c: RecipConstraint::new(h0 - h1),
+    });
     ops.setup += 8;
     LensAxis { lo, hi }
 }
 
 fn dual_axis(tri: &Triangle, fp: &PixelRect, axis: usize, extent: i64, ops: &mut Ops) -> DualAxis {
-    let xi = if axis == 0 { [fp.x0 as i64, fp.x1 as i64] } else { [fp.y0 as i64, fp.y1 as i64] };
+    let xi = if axis == 0 {
+        [fp.x0 as i64, fp.x1 as i64]
+    } else {
+        [fp.y0 as i64, fp.y1 as i64]
+    };
     let mut lo = [[DualDelta::MAX; 2]; 2];
     let mut hi = [[DualDelta::MIN; 2]; 2];
     for ((ends, lo_t), hi_t) in tri.v.iter().zip(lo.iter_mut()).zip(hi.iter_mut()) {
@@ -162,7 +182,9 @@ fn dual_axis(tri: &Triangle, fp: &PixelRect, axis: usize, extent: i64, ops: &mut
 fn dual_t(d: &DualAxis, x0: i64, x1: i64, ops: &mut Ops) -> Option<Interval> {
     let [xa, xb] = d.xi;
     // Scaled by D = ξb − ξa > 0: |value| < 2^44 · 2^12 = 2^56.
-    let line = |v: &[DualDelta; 2], x: i64| v[0] as i128 * (xb - x) as i128 + v[1] as i128 * (x - xa) as i128;
+    let line = |v: &[DualDelta; 2], x: i64| {
+        v[0] as i128 * (xb - x) as i128 + v[1] as i128 * (x - xa) as i128
+    };
     let [lo0, lo1] = [0usize, 1].map(|t| line(&d.lo[t], x0).min(line(&d.lo[t], x1)));
     let [hi0, hi1] = [0usize, 1].map(|t| line(&d.hi[t], x0).max(line(&d.hi[t], x1)));
     ops.bounds += 24;
@@ -198,18 +220,31 @@ impl BoundsStrategy for Laine2011 {
         let motion = setup.class.motion();
         let ext = [setup.viewport.w as i64, setup.viewport.h as i64];
         let lens = [0usize, 1].map(|a| defocus.then(|| lens_axis(setup, a, ops)));
-        let dual = [0usize, 1].map(|a| {
-            motion.then(|| dual_axis(&setup.tri, &setup.footprint, a, ext[a], ops))
-        });
+        let dual = [0usize, 1]
+            .map(|a| motion.then(|| dual_axis(&setup.tri, &setup.footprint, a, ext[a], ops)));
         LaineCoeffs { lens, dual }
     }
 
-    fn tile(&self, setup: &Setup, c: &LaineCoeffs, tile: PixelRect, ops: &mut Ops) -> Option<UvtBox> {
-        let xs = [(tile.x0 as i64, tile.x1 as i64), (tile.y0 as i64, tile.y1 as i64)];
-        let mut b = UvtBox { t: setup.span, ..UvtBox::FULL };
+    fn tile(
+        &self,
+        setup: &Setup,
+        c: &LaineCoeffs,
+        tile: PixelRect,
+        ops: &mut Ops,
+    ) -> Option<UvtBox> {
+        let xs = [
+            (tile.x0 as i64, tile.x1 as i64),
+            (tile.y0 as i64, tile.y1 as i64),
+        ];
+        let mut b = UvtBox {
+            t: setup.span,
+            ..UvtBox::FULL
+        };
         for (axis, &(p0, p1)) in xs.iter().enumerate() {
             if let Some(Some(l)) = c.lens.get(axis) {
-                let lens = lens_s(l, p0, p1, setup.prec.bnd, ops)?.s_to_lens().round_out(setup.prec.tuv);
+                let lens = lens_s(l, p0, p1, setup.prec.bnd, ops)?
+                    .s_to_lens()
+                    .round_out(setup.prec.tuv);
                 if axis == 0 {
                     b.u = lens;
                 } else {
@@ -217,7 +252,8 @@ impl BoundsStrategy for Laine2011 {
                 }
             }
             if let Some(Some(d)) = c.dual.get(axis) {
-                b.t = b.t.meet(dual_t(d, p0, p1, ops)?.round_out(setup.prec.tuv))?;
+                b.t =
+                    b.t.meet(dual_t(d, p0, p1, ops)?.round_out(setup.prec.tuv))?;
             }
         }
         Some(b)

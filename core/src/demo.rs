@@ -84,26 +84,108 @@ type RawEnd = [[i32; 5]; 3];
 /// Raw geometry `(t0 vertices, t1 vertices, color)`.
 const GEOMETRY: [(RawEnd, RawEnd, [u8; 3]); NTRIS] = [
     // a floor-like static in-focus triangle
-    ([[-400, -300, 200, 400, 0], [400, -300, 200, 400, 0], [0, 100, 200, 400, 0]], [[-400, -300, 200, 400, 0], [400, -300, 200, 400, 0], [0, 100, 200, 400, 0]], [90, 110, 80]),
+    (
+        [
+            [-400, -300, 200, 400, 0],
+            [400, -300, 200, 400, 0],
+            [0, 100, 200, 400, 0],
+        ],
+        [
+            [-400, -300, 200, 400, 0],
+            [400, -300, 200, 400, 0],
+            [0, 100, 200, 400, 0],
+        ],
+        [90, 110, 80],
+    ),
     // moving right, in focus
-    ([[-200, 0, 100, 256, 0], [-100, 0, 100, 256, 0], [-150, 120, 100, 256, 0]], [[100, 20, 110, 256, 0], [200, 20, 110, 256, 0], [150, 140, 110, 256, 0]], [230, 60, 40]),
+    (
+        [
+            [-200, 0, 100, 256, 0],
+            [-100, 0, 100, 256, 0],
+            [-150, 120, 100, 256, 0],
+        ],
+        [
+            [100, 20, 110, 256, 0],
+            [200, 20, 110, 256, 0],
+            [150, 140, 110, 256, 0],
+        ],
+        [230, 60, 40],
+    ),
     // defocused, static
-    ([[60, -150, 80, 300, 20], [200, -150, 80, 300, 20], [130, -20, 80, 300, 20]], [[60, -150, 80, 300, 20], [200, -150, 80, 300, 20], [130, -20, 80, 300, 20]], [40, 120, 230]),
+    (
+        [
+            [60, -150, 80, 300, 20],
+            [200, -150, 80, 300, 20],
+            [130, -20, 80, 300, 20],
+        ],
+        [
+            [60, -150, 80, 300, 20],
+            [200, -150, 80, 300, 20],
+            [130, -20, 80, 300, 20],
+        ],
+        [40, 120, 230],
+    ),
     // moving and defocused, approaching the camera
-    ([[-150, -200, 60, 500, 40], [-20, -220, 60, 500, 40], [-90, -80, 60, 500, 40]], [[-120, -160, 40, 250, 12], [20, -180, 40, 250, 12], [-50, -40, 40, 250, 12]], [240, 200, 40]),
+    (
+        [
+            [-150, -200, 60, 500, 40],
+            [-20, -220, 60, 500, 40],
+            [-90, -80, 60, 500, 40],
+        ],
+        [
+            [-120, -160, 40, 250, 12],
+            [20, -180, 40, 250, 12],
+            [-50, -40, 40, 250, 12],
+        ],
+        [240, 200, 40],
+    ),
     // crossing the camera plane during the shutter (w from + to −), defocused
-    ([[-60, 100, 20, 150, 10], [60, 100, 20, 150, 10], [0, 200, 20, 150, 10]], [[-60, 100, 20, -100, -8], [60, 100, 20, -100, -8], [0, 200, 20, -40, -8]], [200, 60, 220]),
+    (
+        [
+            [-60, 100, 20, 150, 10],
+            [60, 100, 20, 150, 10],
+            [0, 200, 20, 150, 10],
+        ],
+        [
+            [-60, 100, 20, -100, -8],
+            [60, 100, 20, -100, -8],
+            [0, 200, 20, -40, -8],
+        ],
+        [200, 60, 220],
+    ),
     // a sliver with an orientation flip during the shutter
-    ([[-250, 200, 150, 300, 6], [250, 220, 150, 300, 6], [0, 230, 150, 300, 6]], [[-250, 240, 150, 300, 6], [250, 200, 150, 300, 6], [0, 190, 150, 300, 6]], [250, 250, 250]),
+    (
+        [
+            [-250, 200, 150, 300, 6],
+            [250, 220, 150, 300, 6],
+            [0, 230, 150, 300, 6],
+        ],
+        [
+            [-250, 240, 150, 300, 6],
+            [250, 200, 150, 300, 6],
+            [0, 190, 150, 300, 6],
+        ],
+        [250, 250, 250],
+    ),
     // wholly behind the camera: culled
-    ([[0, 0, 0, -100, 0], [50, 0, 0, -100, 0], [0, 50, 0, -100, 0]], [[0, 0, 0, -100, 0], [50, 0, 0, -100, 0], [0, 50, 0, -100, 0]], [255, 0, 0]),
+    (
+        [[0, 0, 0, -100, 0], [50, 0, 0, -100, 0], [0, 50, 0, -100, 0]],
+        [[0, 0, 0, -100, 0], [50, 0, 0, -100, 0], [0, 50, 0, -100, 0]],
+        [255, 0, 0],
+    ),
 ];
 
 /// The scene's primitives.
 pub fn prims() -> Result<[Prim; NTRIS], Error> {
-    let mut out = [Prim { tri: Triangle::new_static([Vertex::default(); 3])?, color: Rgb888::BLACK }; NTRIS];
+    let mut out = [Prim {
+        tri: Triangle::new_static([Vertex::default(); 3])?,
+        color: Rgb888::BLACK,
+    }; NTRIS];
     for (o, (a, b, c)) in out.iter_mut().zip(GEOMETRY.iter()) {
-        *o = Prim { tri: Triangle::new(a.map(v), b.map(v))?, color: Rgb888::new(c[0], c[1], c[2]) };
+        *o = Prim {
+            tri: Triangle::new(a.map(v), b.map(v))?,
+            color: Rgb888::new(c[0], c[1], c[2]),
+        };
     }
     Ok(out)
 }
@@ -128,16 +210,24 @@ pub fn render() -> Result<DemoResult, Error> {
     let pattern = SamplePattern::new(BLOCK, SPP as u16, &SAMPLES)?;
     let mut r = Renderer::<Laine2011, NTRIS>::new(Laine2011, viewport()?, &prims)?;
     let mut image = [[0u8; 3]; SIZE as usize * SIZE as usize];
-    r.render_with::<8, 8, SPP>(&pattern, BOUNDS_TILE, Rgb888::new(16, 16, 24), |x, y, c, _| {
-        if let Some(p) = image.get_mut(y as usize * SIZE as usize + x as usize) {
-            *p = [c.r(), c.g(), c.b()];
-        }
-    })?;
+    r.render_with::<8, 8, SPP>(
+        &pattern,
+        BOUNDS_TILE,
+        Rgb888::new(16, 16, 24),
+        |x, y, c, _| {
+            if let Some(p) = image.get_mut(y as usize * SIZE as usize + x as usize) {
+                *p = [c.r(), c.g(), c.b()];
+            }
+        },
+    )?;
     let mut h = 0x811c_9dc5u32;
     for b in image.iter().flatten() {
         h = (h ^ *b as u32).wrapping_mul(0x0100_0193);
     }
-    Ok(DemoResult { checksum: h, stats: r.stats })
+    Ok(DemoResult {
+        checksum: h,
+        stats: r.stats,
+    })
 }
 
 /// Per-stage workloads for cost measurement: each runs one stage of the scene `reps` times and
@@ -170,7 +260,9 @@ pub mod cost {
         let mut ops = Ops::default();
         let mut calls = 0;
         for p in prims.iter() {
-            let Outcome::Visible(s) = setup(&p.tri, vp, &mut ops) else { continue };
+            let Outcome::Visible(s) = setup(&p.tri, vp, &mut ops) else {
+                continue;
+            };
             let c = Laine2011.prepare(&s, &mut ops);
             for _ in 0..reps {
                 let fp = s.footprint;
@@ -178,7 +270,13 @@ pub mod cost {
                 while y < fp.y1 {
                     let mut x = fp.x0 - fp.x0 % 2;
                     while x < fp.x1 {
-                        let cell = PixelRect { x0: x, y0: y, x1: x + 2, y1: y + 2 }.intersect(&fp);
+                        let cell = PixelRect {
+                            x0: x,
+                            y0: y,
+                            x1: x + 2,
+                            y1: y + 2,
+                        }
+                        .intersect(&fp);
                         black_box(Laine2011.tile(black_box(&s), &c, cell, &mut ops));
                         calls += 1;
                         x += 2;
@@ -198,12 +296,19 @@ pub mod cost {
         let mut ops = Ops::default();
         let mut calls = 0;
         for p in prims.iter() {
-            let Outcome::Visible(s) = setup(&p.tri, vp, &mut ops) else { continue };
+            let Outcome::Visible(s) = setup(&p.tri, vp, &mut ops) else {
+                continue;
+            };
             for _ in 0..reps {
                 for py in 12..20u16 {
                     for px in 12..20u16 {
                         for smp in pattern.pixel(px, py) {
-                            black_box(sample_test(black_box(&s), ScreenPos::of(px, py, smp), smp, &mut ops));
+                            black_box(sample_test(
+                                black_box(&s),
+                                ScreenPos::of(px, py, smp),
+                                smp,
+                                &mut ops,
+                            ));
                             calls += 1;
                         }
                     }

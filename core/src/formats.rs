@@ -112,7 +112,11 @@ pub struct PrecisionBits {
 impl PrecisionBits {
     /// The bits of `P`.
     pub const fn of<P: Precision>() -> PrecisionBits {
-        PrecisionBits { pos: P::POS_FRAC, tuv: P::TUV_FRAC, bnd: P::BOUND_FRAC }
+        PrecisionBits {
+            pos: P::POS_FRAC,
+            tuv: P::TUV_FRAC,
+            bnd: P::BOUND_FRAC,
+        }
     }
     /// The default's.
     pub const DEFAULT: PrecisionBits = PrecisionBits::of::<DefaultPrecision>();

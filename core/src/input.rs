@@ -2,7 +2,10 @@
 //! declared domain of `formats.rs`, so every later stage may rely on those ranges.
 
 use crate::error::{Error, Field};
-use crate::formats::{Coord, DefaultPrecision, Lens, Precision, SubPixel, Time, COORD_FRAC, COORD_LIMIT_RAW, MAX_VIEWPORT, TUV_FRAC, TUV_ONE};
+use crate::formats::{
+    Coord, DefaultPrecision, Lens, Precision, SubPixel, Time, COORD_FRAC, COORD_LIMIT_RAW,
+    MAX_VIEWPORT, TUV_FRAC, TUV_ONE,
+};
 
 /// One vertex at one end of the shutter: clip-space position and signed CoC radius.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -33,7 +36,13 @@ impl Vertex {
 
     /// Raw bits `[x, y, z, w, coc]`.
     pub fn bits(&self) -> [i32; 5] {
-        [self.x.to_bits(), self.y.to_bits(), self.z.to_bits(), self.w.to_bits(), self.coc.to_bits()]
+        [
+            self.x.to_bits(),
+            self.y.to_bits(),
+            self.z.to_bits(),
+            self.w.to_bits(),
+            self.coc.to_bits(),
+        ]
     }
 }
 
@@ -99,7 +108,11 @@ impl Triangle {
     /// The vertices at shutter open (`time = 0`) or close (`time = 1`).
     pub fn vertices(&self, time: usize) -> [Vertex; 3] {
         let ends = if time == 0 { &self.v[0] } else { &self.v[1] };
-        [Vertex::from_bits(ends[0]), Vertex::from_bits(ends[1]), Vertex::from_bits(ends[2])]
+        [
+            Vertex::from_bits(ends[0]),
+            Vertex::from_bits(ends[1]),
+            Vertex::from_bits(ends[2]),
+        ]
     }
 }
 
@@ -116,7 +129,10 @@ impl Viewport {
         if width == 0 || height == 0 || width > MAX_VIEWPORT || height > MAX_VIEWPORT {
             return Err(Error::Viewport { width, height });
         }
-        Ok(Viewport { w: width, h: height })
+        Ok(Viewport {
+            w: width,
+            h: height,
+        })
     }
     /// Width in pixels.
     pub fn width(&self) -> u16 {
@@ -159,6 +175,52 @@ impl PixelRect {
     pub fn contains(&self, x: u16, y: u16) -> bool {
         x >= self.x0 && x < self.x1 && y >= self.y0 && y < self.y1
     }
+
+    /// The cells of the `b`-pixel grid (cells start at multiples of `b`; `b = 0` is taken as 1)
+    /// that meet this rectangle, clipped to it, in raster order. This is the bounds-tile walk of
+    /// the renderer, and the record order of frame-level golden vectors.
+    pub fn cells(self, b: u16) -> Cells {
+        let b = b.max(1);
+        Cells {
+            r: self,
+            b,
+            x: self.x0 - self.x0 % b,
+            y: self.y0 - self.y0 % b,
+        }
+    }
+}
+
+/// Iterator of [`PixelRect::cells`].
+#[derive(Clone, Debug)]
+pub struct Cells {
+    r: PixelRect,
+    b: u16,
+    x: u16,
+    y: u16,
+}
+
+impl Iterator for Cells {
+    type Item = PixelRect;
+    fn next(&mut self) -> Option<PixelRect> {
+        while !self.r.is_empty() && self.y < self.r.y1 {
+            let cell = PixelRect {
+                x0: self.x,
+                y0: self.y,
+                x1: self.x.saturating_add(self.b),
+                y1: self.y.saturating_add(self.b),
+            }
+            .intersect(&self.r);
+            self.x = self.x.saturating_add(self.b);
+            if self.x >= self.r.x1 {
+                self.x = self.r.x0 - self.r.x0 % self.b;
+                self.y = self.y.saturating_add(self.b);
+            }
+            if !cell.is_empty() {
+                return Some(cell);
+            }
+        }
+        None
+    }
 }
 
 /// One sample of the table: sub-pixel position, lens point and time.
@@ -196,9 +258,17 @@ impl<'a> SamplePattern<'a> {
 
     /// Checked constructor for precision `P`: as [`SamplePattern::new`], and every t, u, v on
     /// `P`'s t/u/v grid.
-    pub fn new_with<P: Precision>(block: u16, spp: u16, samples: &'a [Sample]) -> Result<Self, Error> {
+    pub fn new_with<P: Precision>(
+        block: u16,
+        spp: u16,
+        samples: &'a [Sample],
+    ) -> Result<Self, Error> {
         let grid = (1i32 << (TUV_FRAC - P::TUV_FRAC)) - 1;
-        let shape = Error::PatternShape { block, spp, len: samples.len() };
+        let shape = Error::PatternShape {
+            block,
+            spp,
+            len: samples.len(),
+        };
         if block == 0 || spp == 0 || block > MAX_PATTERN || spp > MAX_PATTERN {
             return Err(shape);
         }
@@ -208,15 +278,24 @@ impl<'a> SamplePattern<'a> {
         for (index, s) in samples.iter().enumerate() {
             let t = s.t.to_bits();
             let ok_t = (0..=TUV_ONE).contains(&t);
-            let ok_uv = [s.u, s.v].iter().all(|l| (-TUV_ONE..=TUV_ONE).contains(&l.to_bits()));
+            let ok_uv = [s.u, s.v]
+                .iter()
+                .all(|l| (-TUV_ONE..=TUV_ONE).contains(&l.to_bits()));
             if !(ok_t && ok_uv) {
                 return Err(Error::SampleOutOfDomain { index });
             }
             if [s.t, s.u, s.v].iter().any(|x| x.to_bits() & grid != 0) {
-                return Err(Error::SampleOffGrid { index, frac: P::TUV_FRAC as u8 });
+                return Err(Error::SampleOffGrid {
+                    index,
+                    frac: P::TUV_FRAC as u8,
+                });
             }
         }
-        Ok(SamplePattern { block, spp, samples })
+        Ok(SamplePattern {
+            block,
+            spp,
+            samples,
+        })
     }
 
     /// Samples per pixel.

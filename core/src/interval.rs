@@ -19,7 +19,10 @@ impl Interval {
     /// t ∈ [0, 1] (or a lens parameter s ∈ [0, 1]).
     pub const UNIT: Interval = Interval { lo: 0, hi: TUV_ONE };
     /// u or v ∈ [-1, 1].
-    pub const LENS: Interval = Interval { lo: -TUV_ONE, hi: TUV_ONE };
+    pub const LENS: Interval = Interval {
+        lo: -TUV_ONE,
+        hi: TUV_ONE,
+    };
 
     /// Intersection, `None` when empty.
     #[inline]
@@ -51,7 +54,10 @@ impl Interval {
     /// Map a lens parameter s ∈ [0, 1] to the lens coordinate u = 2s − 1 (exact).
     #[inline]
     pub fn s_to_lens(self) -> Interval {
-        Interval { lo: 2 * self.lo - TUV_ONE, hi: 2 * self.hi - TUV_ONE }
+        Interval {
+            lo: 2 * self.lo - TUV_ONE,
+            hi: 2 * self.hi - TUV_ONE,
+        }
     }
 }
 
@@ -75,7 +81,10 @@ pub fn solve_le(d: i128, n: i128) -> Option<Interval> {
             return full;
         }
         match n.checked_mul(1 << TUV_FRAC).and_then(|m| ceil_div(m, d)) {
-            Some(hi) => Some(Interval { lo: 0, hi: clamp_raw(hi) }),
+            Some(hi) => Some(Interval {
+                lo: 0,
+                hi: clamp_raw(hi),
+            }),
             None => full,
         }
     } else if d < 0 {
@@ -87,7 +96,10 @@ pub fn solve_le(d: i128, n: i128) -> Option<Interval> {
             return None;
         }
         match b.checked_mul(1 << TUV_FRAC).and_then(|m| floor_div(m, a)) {
-            Some(lo) => Some(Interval { lo: clamp_raw(lo), hi: TUV_ONE }),
+            Some(lo) => Some(Interval {
+                lo: clamp_raw(lo),
+                hi: TUV_ONE,
+            }),
             None => full,
         }
     } else if n >= 0 {
@@ -140,7 +152,10 @@ impl RecipConstraint {
                 return Some(Interval::UNIT);
             }
             let hi = ceil_div(n * self.r_up, sh).unwrap_or(TUV_ONE as i128);
-            Some(Interval { lo: 0, hi: clamp_raw(hi) })
+            Some(Interval {
+                lo: 0,
+                hi: clamp_raw(hi),
+            })
         } else if d < 0 {
             let (a, b) = (-d, -n);
             if b <= 0 {
@@ -150,7 +165,10 @@ impl RecipConstraint {
                 return None;
             }
             let lo = floor_div(b * self.r_dn, sh).unwrap_or(0);
-            Some(Interval { lo: clamp_raw(lo), hi: TUV_ONE })
+            Some(Interval {
+                lo: clamp_raw(lo),
+                hi: TUV_ONE,
+            })
         } else if n >= 0 {
             Some(Interval::UNIT)
         } else {
@@ -166,11 +184,23 @@ mod tests {
     #[test]
     fn solve_le_cases() {
         // s·4 ≤ 1 → s ≤ 1/4 exactly.
-        assert_eq!(solve_le(4, 1), Some(Interval { lo: 0, hi: TUV_ONE / 4 }));
+        assert_eq!(
+            solve_le(4, 1),
+            Some(Interval {
+                lo: 0,
+                hi: TUV_ONE / 4
+            })
+        );
         // s·3 ≤ 1 → s ≤ 0.3333…, rounded up.
         assert_eq!(solve_le(3, 1), Some(Interval { lo: 0, hi: 21846 }));
         // s·(−3) ≤ −1 → s ≥ 1/3, rounded down.
-        assert_eq!(solve_le(-3, -1), Some(Interval { lo: 21845, hi: TUV_ONE }));
+        assert_eq!(
+            solve_le(-3, -1),
+            Some(Interval {
+                lo: 21845,
+                hi: TUV_ONE
+            })
+        );
         assert_eq!(solve_le(1, -1), None);
         assert_eq!(solve_le(-1, -2), None);
         assert_eq!(solve_le(0, 0), Some(Interval::UNIT));

@@ -32,11 +32,13 @@ pub mod wide;
 pub use bounds::{BboxScan, BoundsStrategy, Laine2011, UvtBox};
 pub use embedded_graphics_core::pixelcolor::Rgb888;
 pub use error::{Error, Field};
-pub use formats::{Coord, DefaultPrecision, Depth, Lens, Prec, Precision, PrecisionBits, SubPixel, Time};
+pub use formats::{
+    Coord, DefaultPrecision, Depth, Lens, Prec, Precision, PrecisionBits, SubPixel, Time,
+};
 pub use input::{PixelRect, Sample, SamplePattern, Triangle, Vertex, Viewport};
 pub use interval::Interval;
-pub use wide::Wide;
 pub use sample::{sample_eval, sample_test, Hit, SampleEval, ScreenPos};
 pub use setup::{setup, setup_with, Class, Cull, Outcome, Setup};
 pub use stats::{Ops, Stats};
 pub use tile::{resolve_colors, PixelStats, Prim, RenderError, Renderer, TileBuffer};
+pub use wide::Wide;

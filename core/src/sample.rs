@@ -142,7 +142,11 @@ fn dot_wide(n: &[i128; 3], d: &[i64; 3]) -> Wide {
 /// Fill-rule decision for an edge whose value is exactly zero.
 #[inline]
 fn fill_rule(n: &[i128; 3], det_sign: i32) -> bool {
-    let (a, b) = if det_sign > 0 { (n[0], n[1]) } else { (-n[0], -n[1]) };
+    let (a, b) = if det_sign > 0 {
+        (n[0], n[1])
+    } else {
+        (-n[0], -n[1])
+    };
     a > 0 || (a == 0 && b > 0)
 }
 
@@ -152,11 +156,13 @@ fn decide(e: &[Wide; 3], n: &[[i128; 3]; 3], det_sign: i32) -> bool {
     if det_sign == 0 {
         return false;
     }
-    e.iter().zip(n.iter()).all(|(ek, nk)| match ek.signum() * det_sign {
-        1 => true,
-        0 => fill_rule(nk, det_sign),
-        _ => false,
-    })
+    e.iter()
+        .zip(n.iter())
+        .all(|(ek, nk)| match ek.signum() * det_sign {
+            1 => true,
+            0 => fill_rule(nk, det_sign),
+            _ => false,
+        })
 }
 
 /// Depth z/w from the edge values and the vertices' (w, z), see module docs.
@@ -200,7 +206,9 @@ pub fn sample_eval(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> 
     ops.sample += 5;
     if let (Class::Static, Some(st)) = (setup.class, setup.edges.as_ref()) {
         // Plain 2D test: normals precomputed in setup, |n·d| < 2^92.
-        let e = st.n.map(|n| Wide::from_i128(n[0] * d[0] as i128 + n[1] * d[1] as i128 + n[2] * d[2] as i128));
+        let e = st.n.map(|n| {
+            Wide::from_i128(n[0] * d[0] as i128 + n[1] * d[1] as i128 + n[2] * d[2] as i128)
+        });
         ops.sample += 18;
         let det = Wide::from_i128(st.det_sign as i128);
         if !decide(&e, &st.n, st.det_sign) {
@@ -208,10 +216,20 @@ pub fn sample_eval(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> 
         }
         let wz = setup.tri.v[0].map(|q| (q[W] as i64, q[Z] as i64));
         ops.sample += 12;
-        return SampleEval { e, det, hit: Some(Hit { depth: depth(&e, &wz, st.det_sign) }) };
+        return SampleEval {
+            e,
+            det,
+            hit: Some(Hit {
+                depth: depth(&e, &wz, st.det_sign),
+            }),
+        };
     }
     let (p, _frac) = positions(setup, s, ops);
-    let n = [cross(&p[1], &p[2]), cross(&p[2], &p[0]), cross(&p[0], &p[1])];
+    let n = [
+        cross(&p[1], &p[2]),
+        cross(&p[2], &p[0]),
+        cross(&p[0], &p[1]),
+    ];
     let e = n.map(|nk| dot_wide(&nk, &d));
     let mut det = Wide::ZERO;
     for (nc, pc) in n[0].iter().zip(p[0].iter()) {
@@ -224,7 +242,13 @@ pub fn sample_eval(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> 
     }
     let wz = p.map(|q| (q[2], q[3]));
     ops.sample += 12;
-    SampleEval { e, det, hit: Some(Hit { depth: depth(&e, &wz, det_sign) }) }
+    SampleEval {
+        e,
+        det,
+        hit: Some(Hit {
+            depth: depth(&e, &wz, det_sign),
+        }),
+    }
 }
 
 /// The sample test for one sample of a visible triangle: the depth on a hit.

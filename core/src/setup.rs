@@ -177,7 +177,11 @@ fn project(a: i64, w: i64, extent: i64, up: bool, bnd: u32) -> PixelCoord {
     // |a + w| < 2^31, E ≤ 2^11, bnd ≤ 16: numerator < 2^58 (i128 for headroom); w > 0 checked.
     let num = (a as i128 + w as i128) * extent as i128 * (1i128 << bnd);
     let den = 2 * w as i128;
-    let q = if up { ceil_div(num, den) } else { floor_div(num, den) };
+    let q = if up {
+        ceil_div(num, den)
+    } else {
+        floor_div(num, den)
+    };
     // |q| ≤ |num| < 2^58: fits i64.
     q.unwrap_or(0) as PixelCoord
 }
@@ -316,9 +320,23 @@ impl Setup {
     pub fn unculled(tri: &Triangle, vp: Viewport) -> Setup {
         let class = classify(tri);
         let full = AxisBoxes { lo: None, hi: None };
-        let footprint = PixelRect { x0: 0, y0: 0, x1: vp.w, y1: vp.h };
+        let footprint = PixelRect {
+            x0: 0,
+            y0: 0,
+            x1: vp.w,
+            y1: vp.h,
+        };
         let edges = (class == Class::Static).then(|| static_edges(tri));
-        Setup { class, footprint, span: Interval::UNIT, axes: [full, full], tri: *tri, viewport: vp, edges, prec: PrecisionBits::DEFAULT }
+        Setup {
+            class,
+            footprint,
+            span: Interval::UNIT,
+            axes: [full, full],
+            tri: *tri,
+            viewport: vp,
+            edges,
+            prec: PrecisionBits::DEFAULT,
+        }
     }
 }
 
@@ -328,9 +346,16 @@ fn static_edges(tri: &Triangle) -> StaticEdges {
     let n = [0usize, 1, 2].map(|k| {
         let a = p[(k + 1) % 3];
         let b = p[(k + 2) % 3];
-        [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+        [
+            a[1] * b[2] - a[2] * b[1],
+            a[2] * b[0] - a[0] * b[2],
+            a[0] * b[1] - a[1] * b[0],
+        ]
     });
-    StaticEdges { n, det_sign: det.signum() as i32 }
+    StaticEdges {
+        n,
+        det_sign: det.signum() as i32,
+    }
 }
 
 /// Run setup on one triangle at the default precision. Counts its arithmetic in `ops.setup`.
@@ -352,7 +377,10 @@ pub fn setup_with<P: Precision>(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> 
         return Outcome::Culled(Cull::Degenerate);
     }
     let (ew, eh) = (vp.w as i64, vp.h as i64);
-    let axes = [axis_boxes(tri, 0, ew, prec.bnd, ops), axis_boxes(tri, 1, eh, prec.bnd, ops)];
+    let axes = [
+        axis_boxes(tri, 0, ew, prec.bnd, ops),
+        axis_boxes(tri, 1, eh, prec.bnd, ops),
+    ];
     let (x0, x1) = axis_range(&axes[0], ew, prec.bnd);
     let (y0, y1) = axis_range(&axes[1], eh, prec.bnd);
     let footprint = PixelRect { x0, y0, x1, y1 };
@@ -363,5 +391,14 @@ pub fn setup_with<P: Precision>(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> 
         ops.setup += 30;
         static_edges(tri)
     });
-    Outcome::Visible(Setup { class, footprint, span, axes, tri: *tri, viewport: vp, edges, prec })
+    Outcome::Visible(Setup {
+        class,
+        footprint,
+        span,
+        axes,
+        tri: *tri,
+        viewport: vp,
+        edges,
+        prec,
+    })
 }

@@ -50,7 +50,10 @@ pub struct Stats {
 impl Stats {
     /// Sample test efficiency covered / tested in parts per million (0 when nothing was tested).
     pub fn ste_ppm(&self) -> u64 {
-        self.samples_covered.saturating_mul(1_000_000).checked_div(self.samples_tested).unwrap_or(0)
+        self.samples_covered
+            .saturating_mul(1_000_000)
+            .checked_div(self.samples_tested)
+            .unwrap_or(0)
     }
 
     /// Element-wise sum.

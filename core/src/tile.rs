@@ -10,13 +10,13 @@
 
 use embedded_graphics_core::draw_target::DrawTarget;
 use embedded_graphics_core::pixelcolor::{Rgb888, RgbColor};
-use embedded_graphics_core::prelude::{Point, Pixel};
+use embedded_graphics_core::prelude::{Pixel, Point};
 
 use crate::bounds::BoundsStrategy;
 use crate::error::Error;
+use crate::formats::{DefaultPrecision, Precision};
 use crate::input::{PixelRect, SamplePattern, Triangle, Viewport};
 use crate::sample::{sample_test, ScreenPos};
-use crate::formats::{DefaultPrecision, Precision};
 use crate::setup::{setup_with, Cull, Outcome, Setup};
 use crate::stats::{Ops, Stats};
 
@@ -64,11 +64,20 @@ impl<const TW: usize, const TH: usize, const S: usize> TileBuffer<TW, TH, S> {
     /// Depth-test and write one sample; returns whether it was written. Out-of-range indices are
     /// ignored (returns false).
     pub fn write(&mut self, x: usize, y: usize, s: usize, color: Rgb888, depth: i32) -> bool {
-        let slot = self.depth.get_mut(y).and_then(|r| r.get_mut(x)).and_then(|p| p.get_mut(s));
+        let slot = self
+            .depth
+            .get_mut(y)
+            .and_then(|r| r.get_mut(x))
+            .and_then(|p| p.get_mut(s));
         match slot {
             Some(d) if depth < *d => {
                 *d = depth;
-                if let Some(c) = self.color.get_mut(y).and_then(|r| r.get_mut(x)).and_then(|p| p.get_mut(s)) {
+                if let Some(c) = self
+                    .color
+                    .get_mut(y)
+                    .and_then(|r| r.get_mut(x))
+                    .and_then(|p| p.get_mut(s))
+                {
                     *c = color;
                 }
                 true
@@ -89,7 +98,11 @@ impl<const TW: usize, const TH: usize, const S: usize> TileBuffer<TW, TH, S> {
 
     /// Per-pixel counters.
     pub fn pixel_stats(&self, x: usize, y: usize) -> PixelStats {
-        self.stats.get(y).and_then(|r| r.get(x)).copied().unwrap_or_default()
+        self.stats
+            .get(y)
+            .and_then(|r| r.get(x))
+            .copied()
+            .unwrap_or_default()
     }
 
     /// Resolved color: per channel `(Σ + S/2) / S` (round half up), see [`resolve_colors`].
@@ -132,7 +145,13 @@ pub struct Renderer<B: BoundsStrategy, const N: usize, P: Precision = DefaultPre
 impl<B: BoundsStrategy, const N: usize, P: Precision> Renderer<B, N, P> {
     /// Set every triangle up exactly once. Fails if more than `N` triangles are visible.
     pub fn new(bounds: B, vp: Viewport, prims: &[Prim]) -> Result<Self, Error> {
-        let mut r = Renderer { prec: core::marker::PhantomData, bounds, vp, setups: heapless::Vec::new(), stats: Stats::default() };
+        let mut r = Renderer {
+            prec: core::marker::PhantomData,
+            bounds,
+            vp,
+            setups: heapless::Vec::new(),
+            stats: Stats::default(),
+        };
         for p in prims {
             r.stats.triangles += 1;
             match setup_with::<P>(&p.tri, vp, &mut r.stats.ops) {
@@ -168,7 +187,10 @@ impl<B: BoundsStrategy, const N: usize, P: Precision> Renderer<B, N, P> {
         fb: &mut TileBuffer<TW, TH, S>,
     ) -> Result<(), Error> {
         if pattern.spp() as usize != S {
-            return Err(Error::SppMismatch { tile: S as u16, pattern: pattern.spp() });
+            return Err(Error::SppMismatch {
+                tile: S as u16,
+                pattern: pattern.spp(),
+            });
         }
         let bt = bounds_tile as usize;
         if !matches!(bounds_tile, 1 | 2 | 4 | 8) || TW % bt != 0 || TH % bt != 0 {
@@ -190,24 +212,23 @@ impl<B: BoundsStrategy, const N: usize, P: Precision> Renderer<B, N, P> {
             if region.is_empty() {
                 continue;
             }
-            let mut by = region.y0 - region.y0 % b;
-            while by < region.y1 {
-                let mut bx = region.x0 - region.x0 % b;
-                while bx < region.x1 {
-                    let cell = PixelRect { x0: bx, y0: by, x1: bx + b, y1: by + b }.intersect(&region);
-                    bx += b;
-                    if cell.is_empty() {
-                        continue;
-                    }
-                    self.stats.tiles_visited += 1;
-                    let bounds = self.bounds.tile(setup, coeffs, cell, &mut self.stats.ops);
-                    let Some(uvt) = bounds else {
-                        self.stats.tiles_skipped += 1;
-                        continue;
-                    };
-                    shade_cell(setup, &uvt, cell, screen, pattern, *color, fb, &mut self.stats);
-                }
-                by += b;
+            for cell in region.cells(b) {
+                self.stats.tiles_visited += 1;
+                let bounds = self.bounds.tile(setup, coeffs, cell, &mut self.stats.ops);
+                let Some(uvt) = bounds else {
+                    self.stats.tiles_skipped += 1;
+                    continue;
+                };
+                shade_cell(
+                    setup,
+                    &uvt,
+                    cell,
+                    screen,
+                    pattern,
+                    *color,
+                    fb,
+                    &mut self.stats,
+                );
             }
         }
         Ok(())
@@ -232,7 +253,12 @@ impl<B: BoundsStrategy, const N: usize, P: Precision> Renderer<B, N, P> {
                     for tx in 0..TW {
                         let (x, y) = (x0 as usize + tx, y0 as usize + ty);
                         if x < self.vp.w as usize && y < self.vp.h as usize {
-                            out(x as u16, y as u16, fb.resolve(tx, ty), fb.pixel_stats(tx, ty));
+                            out(
+                                x as u16,
+                                y as u16,
+                                fb.resolve(tx, ty),
+                                fb.pixel_stats(tx, ty),
+                            );
                         }
                     }
                 }

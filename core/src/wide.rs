@@ -22,7 +22,10 @@ impl Wide {
     /// The value of a plain `i128`.
     pub fn from_i128(x: i128) -> Wide {
         // x = (x >> 64) · 2^64 + (x & MASK64), the shift floors so the low part is non-negative.
-        Wide { hi: x >> 64, lo: (x & MASK64) as u64 }
+        Wide {
+            hi: x >> 64,
+            lo: (x & MASK64) as u64,
+        }
     }
 
     /// `self + x`. Caller keeps |self| < 2^190 (three terms of < 2^189 each).
@@ -41,7 +44,7 @@ impl Wide {
     pub fn mul_add(&mut self, a: i128, b: i64) {
         let ah = a >> 64; // |ah| ≤ 2^63
         let al = a & MASK64; // [0, 2^64)
-        // ah·b: |.| ≤ 2^126, fits i128; it is a multiple of 2^64, so it goes into hi directly.
+                             // ah·b: |.| ≤ 2^126, fits i128; it is a multiple of 2^64, so it goes into hi directly.
         self.hi = self.hi.wrapping_add(ah * b as i128);
         // al·b: |.| < 2^64 · 2^63 = 2^127, fits i128.
         self.add_i128(al * b as i128);
@@ -62,7 +65,11 @@ impl Wide {
     /// Number of significant bits of the value, counting a negative value `v` as `!v = -v-1`
     /// (so `-1` and `0` have length 0). At most 191.
     pub fn bit_len(&self) -> u32 {
-        let (h, l) = if self.hi < 0 { (!self.hi, !self.lo) } else { (self.hi, self.lo) };
+        let (h, l) = if self.hi < 0 {
+            (!self.hi, !self.lo)
+        } else {
+            (self.hi, self.lo)
+        };
         if h != 0 {
             64 + (128 - h.leading_zeros())
         } else {
@@ -96,8 +103,14 @@ mod tests {
 
     #[test]
     fn mul_add_matches_i128_in_range() {
-        let cases: [(i128, i64); 6] =
-            [(5, 7), (-5, 7), (1 << 100, -3), (-(1 << 90), i64::MIN), ((1 << 120) - 1, 1), (0, 9)];
+        let cases: [(i128, i64); 6] = [
+            (5, 7),
+            (-5, 7),
+            (1 << 100, -3),
+            (-(1 << 90), i64::MIN),
+            ((1 << 120) - 1, 1),
+            (0, 9),
+        ];
         for (a, b) in cases {
             let mut w = Wide::ZERO;
             w.mul_add(a, b);

@@ -46,9 +46,33 @@ pub fn run_table(quick: bool, scenes: &[Bench], rows: &[Row]) -> Vec<BenchRow> {
             let vp = s.core_viewport();
             let colors: Vec<[u8; 3]> = s.tris.iter().map(|t| t.color).collect();
             let label = s.name.clone();
-            let o = RunOpts { vp: s.viewport, spp: s.spp, tile: s.tile, colors: &colors, clear: [0; 3], image: false, label: &label, oracle: None };
-            let f = run(&Fixed::new(Laine2011, vp, &core, &pattern), &pattern, &RunOpts { oracle: Some(&s.tris), ..o });
-            let r = run(&Reference { vp: s.viewport, tris: &s.tris, pattern: &pattern }, &pattern, &o);
+            let o = RunOpts {
+                vp: s.viewport,
+                spp: s.spp,
+                tile: s.tile,
+                colors: &colors,
+                clear: [0; 3],
+                image: false,
+                label: &label,
+                oracle: None,
+            };
+            let f = run(
+                &Fixed::new(Laine2011, vp, &core, &pattern),
+                &pattern,
+                &RunOpts {
+                    oracle: Some(&s.tris),
+                    ..o
+                },
+            );
+            let r = run(
+                &Reference {
+                    vp: s.viewport,
+                    tris: &s.tris,
+                    pattern: &pattern,
+                },
+                &pattern,
+                &o,
+            );
             let st = &f.stats;
             let visible: u64 = st.by_class.iter().sum();
             let per = |a: u64, b: u64| if b == 0 { 0.0 } else { a as f64 / b as f64 };
@@ -63,7 +87,11 @@ pub fn run_table(quick: bool, scenes: &[Bench], rows: &[Row]) -> Vec<BenchRow> {
                 oracle: st.ste_oracle(),
                 fixed_ms: f.time.as_secs_f64() * 1e3,
                 f64_ms: r.time.as_secs_f64() * 1e3,
-                ops: [per(st.ops_setup, st.triangles), per(st.ops_bounds, st.tiles_visited), per(st.ops_sample, st.samples_tested)],
+                ops: [
+                    per(st.ops_setup, st.triangles),
+                    per(st.ops_bounds, st.tiles_visited),
+                    per(st.ops_sample, st.samples_tested),
+                ],
             });
         }
     }
@@ -75,13 +103,23 @@ pub fn table_md(rows: &[BenchRow]) -> String {
     let mut s = String::from("| Scene | Bbox scan | uvt fixed | uvt f64 | oracle | avg area px | fixed ms | f64 ms |\n|---|---|---|---|---|---|---|---|\n");
     for r in rows {
         let name = if r.row == Row::Static {
-            match r.scene { Bench::Game => "GAME", Bench::Dense => "DENSE" }.to_string()
+            match r.scene {
+                Bench::Game => "GAME",
+                Bench::Dense => "DENSE",
+            }
+            .to_string()
         } else {
             format!("  {}", r.row.label())
         };
         s += &format!(
             "| {name} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.0} | {:.0} |\n",
-            100.0 * r.bbox, 100.0 * r.fixed, 100.0 * r.f64, 100.0 * r.oracle, r.avg_area_px, r.fixed_ms, r.f64_ms
+            100.0 * r.bbox,
+            100.0 * r.fixed,
+            100.0 * r.f64,
+            100.0 * r.oracle,
+            r.avg_area_px,
+            r.fixed_ms,
+            r.f64_ms
         );
     }
     s

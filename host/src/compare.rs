@@ -46,7 +46,11 @@ impl CoverageDiff {
     }
     /// Differences per compared pair.
     pub fn rate(&self) -> f64 {
-        if self.compared == 0 { 0.0 } else { (self.fixed_only + self.f64_only) as f64 / self.compared as f64 }
+        if self.compared == 0 {
+            0.0
+        } else {
+            (self.fixed_only + self.f64_only) as f64 / self.compared as f64
+        }
     }
 }
 
@@ -57,11 +61,16 @@ pub fn quant_distance_px(t: &SceneTri, vp: (u16, u16)) -> f64 {
     if wmin <= 0.0 {
         return f64::INFINITY;
     }
-    let r = all.iter().map(|v| (v[0].abs().max(v[1].abs())) / v[3]).fold(0.0, f64::max);
+    let r = all
+        .iter()
+        .map(|v| (v[0].abs().max(v[1].abs())) / v[3])
+        .fold(0.0, f64::max);
     let motion = (0..3)
         .map(|k| {
             let (a, b) = (t.t0[k], t.t1[k]);
-            (b[0] - a[0]).abs().max((b[1] - a[1]).abs()) + (b[4] - a[4]).abs() + r * (b[3] - a[3]).abs()
+            (b[0] - a[0]).abs().max((b[1] - a[1]).abs())
+                + (b[4] - a[4]).abs()
+                + r * (b[3] - a[3]).abs()
         })
         .fold(0.0, f64::max);
     let coc = all.iter().map(|v| v[4].abs()).fold(0.0, f64::max);
@@ -86,7 +95,12 @@ pub fn compare(tris: &[SceneTri], core: &[Triangle], vp: Viewport, pat: &Pattern
             };
             let fp_ref = reference::setup::setup(st, v).ok().map(|s| s.footprint);
             let region = match (fp_fixed, fp_ref) {
-                (Some(a), Some(b)) => uvt_core::PixelRect { x0: a.x0.min(b.x0), y0: a.y0.min(b.y0), x1: a.x1.max(b.x1), y1: a.y1.max(b.y1) },
+                (Some(a), Some(b)) => uvt_core::PixelRect {
+                    x0: a.x0.min(b.x0),
+                    y0: a.y0.min(b.y0),
+                    x1: a.x1.max(b.x1),
+                    y1: a.y1.max(b.y1),
+                },
                 (Some(a), None) | (None, Some(a)) => a,
                 (None, None) => return d,
             };
@@ -99,11 +113,17 @@ pub fn compare(tris: &[SceneTri], core: &[Triangle], vp: Viewport, pat: &Pattern
                         let (q, e) = (&pat.quant[idx], &pat.exact[idx]);
                         let f = sample_test(&full, ScreenPos::of(px, py, q), q, &mut ops).is_some();
                         let (x, y) = (px as f64 + e[0], py as f64 + e[1]);
-                        let r = reference::sample::sample_test(st, v, x, y, e[2], e[3], e[4]).is_some();
+                        let r =
+                            reference::sample::sample_test(st, v, x, y, e[2], e[3], e[4]).is_some();
                         d.compared += 1;
                         if f != r {
-                            if f { d.fixed_only += 1 } else { d.f64_only += 1 }
-                            let dist = reference::sample::edge_distance_px(st, v, x, y, e[2], e[3], e[4]);
+                            if f {
+                                d.fixed_only += 1
+                            } else {
+                                d.f64_only += 1
+                            }
+                            let dist =
+                                reference::sample::edge_distance_px(st, v, x, y, e[2], e[3], e[4]);
                             d.max_distance_px = d.max_distance_px.max(dist);
                             d.max_bound_px = d.max_bound_px.max(bound);
                             if dist > bound {

@@ -75,7 +75,13 @@ pub struct Fixed<'a, B, P = uvt_core::DefaultPrecision> {
 impl<'a, B> Fixed<'a, B> {
     /// The core at the default precision.
     pub fn new(strat: B, vp: Viewport, tris: &'a [Triangle], pattern: &'a Pattern) -> Self {
-        Fixed { prec: std::marker::PhantomData, strat, vp, tris, pattern }
+        Fixed {
+            prec: std::marker::PhantomData,
+            strat,
+            vp,
+            tris,
+            pattern,
+        }
     }
 }
 
@@ -110,7 +116,8 @@ where
     }
     fn test(&self, s: &Self::Setup, px: u16, py: u16, idx: usize, ops: &mut Ops) -> Option<f64> {
         let q = &self.pattern.quant[idx];
-        uvt_core::sample_test(&s.0, uvt_core::ScreenPos::of(px, py, q), q, ops).map(|h| h.depth as f64)
+        uvt_core::sample_test(&s.0, uvt_core::ScreenPos::of(px, py, q), q, ops)
+            .map(|h| h.depth as f64)
     }
     fn far(&self) -> f64 {
         i32::MAX as f64
@@ -156,7 +163,15 @@ impl Pipeline for Reference<'_> {
     }
     fn test(&self, s: &Self::Setup, px: u16, py: u16, idx: usize, _: &mut Ops) -> Option<f64> {
         let e = &self.pattern.exact[idx];
-        reference::sample::sample_test(&s.tri, self.vp, px as f64 + e[0], py as f64 + e[1], e[2], e[3], e[4])
+        reference::sample::sample_test(
+            &s.tri,
+            self.vp,
+            px as f64 + e[0],
+            py as f64 + e[1],
+            e[2],
+            e[3],
+            e[4],
+        )
     }
     fn far(&self) -> f64 {
         f64::INFINITY
@@ -199,11 +214,34 @@ pub struct FrameStats {
 
 impl FrameStats {
     fn add(&mut self, o: &FrameStats) {
-        let a = [&mut self.triangles, &mut self.culled_outside, &mut self.culled_degenerate, &mut self.tiles_visited,
-            &mut self.tiles_skipped, &mut self.samples_tested, &mut self.samples_covered, &mut self.footprint_samples,
-            &mut self.oracle_tested, &mut self.ops_setup, &mut self.ops_bounds, &mut self.ops_sample];
-        let b = [o.triangles, o.culled_outside, o.culled_degenerate, o.tiles_visited, o.tiles_skipped, o.samples_tested,
-            o.samples_covered, o.footprint_samples, o.oracle_tested, o.ops_setup, o.ops_bounds, o.ops_sample];
+        let a = [
+            &mut self.triangles,
+            &mut self.culled_outside,
+            &mut self.culled_degenerate,
+            &mut self.tiles_visited,
+            &mut self.tiles_skipped,
+            &mut self.samples_tested,
+            &mut self.samples_covered,
+            &mut self.footprint_samples,
+            &mut self.oracle_tested,
+            &mut self.ops_setup,
+            &mut self.ops_bounds,
+            &mut self.ops_sample,
+        ];
+        let b = [
+            o.triangles,
+            o.culled_outside,
+            o.culled_degenerate,
+            o.tiles_visited,
+            o.tiles_skipped,
+            o.samples_tested,
+            o.samples_covered,
+            o.footprint_samples,
+            o.oracle_tested,
+            o.ops_setup,
+            o.ops_bounds,
+            o.ops_sample,
+        ];
         for (x, y) in a.into_iter().zip(b) {
             *x += y;
         }
@@ -231,7 +269,11 @@ impl FrameStats {
 }
 
 fn ratio(a: u64, b: u64) -> f64 {
-    if b == 0 { 0.0 } else { a as f64 / b as f64 }
+    if b == 0 {
+        0.0
+    } else {
+        a as f64 / b as f64
+    }
 }
 
 /// A rendered frame.
@@ -270,7 +312,9 @@ pub struct RunOpts<'a> {
 pub const ORACLE_POINTS: u32 = 16;
 
 fn oracle_points() -> Vec<[f64; 5]> {
-    (0..ORACLE_POINTS).map(|i| [0, 1, 2, 3, 4].map(|d| sobol_burley::sample(i, d, 0x0ac1e) as f64)).collect()
+    (0..ORACLE_POINTS)
+        .map(|i| [0, 1, 2, 3, 4].map(|d| sobol_burley::sample(i, d, 0x0ac1e) as f64))
+        .collect()
 }
 
 const BAND: u16 = 8;
@@ -286,7 +330,10 @@ pub fn run<P: Pipeline>(p: &P, pattern: &Pattern, o: &RunOpts<'_>) -> Frame {
             (p.setup(i, &mut ops), ops)
         })
         .collect();
-    let mut stats = FrameStats { triangles: n as u64, ..Default::default() };
+    let mut stats = FrameStats {
+        triangles: n as u64,
+        ..Default::default()
+    };
     let (w, h) = (o.vp.0 as usize, o.vp.1 as usize);
     let bands = h.div_ceil(BAND as usize);
     let mut bins: Vec<Vec<u32>> = vec![Vec::new(); bands];
@@ -298,7 +345,8 @@ pub fn run<P: Pipeline>(p: &P, pattern: &Pattern, o: &RunOpts<'_>) -> Frame {
             SetupOut::Visible(st, class) => {
                 stats.by_class[class.index()] += 1;
                 let fp = p.footprint(st);
-                stats.footprint_samples += (fp.x1 - fp.x0) as u64 * (fp.y1 - fp.y0) as u64 * o.spp as u64;
+                stats.footprint_samples +=
+                    (fp.x1 - fp.x0) as u64 * (fp.y1 - fp.y0) as u64 * o.spp as u64;
                 for bin in &mut bins[(fp.y0 / BAND) as usize..=((fp.y1 - 1) / BAND) as usize] {
                     bin.push(i as u32);
                 }
@@ -317,7 +365,12 @@ pub fn run<P: Pipeline>(p: &P, pattern: &Pattern, o: &RunOpts<'_>) -> Frame {
             if start.elapsed() > Duration::from_secs(1) {
                 shown.call_once(|| {
                     bar.set_draw_target(ProgressDrawTarget::stderr());
-                    bar.set_style(ProgressStyle::with_template("{msg:>14} [{bar:40}] {pos}/{len} bands {elapsed}").unwrap_or_else(|_| ProgressStyle::default_bar()));
+                    bar.set_style(
+                        ProgressStyle::with_template(
+                            "{msg:>14} [{bar:40}] {pos}/{len} bands {elapsed}",
+                        )
+                        .unwrap_or_else(|_| ProgressStyle::default_bar()),
+                    );
                     bar.set_message(o.label.to_string());
                 });
             }
@@ -326,17 +379,33 @@ pub fn run<P: Pipeline>(p: &P, pattern: &Pattern, o: &RunOpts<'_>) -> Frame {
         })
         .collect();
     bar.finish_and_clear();
-    let mut image = if o.image { Vec::with_capacity(w * h) } else { Vec::new() };
+    let mut image = if o.image {
+        Vec::with_capacity(w * h)
+    } else {
+        Vec::new()
+    };
     let mut heat = Vec::with_capacity(w * h);
     for (s, img, ht) in results {
         stats.add(&s);
         image.extend(img);
         heat.extend(ht);
     }
-    Frame { stats, image, heat, time: start.elapsed() }
+    Frame {
+        stats,
+        image,
+        heat,
+        time: start.elapsed(),
+    }
 }
 
-fn band<P: Pipeline>(p: &P, pat: &Pattern, o: &RunOpts<'_>, setups: &[(SetupOut<P::Setup>, Ops)], b: u16, list: &[u32]) -> (FrameStats, Vec<[u8; 3]>, Vec<u32>) {
+fn band<P: Pipeline>(
+    p: &P,
+    pat: &Pattern,
+    o: &RunOpts<'_>,
+    setups: &[(SetupOut<P::Setup>, Ops)],
+    b: u16,
+    list: &[u32],
+) -> (FrameStats, Vec<[u8; 3]>, Vec<u32>) {
     let (w, s) = (o.vp.0 as usize, o.spp as usize);
     let y0 = b * BAND;
     let y1 = (y0 + BAND).min(o.vp.1);
@@ -346,90 +415,93 @@ fn band<P: Pipeline>(p: &P, pat: &Pattern, o: &RunOpts<'_>, setups: &[(SetupOut<
     let mut heat = vec![0u32; w * rows];
     let mut st = FrameStats::default();
     let mut ops = Ops::default();
-    let screen = PixelRect { x0: 0, y0, x1: o.vp.0, y1 };
+    let screen = PixelRect {
+        x0: 0,
+        y0,
+        x1: o.vp.0,
+        y1,
+    };
     let bt = o.tile as u16;
     let mut cell_samples: Vec<(usize, bool)> = Vec::new();
-    let dense = if o.oracle.is_some() { oracle_points() } else { Vec::new() };
+    let dense = if o.oracle.is_some() {
+        oracle_points()
+    } else {
+        Vec::new()
+    };
     for &i in list {
-        let SetupOut::Visible(setup, _) = &setups[i as usize].0 else { continue };
+        let SetupOut::Visible(setup, _) = &setups[i as usize].0 else {
+            continue;
+        };
         let region = p.footprint(setup).intersect(&screen);
         if region.is_empty() {
             continue;
         }
         let col = o.colors[i as usize];
-        let mut by = region.y0 - region.y0 % bt;
-        while by < region.y1 {
-            let mut bx = region.x0 - region.x0 % bt;
-            while bx < region.x1 {
-                let cell = PixelRect { x0: bx, y0: by, x1: bx + bt, y1: by + bt }.intersect(&region);
-                bx += bt;
-                if cell.is_empty() {
-                    continue;
-                }
-                st.tiles_visited += 1;
-                let Some(bounds) = p.bounds(setup, cell, &mut ops) else {
-                    st.tiles_skipped += 1;
-                    continue;
-                };
-                cell_samples.clear();
-                let mut lo = [f64::MAX; 3];
-                let mut hi = [f64::MIN; 3];
-                for py in cell.y0..cell.y1 {
-                    for px in cell.x0..cell.x1 {
-                        let pix = (py - y0) as usize * w + px as usize;
-                        for si in 0..s {
-                            let idx = pat.index(px, py, si);
-                            if !p.inside(&bounds, idx) {
-                                continue;
-                            }
-                            st.samples_tested += 1;
-                            heat[pix] += 1;
-                            let hit = p.test(setup, px, py, idx, &mut ops);
-                            cell_samples.push((idx, hit.is_some()));
-                            if let Some(d) = hit {
-                                st.samples_covered += 1;
-                                let uvt = p.uvt(idx);
-                                for k in 0..3 {
-                                    lo[k] = lo[k].min(uvt[k]);
-                                    hi[k] = hi[k].max(uvt[k]);
-                                }
-                                let slot = pix * s + si;
-                                if d < depth[slot] {
-                                    depth[slot] = d;
-                                    if o.image {
-                                        color[slot] = col;
-                                    }
-                                }
-                            }
+        for cell in region.cells(bt) {
+            st.tiles_visited += 1;
+            let Some(bounds) = p.bounds(setup, cell, &mut ops) else {
+                st.tiles_skipped += 1;
+                continue;
+            };
+            cell_samples.clear();
+            let mut lo = [f64::MAX; 3];
+            let mut hi = [f64::MIN; 3];
+            for py in cell.y0..cell.y1 {
+                for px in cell.x0..cell.x1 {
+                    let pix = (py - y0) as usize * w + px as usize;
+                    for si in 0..s {
+                        let idx = pat.index(px, py, si);
+                        if !p.inside(&bounds, idx) {
+                            continue;
                         }
-                    }
-                }
-                // Oracle: the box also grows around densely sampled covered points of the tile
-                // (exact geometry, f64 ray test), so it approaches the covered region's true box.
-                if let (Some(tris), true) = (o.oracle, lo[0] <= hi[0]) {
-                    let r = p.ranges(&bounds);
-                    let tri = &tris[i as usize];
-                    for d in &dense {
-                        let x = cell.x0 as f64 + d[0] * (cell.x1 - cell.x0) as f64;
-                        let y = cell.y0 as f64 + d[1] * (cell.y1 - cell.y0) as f64;
-                        let uvt = [0, 1, 2].map(|k| r[k].0 + d[k + 2] * (r[k].1 - r[k].0));
-                        if reference::sample::sample_test(tri, o.vp, x, y, uvt[0], uvt[1], uvt[2]).is_some() {
+                        st.samples_tested += 1;
+                        heat[pix] += 1;
+                        let hit = p.test(setup, px, py, idx, &mut ops);
+                        cell_samples.push((idx, hit.is_some()));
+                        if let Some(d) = hit {
+                            st.samples_covered += 1;
+                            let uvt = p.uvt(idx);
                             for k in 0..3 {
                                 lo[k] = lo[k].min(uvt[k]);
                                 hi[k] = hi[k].max(uvt[k]);
                             }
+                            let slot = pix * s + si;
+                            if d < depth[slot] {
+                                depth[slot] = d;
+                                if o.image {
+                                    color[slot] = col;
+                                }
+                            }
                         }
                     }
                 }
-                st.oracle_tested += cell_samples
-                    .iter()
-                    .filter(|(idx, _)| {
-                        let uvt = p.uvt(*idx);
-                        (0..3).all(|k| lo[k] <= uvt[k] && uvt[k] <= hi[k])
-                    })
-                    .count() as u64;
             }
-            by += bt;
+            // Oracle: the box also grows around densely sampled covered points of the tile
+            // (exact geometry, f64 ray test), so it approaches the covered region's true box.
+            if let (Some(tris), true) = (o.oracle, lo[0] <= hi[0]) {
+                let r = p.ranges(&bounds);
+                let tri = &tris[i as usize];
+                for d in &dense {
+                    let x = cell.x0 as f64 + d[0] * (cell.x1 - cell.x0) as f64;
+                    let y = cell.y0 as f64 + d[1] * (cell.y1 - cell.y0) as f64;
+                    let uvt = [0, 1, 2].map(|k| r[k].0 + d[k + 2] * (r[k].1 - r[k].0));
+                    if reference::sample::sample_test(tri, o.vp, x, y, uvt[0], uvt[1], uvt[2])
+                        .is_some()
+                    {
+                        for k in 0..3 {
+                            lo[k] = lo[k].min(uvt[k]);
+                            hi[k] = hi[k].max(uvt[k]);
+                        }
+                    }
+                }
+            }
+            st.oracle_tested += cell_samples
+                .iter()
+                .filter(|(idx, _)| {
+                    let uvt = p.uvt(*idx);
+                    (0..3).all(|k| lo[k] <= uvt[k] && uvt[k] <= hi[k])
+                })
+                .count() as u64;
         }
     }
     st.add_ops(&ops);

@@ -10,7 +10,11 @@ use clap::{Parser, Subcommand};
 use uvt_host::{bench, render, scene::Scene, scenes};
 
 #[derive(Parser)]
-#[command(name = "uvt", version, about = "uvt: bit-accurate stochastic rasterizer reference model, host tools")]
+#[command(
+    name = "uvt",
+    version,
+    about = "uvt: bit-accurate stochastic rasterizer reference model, host tools"
+)]
 struct Cli {
     #[command(subcommand)]
     cmd: Cmd,
@@ -108,7 +112,12 @@ fn run(cli: Cli) -> Result<()> {
                 println!("wrote {}", f.display());
             }
         }
-        Cmd::BenchSte { quick, json, scene, row } => {
+        Cmd::BenchSte {
+            quick,
+            json,
+            scene,
+            row,
+        } => {
             let kinds: Vec<scenes::Bench> = match scene.as_deref() {
                 None => vec![scenes::Bench::Game, scenes::Bench::Dense],
                 Some("game") => vec![scenes::Bench::Game],
@@ -130,25 +139,54 @@ fn run(cli: Cli) -> Result<()> {
         }
         Cmd::Precision { quick, out } => {
             let sw = if quick {
-                uvt_host::precision::Sweep { scenes: vec![scenes::Bench::Game, scenes::Bench::Dense], rows: vec![scenes::Row::Static, scenes::Row::Both], tiles: vec![1, 2, 4, 8], shrink: 2 }
+                uvt_host::precision::Sweep {
+                    scenes: vec![scenes::Bench::Game, scenes::Bench::Dense],
+                    rows: vec![scenes::Row::Static, scenes::Row::Both],
+                    tiles: vec![1, 2, 4, 8],
+                    shrink: 2,
+                }
             } else {
-                uvt_host::precision::Sweep { scenes: vec![scenes::Bench::Game, scenes::Bench::Dense], rows: scenes::Row::ALL.to_vec(), tiles: vec![1, 2, 4, 8], shrink: 1 }
+                uvt_host::precision::Sweep {
+                    scenes: vec![scenes::Bench::Game, scenes::Bench::Dense],
+                    rows: scenes::Row::ALL.to_vec(),
+                    tiles: vec![1, 2, 4, 8],
+                    shrink: 1,
+                }
             };
             let rows = uvt_host::precision::sweep(&sw);
             let md = uvt_host::precision::table_md(&rows);
             std::fs::create_dir_all(&out)?;
             std::fs::write(out.join("precision.md"), &md)?;
-            std::fs::write(out.join("precision.json"), serde_json::to_string_pretty(&rows)? + "\n")?;
+            std::fs::write(
+                out.join("precision.json"),
+                serde_json::to_string_pretty(&rows)? + "\n",
+            )?;
             uvt_host::precision::plot_svg(&rows, &out.join("precision.svg"))?;
             print!("{md}");
         }
         Cmd::Stress { dir } => {
             let scenes = uvt_host::precision::stress_scenes(&dir)?;
-            let rows: Vec<_> = scenes.iter().map(|s| (s.name.clone(), s.tris.len(), uvt_host::precision::stress_row(s))).collect();
+            let rows: Vec<_> = scenes
+                .iter()
+                .map(|s| {
+                    (
+                        s.name.clone(),
+                        s.tris.len(),
+                        uvt_host::precision::stress_row(s),
+                    )
+                })
+                .collect();
             print!("{}", uvt_host::precision::stress_md(&rows));
-            let bad: Vec<_> = rows.iter().filter(|r| r.2.violations > 0 || r.2.beyond_bound > 0).map(|r| r.0.clone()).collect();
+            let bad: Vec<_> = rows
+                .iter()
+                .filter(|r| r.2.violations > 0 || r.2.beyond_bound > 0)
+                .map(|r| r.0.clone())
+                .collect();
             if !bad.is_empty() {
-                anyhow::bail!("conservativeness or error-bound failures in: {}", bad.join(", "));
+                anyhow::bail!(
+                    "conservativeness or error-bound failures in: {}",
+                    bad.join(", ")
+                );
             }
         }
         Cmd::Vectors(VecCmd::Export { scene, out, seed }) => {
@@ -169,7 +207,10 @@ fn run(cli: Cli) -> Result<()> {
             for st in uvt_host::vectors::format::STAGES {
                 for io in ["in", "out"] {
                     let spp = if st == "resolve" { 4 } else { 0 };
-                    println!("{}", uvt_host::vectors::format::layout_md(&format!("{st}_{io}"), spp));
+                    println!(
+                        "{}",
+                        uvt_host::vectors::format::layout_md(&format!("{st}_{io}"), spp)
+                    );
                 }
             }
         }

@@ -115,8 +115,14 @@ pub fn to_clip(cam: &Camera, inst: &[Instance], viewport: (u16, u16)) -> Vec<Sce
             let w = t.map(|i| ins.m0.transform_point3(ins.mesh.pos[i as usize]));
             let n = (w[1] - w[0]).cross(w[2] - w[0]).normalize_or_zero();
             let k = 0.35 + 0.65 * n.dot(light).abs();
-            let color = ins.color.map(|c| (c as f64 * k).round().clamp(0.0, 255.0) as u8);
-            out.push(SceneTri { t0: g(&v0), t1: g(&v1), color });
+            let color = ins
+                .color
+                .map(|c| (c as f64 * k).round().clamp(0.0, 255.0) as u8);
+            out.push(SceneTri {
+                t0: g(&v0),
+                t1: g(&v1),
+                color,
+            });
         }
     }
     out
@@ -151,7 +157,8 @@ pub fn sphere(radius: f64, seg: u32) -> Mesh {
         let th = std::f64::consts::PI * r as f64 / rings as f64;
         for s in 0..seg {
             let ph = 2.0 * std::f64::consts::PI * s as f64 / seg as f64;
-            m.pos.push(DVec3::new(th.sin() * ph.cos(), th.cos(), th.sin() * ph.sin()) * radius);
+            m.pos
+                .push(DVec3::new(th.sin() * ph.cos(), th.cos(), th.sin() * ph.sin()) * radius);
         }
     }
     let id = |r: u32, s: u32| r * seg + s % seg;
@@ -175,7 +182,14 @@ pub fn cuboid(h: DVec3) -> Mesh {
         let s = |b: u32| if i & b != 0 { 1.0 } else { -1.0 };
         m.pos.push(DVec3::new(s(1) * h.x, s(2) * h.y, s(4) * h.z));
     }
-    let faces = [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]];
+    let faces = [
+        [0, 2, 3, 1],
+        [4, 5, 7, 6],
+        [0, 1, 5, 4],
+        [2, 6, 7, 3],
+        [0, 4, 6, 2],
+        [1, 3, 7, 5],
+    ];
     for f in faces {
         m.tris.push([f[0], f[1], f[2]]);
         m.tris.push([f[0], f[2], f[3]]);
@@ -198,7 +212,9 @@ fn number(v: Option<&Value>, field: &str, default: Option<f64>) -> Result<f64> {
         (None, Some(d)) => Ok(d),
         (None, None) => bail!("{field}: missing"),
         (Some(x), _) => {
-            let f = x.as_f64().ok_or_else(|| anyhow!("{field}: {x} is not a number"))?;
+            let f = x
+                .as_f64()
+                .ok_or_else(|| anyhow!("{field}: {x} is not a number"))?;
             if !f.is_finite() {
                 bail!("{field}: not finite");
             }
@@ -217,23 +233,44 @@ fn pose(v: Option<&Value>, field: &str) -> Result<Pose> {
 }
 
 fn model(v: Option<&Value>, field: &str) -> Result<DMat4> {
-    let Some(v) = v else { return Ok(DMat4::IDENTITY) };
-    let t = vec3(v.get("translate"), &format!("{field}.translate"), DVec3::ZERO)?;
+    let Some(v) = v else {
+        return Ok(DMat4::IDENTITY);
+    };
+    let t = vec3(
+        v.get("translate"),
+        &format!("{field}.translate"),
+        DVec3::ZERO,
+    )?;
     let r = vec3(v.get("rotate"), &format!("{field}.rotate"), DVec3::ZERO)?;
     let s = number(v.get("scale"), &format!("{field}.scale"), Some(1.0))?;
-    let rot = glam::DQuat::from_euler(glam::EulerRot::XYZ, r.x.to_radians(), r.y.to_radians(), r.z.to_radians());
-    Ok(DMat4::from_scale_rotation_translation(DVec3::splat(s), rot, t))
+    let rot = glam::DQuat::from_euler(
+        glam::EulerRot::XYZ,
+        r.x.to_radians(),
+        r.y.to_radians(),
+        r.z.to_radians(),
+    );
+    Ok(DMat4::from_scale_rotation_translation(
+        DVec3::splat(s),
+        rot,
+        t,
+    ))
 }
 
 fn load_obj(path: &std::path::Path, field: &str) -> Result<Mesh> {
-    let opts = tobj::LoadOptions { triangulate: true, single_index: true, ..Default::default() };
-    let (models, _) = tobj::load_obj(path, &opts).map_err(|e| anyhow!("{field}: cannot load {}: {e}", path.display()))?;
+    let opts = tobj::LoadOptions {
+        triangulate: true,
+        single_index: true,
+        ..Default::default()
+    };
+    let (models, _) = tobj::load_obj(path, &opts)
+        .map_err(|e| anyhow!("{field}: cannot load {}: {e}", path.display()))?;
     let mut m = Mesh::default();
     for model in models {
         let base = m.pos.len() as u32;
         let p = &model.mesh.positions;
         for c in p.chunks_exact(3) {
-            m.pos.push(DVec3::new(c[0] as f64, c[1] as f64, c[2] as f64));
+            m.pos
+                .push(DVec3::new(c[0] as f64, c[1] as f64, c[2] as f64));
         }
         for t in model.mesh.indices.chunks_exact(3) {
             m.tris.push([base + t[0], base + t[1], base + t[2]]);
@@ -246,7 +283,12 @@ fn load_obj(path: &std::path::Path, field: &str) -> Result<Mesh> {
 }
 
 /// Build clip-space triangles from the JSON camera and meshes.
-pub fn build(cam: &Value, meshes: &Value, viewport: (u16, u16), base: &std::path::Path) -> Result<Vec<SceneTri>> {
+pub fn build(
+    cam: &Value,
+    meshes: &Value,
+    viewport: (u16, u16),
+    base: &std::path::Path,
+) -> Result<Vec<SceneTri>> {
     let t0 = pose(cam.get("t0"), "camera.t0")?;
     let camera = Camera {
         fov_y: number(cam.get("fov_y"), "camera.fov_y", Some(60.0))?,
@@ -255,7 +297,11 @@ pub fn build(cam: &Value, meshes: &Value, viewport: (u16, u16), base: &std::path
         aperture: number(cam.get("aperture"), "camera.aperture", Some(0.0))?,
         focus: number(cam.get("focus"), "camera.focus", Some(1.0))?,
         t0,
-        t1: if cam.get("t1").is_some() { pose(cam.get("t1"), "camera.t1")? } else { t0 },
+        t1: if cam.get("t1").is_some() {
+            pose(cam.get("t1"), "camera.t1")?
+        } else {
+            t0
+        },
     };
     if !(camera.fov_y > 0.0 && camera.fov_y < 180.0) {
         bail!("camera.fov_y: {} is not in (0, 180)", camera.fov_y);
@@ -266,22 +312,38 @@ pub fn build(cam: &Value, meshes: &Value, viewport: (u16, u16), base: &std::path
     if camera.aperture != 0.0 && camera.focus <= 0.0 {
         bail!("camera.focus: must be positive when aperture is set");
     }
-    let list = meshes.as_array().ok_or_else(|| anyhow!("meshes: expected an array"))?;
+    let list = meshes
+        .as_array()
+        .ok_or_else(|| anyhow!("meshes: expected an array"))?;
     let mut inst = Vec::new();
     for (i, m) in list.iter().enumerate() {
         let f = format!("meshes[{i}]");
         let mesh = if let Some(p) = m.get("obj").and_then(Value::as_str) {
             load_obj(&base.join(p), &format!("{f}.obj"))?
         } else if let Some(g) = m.get("grid") {
-            let s = num_array(g.get("size").unwrap_or(&Value::Null), 2, &format!("{f}.grid.size"))?;
-            let c = num_array(g.get("cells").unwrap_or(&Value::Null), 2, &format!("{f}.grid.cells"))?;
-            if c.iter().any(|&x| !(1.0..=2048.0).contains(&x) || x.fract() != 0.0) {
+            let s = num_array(
+                g.get("size").unwrap_or(&Value::Null),
+                2,
+                &format!("{f}.grid.size"),
+            )?;
+            let c = num_array(
+                g.get("cells").unwrap_or(&Value::Null),
+                2,
+                &format!("{f}.grid.cells"),
+            )?;
+            if c.iter()
+                .any(|&x| !(1.0..=2048.0).contains(&x) || x.fract() != 0.0)
+            {
                 bail!("{f}.grid.cells: whole numbers in 1..=2048");
             }
             grid((s[0], s[1]), (c[0] as u32, c[1] as u32))
         } else if let Some(s) = m.get("sphere") {
             let r = number(s.get("radius"), &format!("{f}.sphere.radius"), Some(1.0))?;
-            let n = number(s.get("segments"), &format!("{f}.sphere.segments"), Some(16.0))?;
+            let n = number(
+                s.get("segments"),
+                &format!("{f}.sphere.segments"),
+                Some(16.0),
+            )?;
             if !(3.0..=4096.0).contains(&n) || n.fract() != 0.0 {
                 bail!("{f}.sphere.segments: whole number in 3..=4096");
             }
@@ -290,12 +352,26 @@ pub fn build(cam: &Value, meshes: &Value, viewport: (u16, u16), base: &std::path
             bail!("{f}: needs one of obj, grid, sphere");
         };
         let m0 = model(m.get("model"), &format!("{f}.model"))?;
-        let m1 = if m.get("model_t1").is_some() { model(m.get("model_t1"), &format!("{f}.model_t1"))? } else { m0 };
+        let m1 = if m.get("model_t1").is_some() {
+            model(m.get("model_t1"), &format!("{f}.model_t1"))?
+        } else {
+            m0
+        };
         let color = match m.get("color") {
             None => [200, 200, 200],
-            Some(c) => num_array(c, 3, &format!("{f}.color"))?.iter().map(|x| x.clamp(0.0, 255.0) as u8).collect::<Vec<_>>().try_into().unwrap_or([200; 3]),
+            Some(c) => num_array(c, 3, &format!("{f}.color"))?
+                .iter()
+                .map(|x| x.clamp(0.0, 255.0) as u8)
+                .collect::<Vec<_>>()
+                .try_into()
+                .unwrap_or([200; 3]),
         };
-        inst.push(Instance { mesh, m0, m1, color });
+        inst.push(Instance {
+            mesh,
+            m0,
+            m1,
+            color,
+        });
     }
     Ok(to_clip(&camera, &inst, viewport))
 }

@@ -28,7 +28,13 @@ pub struct Pattern {
 pub fn quantize(s: &[f64; 5]) -> Sample {
     let sub = |x: f64| SubPixel::from_bits((x * 256.0).floor().clamp(0.0, 255.0) as u8);
     let tuv = |x: f64, lo: f64| (x * 65536.0).round().clamp(lo * 65536.0, 65536.0) as i32;
-    Sample { sx: sub(s[0]), sy: sub(s[1]), u: Lens::from_bits(tuv(s[2], -1.0)), v: Lens::from_bits(tuv(s[3], -1.0)), t: Time::from_bits(tuv(s[4], 0.0)) }
+    Sample {
+        sx: sub(s[0]),
+        sy: sub(s[1]),
+        u: Lens::from_bits(tuv(s[2], -1.0)),
+        v: Lens::from_bits(tuv(s[3], -1.0)),
+        t: Time::from_bits(tuv(s[4], 0.0)),
+    }
 }
 
 impl Pattern {
@@ -42,7 +48,8 @@ impl Pattern {
             match kind {
                 PatternKind::Sobol => {
                     // One Owen scramble per pixel (seed mixes the table seed and pixel index).
-                    let ps = (seed as u32).wrapping_mul(0x9e37_79b9) ^ (pixel as u32).wrapping_mul(0x85eb_ca6b);
+                    let ps = (seed as u32).wrapping_mul(0x9e37_79b9)
+                        ^ (pixel as u32).wrapping_mul(0x85eb_ca6b);
                     for i in 0..s {
                         let d = |dim: u32| sobol_burley::sample(i as u32, dim, ps) as f64;
                         exact.push([d(0), d(1), 2.0 * d(2) - 1.0, 2.0 * d(3) - 1.0, d(4)]);
@@ -74,20 +81,42 @@ impl Pattern {
             }
         }
         let quant = exact.iter().map(quantize).collect();
-        Pattern { block: BLOCK, spp, exact, quant }
+        Pattern {
+            block: BLOCK,
+            spp,
+            exact,
+            quant,
+        }
     }
 
     /// The same table quantized to `tuv` fraction bits for t/u/v (round to nearest on that grid).
     pub fn with_tuv(&self, tuv: u32) -> Pattern {
         let step = 1i32 << (16 - tuv);
-        let snap = |x: Lens, lo: i32| Lens::from_bits(((x.to_bits() as f64 / step as f64).round() as i32 * step).clamp(lo, 65536));
-        let quant = self.quant.iter().map(|s| Sample { u: snap(s.u, -65536), v: snap(s.v, -65536), t: snap(s.t, 0), ..*s }).collect();
-        Pattern { quant, ..self.clone() }
+        let snap = |x: Lens, lo: i32| {
+            Lens::from_bits(
+                ((x.to_bits() as f64 / step as f64).round() as i32 * step).clamp(lo, 65536),
+            )
+        };
+        let quant = self
+            .quant
+            .iter()
+            .map(|s| Sample {
+                u: snap(s.u, -65536),
+                v: snap(s.v, -65536),
+                t: snap(s.t, 0),
+                ..*s
+            })
+            .collect();
+        Pattern {
+            quant,
+            ..self.clone()
+        }
     }
 
     /// The core's view of the table.
     pub fn core(&self) -> SamplePattern<'_> {
-        SamplePattern::new(self.block, self.spp, &self.quant).expect("generated table is in the domain")
+        SamplePattern::new(self.block, self.spp, &self.quant)
+            .expect("generated table is in the domain")
     }
 
     /// Index of sample `s` of pixel (x, y) in both tables.

@@ -11,7 +11,9 @@ use std::time::Duration;
 use rayon::prelude::*;
 use serde::Serialize;
 use uvt_core::bounds::BoundsStrategy;
-use uvt_core::{sample_eval, Laine2011, Ops, Outcome, PixelRect, Prec, Precision, ScreenPos, Setup, Triangle};
+use uvt_core::{
+    sample_eval, Laine2011, Ops, Outcome, PixelRect, Prec, Precision, ScreenPos, Setup, Triangle,
+};
 
 use crate::compare::quant_distance_px;
 use crate::frame::{run, Fixed, Reference, RunOpts};
@@ -93,7 +95,11 @@ fn shrink(mut s: Scene, f: u16) -> Scene {
                 v[4] *= f as f64;
             }
         }
-        s.tris.retain(|t| t.t0.iter().chain(t.t1.iter()).all(|v| v.iter().all(|x| x.abs() <= crate::scene::DOMAIN)));
+        s.tris.retain(|t| {
+            t.t0.iter()
+                .chain(t.t1.iter())
+                .all(|v| v.iter().all(|x| x.abs() <= crate::scene::DOMAIN))
+        });
     }
     s
 }
@@ -103,7 +109,11 @@ pub fn sweep(sw: &Sweep) -> Vec<PrecRow> {
     let mut rows: Vec<PrecRow> = Vec::new();
     for (ci, &cfg) in CONFIGS.iter().enumerate() {
         for &tile in &sw.tiles {
-            let mut acc = PrecRow { config: cfg, tile, ..Default::default() };
+            let mut acc = PrecRow {
+                config: cfg,
+                tile,
+                ..Default::default()
+            };
             for &kind in &sw.scenes {
                 for &row in &sw.rows {
                     let mut s = shrink(bench(kind, row, true), sw.shrink);
@@ -131,35 +141,70 @@ fn finish(a: &mut PrecRow) {
     }
     a.depth_lsb[1] /= a.depth_n.max(1) as f64;
     let [tested, covered, rtested, rcovered, _] = a.counts;
-    a.ste = [covered as f64 / tested.max(1) as f64, rcovered as f64 / rtested.max(1) as f64];
+    a.ste = [
+        covered as f64 / tested.max(1) as f64,
+        rcovered as f64 / rtested.max(1) as f64,
+    ];
 }
 
 fn one<P: Precision + Sync>(s: &Scene, acc: &mut PrecRow) {
     let base = Pattern::new(s.pattern, s.spp, s.seed);
     let pat = base.with_tuv(P::TUV_FRAC);
-    let core: Vec<Triangle> = s.tris.iter().map(|t| t.to_core_with::<P>().expect("bench scene in the domain")).collect();
+    let core: Vec<Triangle> = s
+        .tris
+        .iter()
+        .map(|t| t.to_core_with::<P>().expect("bench scene in the domain"))
+        .collect();
     let vp = s.core_viewport();
     let colors: Vec<[u8; 3]> = s.tris.iter().map(|t| t.color).collect();
-    let o = RunOpts { vp: s.viewport, spp: s.spp, tile: s.tile, colors: &colors, clear: [0; 3], image: false, label: &s.name, oracle: None };
-    let fixed = Fixed::<_, P> { prec: std::marker::PhantomData, strat: Laine2011, vp, tris: &core, pattern: &pat };
+    let o = RunOpts {
+        vp: s.viewport,
+        spp: s.spp,
+        tile: s.tile,
+        colors: &colors,
+        clear: [0; 3],
+        image: false,
+        label: &s.name,
+        oracle: None,
+    };
+    let fixed = Fixed::<_, P> {
+        prec: std::marker::PhantomData,
+        strat: Laine2011,
+        vp,
+        tris: &core,
+        pattern: &pat,
+    };
     // Time both in the same run, alternating, three times each; keep the medians.
     let mut tf: Vec<Duration> = Vec::new();
     let mut tr: Vec<Duration> = Vec::new();
     let mut last = None;
     for _ in 0..3 {
         let f = run(&fixed, &pat, &o);
-        let r = run(&Reference { vp: s.viewport, tris: &s.tris, pattern: &base }, &pat, &o);
+        let r = run(
+            &Reference {
+                vp: s.viewport,
+                tris: &s.tris,
+                pattern: &base,
+            },
+            &pat,
+            &o,
+        );
         tf.push(f.time);
         tr.push(r.time);
         last = Some((f, r));
     }
     tf.sort();
     tr.sort();
-    acc.times.push(tf[1].as_secs_f64() / tr[1].as_secs_f64().max(1e-9));
+    acc.times
+        .push(tf[1].as_secs_f64() / tr[1].as_secs_f64().max(1e-9));
     let (f, r) = last.expect("ran");
     let per = |a: u64, b: u64| if b == 0 { 0.0 } else { a as f64 / b as f64 };
     let n = acc.times.len() as f64;
-    let ops = [per(f.stats.ops_setup, f.stats.triangles), per(f.stats.ops_bounds, f.stats.tiles_visited), per(f.stats.ops_sample, f.stats.samples_tested)];
+    let ops = [
+        per(f.stats.ops_setup, f.stats.triangles),
+        per(f.stats.ops_bounds, f.stats.tiles_visited),
+        per(f.stats.ops_sample, f.stats.samples_tested),
+    ];
     for (a, o) in acc.ops.iter_mut().zip(ops) {
         *a += (o - *a) / n;
     }
@@ -187,20 +232,42 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, acc:
                 Outcome::Culled(_) => None,
             };
             let rf = reference::setup::setup(st, v).ok();
-            let region = match (fx.as_ref().map(|x| x.0.footprint), rf.as_ref().map(|x| x.footprint)) {
-                (Some(p), Some(q)) => PixelRect { x0: p.x0.min(q.x0), y0: p.y0.min(q.y0), x1: p.x1.max(q.x1), y1: p.y1.max(q.y1) },
+            let region = match (
+                fx.as_ref().map(|x| x.0.footprint),
+                rf.as_ref().map(|x| x.footprint),
+            ) {
+                (Some(p), Some(q)) => PixelRect {
+                    x0: p.x0.min(q.x0),
+                    y0: p.y0.min(q.y0),
+                    x1: p.x1.max(q.x1),
+                    y1: p.y1.max(q.y1),
+                },
                 (Some(p), None) | (None, Some(p)) => p,
                 (None, None) => return a,
             };
             let full = Setup::unculled(ct, vp);
             let bound = quant_distance_at(st, v, P::POS_FRAC, P::TUV_FRAC);
             let cell_of = |px: u16, py: u16, fp: PixelRect| {
-                PixelRect { x0: px - px % bt, y0: py - py % bt, x1: px - px % bt + bt, y1: py - py % bt + bt }.intersect(&fp)
+                PixelRect {
+                    x0: px - px % bt,
+                    y0: py - py % bt,
+                    x1: px - px % bt + bt,
+                    y1: py - py % bt + bt,
+                }
+                .intersect(&fp)
             };
             for py in region.y0..region.y1 {
                 for px in region.x0..region.x1 {
-                    let fbox = fx.as_ref().and_then(|(x, c)| x.footprint.contains(px, py).then(|| Laine2011.tile(x, c, cell_of(px, py, x.footprint), &mut ops)));
-                    let rbox = rf.as_ref().and_then(|x| x.footprint.contains(px, py).then(|| reference::bounds::tile(x, cell_of(px, py, x.footprint))));
+                    let fbox = fx.as_ref().and_then(|(x, c)| {
+                        x.footprint
+                            .contains(px, py)
+                            .then(|| Laine2011.tile(x, c, cell_of(px, py, x.footprint), &mut ops))
+                    });
+                    let rbox = rf.as_ref().and_then(|x| {
+                        x.footprint
+                            .contains(px, py)
+                            .then(|| reference::bounds::tile(x, cell_of(px, py, x.footprint)))
+                    });
                     // Slack, once per cell (at its top-left pixel).
                     if px % bt == 0 || px == region.x0 {
                         if let (Some(Some(fb)), Some(Some(rb))) = (fbox, rbox) {
@@ -224,7 +291,8 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, acc:
                         a.compared += 1;
                         if hf.is_some() != hr.is_some() {
                             a.differ += 1;
-                            let d = reference::sample::edge_distance_px(st, v, x, y, e[2], e[3], e[4]);
+                            let d =
+                                reference::sample::edge_distance_px(st, v, x, y, e[2], e[3], e[4]);
                             a.max_differ_px = a.max_differ_px.max(d);
                             if d > bound {
                                 a.beyond_bound += 1;
@@ -248,7 +316,8 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, acc:
                         }
                         match rbox {
                             Some(Some(rb)) => {
-                                let s3 = [t as f64 / 65536.0, u as f64 / 65536.0, vv as f64 / 65536.0];
+                                let s3 =
+                                    [t as f64 / 65536.0, u as f64 / 65536.0, vv as f64 / 65536.0];
                                 let r3 = [rb.t, rb.u, rb.v];
                                 for k in 0..3 {
                                     let out = (r3[k].0 - s3[k]).max(s3[k] - r3[k].1).max(0.0);
@@ -300,16 +369,16 @@ pub fn quant_distance_at(t: &SceneTri, vp: (u16, u16), pos: u32, tuv: u32) -> f6
 /// Markdown table of a sweep.
 pub fn table_md(rows: &[PrecRow]) -> String {
     let mut s = String::from(
-        "| pos/tuv/bnd bits | tile | time ÷ f64 | ops setup/tile/sample | decisions ≠ f64 (rate, max px) | beyond d_q | slack t/u/v mean (max) | STE core / f64 | depth err LSB max (mean) | violations | ε t/u/v measured | outside exact bounds |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| pos/tuv/bnd bits | tile | time ÷ f64 | ops setup/tile/sample | decisions ≠ f64 (rate, max px) | beyond d_q | slack t/u/v mean (max) | STE core / f64 | depth err LSB max (mean) | violations | ε t/u/v measured | outside exact bounds | core margin | analytic ε (sample part) |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     for r in rows {
         s += &format!(
-            "| {}/{}/{} | {} | {:.2} | {:.0}/{:.0}/{:.0} | {} ({:.1e}, {:.3}) | {} | {:.4}/{:.4}/{:.4} ({:.4}/{:.4}/{:.4}) | {:.2}% / {:.2}% | {:.0} ({:.1}) | {} | {:.1e}/{:.1e}/{:.1e} | {} |\n",
+            "| {}/{}/{} | {} | {:.2} | {:.0}/{:.0}/{:.0} | {} ({:.1e}, {:.3}) | {} | {:.4}/{:.4}/{:.4} ({:.4}/{:.4}/{:.4}) | {:.2}% / {:.2}% | {:.0} ({:.1}) | {} | {:.1e}/{:.1e}/{:.1e} | {} | 2^-{} | 2^-{} |\n",
             r.config.0, r.config.1, r.config.2, r.tile, r.time_ratio_median, r.ops[0], r.ops[1], r.ops[2],
             r.differ, r.differ as f64 / r.compared.max(1) as f64, r.max_differ_px, r.beyond_bound,
             r.slack_mean[0], r.slack_mean[1], r.slack_mean[2], r.slack_max[0], r.slack_max[1], r.slack_max[2],
             100.0 * r.ste[0], 100.0 * r.ste[1], r.depth_lsb[0], r.depth_lsb[1], r.violations,
-            r.eps_measured[0], r.eps_measured[1], r.eps_measured[2], r.eps_outside
+            r.eps_measured[0], r.eps_measured[1], r.eps_measured[2], r.eps_outside, r.config.1, r.config.1 + 1
         );
     }
     s
@@ -322,7 +391,10 @@ pub fn pareto(points: &[(f64, f64)]) -> Vec<usize> {
     (0..points.len())
         .filter(|&i| {
             !points.iter().enumerate().any(|(j, q)| {
-                j != i && q.0 <= points[i].0 && q.1 <= points[i].1 && (q.0 < points[i].0 || q.1 < points[i].1)
+                j != i
+                    && q.0 <= points[i].0
+                    && q.1 <= points[i].1
+                    && (q.0 < points[i].0 || q.1 < points[i].1)
             })
         })
         .collect()
@@ -334,15 +406,26 @@ pub fn plot_svg(rows: &[PrecRow], path: &std::path::Path) -> anyhow::Result<()> 
     let pts: Vec<((u32, u32, u32), f64, f64)> = rows
         .iter()
         .filter(|r| r.tile == 1)
-        .map(|r| (r.config, r.time_ratio_median, (r.differ as f64 / r.compared.max(1) as f64).max(1e-9)))
+        .map(|r| {
+            (
+                r.config,
+                r.time_ratio_median,
+                (r.differ as f64 / r.compared.max(1) as f64).max(1e-9),
+            )
+        })
         .collect();
     let front = pareto(&pts.iter().map(|p| (p.1, p.2)).collect::<Vec<_>>());
     let xmax = pts.iter().map(|p| p.1).fold(0.0, f64::max) * 1.2 + 0.1;
-    let (ymin, ymax) = pts.iter().fold((f64::MAX, 0.0f64), |(a, b), p| (a.min(p.2), b.max(p.2)));
+    let (ymin, ymax) = pts
+        .iter()
+        .fold((f64::MAX, 0.0f64), |(a, b), p| (a.min(p.2), b.max(p.2)));
     let root = SVGBackend::new(path, (720, 480)).into_drawing_area();
     root.fill(&WHITE).map_err(|e| anyhow::anyhow!("{e}"))?;
     let mut chart = ChartBuilder::on(&root)
-        .caption("uvt precision: error against run time (bounds tile 1)", ("sans-serif", 18))
+        .caption(
+            "uvt precision: error against run time (bounds tile 1)",
+            ("sans-serif", 18),
+        )
         .margin(16)
         .x_label_area_size(40)
         .y_label_area_size(70)
@@ -356,13 +439,24 @@ pub fn plot_svg(rows: &[PrecRow], path: &std::path::Path) -> anyhow::Result<()> 
         .map_err(|e| anyhow::anyhow!("{e}"))?;
     let mut fp: Vec<(f64, f64)> = front.iter().map(|&i| (pts[i].1, pts[i].2)).collect();
     fp.sort_by(|a, b| a.0.total_cmp(&b.0));
-    chart.draw_series(LineSeries::new(fp, &RED)).map_err(|e| anyhow::anyhow!("{e}"))?.label("Pareto front");
+    chart
+        .draw_series(LineSeries::new(fp, &RED))
+        .map_err(|e| anyhow::anyhow!("{e}"))?
+        .label("Pareto front");
     chart
         .draw_series(pts.iter().enumerate().map(|(i, p)| {
-            let style = if front.contains(&i) { RED.filled() } else { BLUE.filled() };
+            let style = if front.contains(&i) {
+                RED.filled()
+            } else {
+                BLUE.filled()
+            };
             EmptyElement::at((p.1, p.2))
                 + Circle::new((0, 0), 5, style)
-                + Text::new(format!("{}/{}/{}", p.0 .0, p.0 .1, p.0 .2), (8, -12), ("sans-serif", 13))
+                + Text::new(
+                    format!("{}/{}/{}", p.0 .0, p.0 .1, p.0 .2),
+                    (8, -12),
+                    ("sans-serif", 13),
+                )
         }))
         .map_err(|e| anyhow::anyhow!("{e}"))?;
     root.present().map_err(|e| anyhow::anyhow!("{e}"))?;
@@ -371,7 +465,11 @@ pub fn plot_svg(rows: &[PrecRow], path: &std::path::Path) -> anyhow::Result<()> 
 
 /// One stress case at the default precision: STE, decisions against f64, conservativeness.
 pub fn stress_row(scene: &Scene) -> PrecRow {
-    let mut acc = PrecRow { config: (16, 16, 16), tile: scene.tile, ..Default::default() };
+    let mut acc = PrecRow {
+        config: (16, 16, 16),
+        tile: scene.tile,
+        ..Default::default()
+    };
     one::<uvt_core::DefaultPrecision>(scene, &mut acc);
     finish(&mut acc);
     acc
@@ -383,8 +481,14 @@ pub fn stress_md(rows: &[(String, usize, PrecRow)]) -> String {
     for (name, n, r) in rows {
         s += &format!(
             "| {name} | {n} | {:.2}% / {:.2}% | {} ({:.1e}) | {:.2e} | {} | {:.0} | {} |\n",
-            100.0 * r.ste[0], 100.0 * r.ste[1], r.differ, r.differ as f64 / r.compared.max(1) as f64, r.max_differ_px,
-            r.beyond_bound, r.depth_lsb[0], r.violations
+            100.0 * r.ste[0],
+            100.0 * r.ste[1],
+            r.differ,
+            r.differ as f64 / r.compared.max(1) as f64,
+            r.max_differ_px,
+            r.beyond_bound,
+            r.depth_lsb[0],
+            r.violations
         );
     }
     s

@@ -33,17 +33,55 @@ pub fn render(scene: &Scene) -> Result<Rendered> {
     let core = scene.core_tris()?;
     let vp = scene.core_viewport();
     let colors: Vec<[u8; 3]> = scene.tris.iter().map(|t| t.color).collect();
-    let opts = |label| RunOpts { vp: scene.viewport, spp: scene.spp, tile: scene.tile, colors: &colors, clear: [24, 24, 32], image: true, label, oracle: None };
-    let fixed = run(&Fixed::new(Laine2011, vp, &core, &pattern), &pattern, &RunOpts { oracle: Some(&scene.tris), ..opts("uvt fixed") });
-    let f64 = run(&Reference { vp: scene.viewport, tris: &scene.tris, pattern: &pattern }, &pattern, &opts("uvt f64"));
-    let bbox = run(&Fixed::new(BboxScan, vp, &core, &pattern), &pattern, &opts("bbox scan"));
+    let opts = |label| RunOpts {
+        vp: scene.viewport,
+        spp: scene.spp,
+        tile: scene.tile,
+        colors: &colors,
+        clear: [24, 24, 32],
+        image: true,
+        label,
+        oracle: None,
+    };
+    let fixed = run(
+        &Fixed::new(Laine2011, vp, &core, &pattern),
+        &pattern,
+        &RunOpts {
+            oracle: Some(&scene.tris),
+            ..opts("uvt fixed")
+        },
+    );
+    let f64 = run(
+        &Reference {
+            vp: scene.viewport,
+            tris: &scene.tris,
+            pattern: &pattern,
+        },
+        &pattern,
+        &opts("uvt f64"),
+    );
+    let bbox = run(
+        &Fixed::new(BboxScan, vp, &core, &pattern),
+        &pattern,
+        &opts("bbox scan"),
+    );
     let coverage = compare(&scene.tris, &core, vp, &pattern);
     let report = report_json(scene, &fixed, &f64, &bbox, &coverage);
-    Ok(Rendered { fixed, f64, bbox, coverage, report })
+    Ok(Rendered {
+        fixed,
+        f64,
+        bbox,
+        coverage,
+        report,
+    })
 }
 
 fn per(a: u64, b: u64) -> f64 {
-    if b == 0 { 0.0 } else { a as f64 / b as f64 }
+    if b == 0 {
+        0.0
+    } else {
+        a as f64 / b as f64
+    }
 }
 
 fn frame_json(f: &Frame) -> serde_json::Value {
@@ -67,7 +105,13 @@ pub fn image_diff(a: &[[u8; 3]], b: &[[u8; 3]]) -> (u64, u8) {
     (n, m)
 }
 
-fn report_json(s: &Scene, fixed: &Frame, f64: &Frame, bbox: &Frame, cov: &CoverageDiff) -> serde_json::Value {
+fn report_json(
+    s: &Scene,
+    fixed: &Frame,
+    f64: &Frame,
+    bbox: &Frame,
+    cov: &CoverageDiff,
+) -> serde_json::Value {
     let st: &FrameStats = &fixed.stats;
     let visible: u64 = st.by_class.iter().sum();
     let (npix, maxd) = image_diff(&fixed.image, &f64.image);
@@ -95,8 +139,15 @@ fn pct(x: f64) -> String {
 pub fn report_md(r: &Rendered) -> String {
     let j = &r.report;
     let row = |name: &str, f: &Frame, ste: f64| {
-        format!("| {name} | {} | {} | {} | {} | {} | {:.1} |\n", f.stats.tiles_visited, f.stats.tiles_skipped, f.stats.samples_tested,
-            f.stats.samples_covered, pct(ste), f.time.as_secs_f64() * 1e3)
+        format!(
+            "| {name} | {} | {} | {} | {} | {} | {:.1} |\n",
+            f.stats.tiles_visited,
+            f.stats.tiles_skipped,
+            f.stats.samples_tested,
+            f.stats.samples_covered,
+            pct(ste),
+            f.time.as_secs_f64() * 1e3
+        )
     };
     let c = &r.coverage;
     let mut s = format!(
@@ -110,9 +161,18 @@ pub fn report_md(r: &Rendered) -> String {
     );
     s += "| pipeline | tiles visited | tiles skipped | samples tested | samples covered | STE | wall ms |\n|---|---|---|---|---|---|---|\n";
     s += &row("bbox scan (core)", &r.bbox, r.bbox.stats.ste());
-    s += &row("uvt fixed (core, Laine 2011)", &r.fixed, r.fixed.stats.ste());
+    s += &row(
+        "uvt fixed (core, Laine 2011)",
+        &r.fixed,
+        r.fixed.stats.ste(),
+    );
     s += &row("uvt f64 (reference)", &r.f64, r.f64.stats.ste());
-    s += &format!("| oracle box (covered samples + dense points) | | | {} | {} | {} | |\n\n", r.fixed.stats.oracle_tested, r.fixed.stats.samples_covered, pct(r.fixed.stats.ste_oracle()));
+    s += &format!(
+        "| oracle box (covered samples + dense points) | | | {} | {} | {} | |\n\n",
+        r.fixed.stats.oracle_tested,
+        r.fixed.stats.samples_covered,
+        pct(r.fixed.stats.ste_oracle())
+    );
     s += &format!(
         "Operations (core): {:.0} per triangle setup, {:.1} per tile bounds, {:.1} per sample test (Laine 2011: ~500 / ~40 / ~25).\n\n",
         j["ops"]["setup_per_triangle"].as_f64().unwrap_or(0.0), j["ops"]["bounds_per_tile"].as_f64().unwrap_or(0.0), j["ops"]["sample_per_test"].as_f64().unwrap_or(0.0)
@@ -129,7 +189,13 @@ pub fn report_md(r: &Rendered) -> String {
 
 fn heat_color(x: f64) -> [u8; 3] {
     // black → blue → red → yellow → white
-    let stops = [[0.0, 0.0, 0.0], [0.1, 0.2, 0.9], [0.9, 0.1, 0.1], [1.0, 0.9, 0.1], [1.0, 1.0, 1.0]];
+    let stops = [
+        [0.0, 0.0, 0.0],
+        [0.1, 0.2, 0.9],
+        [0.9, 0.1, 0.1],
+        [1.0, 0.9, 0.1],
+        [1.0, 1.0, 1.0],
+    ];
     let f = x.clamp(0.0, 1.0) * (stops.len() - 1) as f64;
     let i = (f.floor() as usize).min(stops.len() - 2);
     let a = f - i as f64;
@@ -139,27 +205,57 @@ fn heat_color(x: f64) -> [u8; 3] {
 fn png(path: &Path, w: u16, h: u16, px: &[[u8; 3]]) -> Result<()> {
     let buf: Vec<u8> = px.iter().flatten().copied().collect();
     let img = image::RgbImage::from_raw(w as u32, h as u32, buf).context("image size")?;
-    img.save_with_format(path, image::ImageFormat::Png).with_context(|| format!("writing {}", path.display()))
+    img.save_with_format(path, image::ImageFormat::Png)
+        .with_context(|| format!("writing {}", path.display()))
 }
 
 /// Write all outputs into `dir` (created if needed); temp names, then renames.
 pub fn write(r: &Rendered, scene: &Scene, dir: &Path) -> Result<Vec<PathBuf>> {
     std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
     let (w, h) = scene.viewport;
-    let diff: Vec<[u8; 3]> = r.fixed.image.iter().zip(&r.f64.image).map(|(a, b)| {
-        let d = (0..3).map(|k| a[k].abs_diff(b[k])).max().unwrap_or(0);
-        if d == 0 { [0, 0, 0] } else { [255, (255 - d.saturating_mul(4)).min(200), 0] }
-    }).collect();
+    let diff: Vec<[u8; 3]> = r
+        .fixed
+        .image
+        .iter()
+        .zip(&r.f64.image)
+        .map(|(a, b)| {
+            let d = (0..3).map(|k| a[k].abs_diff(b[k])).max().unwrap_or(0);
+            if d == 0 {
+                [0, 0, 0]
+            } else {
+                [255, (255 - d.saturating_mul(4)).min(200), 0]
+            }
+        })
+        .collect();
     let maxh = r.fixed.heat.iter().copied().max().unwrap_or(1).max(1) as f64;
-    let heat: Vec<[u8; 3]> = r.fixed.heat.iter().map(|&n| heat_color(n as f64 / maxh)).collect();
+    let heat: Vec<[u8; 3]> = r
+        .fixed
+        .heat
+        .iter()
+        .map(|&n| heat_color(n as f64 / maxh))
+        .collect();
     type Writer<'a> = Box<dyn Fn(&Path) -> Result<()> + 'a>;
     let files: Vec<(&str, Writer<'_>)> = vec![
-        ("fixed.png", Box::new(|p: &Path| png(p, w, h, &r.fixed.image))),
+        (
+            "fixed.png",
+            Box::new(|p: &Path| png(p, w, h, &r.fixed.image)),
+        ),
         ("f64.png", Box::new(|p: &Path| png(p, w, h, &r.f64.image))),
         ("diff.png", Box::new(|p: &Path| png(p, w, h, &diff))),
         ("heat.png", Box::new(|p: &Path| png(p, w, h, &heat))),
-        ("report.json", Box::new(|p: &Path| Ok(std::fs::write(p, serde_json::to_string_pretty(&r.report)? + "\n")?))),
-        ("report.md", Box::new(|p: &Path| Ok(std::fs::write(p, report_md(r))?))),
+        (
+            "report.json",
+            Box::new(|p: &Path| {
+                Ok(std::fs::write(
+                    p,
+                    serde_json::to_string_pretty(&r.report)? + "\n",
+                )?)
+            }),
+        ),
+        (
+            "report.md",
+            Box::new(|p: &Path| Ok(std::fs::write(p, report_md(r))?)),
+        ),
     ];
     let mut tmp = Vec::new();
     for (name, f) in &files {

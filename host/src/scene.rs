@@ -70,7 +70,13 @@ pub fn quantize(v: f64) -> Coord {
 impl SceneTri {
     /// The core triangle (coordinates rounded to nearest I16F16).
     pub fn to_core(&self) -> Result<Triangle, uvt_core::Error> {
-        let q = |a: [f64; 5]| Vertex { x: quantize(a[0]), y: quantize(a[1]), z: quantize(a[2]), w: quantize(a[3]), coc: quantize(a[4]) };
+        let q = |a: [f64; 5]| Vertex {
+            x: quantize(a[0]),
+            y: quantize(a[1]),
+            z: quantize(a[2]),
+            w: quantize(a[3]),
+            coc: quantize(a[4]),
+        };
         Triangle::new(self.t0.map(q), self.t1.map(q))
     }
 
@@ -78,7 +84,13 @@ impl SceneTri {
     pub fn to_core_with<P: uvt_core::Precision>(&self) -> Result<Triangle, uvt_core::Error> {
         let step = (1i64 << (16 - P::POS_FRAC)) as f64 / 65536.0;
         let q = |x: f64| Coord::from_bits(((x / step).round() * step * 65536.0) as i32);
-        let v = |a: [f64; 5]| Vertex { x: q(a[0]), y: q(a[1]), z: q(a[2]), w: q(a[3]), coc: q(a[4]) };
+        let v = |a: [f64; 5]| Vertex {
+            x: q(a[0]),
+            y: q(a[1]),
+            z: q(a[2]),
+            w: q(a[3]),
+            coc: q(a[4]),
+        };
         Triangle::new_with::<P>(self.t0.map(v), self.t1.map(v))
     }
 
@@ -86,7 +98,11 @@ impl SceneTri {
     /// asked to run on identical inputs.
     pub fn quantized(&self) -> SceneTri {
         let q = |a: [f64; 5]| a.map(|v| quantize(v).to_num::<f64>());
-        SceneTri { t0: self.t0.map(q), t1: self.t1.map(q), color: self.color }
+        SceneTri {
+            t0: self.t0.map(q),
+            t1: self.t1.map(q),
+            color: self.color,
+        }
     }
 }
 
@@ -107,8 +123,12 @@ impl Scene {
 
     /// Load and validate a scene file.
     pub fn load(path: &std::path::Path) -> Result<Scene> {
-        let text = std::fs::read_to_string(path).with_context(|| format!("cannot read scene file {}", path.display()))?;
-        let name = path.file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "scene".into());
+        let text = std::fs::read_to_string(path)
+            .with_context(|| format!("cannot read scene file {}", path.display()))?;
+        let name = path
+            .file_stem()
+            .map(|s| s.to_string_lossy().into_owned())
+            .unwrap_or_else(|| "scene".into());
         let base = path.parent().map(|p| p.to_path_buf()).unwrap_or_default();
         Scene::parse(&text, &name, &base).with_context(|| format!("scene file {}", path.display()))
     }
@@ -116,16 +136,26 @@ impl Scene {
     /// Parse and validate scene JSON. `base` resolves relative mesh paths.
     pub fn parse(text: &str, name: &str, base: &std::path::Path) -> Result<Scene> {
         let v: Value = serde_json::from_str(text).map_err(|e| anyhow!("malformed JSON: {e}"))?;
-        let obj = v.as_object().ok_or_else(|| anyhow!("the scene must be a JSON object"))?;
+        let obj = v
+            .as_object()
+            .ok_or_else(|| anyhow!("the scene must be a JSON object"))?;
         match obj.get("format").and_then(Value::as_str) {
             Some("uvt-scene") => {}
-            other => bail!("format: expected \"uvt-scene\", got {}", show(other.map(|s| Value::String(s.into())).as_ref())),
+            other => bail!(
+                "format: expected \"uvt-scene\", got {}",
+                show(other.map(|s| Value::String(s.into())).as_ref())
+            ),
         }
         match obj.get("version").and_then(Value::as_u64) {
             Some(1) => {}
-            _ => bail!("version: unknown version {} (this uvt reads version 1)", show(obj.get("version"))),
+            _ => bail!(
+                "version: unknown version {} (this uvt reads version 1)",
+                show(obj.get("version"))
+            ),
         }
-        let vp = obj.get("viewport").ok_or_else(|| anyhow!("viewport: missing"))?;
+        let vp = obj
+            .get("viewport")
+            .ok_or_else(|| anyhow!("viewport: missing"))?;
         let vp = num_array(vp, 2, "viewport")?;
         let dim = |x: f64, f: &str| -> Result<u16> {
             if x.fract() != 0.0 || !(1.0..=2048.0).contains(&x) {
@@ -155,11 +185,18 @@ impl Scene {
                     Some("sobol") | None => PatternKind::Sobol,
                     Some("random") => PatternKind::Random,
                     Some("stratified") => PatternKind::Stratified,
-                    Some(o) => bail!("samples.pattern: unknown pattern \"{o}\" (sobol, random, stratified)"),
+                    Some(o) => bail!(
+                        "samples.pattern: unknown pattern \"{o}\" (sobol, random, stratified)"
+                    ),
                 };
                 let seed = match s.get("seed") {
                     None => 0,
-                    Some(x) => x.as_u64().ok_or_else(|| anyhow!("samples.seed: {} is not a non-negative integer", show(Some(x))))?,
+                    Some(x) => x.as_u64().ok_or_else(|| {
+                        anyhow!(
+                            "samples.seed: {} is not a non-negative integer",
+                            show(Some(x))
+                        )
+                    })?,
                 };
                 (kind, seed)
             }
@@ -174,14 +211,24 @@ impl Scene {
         let tris = match (obj.get("triangles"), obj.get("meshes")) {
             (Some(t), None) => parse_triangles(t, coc)?,
             (None, Some(m)) => {
-                let cam = obj.get("camera").ok_or_else(|| anyhow!("camera: missing (the mesh form needs a camera)"))?;
+                let cam = obj
+                    .get("camera")
+                    .ok_or_else(|| anyhow!("camera: missing (the mesh form needs a camera)"))?;
                 mesh::build(cam, m, viewport, base)?
             }
             (Some(_), Some(_)) => bail!("triangles and meshes: give one of them, not both"),
             (None, None) => bail!("triangles: missing (or give camera and meshes)"),
         };
         check_domain(&tris)?;
-        Ok(Scene { name: name.into(), viewport, spp, tile, pattern, seed, tris })
+        Ok(Scene {
+            name: name.into(),
+            viewport,
+            spp,
+            tile,
+            pattern,
+            seed,
+            tris,
+        })
     }
 }
 
@@ -201,14 +248,21 @@ fn show(v: Option<&Value>) -> String {
 
 /// A JSON array of exactly `n` finite numbers.
 pub fn num_array(v: &Value, n: usize, field: &str) -> Result<Vec<f64>> {
-    let a = v.as_array().ok_or_else(|| anyhow!("{field}: expected an array of {n} numbers, got {}", show(Some(v))))?;
+    let a = v.as_array().ok_or_else(|| {
+        anyhow!(
+            "{field}: expected an array of {n} numbers, got {}",
+            show(Some(v))
+        )
+    })?;
     if a.len() != n {
         bail!("{field}: expected {n} numbers, got {}", a.len());
     }
     a.iter()
         .enumerate()
         .map(|(i, x)| {
-            let f = x.as_f64().ok_or_else(|| anyhow!("{field}[{i}]: {} is not a number", show(Some(x))))?;
+            let f = x
+                .as_f64()
+                .ok_or_else(|| anyhow!("{field}[{i}]: {} is not a number", show(Some(x))))?;
             if !f.is_finite() {
                 bail!("{field}[{i}]: {f} is not finite (NaN and infinity are refused)");
             }
@@ -218,7 +272,9 @@ pub fn num_array(v: &Value, n: usize, field: &str) -> Result<Vec<f64>> {
 }
 
 fn parse_vertices(v: &Value, field: &str) -> Result<[[f64; 4]; 3]> {
-    let a = v.as_array().ok_or_else(|| anyhow!("{field}: expected 3 vertices [x,y,z,w]"))?;
+    let a = v
+        .as_array()
+        .ok_or_else(|| anyhow!("{field}: expected 3 vertices [x,y,z,w]"))?;
     if a.len() != 3 {
         bail!("{field}: expected 3 vertices, got {}", a.len());
     }
@@ -231,12 +287,19 @@ fn parse_vertices(v: &Value, field: &str) -> Result<[[f64; 4]; 3]> {
 }
 
 fn parse_triangles(v: &Value, coc: Option<(f64, f64)>) -> Result<Vec<SceneTri>> {
-    let a = v.as_array().ok_or_else(|| anyhow!("triangles: expected an array"))?;
+    let a = v
+        .as_array()
+        .ok_or_else(|| anyhow!("triangles: expected an array"))?;
     let mut out = Vec::with_capacity(a.len());
     for (i, t) in a.iter().enumerate() {
         let f = format!("triangles[{i}]");
-        let o = t.as_object().ok_or_else(|| anyhow!("{f}: expected an object with t0, t1, color"))?;
-        let t0 = parse_vertices(o.get("t0").ok_or_else(|| anyhow!("{f}.t0: missing"))?, &format!("{f}.t0"))?;
+        let o = t
+            .as_object()
+            .ok_or_else(|| anyhow!("{f}: expected an object with t0, t1, color"))?;
+        let t0 = parse_vertices(
+            o.get("t0").ok_or_else(|| anyhow!("{f}.t0: missing"))?,
+            &format!("{f}.t0"),
+        )?;
         let t1 = match o.get("t1") {
             Some(x) => parse_vertices(x, &format!("{f}.t1"))?,
             None => t0,
@@ -255,8 +318,20 @@ fn parse_triangles(v: &Value, coc: Option<(f64, f64)>) -> Result<Vec<SceneTri>> 
                 rgb
             }
         };
-        let with_coc = |p: [f64; 4]| [p[0], p[1], p[2], p[3], coc.map_or(0.0, |(a, b)| a * p[3] + b)];
-        out.push(SceneTri { t0: t0.map(with_coc), t1: t1.map(with_coc), color });
+        let with_coc = |p: [f64; 4]| {
+            [
+                p[0],
+                p[1],
+                p[2],
+                p[3],
+                coc.map_or(0.0, |(a, b)| a * p[3] + b),
+            ]
+        };
+        out.push(SceneTri {
+            t0: t0.map(with_coc),
+            t1: t1.map(with_coc),
+            color,
+        });
     }
     Ok(out)
 }
@@ -271,7 +346,9 @@ pub fn check_domain(tris: &[SceneTri]) -> Result<()> {
                     if !x.is_finite() {
                         bail!("triangles[{i}].t{end}[{k}].{}: {x} is not finite", NAMES[f]);
                     }
-                    if quantize(x.clamp(-1e6, 1e6)).to_bits().unsigned_abs() > 1 << 29 || x.abs() > DOMAIN {
+                    if quantize(x.clamp(-1e6, 1e6)).to_bits().unsigned_abs() > 1 << 29
+                        || x.abs() > DOMAIN
+                    {
                         bail!(
                             "triangles[{i}].t{end}[{k}].{}: {x} is outside the core's domain |v| <= {DOMAIN}",
                             NAMES[f]

@@ -30,7 +30,15 @@ pub enum Row {
 
 impl Row {
     /// All rows in Laine's order.
-    pub const ALL: [Row; 7] = [Row::Static, Row::Motion, Row::Motion2, Row::Defocus, Row::Defocus2, Row::Both, Row::Both2];
+    pub const ALL: [Row; 7] = [
+        Row::Static,
+        Row::Motion,
+        Row::Motion2,
+        Row::Defocus,
+        Row::Defocus2,
+        Row::Both,
+        Row::Both2,
+    ];
     /// Label as in Laine's table.
     pub fn label(self) -> &'static str {
         match self {
@@ -69,7 +77,12 @@ pub enum Bench {
 }
 
 fn inst(mesh: mesh::Mesh, m0: DMat4, m1: DMat4, color: [u8; 3]) -> Instance {
-    Instance { mesh, m0, m1, color }
+    Instance {
+        mesh,
+        m0,
+        m1,
+        color,
+    }
 }
 
 fn at(p: DVec3) -> DMat4 {
@@ -92,21 +105,38 @@ pub fn bench(kind: Bench, row: Row, quick: bool) -> Scene {
         near: 0.1,
         far: 200.0,
         aperture: 0.06 * row.aperture(),
-        focus: match kind { Bench::Game => 8.0, Bench::Dense => 7.0 },
-        t0: Pose { eye, target, up: DVec3::Y },
-        t1: Pose { eye: eye + travel, target: target + travel, up: DVec3::Y },
+        focus: match kind {
+            Bench::Game => 8.0,
+            Bench::Dense => 7.0,
+        },
+        t0: Pose {
+            eye,
+            target,
+            up: DVec3::Y,
+        },
+        t1: Pose {
+            eye: eye + travel,
+            target: target + travel,
+            up: DVec3::Y,
+        },
     };
     let mut list = Vec::new();
     match kind {
         Bench::Game => {
             let cells = 84 / q as u32;
-            list.push(inst(mesh::grid((60.0, 60.0), (cells, cells)), at(DVec3::new(0.0, 0.0, -20.0)), at(DVec3::new(0.0, 0.0, -20.0)), [120, 130, 110]));
+            list.push(inst(
+                mesh::grid((60.0, 60.0), (cells, cells)),
+                at(DVec3::new(0.0, 0.0, -20.0)),
+                at(DVec3::new(0.0, 0.0, -20.0)),
+                [120, 130, 110],
+            ));
             // Two rows of boxes along a street, subdivided so their faces are ~40 px triangles.
             for side in [-1.0, 1.0] {
                 for i in 0..8 {
                     let z = 4.0 - i as f64 * 5.0;
                     let hgt = 1.0 + ((i * 7 + (side as i32 + 1) * 3) % 5) as f64 * 0.6;
-                    let m = subdivided_box(DVec3::new(1.2, hgt, 1.5), (10 + q as u32 / 2) / q as u32);
+                    let m =
+                        subdivided_box(DVec3::new(1.2, hgt, 1.5), (10 + q as u32 / 2) / q as u32);
                     let p = at(DVec3::new(side * 4.0, hgt, z));
                     let c = [150 + (i * 11 % 90) as u8, 100 + (i * 23 % 120) as u8, 90];
                     list.push(inst(m, p, p, c));
@@ -118,14 +148,39 @@ pub fn bench(kind: Bench, row: Row, quick: bool) -> Scene {
             for (i, x) in [-2.4, -0.8, 0.8, 2.4].into_iter().enumerate() {
                 let p = at(DVec3::new(x, 0.7, -(i as f64 % 2.0) * 1.5));
                 let rot = DMat4::from_quat(DQuat::from_rotation_y(0.3 * i as f64));
-                list.push(inst(mesh::sphere(0.55, seg), p * rot, p * rot, [200 - 30 * i as u8, 80 + 40 * i as u8, 120]));
+                list.push(inst(
+                    mesh::sphere(0.55, seg),
+                    p * rot,
+                    p * rot,
+                    [200 - 30 * i as u8, 80 + 40 * i as u8, 120],
+                ));
             }
-            list.push(inst(mesh::grid((30.0, 30.0), (480 / q as u32, 480 / q as u32)), DMat4::IDENTITY, DMat4::IDENTITY, [90, 90, 100]));
+            list.push(inst(
+                mesh::grid((30.0, 30.0), (480 / q as u32, 480 / q as u32)),
+                DMat4::IDENTITY,
+                DMat4::IDENTITY,
+                [90, 90, 100],
+            ));
         }
     }
     let tris = mesh::to_clip(&cam, &list, viewport);
-    let name = format!("{}/{}", match kind { Bench::Game => "game", Bench::Dense => "dense" }, row.label());
-    let scene = Scene { name, viewport, spp: 16, tile: 1, pattern: PatternKind::Sobol, seed: 0, tris };
+    let name = format!(
+        "{}/{}",
+        match kind {
+            Bench::Game => "game",
+            Bench::Dense => "dense",
+        },
+        row.label()
+    );
+    let scene = Scene {
+        name,
+        viewport,
+        spp: 16,
+        tile: 1,
+        pattern: PatternKind::Sobol,
+        seed: 0,
+        tris,
+    };
     check_domain(&scene.tris).expect("built-in scene inside the domain");
     scene
 }
@@ -146,7 +201,10 @@ fn subdivided_box(h: DVec3, n: u32) -> mesh::Mesh {
         let base = out.pos.len() as u32;
         for j in 0..=n {
             for i in 0..=n {
-                let (s, t) = (2.0 * i as f64 / n as f64 - 1.0, 2.0 * j as f64 / n as f64 - 1.0);
+                let (s, t) = (
+                    2.0 * i as f64 / n as f64 - 1.0,
+                    2.0 * j as f64 / n as f64 - 1.0,
+                );
                 out.pos.push((nrm + a * s + b * t) * h);
             }
         }
@@ -174,13 +232,31 @@ pub fn default_scene() -> Scene {
         far: 100.0,
         aperture: 0.05,
         focus: 6.0,
-        t0: Pose { eye, target, up: DVec3::Y },
-        t1: Pose { eye: eye + travel, target: target + travel, up: DVec3::Y },
+        t0: Pose {
+            eye,
+            target,
+            up: DVec3::Y,
+        },
+        t1: Pose {
+            eye: eye + travel,
+            target: target + travel,
+            up: DVec3::Y,
+        },
     };
-    let mut list = vec![inst(mesh::grid((24.0, 24.0), (24, 24)), DMat4::IDENTITY, DMat4::IDENTITY, [110, 120, 100])];
+    let mut list = vec![inst(
+        mesh::grid((24.0, 24.0), (24, 24)),
+        DMat4::IDENTITY,
+        DMat4::IDENTITY,
+        [110, 120, 100],
+    )];
     for (i, x) in [-2.5, 0.0, 2.5].into_iter().enumerate() {
         let p = at(DVec3::new(x, 0.6, -2.0 * i as f64 + 1.0));
-        list.push(inst(mesh::cuboid(DVec3::splat(0.6)), p, p, [200, 120 + 40 * i as u8, 60]));
+        list.push(inst(
+            mesh::cuboid(DVec3::splat(0.6)),
+            p,
+            p,
+            [200, 120 + 40 * i as u8, 60],
+        ));
     }
     let s0 = at(DVec3::new(-2.0, 1.4, 2.0));
     let s1 = at(DVec3::new(2.0, 1.6, 2.0));
@@ -188,5 +264,13 @@ pub fn default_scene() -> Scene {
     let p = at(DVec3::new(1.2, 0.5, 3.5));
     list.push(inst(mesh::sphere(0.5, 20), p, p, [230, 230, 230]));
     let tris = mesh::to_clip(&cam, &list, viewport);
-    Scene { name: "default".into(), viewport, spp: 16, tile: 1, pattern: PatternKind::Sobol, seed: 0, tris }
+    Scene {
+        name: "default".into(),
+        viewport,
+        spp: 16,
+        tile: 1,
+        pattern: PatternKind::Sobol,
+        seed: 0,
+        tris,
+    }
 }

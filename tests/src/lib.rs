@@ -4,8 +4,8 @@
 
 use uvt_core::bounds::BoundsStrategy;
 use uvt_core::{
-    sample_test, Coord, Lens, Outcome, PixelRect, Sample, SamplePattern, ScreenPos, Setup,
-    Stats, SubPixel, Time, Triangle, Vertex, Viewport,
+    sample_test, Coord, Lens, Outcome, PixelRect, Sample, SamplePattern, ScreenPos, Setup, Stats,
+    SubPixel, Time, Triangle, Vertex, Viewport,
 };
 
 /// Environment variable holding the seed of the seeded-random tests.
@@ -15,7 +15,10 @@ pub const EXTENSIVE_VAR: &str = "UVT_EXTENSIVE";
 
 /// The seed for seeded-random tests: `UVT_SEED` or a fixed default.
 pub fn seed() -> u64 {
-    std::env::var(SEED_VAR).ok().and_then(|s| s.parse().ok()).unwrap_or(0x5eed_0001)
+    std::env::var(SEED_VAR)
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(0x5eed_0001)
 }
 
 /// Whether the slow extensive mode is on.
@@ -67,7 +70,13 @@ pub fn c(v: f64) -> Coord {
 
 /// A vertex from f64 clip coordinates and CoC.
 pub fn vtx(x: f64, y: f64, z: f64, w: f64, coc: f64) -> Vertex {
-    Vertex { x: c(x), y: c(y), z: c(z), w: c(w), coc: c(coc) }
+    Vertex {
+        x: c(x),
+        y: c(y),
+        z: c(z),
+        w: c(w),
+        coc: c(coc),
+    }
 }
 
 /// A triangle from two f64 vertex arrays `[x, y, z, w, coc]`.
@@ -108,7 +117,9 @@ pub fn random_samples(rng: &mut Rng, block: u16, spp: u16) -> Vec<Sample> {
 /// A sample table on a coarse grid (sub-pixel 0 or 1/2, u/v/t on quarters) that lands samples
 /// exactly on edges and vertices of meshes built on a matching grid.
 pub fn grid_samples(rng: &mut Rng, block: u16, spp: u16) -> Vec<Sample> {
-    let q = |rng: &mut Rng, lo: i32| Lens::from_bits(lo + rng.below(5) as i32 * 16384 * if lo < 0 { 2 } else { 1 });
+    let q = |rng: &mut Rng, lo: i32| {
+        Lens::from_bits(lo + rng.below(5) as i32 * 16384 * if lo < 0 { 2 } else { 1 })
+    };
     (0..block as usize * block as usize * spp as usize)
         .map(|_| Sample {
             sx: SubPixel::from_bits(if rng.below(2) == 0 { 0 } else { 128 }),
@@ -124,8 +135,14 @@ pub fn grid_samples(rng: &mut Rng, block: u16, spp: u16) -> Vec<Sample> {
 pub fn dump_sample(px: u16, py: u16, s: &Sample) -> String {
     format!(
         "pixel ({px},{py}) sx {} sy {} u {:.6} ({:#x}) v {:.6} ({:#x}) t {:.6} ({:#x})",
-        s.sx.to_bits(), s.sy.to_bits(), s.u.to_num::<f64>(), s.u.to_bits(), s.v.to_num::<f64>(),
-        s.v.to_bits(), s.t.to_num::<f64>(), s.t.to_bits()
+        s.sx.to_bits(),
+        s.sy.to_bits(),
+        s.u.to_num::<f64>(),
+        s.u.to_bits(),
+        s.v.to_num::<f64>(),
+        s.v.to_bits(),
+        s.t.to_num::<f64>(),
+        s.t.to_bits()
     )
 }
 
@@ -163,9 +180,21 @@ pub fn check_conservative_with<B: BoundsStrategy, P: uvt_core::Precision>(
         for px in 0..vp.width() {
             // The bounds tile containing this pixel, clipped to the footprint (as the renderer).
             let tile_box = visible.as_ref().map(|(s, co)| {
-                let cell = PixelRect { x0: px - px % bt, y0: py - py % bt, x1: px - px % bt + bt, y1: py - py % bt + bt }
-                    .intersect(&s.footprint);
-                (s.footprint.contains(px, py), if cell.is_empty() { None } else { strat.tile(s, co, cell, &mut ops) })
+                let cell = PixelRect {
+                    x0: px - px % bt,
+                    y0: py - py % bt,
+                    x1: px - px % bt + bt,
+                    y1: py - py % bt + bt,
+                }
+                .intersect(&s.footprint);
+                (
+                    s.footprint.contains(px, py),
+                    if cell.is_empty() {
+                        None
+                    } else {
+                        strat.tile(s, co, cell, &mut ops)
+                    },
+                )
             });
             for (si, smp) in pat.pixel(px, py).iter().enumerate() {
                 let hit = sample_test(&full, ScreenPos::of(px, py, smp), smp, &mut ops);
@@ -177,8 +206,10 @@ pub fn check_conservative_with<B: BoundsStrategy, P: uvt_core::Precision>(
                     None => Some(format!("setup culled it ({out:?})")),
                     Some((false, _)) => Some("pixel outside the footprint".to_string()),
                     Some((true, None)) => Some(format!("{}x{bt} tile bounds empty", bt)),
-                    Some((true, Some(b))) => (!b.contains(smp.u.to_bits(), smp.v.to_bits(), smp.t.to_bits()))
-                        .then(|| format!("outside tile box {b:?}")),
+                    Some((true, Some(b))) => {
+                        (!b.contains(smp.u.to_bits(), smp.v.to_bits(), smp.t.to_bits()))
+                            .then(|| format!("outside tile box {b:?}"))
+                    }
                 };
                 if let Some(why) = why {
                     let fp = visible.as_ref().map(|(s, _)| s.footprint);
@@ -202,7 +233,12 @@ pub fn coverage_counts(tris: &[Triangle], vp: Viewport, pat: &SamplePattern<'_>)
         for px in 0..vp.width() {
             for smp in pat.pixel(px, py) {
                 let pos = ScreenPos::of(px, py, smp);
-                out.push(setups.iter().filter(|s| sample_test(s, pos, smp, &mut ops).is_some()).count() as u8);
+                out.push(
+                    setups
+                        .iter()
+                        .filter(|s| sample_test(s, pos, smp, &mut ops).is_some())
+                        .count() as u8,
+                );
             }
         }
     }
@@ -213,13 +249,23 @@ pub fn coverage_counts(tris: &[Triangle], vp: Viewport, pat: &SamplePattern<'_>)
 /// `g×g` vertices on a tilted plane in front of the camera, moved at t = 1 by a small rotation,
 /// translation and depth scale, with CoC = a·w + b per vertex (`coc = None`: in focus).
 /// Shared vertices are bit-identical in every triangle that uses them.
-pub fn planar_mesh(rng: &mut Rng, g: usize, motion: bool, coc: Option<(f64, f64)>) -> Vec<Triangle> {
+pub fn planar_mesh(
+    rng: &mut Rng,
+    g: usize,
+    motion: bool,
+    coc: Option<(f64, f64)>,
+) -> Vec<Triangle> {
     let span = 3.6;
     let step = span / (g - 1) as f64;
     let w0 = rng.range(1.0, 4.0);
     let (ax, ay) = (rng.range(-0.15, 0.15), rng.range(-0.15, 0.15));
     let (rot, tx, ty, sz) = if motion {
-        (rng.range(-0.08, 0.08), rng.range(-0.1, 0.1) * w0, rng.range(-0.1, 0.1) * w0, rng.range(0.9, 1.1))
+        (
+            rng.range(-0.08, 0.08),
+            rng.range(-0.1, 0.1) * w0,
+            rng.range(-0.1, 0.1) * w0,
+            rng.range(0.9, 1.1),
+        )
     } else {
         (0.0, 0.0, 0.0, 1.0)
     };
@@ -228,7 +274,10 @@ pub fn planar_mesh(rng: &mut Rng, g: usize, motion: bool, coc: Option<(f64, f64)
         for i in 0..g {
             let jx = rng.range(-0.1, 0.1) * step;
             let jy = rng.range(-0.1, 0.1) * step;
-            let (nx, ny) = (-span / 2.0 + i as f64 * step + jx, -span / 2.0 + j as f64 * step + jy);
+            let (nx, ny) = (
+                -span / 2.0 + i as f64 * step + jx,
+                -span / 2.0 + j as f64 * step + jy,
+            );
             let w = w0 * (1.0 + ax * nx + ay * ny);
             let (x, y, z) = (nx * w, ny * w, 0.5 * w);
             let (cr, sr) = (rot.cos(), rot.sin());
@@ -243,9 +292,16 @@ pub fn planar_mesh(rng: &mut Rng, g: usize, motion: bool, coc: Option<(f64, f64)
             let id = |a: usize, b: usize| verts[b * g + a];
             let (a, b, cq, d) = (id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
             // alternate the diagonal so both shared-edge directions occur
-            let quads = if (i + j) % 2 == 0 { [[a, b, cq], [a, cq, d]] } else { [[a, b, d], [b, cq, d]] };
+            let quads = if (i + j) % 2 == 0 {
+                [[a, b, cq], [a, cq, d]]
+            } else {
+                [[a, b, d], [b, cq, d]]
+            };
             for q in quads {
-                tris.push(tri(q.map(|v| v.0), q.map(|v| if motion || coc.is_some() { v.1 } else { v.0 })));
+                tris.push(tri(
+                    q.map(|v| v.0),
+                    q.map(|v| if motion || coc.is_some() { v.1 } else { v.0 }),
+                ));
             }
         }
     }
@@ -253,7 +309,13 @@ pub fn planar_mesh(rng: &mut Rng, g: usize, motion: bool, coc: Option<(f64, f64)
 }
 
 /// STE of one strategy over a triangle list rendered with the real render loop.
-pub fn render_stats<B: BoundsStrategy>(strat: B, prims: &[uvt_core::Prim], vp: Viewport, pat: &SamplePattern<'_>, bt: u8) -> Stats {
+pub fn render_stats<B: BoundsStrategy>(
+    strat: B,
+    prims: &[uvt_core::Prim],
+    vp: Viewport,
+    pat: &SamplePattern<'_>,
+    bt: u8,
+) -> Stats {
     let mut r = uvt_core::Renderer::<B, 256>::new(strat, vp, prims).expect("setup");
     match pat.spp() {
         4 => r.render_with::<8, 8, 4>(pat, bt, uvt_core::Rgb888::new(0, 0, 0), |_, _, _, _| {}),
@@ -267,14 +329,35 @@ pub fn render_stats<B: BoundsStrategy>(strat: B, prims: &[uvt_core::Prim], vp: V
 /// Round a triangle's coordinates to nearest on `P`'s position grid.
 pub fn snap_tri<P: uvt_core::Precision>(t: &Triangle) -> Triangle {
     let step = 1i64 << (16 - P::POS_FRAC);
-    let q = |c: Coord| Coord::from_bits((((c.to_bits() as i64 + step / 2).div_euclid(step)) * step).clamp(-(1 << 29), 1 << 29) as i32);
-    let v = |x: Vertex| Vertex { x: q(x.x), y: q(x.y), z: q(x.z), w: q(x.w), coc: q(x.coc) };
-    Triangle::new_with::<P>(t.vertices(0).map(v), t.vertices(1).map(v)).expect("snapped triangle on the grid")
+    let q = |c: Coord| {
+        Coord::from_bits(
+            (((c.to_bits() as i64 + step / 2).div_euclid(step)) * step).clamp(-(1 << 29), 1 << 29)
+                as i32,
+        )
+    };
+    let v = |x: Vertex| Vertex {
+        x: q(x.x),
+        y: q(x.y),
+        z: q(x.z),
+        w: q(x.w),
+        coc: q(x.coc),
+    };
+    Triangle::new_with::<P>(t.vertices(0).map(v), t.vertices(1).map(v))
+        .expect("snapped triangle on the grid")
 }
 
 /// Round samples' t, u, v to nearest on `P`'s grid.
 pub fn snap_samples<P: uvt_core::Precision>(s: &[Sample]) -> Vec<Sample> {
     let step = 1i32 << (16 - P::TUV_FRAC);
-    let q = |x: Lens, lo: i32| Lens::from_bits((((x.to_bits() + step / 2).div_euclid(step)) * step).clamp(lo, 65536));
-    s.iter().map(|x| Sample { u: q(x.u, -65536), v: q(x.v, -65536), t: q(x.t, 0), ..*x }).collect()
+    let q = |x: Lens, lo: i32| {
+        Lens::from_bits((((x.to_bits() + step / 2).div_euclid(step)) * step).clamp(lo, 65536))
+    };
+    s.iter()
+        .map(|x| Sample {
+            u: q(x.u, -65536),
+            v: q(x.v, -65536),
+            t: q(x.t, 0),
+            ..*x
+        })
+        .collect()
 }

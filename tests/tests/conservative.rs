@@ -38,7 +38,13 @@ fn make(kind: Kind, p: &[f64; NP]) -> Triangle {
     if let Kind::Crossing = kind {
         let v = |k: usize, o: usize| {
             let w = 3.0 * p[o + k];
-            [3.0 * p[o + 3 + k], 3.0 * p[o + 6 + k], 0.5 * w, w, if p[40] > 0.0 { 0.3 * p[41] } else { 0.0 }]
+            [
+                3.0 * p[o + 3 + k],
+                3.0 * p[o + 6 + k],
+                0.5 * w,
+                w,
+                if p[40] > 0.0 { 0.3 * p[41] } else { 0.0 },
+            ]
         };
         return tri([v(0, 0), v(1, 0), v(2, 0)], [v(0, 9), v(1, 9), v(2, 9)]);
     }
@@ -48,7 +54,13 @@ fn make(kind: Kind, p: &[f64; NP]) -> Triangle {
     let motion = matches!(kind, Kind::Moving | Kind::Both);
     let defocus = matches!(kind, Kind::Defocus | Kind::Both);
     let (a, b) = (0.15 * p[22], 0.3 * p[23]);
-    let coc = |w: f64, k: usize| if defocus { a * w + b + 0.05 * p[24 + k] } else { 0.0 };
+    let coc = |w: f64, k: usize| {
+        if defocus {
+            a * w + b + 0.05 * p[24 + k]
+        } else {
+            0.0
+        }
+    };
     let mut t0 = [[0.0; 5]; 3];
     let mut t1 = [[0.0; 5]; 3];
     for k in 0..3 {
@@ -56,7 +68,10 @@ fn make(kind: Kind, p: &[f64; NP]) -> Triangle {
         let wk = w * (1.0 + 0.3 * p[10 + k]);
         t0[k] = [nx * wk, ny * wk, 0.5 * wk, wk, coc(wk, k)];
         t1[k] = if motion {
-            let (mx, my) = (nx + 1.5 * p[13] + 0.2 * p[16 + k], ny + 1.5 * p[14] + 0.2 * p[19 + k]);
+            let (mx, my) = (
+                nx + 1.5 * p[13] + 0.2 * p[16 + k],
+                ny + 1.5 * p[14] + 0.2 * p[19 + k],
+            );
             let w1 = wk * (1.0 + 0.5 * p[15]);
             [mx * w1, my * w1, 0.5 * w1 + 0.1 * p[27 + k], w1, coc(w1, k)]
         } else {
@@ -70,7 +85,11 @@ fn check_all(kind: Kind, p: &[f64; NP], pat_seed: u64) -> Result<u64, String> {
     let t = make(kind, p);
     let vp = Viewport::new(24, 20).unwrap();
     let mut rng = Rng(pat_seed);
-    let samples = if pat_seed % 3 == 0 { grid_samples(&mut rng, 2, 8) } else { random_samples(&mut rng, 2, 8) };
+    let samples = if pat_seed % 3 == 0 {
+        grid_samples(&mut rng, 2, 8)
+    } else {
+        random_samples(&mut rng, 2, 8)
+    };
     let pat = SamplePattern::new(2, 8, &samples).unwrap();
     let mut covered = 0;
     for bt in [1u16, 2, 4, 8] {
@@ -115,7 +134,11 @@ fn params() -> impl Strategy<Value = [f64; NP]> {
 }
 
 fn config() -> ProptestConfig {
-    ProptestConfig { cases: cases(200, 5000), failure_persistence: None, ..ProptestConfig::default() }
+    ProptestConfig {
+        cases: cases(200, 5000),
+        failure_persistence: None,
+        ..ProptestConfig::default()
+    }
 }
 
 macro_rules! kind_test {
@@ -155,7 +178,14 @@ proptest! {
 fn conservative_seeded_random() {
     let seed = seed();
     let mut rng = Rng(seed);
-    let kinds = [Kind::Static, Kind::Moving, Kind::Defocus, Kind::Both, Kind::Crossing, Kind::Extreme];
+    let kinds = [
+        Kind::Static,
+        Kind::Moving,
+        Kind::Defocus,
+        Kind::Both,
+        Kind::Crossing,
+        Kind::Extreme,
+    ];
     let mut covered = 0;
     for case in 0..cases(60, 3000) {
         let kind = kinds[case as usize % kinds.len()];
@@ -167,5 +197,8 @@ fn conservative_seeded_random() {
         }
     }
     // The sweep must exercise coverage, or it proves nothing.
-    assert!(covered > 1000, "only {covered} covered samples in the sweep (seed {seed})");
+    assert!(
+        covered > 1000,
+        "only {covered} covered samples in the sweep (seed {seed})"
+    );
 }

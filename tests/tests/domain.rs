@@ -12,42 +12,96 @@ const LIM: i32 = 1 << 29;
 fn coordinate_domain_edges() {
     let ok = Vertex::from_bits([LIM, -LIM, LIM, LIM, -LIM]);
     assert!(Triangle::new([ok; 3], [ok; 3]).is_ok());
-    for (field, idx) in [(Field::X, 0), (Field::Y, 1), (Field::Z, 2), (Field::W, 3), (Field::Coc, 4)] {
+    for (field, idx) in [
+        (Field::X, 0),
+        (Field::Y, 1),
+        (Field::Z, 2),
+        (Field::W, 3),
+        (Field::Coc, 4),
+    ] {
         for bad in [LIM + 1, -LIM - 1, i32::MIN, i32::MAX] {
             let mut b = [0; 5];
             b[idx] = bad;
             let e = Triangle::new([ok; 3], [ok, Vertex::from_bits(b), ok]).unwrap_err();
-            assert_eq!(e, Error::CoordOutOfDomain { vertex: 1, time: 1, field, raw: bad });
+            assert_eq!(
+                e,
+                Error::CoordOutOfDomain {
+                    vertex: 1,
+                    time: 1,
+                    field,
+                    raw: bad
+                }
+            );
             let msg = e.to_string();
-            assert!(msg.contains("vertex 1") && msg.contains(&format!("{field}")), "{msg}");
+            assert!(
+                msg.contains("vertex 1") && msg.contains(&format!("{field}")),
+                "{msg}"
+            );
         }
     }
 }
 
 #[test]
 fn viewport_and_pattern_errors() {
-    assert_eq!(Viewport::new(0, 5), Err(Error::Viewport { width: 0, height: 5 }));
-    assert_eq!(Viewport::new(2049, 5), Err(Error::Viewport { width: 2049, height: 5 }));
+    assert_eq!(
+        Viewport::new(0, 5),
+        Err(Error::Viewport {
+            width: 0,
+            height: 5
+        })
+    );
+    assert_eq!(
+        Viewport::new(2049, 5),
+        Err(Error::Viewport {
+            width: 2049,
+            height: 5
+        })
+    );
     assert!(Viewport::new(2048, 2048).is_ok());
     let s = Sample::default();
-    assert!(matches!(SamplePattern::new(2, 4, &[s; 15]), Err(Error::PatternShape { len: 15, .. })));
-    assert!(matches!(SamplePattern::new(0, 4, &[]), Err(Error::PatternShape { .. })));
-    assert!(matches!(SamplePattern::new(1, 65, &[s; 65]), Err(Error::PatternShape { .. })));
+    assert!(matches!(
+        SamplePattern::new(2, 4, &[s; 15]),
+        Err(Error::PatternShape { len: 15, .. })
+    ));
+    assert!(matches!(
+        SamplePattern::new(0, 4, &[]),
+        Err(Error::PatternShape { .. })
+    ));
+    assert!(matches!(
+        SamplePattern::new(1, 65, &[s; 65]),
+        Err(Error::PatternShape { .. })
+    ));
     let mut bad = [s; 4];
     bad[2].t = Time::from_bits(-1);
-    assert_eq!(SamplePattern::new(1, 4, &bad).unwrap_err(), Error::SampleOutOfDomain { index: 2 });
+    assert_eq!(
+        SamplePattern::new(1, 4, &bad).unwrap_err(),
+        Error::SampleOutOfDomain { index: 2 }
+    );
     bad[2].t = Time::from_bits(65537);
-    assert_eq!(SamplePattern::new(1, 4, &bad).unwrap_err(), Error::SampleOutOfDomain { index: 2 });
+    assert_eq!(
+        SamplePattern::new(1, 4, &bad).unwrap_err(),
+        Error::SampleOutOfDomain { index: 2 }
+    );
     let mut bad = [s; 4];
     bad[3].u = Lens::from_bits(65537);
-    assert_eq!(SamplePattern::new(1, 4, &bad).unwrap_err(), Error::SampleOutOfDomain { index: 3 });
+    assert_eq!(
+        SamplePattern::new(1, 4, &bad).unwrap_err(),
+        Error::SampleOutOfDomain { index: 3 }
+    );
 }
 
 #[test]
 fn renderer_errors() {
     let vp = Viewport::new(8, 8).unwrap();
-    let v = [[-0.5, -0.5, 0.0, 1.0, 0.0], [0.5, -0.5, 0.0, 1.0, 0.0], [0.0, 0.5, 0.0, 1.0, 0.0]];
-    let p = Prim { tri: tri(v, v), color: Rgb888::new(1, 2, 3) };
+    let v = [
+        [-0.5, -0.5, 0.0, 1.0, 0.0],
+        [0.5, -0.5, 0.0, 1.0, 0.0],
+        [0.0, 0.5, 0.0, 1.0, 0.0],
+    ];
+    let p = Prim {
+        tri: tri(v, v),
+        color: Rgb888::new(1, 2, 3),
+    };
     assert_eq!(
         Renderer::<Laine2011, 1>::new(Laine2011, vp, &[p, p]).err(),
         Some(Error::TooManyTriangles { capacity: 1 })
@@ -56,17 +110,38 @@ fn renderer_errors() {
     let samples = [Sample::default(); 4];
     let pat = SamplePattern::new(1, 4, &samples).unwrap();
     let mut fb = TileBuffer::<8, 8, 2>::new(Rgb888::new(0, 0, 0));
-    assert_eq!(r.render_tile(0, 0, &pat, 1, Rgb888::new(0, 0, 0), &mut fb), Err(Error::SppMismatch { tile: 2, pattern: 4 }));
+    assert_eq!(
+        r.render_tile(0, 0, &pat, 1, Rgb888::new(0, 0, 0), &mut fb),
+        Err(Error::SppMismatch {
+            tile: 2,
+            pattern: 4
+        })
+    );
     let mut fb = TileBuffer::<8, 8, 4>::new(Rgb888::new(0, 0, 0));
-    assert_eq!(r.render_tile(0, 0, &pat, 3, Rgb888::new(0, 0, 0), &mut fb), Err(Error::BoundsTile { size: 3 }));
-    assert_eq!(r.render_tile(8, 0, &pat, 1, Rgb888::new(0, 0, 0), &mut fb), Err(Error::PixelOutOfRange));
-    assert_eq!(r.render_tile(0, 0, &pat, 8, Rgb888::new(0, 0, 0), &mut fb), Ok(()));
+    assert_eq!(
+        r.render_tile(0, 0, &pat, 3, Rgb888::new(0, 0, 0), &mut fb),
+        Err(Error::BoundsTile { size: 3 })
+    );
+    assert_eq!(
+        r.render_tile(8, 0, &pat, 1, Rgb888::new(0, 0, 0), &mut fb),
+        Err(Error::PixelOutOfRange)
+    );
+    assert_eq!(
+        r.render_tile(0, 0, &pat, 8, Rgb888::new(0, 0, 0), &mut fb),
+        Ok(())
+    );
 }
 
 /// Raw values biased toward the domain's edges and the singular spots (0, ±1 LSB).
 fn raw() -> impl Strategy<Value = i32> {
     prop_oneof![
-        Just(LIM), Just(-LIM), Just(LIM - 1), Just(-LIM + 1), Just(0), Just(1), Just(-1),
+        Just(LIM),
+        Just(-LIM),
+        Just(LIM - 1),
+        Just(-LIM + 1),
+        Just(0),
+        Just(1),
+        Just(-1),
         -LIM..=LIM,
         -65536i32..=65536,
     ]
@@ -77,13 +152,20 @@ fn vertex() -> impl Strategy<Value = Vertex> {
 }
 
 fn sample() -> impl Strategy<Value = Sample> {
-    (any::<u8>(), any::<u8>(), -65536i32..=65536, -65536i32..=65536, 0i32..=65536).prop_map(|(sx, sy, u, v, t)| Sample {
-        sx: SubPixel::from_bits(sx),
-        sy: SubPixel::from_bits(sy),
-        u: Lens::from_bits(u),
-        v: Lens::from_bits(v),
-        t: Time::from_bits(t),
-    })
+    (
+        any::<u8>(),
+        any::<u8>(),
+        -65536i32..=65536,
+        -65536i32..=65536,
+        0i32..=65536,
+    )
+        .prop_map(|(sx, sy, u, v, t)| Sample {
+            sx: SubPixel::from_bits(sx),
+            sy: SubPixel::from_bits(sy),
+            u: Lens::from_bits(u),
+            v: Lens::from_bits(v),
+            t: Time::from_bits(t),
+        })
 }
 
 proptest! {

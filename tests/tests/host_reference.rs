@@ -3,8 +3,8 @@
 //! documented quantization distance from an edge; the host's frame driver gives exactly the
 //! core renderer's image and counters.
 
-use uvt_core::{Laine2011, Prim, Renderer, Rgb888};
 use embedded_graphics_core::pixelcolor::RgbColor;
+use uvt_core::{Laine2011, Prim, Renderer, Rgb888};
 use uvt_host::compare::compare;
 use uvt_host::frame::{run, Fixed, RunOpts};
 use uvt_host::pattern::Pattern;
@@ -15,19 +15,39 @@ use uvt_tests::*;
 
 /// A random f64 triangle: static, moving, defocused, both, or crossing the camera plane.
 fn random_tri(rng: &mut Rng, kind: u64) -> SceneTri {
-    let (cx, cy, w) = (rng.range(-1.2, 1.2), rng.range(-1.2, 1.2), rng.range(0.5, 6.0));
+    let (cx, cy, w) = (
+        rng.range(-1.2, 1.2),
+        rng.range(-1.2, 1.2),
+        rng.range(0.5, 6.0),
+    );
     let s = rng.range(0.05, 0.7);
     let motion = kind == 1 || kind == 3;
     let defocus = kind == 2 || kind == 3;
-    let (mx, my, mw) = (rng.range(-1.5, 1.5), rng.range(-1.5, 1.5), rng.range(-0.5, 0.5));
+    let (mx, my, mw) = (
+        rng.range(-1.5, 1.5),
+        rng.range(-1.5, 1.5),
+        rng.range(-0.5, 0.5),
+    );
     let (a, b) = (rng.range(-0.15, 0.15), rng.range(-0.3, 0.3));
     let mut t0 = [[0.0; 5]; 3];
     let mut t1 = [[0.0; 5]; 3];
     for k in 0..3 {
         if kind == 4 {
             let (w0, w1) = (rng.range(-3.0, 3.0), rng.range(-3.0, 3.0));
-            t0[k] = [rng.range(-3.0, 3.0), rng.range(-3.0, 3.0), 0.5 * w0, w0, 0.0];
-            t1[k] = [rng.range(-3.0, 3.0), rng.range(-3.0, 3.0), 0.5 * w1, w1, 0.0];
+            t0[k] = [
+                rng.range(-3.0, 3.0),
+                rng.range(-3.0, 3.0),
+                0.5 * w0,
+                w0,
+                0.0,
+            ];
+            t1[k] = [
+                rng.range(-3.0, 3.0),
+                rng.range(-3.0, 3.0),
+                0.5 * w1,
+                w1,
+                0.0,
+            ];
             continue;
         }
         let (nx, ny) = (cx + s * rng.range(-1.0, 1.0), cy + s * rng.range(-1.0, 1.0));
@@ -35,9 +55,17 @@ fn random_tri(rng: &mut Rng, kind: u64) -> SceneTri {
         let c = |w: f64| if defocus { a * w + b } else { 0.0 };
         t0[k] = [nx * wk, ny * wk, 0.5 * wk, wk, c(wk)];
         let w1 = wk * (1.0 + mw);
-        t1[k] = if motion { [(nx + mx) * w1, (ny + my) * w1, 0.5 * w1, w1, c(w1)] } else { t0[k] };
+        t1[k] = if motion {
+            [(nx + mx) * w1, (ny + my) * w1, 0.5 * w1, w1, c(w1)]
+        } else {
+            t0[k]
+        };
     }
-    SceneTri { t0, t1, color: [255, 255, 255] }
+    SceneTri {
+        t0,
+        t1,
+        color: [255, 255, 255],
+    }
 }
 
 #[test]
@@ -55,16 +83,40 @@ fn reference_bounds_conservative_against_brute_force() {
                 for px in 0..vp.0 {
                     for si in 0..8 {
                         let e = pat.exact[pat.index(px, py, si)];
-                        let hit = reference::sample::sample_test(&t, vp, px as f64 + e[0], py as f64 + e[1], e[2], e[3], e[4]);
+                        let hit = reference::sample::sample_test(
+                            &t,
+                            vp,
+                            px as f64 + e[0],
+                            py as f64 + e[1],
+                            e[2],
+                            e[3],
+                            e[4],
+                        );
                         if hit.is_none() {
                             continue;
                         }
                         covered += 1;
-                        let s = st.as_ref().unwrap_or_else(|| panic!("reference culled a covering triangle {t:?} (seed {seed})"));
-                        assert!(s.footprint.contains(px, py), "outside reference footprint: {t:?} px ({px},{py}) seed {seed}");
-                        let cell = uvt_core::PixelRect { x0: px - px % bt, y0: py - py % bt, x1: px - px % bt + bt, y1: py - py % bt + bt }.intersect(&s.footprint);
-                        let b = reference::bounds::tile(s, cell).unwrap_or_else(|| panic!("empty reference tile {bt}: {t:?} seed {seed}"));
-                        assert!(b.contains(e[2], e[3], e[4]), "sample {e:?} outside reference box {b:?} tile {bt}: {t:?} seed {seed}");
+                        let s = st.as_ref().unwrap_or_else(|| {
+                            panic!("reference culled a covering triangle {t:?} (seed {seed})")
+                        });
+                        assert!(
+                            s.footprint.contains(px, py),
+                            "outside reference footprint: {t:?} px ({px},{py}) seed {seed}"
+                        );
+                        let cell = uvt_core::PixelRect {
+                            x0: px - px % bt,
+                            y0: py - py % bt,
+                            x1: px - px % bt + bt,
+                            y1: py - py % bt + bt,
+                        }
+                        .intersect(&s.footprint);
+                        let b = reference::bounds::tile(s, cell).unwrap_or_else(|| {
+                            panic!("empty reference tile {bt}: {t:?} seed {seed}")
+                        });
+                        assert!(
+                            b.contains(e[2], e[3], e[4]),
+                            "sample {e:?} outside reference box {b:?} tile {bt}: {t:?} seed {seed}"
+                        );
                     }
                 }
             }
@@ -83,10 +135,25 @@ fn core_agrees_with_reference_beyond_quantization_distance() {
     let d = compare(&s.tris, &s.core_tris().unwrap(), s.core_viewport(), &pat);
     assert!(d.compared > 1_000_000, "{d:?}");
     assert_eq!(d.beyond_bound, 0, "default scene: {d:?}");
-    let tris: Vec<SceneTri> = (0..cases(300, 5000)).map(|i| random_tri(&mut rng, i as u64 % 5)).collect();
-    let scene = Scene { name: "random".into(), viewport: (48, 40), spp: 8, tile: 1, pattern: PatternKind::Sobol, seed, tris };
+    let tris: Vec<SceneTri> = (0..cases(300, 5000))
+        .map(|i| random_tri(&mut rng, i as u64 % 5))
+        .collect();
+    let scene = Scene {
+        name: "random".into(),
+        viewport: (48, 40),
+        spp: 8,
+        tile: 1,
+        pattern: PatternKind::Sobol,
+        seed,
+        tris,
+    };
     let pat = Pattern::new(scene.pattern, scene.spp, seed);
-    let d = compare(&scene.tris, &scene.core_tris().unwrap(), scene.core_viewport(), &pat);
+    let d = compare(
+        &scene.tris,
+        &scene.core_tris().unwrap(),
+        scene.core_viewport(),
+        &pat,
+    );
     assert_eq!(d.beyond_bound, 0, "random triangles (seed {seed}): {d:?}");
     assert!(d.compared > 100_000);
     println!("default+random: {d:?}");
@@ -96,7 +163,12 @@ fn core_agrees_with_reference_beyond_quantization_distance() {
 /// (The no-heap renderer keeps 4096 setups inline, so this runs on a thread with a large stack.)
 #[test]
 fn host_driver_matches_core_renderer() {
-    std::thread::Builder::new().stack_size(256 << 20).spawn(driver_matches).unwrap().join().unwrap();
+    std::thread::Builder::new()
+        .stack_size(256 << 20)
+        .spawn(driver_matches)
+        .unwrap()
+        .join()
+        .unwrap();
 }
 
 fn driver_matches() {
@@ -106,9 +178,25 @@ fn driver_matches() {
     let pat = Pattern::new(s.pattern, s.spp, s.seed);
     let colors: Vec<[u8; 3]> = s.tris.iter().map(|t| t.color).collect();
     for tile in [1u8, 2, 4, 8] {
-        let o = RunOpts { vp: s.viewport, spp: s.spp, tile, colors: &colors, clear: [24, 24, 32], image: true, label: "", oracle: None };
+        let o = RunOpts {
+            vp: s.viewport,
+            spp: s.spp,
+            tile,
+            colors: &colors,
+            clear: [24, 24, 32],
+            image: true,
+            label: "",
+            oracle: None,
+        };
         let f = run(&Fixed::new(Laine2011, vp, &core, &pat), &pat, &o);
-        let prims: Vec<Prim> = core.iter().zip(&colors).map(|(t, c)| Prim { tri: *t, color: Rgb888::new(c[0], c[1], c[2]) }).collect();
+        let prims: Vec<Prim> = core
+            .iter()
+            .zip(&colors)
+            .map(|(t, c)| Prim {
+                tri: *t,
+                color: Rgb888::new(c[0], c[1], c[2]),
+            })
+            .collect();
         let mut r = Renderer::<Laine2011, 4096>::new(Laine2011, vp, &prims).unwrap();
         let cp = pat.core();
         let mut img = vec![[0u8; 3]; s.viewport.0 as usize * s.viewport.1 as usize];
@@ -119,20 +207,63 @@ fn driver_matches() {
         assert!(img == f.image, "tile {tile}: images differ");
         let cs = r.stats;
         let fs = f.stats;
-        assert_eq!((cs.triangles, cs.culled_outside, cs.culled_degenerate, cs.by_class), (fs.triangles, fs.culled_outside, fs.culled_degenerate, fs.by_class));
-        assert_eq!((cs.tiles_visited, cs.tiles_skipped, cs.samples_tested, cs.samples_covered), (fs.tiles_visited, fs.tiles_skipped, fs.samples_tested, fs.samples_covered), "tile {tile}");
-        assert_eq!((cs.ops.setup, cs.ops.bounds, cs.ops.sample), (fs.ops_setup, fs.ops_bounds, fs.ops_sample), "tile {tile}");
+        assert_eq!(
+            (
+                cs.triangles,
+                cs.culled_outside,
+                cs.culled_degenerate,
+                cs.by_class
+            ),
+            (
+                fs.triangles,
+                fs.culled_outside,
+                fs.culled_degenerate,
+                fs.by_class
+            )
+        );
+        assert_eq!(
+            (
+                cs.tiles_visited,
+                cs.tiles_skipped,
+                cs.samples_tested,
+                cs.samples_covered
+            ),
+            (
+                fs.tiles_visited,
+                fs.tiles_skipped,
+                fs.samples_tested,
+                fs.samples_covered
+            ),
+            "tile {tile}"
+        );
+        assert_eq!(
+            (cs.ops.setup, cs.ops.bounds, cs.ops.sample),
+            (fs.ops_setup, fs.ops_bounds, fs.ops_sample),
+            "tile {tile}"
+        );
     }
 }
 
 /// Fixed-point and f64 STE within 2% relative on every benchmark row (quick size).
 #[test]
 fn bench_rows_fixed_and_f64_ste_within_two_percent() {
-    let rows = uvt_host::bench::run_table(true, &[scenes::Bench::Game, scenes::Bench::Dense], &scenes::Row::ALL);
+    let rows = uvt_host::bench::run_table(
+        true,
+        &[scenes::Bench::Game, scenes::Bench::Dense],
+        &scenes::Row::ALL,
+    );
     assert_eq!(rows.len(), 14);
     for r in &rows {
         let rel = (r.fixed - r.f64).abs() / r.f64;
-        assert!(r.f64 > 0.0 && rel <= 0.02, "{:?} {:?}: fixed {} f64 {} ({:.3}% apart)", r.scene, r.row, r.fixed, r.f64, 100.0 * rel);
+        assert!(
+            r.f64 > 0.0 && rel <= 0.02,
+            "{:?} {:?}: fixed {} f64 {} ({:.3}% apart)",
+            r.scene,
+            r.row,
+            r.fixed,
+            r.f64,
+            100.0 * rel
+        );
         assert!(r.oracle >= r.fixed && r.fixed >= r.bbox, "{r:?}");
     }
 }

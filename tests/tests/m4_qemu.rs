@@ -30,7 +30,16 @@ fn cortex_m4f_under_qemu_is_bit_exact_with_host() {
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
     let st = Command::new(cargo)
         .current_dir(root())
-        .args(["build", "--release", "-p", "uvt-core", "--example", "m4_render", "--target", "thumbv7em-none-eabihf"])
+        .args([
+            "build",
+            "--release",
+            "-p",
+            "uvt-core",
+            "--example",
+            "m4_render",
+            "--target",
+            "thumbv7em-none-eabihf",
+        ])
         .env("CARGO_TARGET_DIR", &tdir)
         .status()
         .expect("run cargo");
@@ -43,14 +52,48 @@ fn cortex_m4f_under_qemu_is_bit_exact_with_host() {
         .output()
         .expect("qemu-system-arm not runnable: tests/run.sh installs the Debian package qemu-system-arm");
     let text = String::from_utf8_lossy(&out.stdout);
-    assert!(out.status.success(), "qemu exited {:?} (124 = time limit)\nstdout:\n{text}\nstderr:\n{}", out.status, String::from_utf8_lossy(&out.stderr));
-    let line = |p: &str| text.lines().find(|l| l.starts_with(p)).unwrap_or_else(|| panic!("no '{p}' line in:\n{text}")).to_string();
+    assert!(
+        out.status.success(),
+        "qemu exited {:?} (124 = time limit)\nstdout:\n{text}\nstderr:\n{}",
+        out.status,
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let line = |p: &str| {
+        text.lines()
+            .find(|l| l.starts_with(p))
+            .unwrap_or_else(|| panic!("no '{p}' line in:\n{text}"))
+            .to_string()
+    };
     let (checksum, stats) = host_lines();
-    assert_eq!(line("checksum "), checksum, "image checksum differs between Cortex-M4F and host");
-    assert_eq!(line("stats "), stats, "counters differ between Cortex-M4F and host");
+    assert_eq!(
+        line("checksum "),
+        checksum,
+        "image checksum differs between Cortex-M4F and host"
+    );
+    assert_eq!(
+        line("stats "),
+        stats,
+        "counters differ between Cortex-M4F and host"
+    );
     // The cost measurement's calibration: 8,000,002 instructions, SysTick resolution 40.
-    let cal: u64 = line("calibration ").rsplit('=').next().unwrap().parse().unwrap();
-    assert!(cal.abs_diff(8_000_002) <= 80, "instruction calibration off: {cal}");
-    let stack: u64 = line("stack_peak_bytes ").rsplit(' ').next().unwrap().parse().unwrap();
-    assert!(stack > 1024 && stack < 1 << 20, "implausible stack peak {stack}");
+    let cal: u64 = line("calibration ")
+        .rsplit('=')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!(
+        cal.abs_diff(8_000_002) <= 80,
+        "instruction calibration off: {cal}"
+    );
+    let stack: u64 = line("stack_peak_bytes ")
+        .rsplit(' ')
+        .next()
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!(
+        stack > 1024 && stack < 1 << 20,
+        "implausible stack peak {stack}"
+    );
 }

@@ -8,7 +8,12 @@ use uvt_host::scenes::{Bench, Row};
 
 #[test]
 fn sweep_is_conservative_and_converges_to_the_default() {
-    let rows = sweep(&Sweep { scenes: vec![Bench::Game, Bench::Dense], rows: vec![Row::Both], tiles: vec![1, 2, 4, 8], shrink: 4 });
+    let rows = sweep(&Sweep {
+        scenes: vec![Bench::Game, Bench::Dense],
+        rows: vec![Row::Both],
+        tiles: vec![1, 2, 4, 8],
+        shrink: 4,
+    });
     assert_eq!(rows.len(), CONFIGS.len() * 4);
     for r in &rows {
         assert_eq!(r.violations, 0, "{r:?}");
@@ -16,13 +21,25 @@ fn sweep_is_conservative_and_converges_to_the_default() {
         assert!(r.compared > 10_000, "{r:?}");
     }
     let rate = |r: &uvt_host::precision::PrecRow| r.differ as f64 / r.compared as f64;
-    let at = |cfg: (u32, u32, u32), tile: u8| rows.iter().find(|r| r.config == cfg && r.tile == tile).unwrap();
+    let at = |cfg: (u32, u32, u32), tile: u8| {
+        rows.iter()
+            .find(|r| r.config == cfg && r.tile == tile)
+            .unwrap()
+    };
     for tile in [1u8, 2, 4, 8] {
         let (narrow, def) = (at(CONFIGS[0], tile), at(CONFIGS[3], tile));
-        assert!(rate(narrow) > rate(def), "narrow precision should err more: {} vs {}", rate(narrow), rate(def));
+        assert!(
+            rate(narrow) > rate(def),
+            "narrow precision should err more: {} vs {}",
+            rate(narrow),
+            rate(def)
+        );
         assert!(narrow.depth_lsb[0] > def.depth_lsb[0]);
         // At the default precision the core's STE is within 0.5% of the reference's.
-        assert!((def.ste[0] - def.ste[1]).abs() <= 0.005 * def.ste[1], "{def:?}");
+        assert!(
+            (def.ste[0] - def.ste[1]).abs() <= 0.005 * def.ste[1],
+            "{def:?}"
+        );
         // Narrow bounds can only be looser (outward rounding): STE not above the reference's.
         assert!(narrow.ste[0] <= narrow.ste[1] * 1.001, "{narrow:?}");
     }
@@ -47,16 +64,43 @@ fn precision_grids_are_enforced() {
     let on = Vertex::from_bits([1 << 8, 0, 0, 1 << 16, 0]);
     let off = Vertex::from_bits([(1 << 8) + 1, 0, 0, 1 << 16, 0]);
     assert!(Triangle::new_with::<P>([on; 3], [on; 3]).is_ok());
-    assert!(matches!(Triangle::new_with::<P>([on, off, on], [on; 3]), Err(Error::CoordOffGrid { vertex: 1, time: 0, frac: 8, .. })));
-    assert!(Triangle::new([on, off, on], [on; 3]).is_ok(), "the default accepts every I16F16 value");
+    assert!(matches!(
+        Triangle::new_with::<P>([on, off, on], [on; 3]),
+        Err(Error::CoordOffGrid {
+            vertex: 1,
+            time: 0,
+            frac: 8,
+            ..
+        })
+    ));
+    assert!(
+        Triangle::new([on, off, on], [on; 3]).is_ok(),
+        "the default accepts every I16F16 value"
+    );
     let mut s = [Sample::default(); 1];
     s[0].t = uvt_core::Time::from_bits(64);
     assert!(SamplePattern::new_with::<P>(1, 1, &s).is_ok());
     s[0].t = uvt_core::Time::from_bits(65);
-    assert_eq!(SamplePattern::new_with::<P>(1, 1, &s).unwrap_err(), Error::SampleOffGrid { index: 0, frac: 10 });
+    assert_eq!(
+        SamplePattern::new_with::<P>(1, 1, &s).unwrap_err(),
+        Error::SampleOffGrid { index: 0, frac: 10 }
+    );
     // Outward rounding to a coarser grid: 4 fraction bits = steps of 4096 raw.
     let i = Interval { lo: 5000, hi: 5001 }.round_out(4);
     assert_eq!(i, Interval { lo: 4096, hi: 8192 });
-    assert_eq!(Interval { lo: -65536, hi: 65535 }.round_out(4), Interval { lo: -65536, hi: 65536 });
-    assert_eq!(Interval { lo: 7, hi: 9 }.round_out(16), Interval { lo: 7, hi: 9 });
+    assert_eq!(
+        Interval {
+            lo: -65536,
+            hi: 65535
+        }
+        .round_out(4),
+        Interval {
+            lo: -65536,
+            hi: 65536
+        }
+    );
+    assert_eq!(
+        Interval { lo: 7, hi: 9 }.round_out(16),
+        Interval { lo: 7, hi: 9 }
+    );
 }

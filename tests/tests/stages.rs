@@ -33,12 +33,27 @@ const ONE: i128 = 65536;
 #[test]
 fn setup_static_boxes_and_footprint() {
     let vp = Viewport::new(16, 16).unwrap();
-    let t = stat([[-0.5, -0.5, 0.25, 1.0, 0.0], [0.5, -0.5, 0.25, 1.0, 0.0], [0.0, 0.5, 0.25, 1.0, 0.0]]);
+    let t = stat([
+        [-0.5, -0.5, 0.25, 1.0, 0.0],
+        [0.5, -0.5, 0.25, 1.0, 0.0],
+        [0.0, 0.5, 0.25, 1.0, 0.0],
+    ]);
     let s = visible(&t, vp);
     assert_eq!(s.class, Class::Static);
-    let b = AxisBoxes { lo: Some([4 << 16; 2]), hi: Some([12 << 16; 2]) };
+    let b = AxisBoxes {
+        lo: Some([4 << 16; 2]),
+        hi: Some([12 << 16; 2]),
+    };
     assert_eq!(s.axes, [b, b], "\n{}", dump(&t));
-    assert_eq!(s.footprint, PixelRect { x0: 4, y0: 4, x1: 13, y1: 13 });
+    assert_eq!(
+        s.footprint,
+        PixelRect {
+            x0: 4,
+            y0: 4,
+            x1: 13,
+            y1: 13
+        }
+    );
     assert_eq!(s.span, Interval::UNIT);
 }
 
@@ -49,11 +64,31 @@ fn setup_static_boxes_and_footprint() {
 #[test]
 fn setup_separating_line_behind_camera() {
     let vp = Viewport::new(16, 16).unwrap();
-    let t = stat([[0.0, 0.0, 0.0, 1.0, 0.0], [1.0, 0.5, 0.0, 1.0, 0.0], [1.0, 0.0, 0.0, -1.0, 0.0]]);
+    let t = stat([
+        [0.0, 0.0, 0.0, 1.0, 0.0],
+        [1.0, 0.5, 0.0, 1.0, 0.0],
+        [1.0, 0.0, 0.0, -1.0, 0.0],
+    ]);
     let s = visible(&t, vp);
-    assert_eq!(s.axes[0], AxisBoxes { lo: Some([8 << 16; 2]), hi: None }, "\n{}", dump(&t));
+    assert_eq!(
+        s.axes[0],
+        AxisBoxes {
+            lo: Some([8 << 16; 2]),
+            hi: None
+        },
+        "\n{}",
+        dump(&t)
+    );
     assert_eq!(s.axes[1], AxisBoxes { lo: None, hi: None });
-    assert_eq!(s.footprint, PixelRect { x0: 8, y0: 0, x1: 16, y1: 16 });
+    assert_eq!(
+        s.footprint,
+        PixelRect {
+            x0: 8,
+            y0: 0,
+            x1: 16,
+            y1: 16
+        }
+    );
 }
 
 /// Plane w − x ≥ 0: raw max(w − x) is 65536 + 6554 = 72090 at t = 0 (x = −0.1 rounds to −6554)
@@ -63,8 +98,16 @@ fn setup_separating_line_behind_camera() {
 fn setup_frustum_time_span() {
     let vp = Viewport::new(16, 16).unwrap();
     let t = tri(
-        [[-0.1, -0.1, 0.0, 1.0, 0.0], [0.1, -0.1, 0.0, 1.0, 0.0], [0.0, 0.1, 0.0, 1.0, 0.0]],
-        [[2.9, -0.1, 0.0, 1.0, 0.0], [3.1, -0.1, 0.0, 1.0, 0.0], [3.0, 0.1, 0.0, 1.0, 0.0]],
+        [
+            [-0.1, -0.1, 0.0, 1.0, 0.0],
+            [0.1, -0.1, 0.0, 1.0, 0.0],
+            [0.0, 0.1, 0.0, 1.0, 0.0],
+        ],
+        [
+            [2.9, -0.1, 0.0, 1.0, 0.0],
+            [3.1, -0.1, 0.0, 1.0, 0.0],
+            [3.0, 0.1, 0.0, 1.0, 0.0],
+        ],
     );
     let s = visible(&t, vp);
     assert_eq!(s.class, Class::Motion);
@@ -75,7 +118,11 @@ fn setup_frustum_time_span() {
 #[test]
 fn setup_classify_and_cull() {
     let vp = Viewport::new(16, 16).unwrap();
-    let base = [[-0.5, -0.5, 0.0, 1.0, 0.0], [0.5, -0.5, 0.0, 1.0, 0.0], [0.0, 0.5, 0.0, 1.0, 0.0]];
+    let base = [
+        [-0.5, -0.5, 0.0, 1.0, 0.0],
+        [0.5, -0.5, 0.0, 1.0, 0.0],
+        [0.0, 0.5, 0.0, 1.0, 0.0],
+    ];
     let mut z_moves = base;
     z_moves[0][2] = 0.5;
     let mut defocus = base;
@@ -85,20 +132,44 @@ fn setup_classify_and_cull() {
     let mut ops = Ops::default();
     let class = |t: &Triangle| setup::classify(t);
     assert_eq!(class(&stat(base)), Class::Static);
-    assert_eq!(class(&tri(base, z_moves)), Class::Motion, "z motion changes depth over t");
+    assert_eq!(
+        class(&tri(base, z_moves)),
+        Class::Motion,
+        "z motion changes depth over t"
+    );
     assert_eq!(class(&stat(defocus)), Class::Defocus);
-    assert_eq!(class(&tri(defocus, coc_changes)), Class::MotionDefocus, "a changing CoC is motion");
+    assert_eq!(
+        class(&tri(defocus, coc_changes)),
+        Class::MotionDefocus,
+        "a changing CoC is motion"
+    );
     // collinear at every t → degenerate
-    let line = [[-0.5, 0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0, 0.0], [0.5, 0.0, 0.0, 1.0, 0.0]];
-    assert_eq!(setup(&stat(line), vp, &mut ops), Outcome::Culled(Cull::Degenerate));
+    let line = [
+        [-0.5, 0.0, 0.0, 1.0, 0.0],
+        [0.0, 0.0, 0.0, 1.0, 0.0],
+        [0.5, 0.0, 0.0, 1.0, 0.0],
+    ];
+    assert_eq!(
+        setup(&stat(line), vp, &mut ops),
+        Outcome::Culled(Cull::Degenerate)
+    );
     // zero area at t = 0 only → visible
-    assert!(matches!(setup(&tri(line, base), vp, &mut ops), Outcome::Visible(_)));
+    assert!(matches!(
+        setup(&tri(line, base), vp, &mut ops),
+        Outcome::Visible(_)
+    ));
     // wholly right of the frustum for the whole shutter → outside
     let right = base.map(|v| [v[0] + 3.0, v[1], v[2], v[3], v[4]]);
-    assert_eq!(setup(&tri(right, right), vp, &mut ops), Outcome::Culled(Cull::Outside));
+    assert_eq!(
+        setup(&tri(right, right), vp, &mut ops),
+        Outcome::Culled(Cull::Outside)
+    );
     // all behind the camera → outside
     let behind = base.map(|v| [v[0], v[1], v[2], -1.0, v[4]]);
-    assert_eq!(setup(&stat(behind), vp, &mut ops), Outcome::Culled(Cull::Outside));
+    assert_eq!(
+        setup(&stat(behind), vp, &mut ops),
+        Outcome::Culled(Cull::Outside)
+    );
 }
 
 /// Static triangle, CoC 0.25 everywhere, w = 1, NDC x ∈ {−⅛, ⅛, 0} → pixels {7, 9, 8}, lens u
@@ -109,19 +180,48 @@ fn setup_classify_and_cull() {
 #[test]
 fn bounds_lens_intervals() {
     let vp = Viewport::new(16, 16).unwrap();
-    let t = stat([[-0.125, -0.125, 0.0, 1.0, 0.25], [0.125, -0.125, 0.0, 1.0, 0.25], [0.0, 0.125, 0.0, 1.0, 0.25]]);
+    let t = stat([
+        [-0.125, -0.125, 0.0, 1.0, 0.25],
+        [0.125, -0.125, 0.0, 1.0, 0.25],
+        [0.0, 0.125, 0.0, 1.0, 0.25],
+    ]);
     let s = visible(&t, vp);
     assert_eq!(s.class, Class::Defocus);
     let mut ops = Ops::default();
     let co = Laine2011.prepare(&s, &mut ops);
-    let b = Laine2011.tile(&s, &co, PixelRect { x0: 10, y0: 8, x1: 11, y1: 9 }, &mut ops).expect("non-empty");
+    let b = Laine2011
+        .tile(
+            &s,
+            &co,
+            PixelRect {
+                x0: 10,
+                y0: 8,
+                x1: 11,
+                y1: 9,
+            },
+            &mut ops,
+        )
+        .expect("non-empty");
     same("u.lo", &t, 32768, b.u.lo as i128);
     same("u.hi", &t, ONE, b.u.hi as i128);
     same("v.lo", &t, -ONE, b.v.lo as i128);
     same("v.hi", &t, 32768, b.v.hi as i128);
     assert_eq!(b.t, Interval::UNIT);
     // A column the box never reaches at any lens point: [14, 15) needs 7 + 4s ≥ 14 → empty.
-    assert_eq!(Laine2011.tile(&s, &co, PixelRect { x0: 14, y0: 8, x1: 15, y1: 9 }, &mut ops), None);
+    assert_eq!(
+        Laine2011.tile(
+            &s,
+            &co,
+            PixelRect {
+                x0: 14,
+                y0: 8,
+                x1: 15,
+                y1: 9
+            },
+            &mut ops
+        ),
+        None
+    );
 }
 
 /// Motion along x at w = 1: pixels {2, 3, 2} at t = 0 to {12, 13, 12} at t = 1. In dual space
@@ -131,14 +231,42 @@ fn bounds_lens_intervals() {
 fn bounds_time_interval_dual_space() {
     let vp = Viewport::new(16, 16).unwrap();
     let t = tri(
-        [[-0.75, -0.125, 0.0, 1.0, 0.0], [-0.625, -0.125, 0.0, 1.0, 0.0], [-0.75, 0.125, 0.0, 1.0, 0.0]],
-        [[0.5, -0.125, 0.0, 1.0, 0.0], [0.625, -0.125, 0.0, 1.0, 0.0], [0.5, 0.125, 0.0, 1.0, 0.0]],
+        [
+            [-0.75, -0.125, 0.0, 1.0, 0.0],
+            [-0.625, -0.125, 0.0, 1.0, 0.0],
+            [-0.75, 0.125, 0.0, 1.0, 0.0],
+        ],
+        [
+            [0.5, -0.125, 0.0, 1.0, 0.0],
+            [0.625, -0.125, 0.0, 1.0, 0.0],
+            [0.5, 0.125, 0.0, 1.0, 0.0],
+        ],
     );
     let s = visible(&t, vp);
-    assert_eq!(s.footprint, PixelRect { x0: 2, y0: 7, x1: 14, y1: 10 });
+    assert_eq!(
+        s.footprint,
+        PixelRect {
+            x0: 2,
+            y0: 7,
+            x1: 14,
+            y1: 10
+        }
+    );
     let mut ops = Ops::default();
     let co = Laine2011.prepare(&s, &mut ops);
-    let b = Laine2011.tile(&s, &co, PixelRect { x0: 8, y0: 8, x1: 9, y1: 9 }, &mut ops).expect("non-empty");
+    let b = Laine2011
+        .tile(
+            &s,
+            &co,
+            PixelRect {
+                x0: 8,
+                y0: 8,
+                x1: 9,
+                y1: 9,
+            },
+            &mut ops,
+        )
+        .expect("non-empty");
     same("t.lo", &t, 32768, b.t.lo as i128);
     same("t.hi", &t, 45876, b.t.hi as i128);
     assert_eq!((b.u, b.v), (Interval::LENS, Interval::LENS));
@@ -159,27 +287,46 @@ fn smp(sx: u8, sy: u8, u: i32, v: i32, t: i32) -> Sample {
 #[test]
 fn sample_test_coverage_and_depth() {
     let vp = Viewport::new(16, 16).unwrap();
-    let t = stat([[-0.5, -0.5, 0.25, 1.0, 0.0], [0.5, -0.5, 0.25, 1.0, 0.0], [0.0, 0.5, 0.25, 1.0, 0.0]]);
+    let t = stat([
+        [-0.5, -0.5, 0.25, 1.0, 0.0],
+        [0.5, -0.5, 0.25, 1.0, 0.0],
+        [0.0, 0.5, 0.25, 1.0, 0.0],
+    ]);
     let s = visible(&t, vp);
     let mut ops = Ops::default();
     let s0 = smp(0, 0, 0, 0, 0);
     let hit = sample_test(&s, ScreenPos::of(8, 8, &s0), &s0, &mut ops).expect("centre covered");
     same("depth", &t, 0x400000, hit.depth as i128);
-    assert_eq!(sample_test(&s, ScreenPos::of(1, 1, &s0), &s0, &mut ops), None);
+    assert_eq!(
+        sample_test(&s, ScreenPos::of(1, 1, &s0), &s0, &mut ops),
+        None
+    );
     // Same triangle moving +1 NDC in x over the shutter, z = w/2 at t = 1: at t = ½ it has
     // moved ½ (4 px) and its depth is (¼ + ½)/2 = ⅜ = 0x600000. At t = ½ its left edge crosses
     // y = 0 at x = ¼, so pixel (11, 8) (NDC 0.375, 0) is inside. Pixel (14, 10) (NDC 0.75, −0.25)
     // is right of the t = 0 triangle (edge at 0.375) and inside at t = 1 (edges at 0.625, 1.375).
     let m = tri(
-        [[-0.5, -0.5, 0.25, 1.0, 0.0], [0.5, -0.5, 0.25, 1.0, 0.0], [0.0, 0.5, 0.25, 1.0, 0.0]],
-        [[0.5, -0.5, 0.5, 1.0, 0.0], [1.5, -0.5, 0.5, 1.0, 0.0], [1.0, 0.5, 0.5, 1.0, 0.0]],
+        [
+            [-0.5, -0.5, 0.25, 1.0, 0.0],
+            [0.5, -0.5, 0.25, 1.0, 0.0],
+            [0.0, 0.5, 0.25, 1.0, 0.0],
+        ],
+        [
+            [0.5, -0.5, 0.5, 1.0, 0.0],
+            [1.5, -0.5, 0.5, 1.0, 0.0],
+            [1.0, 0.5, 0.5, 1.0, 0.0],
+        ],
     );
     let sm = visible(&m, vp);
     let half = smp(0, 0, 0, 0, 32768);
-    let hit = sample_test(&sm, ScreenPos::of(11, 8, &half), &half, &mut ops).expect("covered at t=½");
+    let hit =
+        sample_test(&sm, ScreenPos::of(11, 8, &half), &half, &mut ops).expect("covered at t=½");
     same("depth at t=½", &m, 0x600000, hit.depth as i128);
     let (early, late) = (smp(0, 0, 0, 0, 0), smp(0, 0, 0, 0, 65536));
-    assert_eq!(sample_test(&sm, ScreenPos::of(14, 10, &early), &early, &mut ops), None);
+    assert_eq!(
+        sample_test(&sm, ScreenPos::of(14, 10, &early), &early, &mut ops),
+        None
+    );
     assert!(sample_test(&sm, ScreenPos::of(14, 10, &late), &late, &mut ops).is_some());
 }
 
@@ -198,8 +345,14 @@ fn sample_test_fill_rule_shared_edge() {
     for (py, v) in [(6u16, 0), (8, 65536), (9, -65536), (7, 12345)] {
         let s0 = smp(0, 0, 0, v, 0);
         let pos = ScreenPos::of(8, py, &s0);
-        let (hl, hr) = (sample_test(&l, pos, &s0, &mut ops), sample_test(&r, pos, &s0, &mut ops));
-        assert!(hl.is_none() && hr.is_some(), "row {py} v {v}: left {hl:?} right {hr:?}");
+        let (hl, hr) = (
+            sample_test(&l, pos, &s0, &mut ops),
+            sample_test(&r, pos, &s0, &mut ops),
+        );
+        assert!(
+            hl.is_none() && hr.is_some(),
+            "row {py} v {v}: left {hl:?} right {hr:?}"
+        );
     }
 }
 

@@ -63,7 +63,10 @@ fn truncated_or_corrupted_file_is_caught_by_its_checksum() {
     let text = std::fs::read_to_string(&f).unwrap();
     std::fs::write(&f, &text[..text.len() / 2]).unwrap();
     let e = format!("{:#}", check(&set).unwrap_err());
-    assert!(e.contains("bounds_out.hex") && e.contains("corrupted or truncated"), "{e}");
+    assert!(
+        e.contains("bounds_out.hex") && e.contains("corrupted or truncated"),
+        "{e}"
+    );
 }
 
 #[test]
@@ -76,7 +79,10 @@ fn a_changed_bit_is_reported_with_file_line_and_field() {
     let f = set.join("sample_out.hex");
     let text = std::fs::read_to_string(&f).unwrap();
     let mut lines: Vec<String> = text.lines().map(String::from).collect();
-    let idx = lines.iter().position(|l| l.starts_with("00000003") || l.starts_with("00000007")).expect("a covered sample");
+    let idx = lines
+        .iter()
+        .position(|l| l.starts_with("00000003") || l.starts_with("00000007"))
+        .expect("a covered sample");
     let mut words: Vec<String> = lines[idx].split(' ').map(String::from).collect();
     let d = u32::from_str_radix(&words[1], 16).unwrap() ^ 1;
     words[1] = format!("{d:08x}");
@@ -84,10 +90,17 @@ fn a_changed_bit_is_reported_with_file_line_and_field() {
     let new = lines.join("\n") + "\n";
     std::fs::write(&f, &new).unwrap();
     let m = set.join("manifest.json");
-    let mt = std::fs::read_to_string(&m).unwrap().replace(&sha256(text.as_bytes()), &sha256(new.as_bytes()));
+    let mt = std::fs::read_to_string(&m)
+        .unwrap()
+        .replace(&sha256(text.as_bytes()), &sha256(new.as_bytes()));
     std::fs::write(&m, mt).unwrap();
     let e = format!("{:#}", check(&set).unwrap_err());
-    assert!(e.contains(&format!("sample_out.hex line {} field depth", idx + 1)) && e.contains("expected 0x") && e.contains("observed 0x"), "{e}");
+    assert!(
+        e.contains(&format!("sample_out.hex line {} field depth", idx + 1))
+            && e.contains("expected 0x")
+            && e.contains("observed 0x"),
+        "{e}"
+    );
 }
 
 /// Frame vectors' resolved pixels (trace) equal the renderer's image for the same scene.
@@ -99,28 +112,59 @@ fn frame_vectors_agree_with_the_renderer() {
         let pat = uvt_host::pattern::Pattern::new(s.pattern, s.spp, s.seed);
         let core = s.core_tris().unwrap();
         let colors: Vec<[u8; 3]> = s.tris.iter().map(|t| t.color).collect();
-        let o = RunOpts { vp: s.viewport, spp: s.spp, tile: s.tile, colors: &colors, clear: [24, 24, 32], image: true, label: "", oracle: None };
-        let f = run(&Fixed::new(uvt_core::Laine2011, s.core_viewport(), &core, &pat), &pat, &o);
+        let o = RunOpts {
+            vp: s.viewport,
+            spp: s.spp,
+            tile: s.tile,
+            colors: &colors,
+            clear: [24, 24, 32],
+            image: true,
+            label: "",
+            oracle: None,
+        };
+        let f = run(
+            &Fixed::new(uvt_core::Laine2011, s.core_viewport(), &core, &pat),
+            &pat,
+            &o,
+        );
         let trace = std::fs::read_to_string(committed().join(set).join("trace.jsonl")).unwrap();
         let mut n = 0;
         for line in trace.lines().filter(|l| l.contains("\"type\":\"pixel\"")) {
             let v: serde_json::Value = serde_json::from_str(line).unwrap();
-            let (x, y) = (v["px"].as_u64().unwrap() as usize, v["py"].as_u64().unwrap() as usize);
-            let rgb: Vec<u8> = v["rgb"].as_array().unwrap().iter().map(|c| c.as_u64().unwrap() as u8).collect();
-            assert_eq!(rgb, f.image[y * s.viewport.0 as usize + x].to_vec(), "{set} pixel ({x},{y})");
+            let (x, y) = (
+                v["px"].as_u64().unwrap() as usize,
+                v["py"].as_u64().unwrap() as usize,
+            );
+            let rgb: Vec<u8> = v["rgb"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .map(|c| c.as_u64().unwrap() as u8)
+                .collect();
+            assert_eq!(
+                rgb,
+                f.image[y * s.viewport.0 as usize + x].to_vec(),
+                "{set} pixel ({x},{y})"
+            );
             n += 1;
         }
         assert_eq!(n, 32 * 32);
         // Every traced sample outside its tile's box is uncovered (conservativeness, re-checkable).
         for line in trace.lines().filter(|l| l.contains("\"type\":\"sample\"")) {
             let v: serde_json::Value = serde_json::from_str(line).unwrap();
-            assert!(v["inside"].as_bool().unwrap() || !v["covered"].as_bool().unwrap(), "{set}: {line}");
+            assert!(
+                v["inside"].as_bool().unwrap() || !v["covered"].as_bool().unwrap(),
+                "{set}: {line}"
+            );
         }
     }
 }
 
 fn iverilog(set: &Path, tb: &Path) -> String {
-    let n = std::fs::read_to_string(set.join("select_out.hex")).unwrap().lines().count();
+    let n = std::fs::read_to_string(set.join("select_out.hex"))
+        .unwrap()
+        .lines()
+        .count();
     let out = Command::new("vvp")
         .arg("-n")
         .arg(tb)
@@ -129,7 +173,11 @@ fn iverilog(set: &Path, tb: &Path) -> String {
         .arg(format!("+N={n}"))
         .output()
         .expect("vvp (Debian package iverilog; tests/run.sh installs it)");
-    assert!(out.status.success(), "vvp failed: {}", String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "vvp failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
     String::from_utf8_lossy(&out.stdout).into_owned()
 }
 
@@ -155,10 +203,17 @@ fn rtl_interval_check_passes_every_exported_record() {
     copy_set(&committed().join("frame_a"), &bad);
     let f = bad.join("select_out.hex");
     let t = std::fs::read_to_string(&f).unwrap();
-    let flipped = if t.starts_with("00000001") { t.replacen("00000001", "00000000", 1) } else { t.replacen("00000000", "00000001", 1) };
+    let flipped = if t.starts_with("00000001") {
+        t.replacen("00000001", "00000000", 1)
+    } else {
+        t.replacen("00000000", "00000001", 1)
+    };
     std::fs::write(&f, flipped).unwrap();
     let out = iverilog(&bad, &tb);
-    assert!(out.contains("FAIL 1 of") && out.contains("MISMATCH line 1"), "{out}");
+    assert!(
+        out.contains("FAIL 1 of") && out.contains("MISMATCH line 1"),
+        "{out}"
+    );
 }
 
 /// vectors/README.md carries the current bit-layout tables.

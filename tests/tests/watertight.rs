@@ -6,11 +6,20 @@ use proptest::prelude::*;
 use uvt_core::{SamplePattern, Viewport};
 use uvt_tests::*;
 
-fn check_mesh(seed: u64, motion: bool, coc: Option<(f64, f64)>, grid_pattern: bool) -> Result<(), String> {
+fn check_mesh(
+    seed: u64,
+    motion: bool,
+    coc: Option<(f64, f64)>,
+    grid_pattern: bool,
+) -> Result<(), String> {
     let mut rng = Rng(seed);
     let tris = planar_mesh(&mut rng, 6, motion, coc);
     let vp = Viewport::new(16, 12).unwrap();
-    let samples = if grid_pattern { grid_samples(&mut rng, 2, 4) } else { random_samples(&mut rng, 2, 4) };
+    let samples = if grid_pattern {
+        grid_samples(&mut rng, 2, 4)
+    } else {
+        random_samples(&mut rng, 2, 4)
+    };
     let pat = SamplePattern::new(2, 4, &samples).unwrap();
     let counts = coverage_counts(&tris, vp, &pat);
     for (i, &n) in counts.iter().enumerate() {
@@ -43,14 +52,28 @@ fn exact_ties_on_pixel_grid() {
         let mut tris = Vec::new();
         for j in 0..g - 1 {
             for i in 0..g - 1 {
-                let q = [p(i, j, 0.0), p(i + 1, j, 0.0), p(i + 1, j + 1, 0.0), p(i, j + 1, 0.0)];
-                let r = [p(i, j, motion), p(i + 1, j, motion), p(i + 1, j + 1, motion), p(i, j + 1, motion)];
+                let q = [
+                    p(i, j, 0.0),
+                    p(i + 1, j, 0.0),
+                    p(i + 1, j + 1, 0.0),
+                    p(i, j + 1, 0.0),
+                ];
+                let r = [
+                    p(i, j, motion),
+                    p(i + 1, j, motion),
+                    p(i + 1, j + 1, motion),
+                    p(i, j + 1, motion),
+                ];
                 let with_c = |mut v: [f64; 5]| {
                     v[4] = coc;
                     v
                 };
                 let (q, r) = (q.map(with_c), r.map(with_c));
-                let quads = if (i + j) % 2 == 0 { [[0, 1, 2], [0, 2, 3]] } else { [[0, 1, 3], [1, 2, 3]] };
+                let quads = if (i + j) % 2 == 0 {
+                    [[0, 1, 2], [0, 2, 3]]
+                } else {
+                    [[0, 1, 3], [1, 2, 3]]
+                };
                 for k in quads {
                     tris.push(tri(k.map(|a| q[a]), k.map(|a| r[a])));
                 }
@@ -61,7 +84,12 @@ fn exact_ties_on_pixel_grid() {
         let pat = SamplePattern::new(4, 4, &samples).unwrap();
         let counts = coverage_counts(&tris, vp, &pat);
         let bad = counts.iter().filter(|&&n| n != 1).count();
-        assert_eq!(bad, 0, "motion {motion} coc {coc}: {bad} samples not covered exactly once (seed {})", seed());
+        assert_eq!(
+            bad,
+            0,
+            "motion {motion} coc {coc}: {bad} samples not covered exactly once (seed {})",
+            seed()
+        );
     }
 }
 

@@ -67,7 +67,10 @@ fn dual_t(s: &Setup, ax: usize, x0: f64, x1: f64) -> Option<(f64, f64)> {
     let per_t = |vs: &[[f64; 5]; 3]| {
         let (la, ha) = ends(vs, fa);
         let (lb, hb) = ends(vs, fb);
-        (line(la, lb, x0).min(line(la, lb, x1)), line(ha, hb, x0).max(line(ha, hb, x1)))
+        (
+            line(la, lb, x0).min(line(la, lb, x1)),
+            line(ha, hb, x0).max(line(ha, hb, x1)),
+        )
     };
     let (lo0, hi0) = per_t(&s.tri.t0);
     let (lo1, hi1) = per_t(&s.tri.t1);
@@ -77,8 +80,15 @@ fn dual_t(s: &Setup, ax: usize, x0: f64, x1: f64) -> Option<(f64, f64)> {
 
 /// Laine 2011 bounds of one tile (pixels `cell`, clipped to the footprint).
 pub fn tile(s: &Setup, cell: PixelRect) -> Option<UvtBox> {
-    let mut b = UvtBox { u: (-1.0, 1.0), v: (-1.0, 1.0), t: s.span };
-    let r = [(cell.x0 as f64, cell.x1 as f64), (cell.y0 as f64, cell.y1 as f64)];
+    let mut b = UvtBox {
+        u: (-1.0, 1.0),
+        v: (-1.0, 1.0),
+        t: s.span,
+    };
+    let r = [
+        (cell.x0 as f64, cell.x1 as f64),
+        (cell.y0 as f64, cell.y1 as f64),
+    ];
     for (ax, &(p0, p1)) in r.iter().enumerate() {
         if s.class.defocus() {
             let (s0, s1) = lens_s(s, ax, p0, p1)?;

@@ -25,11 +25,23 @@ pub fn positions(tri: &SceneTri, t: f64, u: f64, v: f64) -> ([DVec3; 3], [f64; 3
 
 /// NDC direction of a screen position in pixels (x right, y down).
 pub fn direction(vp: (u16, u16), x: f64, y: f64) -> DVec3 {
-    DVec3::new(2.0 * x / vp.0 as f64 - 1.0, 1.0 - 2.0 * y / vp.1 as f64, 1.0)
+    DVec3::new(
+        2.0 * x / vp.0 as f64 - 1.0,
+        1.0 - 2.0 * y / vp.1 as f64,
+        1.0,
+    )
 }
 
 /// Ray test at screen position (x, y) px, lens (u, v), time t. Returns the depth z/w on a hit.
-pub fn sample_test(tri: &SceneTri, vp: (u16, u16), x: f64, y: f64, u: f64, v: f64, t: f64) -> Option<f64> {
+pub fn sample_test(
+    tri: &SceneTri,
+    vp: (u16, u16),
+    x: f64,
+    y: f64,
+    u: f64,
+    v: f64,
+    t: f64,
+) -> Option<f64> {
     let (p, z) = positions(tri, t, u, v);
     let d = direction(vp, x, y);
     let (e1, e2) = (p[1] - p[0], p[2] - p[0]);
@@ -57,7 +69,15 @@ pub fn sample_test(tri: &SceneTri, vp: (u16, u16), x: f64, y: f64, u: f64, v: f6
 /// (t, u, v): point-to-segment distance between projected vertices when all three are in front
 /// of the camera, otherwise the distance to the nearest edge *line* through the camera-plane-safe
 /// homogeneous edge function (a lower bound on the segment distance).
-pub fn edge_distance_px(tri: &SceneTri, vp: (u16, u16), x: f64, y: f64, u: f64, v: f64, t: f64) -> f64 {
+pub fn edge_distance_px(
+    tri: &SceneTri,
+    vp: (u16, u16),
+    x: f64,
+    y: f64,
+    u: f64,
+    v: f64,
+    t: f64,
+) -> f64 {
     let (p, _) = positions(tri, t, u, v);
     let (w, h) = (vp.0 as f64, vp.1 as f64);
     if p.iter().all(|q| q.z > 0.0) {
@@ -67,7 +87,11 @@ pub fn edge_distance_px(tri: &SceneTri, vp: (u16, u16), x: f64, y: f64, u: f64, 
                 let (a, b) = (s[k], s[(k + 1) % 3]);
                 let (dx, dy) = (b.0 - a.0, b.1 - a.1);
                 let l2 = dx * dx + dy * dy;
-                let f = if l2 > 0.0 { (((x - a.0) * dx + (y - a.1) * dy) / l2).clamp(0.0, 1.0) } else { 0.0 };
+                let f = if l2 > 0.0 {
+                    (((x - a.0) * dx + (y - a.1) * dy) / l2).clamp(0.0, 1.0)
+                } else {
+                    0.0
+                };
                 ((x - a.0 - f * dx).powi(2) + (y - a.1 - f * dy).powi(2)).sqrt()
             })
             .fold(f64::MAX, f64::min)
@@ -78,7 +102,11 @@ pub fn edge_distance_px(tri: &SceneTri, vp: (u16, u16), x: f64, y: f64, u: f64, 
                 let n = p[(k + 1) % 3].cross(p[(k + 2) % 3]);
                 // E(X, Y) = n·(2X/W − 1, 1 − 2Y/H, 1): gradient in pixels (2n.x/W, −2n.y/H).
                 let g = ((2.0 * n.x / w).powi(2) + (2.0 * n.y / h).powi(2)).sqrt();
-                if g > 0.0 { n.dot(d).abs() / g } else { f64::MAX }
+                if g > 0.0 {
+                    n.dot(d).abs() / g
+                } else {
+                    f64::MAX
+                }
             })
             .fold(f64::MAX, f64::min)
     }

@@ -48,7 +48,10 @@ pub fn axis(v: &[f64; 5], ax: usize) -> (f64, f64) {
 /// Class by the same rule as the core.
 pub fn classify(t: &SceneTri) -> Class {
     let defocus = t.t0.iter().chain(t.t1.iter()).any(|v| v[4] != 0.0);
-    let motion = t.t0.iter().zip(t.t1.iter()).any(|(a, b)| (0..4).any(|f| a[f] != b[f]) || (defocus && a[4] != b[4]));
+    let motion =
+        t.t0.iter()
+            .zip(t.t1.iter())
+            .any(|(a, b)| (0..4).any(|f| a[f] != b[f]) || (defocus && a[4] != b[4]));
     match (motion, defocus) {
         (false, false) => Class::Static,
         (true, false) => Class::Motion,
@@ -82,10 +85,12 @@ fn span(t: &SceneTri) -> Option<(f64, f64)> {
     for ax in 0..2 {
         for sign in [-1.0, 1.0] {
             let dist = |vs: &[[f64; 5]; 3]| {
-                vs.iter().map(|v| {
-                    let (x, c) = axis(v, ax);
-                    v[3] + sign * x + c.abs()
-                }).fold(f64::MIN, f64::max)
+                vs.iter()
+                    .map(|v| {
+                        let (x, c) = axis(v, ax);
+                        v[3] + sign * x + c.abs()
+                    })
+                    .fold(f64::MIN, f64::max)
             };
             let (a, b) = (dist(&t.t0), dist(&t.t1));
             s = solve_le(a - b, a, s.0, s.1)?;
@@ -96,7 +101,8 @@ fn span(t: &SceneTri) -> Option<(f64, f64)> {
 
 fn det(p: [[f64; 3]; 3]) -> f64 {
     let [a, b, c] = p;
-    a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0])
+    a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
+        + a[2] * (b[0] * c[1] - b[1] * c[0])
 }
 
 fn degenerate(t: &SceneTri) -> bool {
@@ -136,10 +142,14 @@ pub fn crosses(pts: &[(f64, f64)], dir: f64) -> bool {
 
 fn boxes(t: &SceneTri, ax: usize, e: f64) -> AxisBoxes {
     let all: Vec<[f64; 5]> = t.t0.iter().chain(t.t1.iter()).copied().collect();
-    let ext = |sgn: f64| all.iter().map(|v| {
-        let (a, c) = axis(v, ax);
-        (a + sgn * c.abs(), v[3])
-    }).collect::<Vec<_>>();
+    let ext = |sgn: f64| {
+        all.iter()
+            .map(|v| {
+                let (a, c) = axis(v, ax);
+                (a + sgn * c.abs(), v[3])
+            })
+            .collect::<Vec<_>>()
+    };
     let (mut lo, mut hi) = ([f64::MAX; 2], [f64::MIN; 2]);
     let mut front = false;
     for v in all.iter().filter(|v| v[3] > 0.0) {
@@ -178,5 +188,12 @@ pub fn setup(t: &SceneTri, vp: (u16, u16)) -> Result<Setup, Cull> {
     if footprint.is_empty() {
         return Err(Cull::Outside);
     }
-    Ok(Setup { class, footprint, span, axes, tri: *t, vp })
+    Ok(Setup {
+        class,
+        footprint,
+        span,
+        axes,
+        tri: *t,
+        vp,
+    })
 }

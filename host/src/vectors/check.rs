@@ -48,18 +48,28 @@ pub fn check(dir: &Path) -> Result<Checked> {
 
 fn check_set(dir: &Path) -> Result<u64> {
     let mpath = dir.join("manifest.json");
-    let m: Value = serde_json::from_str(&std::fs::read_to_string(&mpath).with_context(|| format!("cannot read {}", mpath.display()))?)
-        .map_err(|e| anyhow!("{}: malformed manifest: {e}", mpath.display()))?;
+    let m: Value = serde_json::from_str(
+        &std::fs::read_to_string(&mpath)
+            .with_context(|| format!("cannot read {}", mpath.display()))?,
+    )
+    .map_err(|e| anyhow!("{}: malformed manifest: {e}", mpath.display()))?;
     if m["format"] != "uvt-vectors" || m["format_version"] != super::format::FORMAT_VERSION {
-        bail!("{}: not a uvt-vectors manifest of format version {}", mpath.display(), super::format::FORMAT_VERSION);
+        bail!(
+            "{}: not a uvt-vectors manifest of format version {}",
+            mpath.display(),
+            super::format::FORMAT_VERSION
+        );
     }
     let spp = m["resolve_spp"].as_u64().unwrap_or(0) as u32;
-    let files = m["files"].as_object().ok_or_else(|| anyhow!("{}: no files", mpath.display()))?;
+    let files = m["files"]
+        .as_object()
+        .ok_or_else(|| anyhow!("{}: no files", mpath.display()))?;
     // 1. Integrity: every listed file present, checksum, shape.
     let mut data = std::collections::BTreeMap::new();
     for (name, info) in files {
         let p = dir.join(name);
-        let text = std::fs::read_to_string(&p).with_context(|| format!("{}: missing or unreadable", p.display()))?;
+        let text = std::fs::read_to_string(&p)
+            .with_context(|| format!("{}: missing or unreadable", p.display()))?;
         let want = info["sha256"].as_str().unwrap_or("");
         let got = sha256(text.as_bytes());
         if want != got {
@@ -68,11 +78,20 @@ fn check_set(dir: &Path) -> Result<u64> {
         if let Some(stem) = name.strip_suffix(".hex") {
             let words = layout(stem, spp).words;
             if info["words_per_record"].as_u64() != Some(words as u64) {
-                bail!("{}: manifest says {} words per record, this uvt's layout has {words}", p.display(), info["words_per_record"]);
+                bail!(
+                    "{}: manifest says {} words per record, this uvt's layout has {words}",
+                    p.display(),
+                    info["words_per_record"]
+                );
             }
             let recs = parse(&text, words, &p.display().to_string()).map_err(|e| anyhow!(e))?;
             if info["records"].as_u64() != Some(recs.len() as u64) {
-                bail!("{}: {} records, the manifest says {}", p.display(), recs.len(), info["records"]);
+                bail!(
+                    "{}: {} records, the manifest says {}",
+                    p.display(),
+                    recs.len(),
+                    info["records"]
+                );
             }
             data.insert(stem.to_string(), recs);
         }
@@ -91,7 +110,13 @@ fn check_set(dir: &Path) -> Result<u64> {
             Err(e) => diffs.fail("setup_in", line, &e),
         }
     }
-    let lookup = |i: u32| setups.get(i as usize).copied().flatten().ok_or_else(|| format!("triangle {i} is culled or missing in setup_in"));
+    let lookup = |i: u32| {
+        setups
+            .get(i as usize)
+            .copied()
+            .flatten()
+            .ok_or_else(|| format!("triangle {i} is culled or missing in setup_in"))
+    };
     for (line, (i, o)) in get("bounds_in").iter().zip(&get("bounds_out")).enumerate() {
         match run_bounds(&lookup, i) {
             Ok((_, r)) => diffs.cmp("bounds_out", line, o, &r.0),
@@ -107,13 +132,23 @@ fn check_set(dir: &Path) -> Result<u64> {
             Err(e) => diffs.fail("sample_in", line, &e),
         }
     }
-    for (line, (i, o)) in get("resolve_in").iter().zip(&get("resolve_out")).enumerate() {
+    for (line, (i, o)) in get("resolve_in")
+        .iter()
+        .zip(&get("resolve_out"))
+        .enumerate()
+    {
         diffs.cmp("resolve_out", line, o, &run_resolve(i).0);
     }
     for stage in STAGES {
-        let (a, b) = (get(&format!("{stage}_in")).len(), get(&format!("{stage}_out")).len());
+        let (a, b) = (
+            get(&format!("{stage}_in")).len(),
+            get(&format!("{stage}_out")).len(),
+        );
         if a != b {
-            diffs.msgs.push(format!("{}: {stage}_in has {a} records but {stage}_out {b}", dir.display()));
+            diffs.msgs.push(format!(
+                "{}: {stage}_in has {a} records but {stage}_out {b}",
+                dir.display()
+            ));
         }
     }
     if diffs.msgs.is_empty() {
@@ -133,12 +168,22 @@ struct Diffs<'a> {
 
 impl<'a> Diffs<'a> {
     fn new(dir: &'a Path, spp: u32) -> Self {
-        Diffs { dir, spp, msgs: Vec::new(), count: 0, compared: 0 }
+        Diffs {
+            dir,
+            spp,
+            msgs: Vec::new(),
+            count: 0,
+            compared: 0,
+        }
     }
     fn fail(&mut self, file: &str, line: usize, e: &str) {
         self.count += 1;
         if self.msgs.len() < 20 {
-            self.msgs.push(format!("{}/{file}.hex line {}: {e}", self.dir.display(), line + 1));
+            self.msgs.push(format!(
+                "{}/{file}.hex line {}: {e}",
+                self.dir.display(),
+                line + 1
+            ));
         }
     }
     /// Compare the file's expected record with the core's, field by field.
@@ -164,6 +209,10 @@ impl<'a> Diffs<'a> {
                 return;
             }
         }
-        self.msgs.push(format!("{}/{file}.hex line {}: records differ", self.dir.display(), line + 1));
+        self.msgs.push(format!(
+            "{}/{file}.hex line {}: records differ",
+            self.dir.display(),
+            line + 1
+        ));
     }
 }

@@ -8,7 +8,9 @@ use anyhow::{anyhow, Context, Result};
 use rand::{Rng, SeedableRng};
 use serde_json::json;
 use uvt_core::bounds::LaineCoeffs;
-use uvt_core::{Lens, PixelRect, Rgb888, Sample, Setup, SubPixel, Time, TileBuffer, Triangle, UvtBox, Viewport};
+use uvt_core::{
+    Lens, PixelRect, Rgb888, Sample, Setup, SubPixel, TileBuffer, Time, Triangle, UvtBox, Viewport,
+};
 
 use super::format::{layout, sha256, to_text, Rec, FORMAT_VERSION, STAGES};
 use super::stages::*;
@@ -57,7 +59,13 @@ impl Set {
         Ok(self.setups.len() as u32 - 1)
     }
     fn lookup(&self) -> impl Fn(u32) -> Result<(Setup, LaineCoeffs), String> + '_ {
-        move |i| self.setups.get(i as usize).copied().flatten().ok_or_else(|| format!("triangle {i} is culled or missing"))
+        move |i| {
+            self.setups
+                .get(i as usize)
+                .copied()
+                .flatten()
+                .ok_or_else(|| format!("triangle {i} is culled or missing"))
+        }
     }
     fn bounds(&mut self, i: u32, cell: PixelRect) -> Result<Option<UvtBox>> {
         let input = enc_bounds_in(i, cell);
@@ -93,7 +101,13 @@ impl Set {
 
 fn v(a: [f64; 5]) -> uvt_core::Vertex {
     let q = crate::scene::quantize;
-    uvt_core::Vertex { x: q(a[0]), y: q(a[1]), z: q(a[2]), w: q(a[3]), coc: q(a[4]) }
+    uvt_core::Vertex {
+        x: q(a[0]),
+        y: q(a[1]),
+        z: q(a[2]),
+        w: q(a[3]),
+        coc: q(a[4]),
+    }
 }
 
 fn tri(a: [[f64; 5]; 3], b: [[f64; 5]; 3]) -> Triangle {
@@ -103,7 +117,11 @@ fn tri(a: [[f64; 5]; 3], b: [[f64; 5]; 3]) -> Triangle {
 fn random_sample(rng: &mut rand_pcg::Pcg64, b: Option<&UvtBox>) -> Sample {
     let mut pick = |lo: i32, hi: i32| rng.gen_range(lo..=hi);
     let (u, vv, t) = match b {
-        Some(b) => (pick(b.u.lo, b.u.hi), pick(b.v.lo, b.v.hi), pick(b.t.lo, b.t.hi)),
+        Some(b) => (
+            pick(b.u.lo, b.u.hi),
+            pick(b.v.lo, b.v.hi),
+            pick(b.t.lo, b.t.hi),
+        ),
         None => (pick(-65536, 65536), pick(-65536, 65536), pick(0, 65536)),
     };
     Sample {
@@ -119,11 +137,22 @@ fn random_sample(rng: &mut rand_pcg::Pcg64, b: Option<&UvtBox>) -> Sample {
 fn random_tri(rng: &mut rand_pcg::Pcg64, kind: u32) -> Triangle {
     let mut r = |lo: f64, hi: f64| rng.gen_range(lo..hi);
     if kind == 4 {
-        let mut p = || { let w = r(-3.0, 3.0); [r(-3.0, 3.0), r(-3.0, 3.0), 0.5 * w, w, 0.0] };
+        let mut p = || {
+            let w = r(-3.0, 3.0);
+            [r(-3.0, 3.0), r(-3.0, 3.0), 0.5 * w, w, 0.0]
+        };
         return tri([p(), p(), p()], [p(), p(), p()]);
     }
     if kind == 5 {
-        let mut p = || [r(-8000.0, 8000.0), r(-8000.0, 8000.0), r(-8000.0, 8000.0), r(-8000.0, 8000.0), r(-8000.0, 8000.0)];
+        let mut p = || {
+            [
+                r(-8000.0, 8000.0),
+                r(-8000.0, 8000.0),
+                r(-8000.0, 8000.0),
+                r(-8000.0, 8000.0),
+                r(-8000.0, 8000.0),
+            ]
+        };
         return tri([p(), p(), p()], [p(), p(), p()]);
     }
     let (cx, cy, w, s) = (r(-1.2, 1.2), r(-1.2, 1.2), r(0.5, 6.0), r(0.05, 0.8));
@@ -135,54 +164,190 @@ fn random_tri(rng: &mut rand_pcg::Pcg64, kind: u32) -> Triangle {
     let mut t0 = [[0.0; 5]; 3];
     let mut t1 = [[0.0; 5]; 3];
     for k in 0..3 {
-        let (nx, ny, wk) = (cx + s * r(-1.0, 1.0), cy + s * r(-1.0, 1.0), w * (1.0 + 0.3 * r(-1.0, 1.0)));
+        let (nx, ny, wk) = (
+            cx + s * r(-1.0, 1.0),
+            cy + s * r(-1.0, 1.0),
+            w * (1.0 + 0.3 * r(-1.0, 1.0)),
+        );
         t0[k] = [nx * wk, ny * wk, 0.5 * wk, wk, c(wk)];
         let w1 = wk * (1.0 + mw);
-        t1[k] = if motion { [(nx + mx) * w1, (ny + my) * w1, 0.5 * w1, w1, c(w1)] } else { t0[k] };
+        t1[k] = if motion {
+            [(nx + mx) * w1, (ny + my) * w1, 0.5 * w1, w1, c(w1)]
+        } else {
+            t0[k]
+        };
     }
     tri(t0, t1)
 }
 
 /// Named edge cases: (name, triangles, viewport side).
 fn named_cases() -> Vec<(&'static str, Vec<Triangle>, u16)> {
-    let base = [[-0.5, -0.5, 0.25, 1.0, 0.0], [0.5, -0.5, 0.25, 1.0, 0.0], [0.0, 0.5, 0.25, 1.0, 0.0]];
+    let base = [
+        [-0.5, -0.5, 0.25, 1.0, 0.0],
+        [0.5, -0.5, 0.25, 1.0, 0.0],
+        [0.0, 0.5, 0.25, 1.0, 0.0],
+    ];
     let with = |f: &dyn Fn([f64; 5]) -> [f64; 5]| base.map(f);
     let m = 8191.9;
     vec![
-        ("camera-plane crossing during the shutter", vec![
-            tri(with(&|v| [v[0], v[1], v[2], 1.0, 0.0]), with(&|v| [v[0] + 0.3, v[1], v[2], -0.5, 0.0])),
-            tri(with(&|v| [v[0], v[1], v[2], 2.0, 0.1]), [[-0.5, -0.5, 0.2, -1.0, -0.1], [0.5, -0.5, 0.2, 1.5, 0.05], [0.0, 0.5, 0.2, 0.5, 0.0]]),
-        ], 32),
-        ("a vertex at w = 0", vec![
-            tri([[0.3, 0.2, 0.0, 0.0, 0.0], [0.5, -0.5, 0.25, 1.0, 0.0], [-0.5, -0.5, 0.25, 1.0, 0.0]], [[0.3, 0.2, 0.0, 0.0, 0.0], [0.5, -0.5, 0.25, 1.0, 0.0], [-0.5, -0.5, 0.25, 1.0, 0.0]]),
-            tri([[0.0, 0.0, 0.0, 0.0, 0.0], [0.5, -0.5, 0.25, 1.0, 0.0], [-0.5, -0.5, 0.25, 1.0, 0.0]], [[0.2, 0.0, 0.1, 0.5, 0.0], [0.5, -0.5, 0.25, 1.0, 0.0], [-0.5, -0.5, 0.25, 1.0, 0.0]]),
-        ], 32),
-        ("zero area (always, and at one end only)", vec![
-            tri([[-0.5, 0.0, 0.2, 1.0, 0.0], [0.0, 0.0, 0.2, 1.0, 0.0], [0.5, 0.0, 0.2, 1.0, 0.0]], [[-0.5, 0.0, 0.2, 1.0, 0.0], [0.0, 0.0, 0.2, 1.0, 0.0], [0.5, 0.0, 0.2, 1.0, 0.0]]),
-            tri([[-0.5, 0.0, 0.2, 1.0, 0.0], [0.0, 0.0, 0.2, 1.0, 0.0], [0.5, 0.0, 0.2, 1.0, 0.0]], base),
-        ], 32),
-        ("shared-edge ties (samples exactly on the shared edge x = 0)", vec![
-            tri([[0.0, 0.5, 0.2, 1.0, 0.0], [0.0, -0.5, 0.2, 1.0, 0.0], [-0.5, 0.0, 0.2, 1.0, 0.0]], [[0.0, 0.5, 0.2, 1.0, 0.0], [0.0, -0.5, 0.2, 1.0, 0.0], [-0.5, 0.0, 0.2, 1.0, 0.0]]),
-            tri([[0.0, -0.5, 0.2, 1.0, 0.0], [0.0, 0.5, 0.2, 1.0, 0.0], [0.5, 0.0, 0.2, 1.0, 0.0]], [[0.0, -0.5, 0.2, 1.0, 0.0], [0.0, 0.5, 0.2, 1.0, 0.0], [0.5, 0.0, 0.2, 1.0, 0.0]]),
-        ], 32),
-        ("huge motion (across the whole domain)", vec![
-            tri(with(&|v| [v[0] * 10.0 - 8000.0, v[1] * 10.0, v[2], 10.0, 0.0]), with(&|v| [v[0] * 10.0 + 8000.0, v[1] * 10.0, v[2], 10.0, 0.0])),
-        ], 64),
-        ("huge CoC (|c| at the domain limit)", vec![
-            tri(with(&|v| [v[0], v[1], v[2], 1.0, m]), with(&|v| [v[0], v[1], v[2], 1.0, m])),
-            tri(with(&|v| [v[0], v[1], v[2], 1.0, -m]), with(&|v| [v[0] + 0.5, v[1], v[2], 1.0, m])),
-        ], 64),
-        ("domain limits (every coordinate near ±8192, viewport 2048)", vec![
-            tri([[-m, -m, m, m, m], [m, -m, -m, m, -m], [0.0, m, m, m, m]], [[m, m, -m, m, -m], [-m, m, m, m, m], [0.0, -m, -m, m, -m]]),
-            tri([[m, m, m, 1.0 / 65536.0, 0.0], [-m, m, m, m, 0.0], [m, -m, m, m, 0.0]], [[m, m, m, 1.0 / 65536.0, 0.0], [-m, m, m, m, 0.0], [m, -m, m, m, 0.0]]),
-        ], 2048),
+        (
+            "camera-plane crossing during the shutter",
+            vec![
+                tri(
+                    with(&|v| [v[0], v[1], v[2], 1.0, 0.0]),
+                    with(&|v| [v[0] + 0.3, v[1], v[2], -0.5, 0.0]),
+                ),
+                tri(
+                    with(&|v| [v[0], v[1], v[2], 2.0, 0.1]),
+                    [
+                        [-0.5, -0.5, 0.2, -1.0, -0.1],
+                        [0.5, -0.5, 0.2, 1.5, 0.05],
+                        [0.0, 0.5, 0.2, 0.5, 0.0],
+                    ],
+                ),
+            ],
+            32,
+        ),
+        (
+            "a vertex at w = 0",
+            vec![
+                tri(
+                    [
+                        [0.3, 0.2, 0.0, 0.0, 0.0],
+                        [0.5, -0.5, 0.25, 1.0, 0.0],
+                        [-0.5, -0.5, 0.25, 1.0, 0.0],
+                    ],
+                    [
+                        [0.3, 0.2, 0.0, 0.0, 0.0],
+                        [0.5, -0.5, 0.25, 1.0, 0.0],
+                        [-0.5, -0.5, 0.25, 1.0, 0.0],
+                    ],
+                ),
+                tri(
+                    [
+                        [0.0, 0.0, 0.0, 0.0, 0.0],
+                        [0.5, -0.5, 0.25, 1.0, 0.0],
+                        [-0.5, -0.5, 0.25, 1.0, 0.0],
+                    ],
+                    [
+                        [0.2, 0.0, 0.1, 0.5, 0.0],
+                        [0.5, -0.5, 0.25, 1.0, 0.0],
+                        [-0.5, -0.5, 0.25, 1.0, 0.0],
+                    ],
+                ),
+            ],
+            32,
+        ),
+        (
+            "zero area (always, and at one end only)",
+            vec![
+                tri(
+                    [
+                        [-0.5, 0.0, 0.2, 1.0, 0.0],
+                        [0.0, 0.0, 0.2, 1.0, 0.0],
+                        [0.5, 0.0, 0.2, 1.0, 0.0],
+                    ],
+                    [
+                        [-0.5, 0.0, 0.2, 1.0, 0.0],
+                        [0.0, 0.0, 0.2, 1.0, 0.0],
+                        [0.5, 0.0, 0.2, 1.0, 0.0],
+                    ],
+                ),
+                tri(
+                    [
+                        [-0.5, 0.0, 0.2, 1.0, 0.0],
+                        [0.0, 0.0, 0.2, 1.0, 0.0],
+                        [0.5, 0.0, 0.2, 1.0, 0.0],
+                    ],
+                    base,
+                ),
+            ],
+            32,
+        ),
+        (
+            "shared-edge ties (samples exactly on the shared edge x = 0)",
+            vec![
+                tri(
+                    [
+                        [0.0, 0.5, 0.2, 1.0, 0.0],
+                        [0.0, -0.5, 0.2, 1.0, 0.0],
+                        [-0.5, 0.0, 0.2, 1.0, 0.0],
+                    ],
+                    [
+                        [0.0, 0.5, 0.2, 1.0, 0.0],
+                        [0.0, -0.5, 0.2, 1.0, 0.0],
+                        [-0.5, 0.0, 0.2, 1.0, 0.0],
+                    ],
+                ),
+                tri(
+                    [
+                        [0.0, -0.5, 0.2, 1.0, 0.0],
+                        [0.0, 0.5, 0.2, 1.0, 0.0],
+                        [0.5, 0.0, 0.2, 1.0, 0.0],
+                    ],
+                    [
+                        [0.0, -0.5, 0.2, 1.0, 0.0],
+                        [0.0, 0.5, 0.2, 1.0, 0.0],
+                        [0.5, 0.0, 0.2, 1.0, 0.0],
+                    ],
+                ),
+            ],
+            32,
+        ),
+        (
+            "huge motion (across the whole domain)",
+            vec![tri(
+                with(&|v| [v[0] * 10.0 - 8000.0, v[1] * 10.0, v[2], 10.0, 0.0]),
+                with(&|v| [v[0] * 10.0 + 8000.0, v[1] * 10.0, v[2], 10.0, 0.0]),
+            )],
+            64,
+        ),
+        (
+            "huge CoC (|c| at the domain limit)",
+            vec![
+                tri(
+                    with(&|v| [v[0], v[1], v[2], 1.0, m]),
+                    with(&|v| [v[0], v[1], v[2], 1.0, m]),
+                ),
+                tri(
+                    with(&|v| [v[0], v[1], v[2], 1.0, -m]),
+                    with(&|v| [v[0] + 0.5, v[1], v[2], 1.0, m]),
+                ),
+            ],
+            64,
+        ),
+        (
+            "domain limits (every coordinate near ±8192, viewport 2048)",
+            vec![
+                tri(
+                    [[-m, -m, m, m, m], [m, -m, -m, m, -m], [0.0, m, m, m, m]],
+                    [[m, m, -m, m, -m], [-m, m, m, m, m], [0.0, -m, -m, m, -m]],
+                ),
+                tri(
+                    [
+                        [m, m, m, 1.0 / 65536.0, 0.0],
+                        [-m, m, m, m, 0.0],
+                        [m, -m, m, m, 0.0],
+                    ],
+                    [
+                        [m, m, m, 1.0 / 65536.0, 0.0],
+                        [-m, m, m, m, 0.0],
+                        [m, -m, m, m, 0.0],
+                    ],
+                ),
+            ],
+            2048,
+        ),
     ]
 }
 
 /// The unit-level set.
 pub fn unit(seed: u64) -> Result<Set> {
     let mut rng = rand_pcg::Pcg64::seed_from_u64(seed);
-    let mut set = Set { spp: UNIT_RESOLVE_SPP, ..Default::default() };
+    let mut set = Set {
+        spp: UNIT_RESOLVE_SPP,
+        ..Default::default()
+    };
     let start = |set: &Set| set.setups.len();
     for (name, list, side) in named_cases() {
         let first = start(&set);
@@ -190,7 +355,10 @@ pub fn unit(seed: u64) -> Result<Set> {
         for t in list {
             set.tri(&t, vp)?;
         }
-        set.cases.push(Case { name: name.into(), setup_records: [first, set.setups.len() - 1] });
+        set.cases.push(Case {
+            name: name.into(),
+            setup_records: [first, set.setups.len() - 1],
+        });
     }
     let first = start(&set);
     for i in 0..180u32 {
@@ -199,42 +367,75 @@ pub fn unit(seed: u64) -> Result<Set> {
         let t = random_tri(&mut rng, i % 6);
         set.tri(&t, vp)?;
     }
-    set.cases.push(Case { name: format!("seeded random (seed {seed}): static, moving, defocused, both, crossing, huge"), setup_records: [first, set.setups.len() - 1] });
+    set.cases.push(Case {
+        name: format!(
+            "seeded random (seed {seed}): static, moving, defocused, both, crossing, huge"
+        ),
+        setup_records: [first, set.setups.len() - 1],
+    });
     // Per visible triangle: every tile size, a few tiles; per non-empty tile, interval checks and
     // sample tests inside the box.
     for i in 0..set.setups.len() as u32 {
-        let Some((s, _)) = set.setups[i as usize] else { continue };
+        let Some((s, _)) = set.setups[i as usize] else {
+            continue;
+        };
         let fp = s.footprint;
         for bt in [1u16, 2, 4, 8] {
             for _ in 0..3 {
                 let x = rng.gen_range(fp.x0..fp.x1);
                 let y = rng.gen_range(fp.y0..fp.y1);
-                let cell = PixelRect { x0: x - x % bt, y0: y - y % bt, x1: x - x % bt + bt, y1: y - y % bt + bt }.intersect(&fp);
-                let Some(b) = set.bounds(i, cell)? else { continue };
+                let cell = PixelRect {
+                    x0: x - x % bt,
+                    y0: y - y % bt,
+                    x1: x - x % bt + bt,
+                    y1: y - y % bt + bt,
+                }
+                .intersect(&fp);
+                let Some(b) = set.bounds(i, cell)? else {
+                    continue;
+                };
                 for k in 0..4 {
                     let smp = random_sample(&mut rng, if k % 2 == 0 { Some(&b) } else { None });
                     set.select(&b, &smp);
                 }
                 for _ in 0..3 {
                     let smp = random_sample(&mut rng, Some(&b));
-                    let (px, py) = (rng.gen_range(cell.x0..cell.x1), rng.gen_range(cell.y0..cell.y1));
+                    let (px, py) = (
+                        rng.gen_range(cell.x0..cell.x1),
+                        rng.gen_range(cell.y0..cell.y1),
+                    );
                     set.sample(i, px, py, &smp)?;
                 }
             }
         }
     }
     // Ties: samples exactly on the shared edge x = 0 (column 16, sub-pixel 0) for both triangles.
-    let tie = set.cases.iter().find(|c| c.name.starts_with("shared-edge")).map(|c| c.setup_records).unwrap_or([0, 0]);
+    let tie = set
+        .cases
+        .iter()
+        .find(|c| c.name.starts_with("shared-edge"))
+        .map(|c| c.setup_records)
+        .unwrap_or([0, 0]);
     for py in 10..22u16 {
         for u in [-65536, 0, 65536] {
-            let smp = Sample { sx: SubPixel::from_bits(0), sy: SubPixel::from_bits((py * 37 % 256) as u8), u: Lens::from_bits(u), v: Lens::from_bits(0), t: Time::from_bits(0) };
+            let smp = Sample {
+                sx: SubPixel::from_bits(0),
+                sy: SubPixel::from_bits((py * 37 % 256) as u8),
+                u: Lens::from_bits(u),
+                v: Lens::from_bits(0),
+                t: Time::from_bits(0),
+            };
             for i in tie[0]..=tie[1] {
                 set.sample(i as u32, 16, py, &smp)?;
             }
         }
     }
     // Resolve: random colors, and the rounding edges (all 0, all 255, exact halves).
-    let colors = |rng: &mut rand_pcg::Pcg64| (0..UNIT_RESOLVE_SPP).map(|_| Rgb888::new(rng.gen(), rng.gen(), rng.gen())).collect::<Vec<_>>();
+    let colors = |rng: &mut rand_pcg::Pcg64| {
+        (0..UNIT_RESOLVE_SPP)
+            .map(|_| Rgb888::new(rng.gen(), rng.gen(), rng.gen()))
+            .collect::<Vec<_>>()
+    };
     for _ in 0..120 {
         let c = colors(&mut rng);
         set.resolve(&c);
@@ -242,7 +443,15 @@ pub fn unit(seed: u64) -> Result<Set> {
     let n = UNIT_RESOLVE_SPP as usize;
     set.resolve(&vec![Rgb888::new(0, 0, 0); n]);
     set.resolve(&vec![Rgb888::new(255, 255, 255); n]);
-    let half: Vec<Rgb888> = (0..n).map(|i| if i < n / 2 { Rgb888::new(1, 255, 3) } else { Rgb888::new(0, 0, 0) }).collect();
+    let half: Vec<Rgb888> = (0..n)
+        .map(|i| {
+            if i < n / 2 {
+                Rgb888::new(1, 255, 3)
+            } else {
+                Rgb888::new(0, 0, 0)
+            }
+        })
+        .collect();
     set.resolve(&half);
     Ok(set)
 }
@@ -252,18 +461,27 @@ pub fn unit(seed: u64) -> Result<Set> {
 /// clipped to footprint ∩ screen tile), plus `trace.jsonl`.
 pub fn frame(scene: &Scene, scene_json: &str) -> Result<Set> {
     if scene.spp != 4 {
-        return Err(anyhow!("frame vectors use 4 samples per pixel (the scene has {})", scene.spp));
+        return Err(anyhow!(
+            "frame vectors use 4 samples per pixel (the scene has {})",
+            scene.spp
+        ));
     }
     let pattern = Pattern::new(scene.pattern, scene.spp, scene.seed);
     let vp = scene.core_viewport();
     let core = scene.core_tris()?;
-    let mut set = Set { spp: scene.spp as u32, scene: Some(scene_json.into()), ..Default::default() };
+    let mut set = Set {
+        spp: scene.spp as u32,
+        scene: Some(scene_json.into()),
+        ..Default::default()
+    };
     let mut trace = String::new();
     for (i, t) in core.iter().enumerate() {
         set.tri(t, vp)?;
         let rec = match &set.setups[i] {
-            Some((s, _)) => json!({"type": "setup", "tri": i, "class": format!("{:?}", s.class), "footprint": [s.footprint.x0, s.footprint.y0, s.footprint.x1, s.footprint.y1],
-                "span": [s.span.lo as f64 / 65536.0, s.span.hi as f64 / 65536.0]}),
+            Some((s, _)) => {
+                json!({"type": "setup", "tri": i, "class": format!("{:?}", s.class), "footprint": [s.footprint.x0, s.footprint.y0, s.footprint.x1, s.footprint.y1],
+                "span": [s.span.lo as f64 / 65536.0, s.span.hi as f64 / 65536.0]})
+            }
             None => {
                 let o = uvt_core::setup(t, vp, &mut Default::default());
                 json!({"type": "setup", "tri": i, "culled": match o { uvt_core::Outcome::Culled(uvt_core::Cull::Degenerate) => "degenerate", _ => "outside" }})
@@ -272,7 +490,11 @@ pub fn frame(scene: &Scene, scene_json: &str) -> Result<Set> {
         trace += &(rec.to_string() + "\n");
     }
     let bt = scene.tile as u16;
-    let colors: Vec<Rgb888> = scene.tris.iter().map(|t| Rgb888::new(t.color[0], t.color[1], t.color[2])).collect();
+    let colors: Vec<Rgb888> = scene
+        .tris
+        .iter()
+        .map(|t| Rgb888::new(t.color[0], t.color[1], t.color[2]))
+        .collect();
     let clear = Rgb888::new(24, 24, 32);
     let q = pattern.core();
     let mut fb = TileBuffer::<8, 8, 4>::new(clear);
@@ -280,56 +502,63 @@ pub fn frame(scene: &Scene, scene_json: &str) -> Result<Set> {
     for y0 in (0..vp.height()).step_by(8) {
         for x0 in (0..vp.width()).step_by(8) {
             fb.clear(clear);
-            let screen = PixelRect { x0, y0, x1: (x0 + 8).min(vp.width()), y1: (y0 + 8).min(vp.height()) };
+            let screen = PixelRect {
+                x0,
+                y0,
+                x1: (x0 + 8).min(vp.width()),
+                y1: (y0 + 8).min(vp.height()),
+            };
             for (i, &color) in colors.iter().enumerate() {
-                let Some((s, _)) = set.setups[i] else { continue };
+                let Some((s, _)) = set.setups[i] else {
+                    continue;
+                };
                 let region = s.footprint.intersect(&screen);
                 if region.is_empty() {
                     continue;
                 }
-                let mut by = region.y0 - region.y0 % bt;
-                while by < region.y1 {
-                    let mut bx = region.x0 - region.x0 % bt;
-                    while bx < region.x1 {
-                        let cell = PixelRect { x0: bx, y0: by, x1: bx + bt, y1: by + bt }.intersect(&region);
-                        bx += bt;
-                        if cell.is_empty() {
-                            continue;
-                        }
-                        let b = set.bounds(i as u32, cell)?;
-                        trace += &(json!({"type": "tile", "tri": i, "rect": [cell.x0, cell.y0, cell.x1, cell.y1],
-                            "bounds": b.map(|b| json!({"u": [f(b.u.lo), f(b.u.hi)], "v": [f(b.v.lo), f(b.v.hi)], "t": [f(b.t.lo), f(b.t.hi)]}))}).to_string() + "\n");
-                        let Some(b) = b else { continue };
-                        for py in cell.y0..cell.y1 {
-                            for px in cell.x0..cell.x1 {
-                                for (si, smp) in q.pixel(px, py).iter().enumerate() {
-                                    let inside = set.select(&b, smp);
-                                    let hit = if inside {
-                                        set.sample(i as u32, px, py, smp)?
-                                    } else {
-                                        // Trace only: the sample test outside the box (must miss).
-                                        uvt_core::sample_test(&s, uvt_core::ScreenPos::of(px, py, smp), smp, &mut Default::default()).map(|h| h.depth)
-                                    };
-                                    if let (true, Some(d)) = (inside, hit) {
-                                        fb.write((px - x0) as usize, (py - y0) as usize, si, color, d);
-                                    }
-                                    trace += &(json!({"type": "sample", "tri": i, "px": px, "py": py, "s": si,
-                                        "x": px as f64 + smp.sx.to_bits() as f64 / 256.0, "y": py as f64 + smp.sy.to_bits() as f64 / 256.0,
-                                        "u": f(smp.u.to_bits()), "v": f(smp.v.to_bits()), "t": f(smp.t.to_bits()),
-                                        "inside": inside, "covered": hit.is_some(), "depth": hit.map(|d| d as f64 / 16777216.0)}).to_string() + "\n");
+                for cell in region.cells(bt) {
+                    let b = set.bounds(i as u32, cell)?;
+                    trace += &(json!({"type": "tile", "tri": i, "rect": [cell.x0, cell.y0, cell.x1, cell.y1],
+                    "bounds": b.map(|b| json!({"u": [f(b.u.lo), f(b.u.hi)], "v": [f(b.v.lo), f(b.v.hi)], "t": [f(b.t.lo), f(b.t.hi)]}))}).to_string() + "\n");
+                    let Some(b) = b else { continue };
+                    for py in cell.y0..cell.y1 {
+                        for px in cell.x0..cell.x1 {
+                            for (si, smp) in q.pixel(px, py).iter().enumerate() {
+                                let inside = set.select(&b, smp);
+                                let hit = if inside {
+                                    set.sample(i as u32, px, py, smp)?
+                                } else {
+                                    // Trace only: the sample test outside the box (must miss).
+                                    uvt_core::sample_test(
+                                        &s,
+                                        uvt_core::ScreenPos::of(px, py, smp),
+                                        smp,
+                                        &mut Default::default(),
+                                    )
+                                    .map(|h| h.depth)
+                                };
+                                if let (true, Some(d)) = (inside, hit) {
+                                    fb.write((px - x0) as usize, (py - y0) as usize, si, color, d);
                                 }
+                                trace += &(json!({"type": "sample", "tri": i, "px": px, "py": py, "s": si,
+                                "x": px as f64 + smp.sx.to_bits() as f64 / 256.0, "y": py as f64 + smp.sy.to_bits() as f64 / 256.0,
+                                "u": f(smp.u.to_bits()), "v": f(smp.v.to_bits()), "t": f(smp.t.to_bits()),
+                                "inside": inside, "covered": hit.is_some(), "depth": hit.map(|d| d as f64 / 16777216.0)}).to_string() + "\n");
                             }
                         }
                     }
-                    by += bt;
                 }
             }
             for py in screen.y0..screen.y1 {
                 for px in screen.x0..screen.x1 {
                     let (tx, ty) = ((px - x0) as usize, (py - y0) as usize);
-                    let cs: Vec<Rgb888> = (0..4).map(|s| fb.sample_color(tx, ty, s).unwrap_or(clear)).collect();
+                    let cs: Vec<Rgb888> = (0..4)
+                        .map(|s| fb.sample_color(tx, ty, s).unwrap_or(clear))
+                        .collect();
                     let c = set.resolve(&cs);
-                    trace += &(json!({"type": "pixel", "px": px, "py": py, "rgb": [c.r(), c.g(), c.b()]}).to_string() + "\n");
+                    trace +=
+                        &(json!({"type": "pixel", "px": px, "py": py, "rgb": [c.r(), c.g(), c.b()]})
+                            .to_string() + "\n");
                 }
             }
         }
@@ -357,7 +586,10 @@ pub fn write(set: &Set, dir: &Path, kind: &str, seed: u64) -> Result<()> {
         }
     }
     if let Some(t) = &set.trace {
-        files.insert("trace.jsonl".into(), json!({"records": t.lines().count(), "sha256": sha256(t.as_bytes())}));
+        files.insert(
+            "trace.jsonl".into(),
+            json!({"records": t.lines().count(), "sha256": sha256(t.as_bytes())}),
+        );
         outputs.push(("trace.jsonl".into(), t.clone()));
     }
     if let Some(s) = &set.scene {
@@ -369,7 +601,10 @@ pub fn write(set: &Set, dir: &Path, kind: &str, seed: u64) -> Result<()> {
         "notes": "one record per line; words are 8 hex digits separated by a space; two's complement; a field wider than 32 bits spans whole words, most significant first; value = raw / 2^frac",
         "cases": set.cases, "files": files,
     });
-    outputs.push(("manifest.json".into(), serde_json::to_string_pretty(&manifest)? + "\n"));
+    outputs.push((
+        "manifest.json".into(),
+        serde_json::to_string_pretty(&manifest)? + "\n",
+    ));
     let mut tmp = Vec::new();
     for (name, text) in &outputs {
         let t = dir.join(format!(".{name}.tmp"));

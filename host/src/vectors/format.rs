@@ -34,7 +34,11 @@ pub struct Field {
 impl Field {
     /// Words the field spans.
     pub fn words(&self) -> u32 {
-        if self.width <= 32 { 1 } else { self.width.div_ceil(32) }
+        if self.width <= 32 {
+            1
+        } else {
+            self.width.div_ceil(32)
+        }
     }
 }
 
@@ -50,7 +54,14 @@ pub struct Layout {
 impl Layout {
     /// A whole-word field (or several words for width > 32).
     pub fn w(mut self, name: &str, width: u32, signed: bool, frac: u32) -> Self {
-        let f = Field { name: name.into(), word: self.words, bit: 0, width, signed, frac };
+        let f = Field {
+            name: name.into(),
+            word: self.words,
+            bit: 0,
+            width,
+            signed,
+            frac,
+        };
         self.words += f.words();
         self.fields.push(f);
         self
@@ -59,7 +70,14 @@ impl Layout {
     pub fn packed(mut self, subs: &[(&str, u32, bool)]) -> Self {
         let mut bit = 0;
         for (name, width, signed) in subs {
-            self.fields.push(Field { name: (*name).into(), word: self.words, bit, width: *width, signed: *signed, frac: 0 });
+            self.fields.push(Field {
+                name: (*name).into(),
+                word: self.words,
+                bit,
+                width: *width,
+                signed: *signed,
+                frac: 0,
+            });
             bit += width;
         }
         self.words += 1;
@@ -89,8 +107,19 @@ pub fn layout(file: &str, spp: u32) -> Layout {
         "setup_in" => tri_fields(l).packed(&[("viewport_w", 16, false), ("viewport_h", 16, false)]),
         "setup_out" => {
             let mut l = l
-                .packed(&[("visible", 1, false), ("cull", 2, false), ("class", 2, false), ("box_x_lo", 1, false), ("box_x_hi", 1, false),
-                    ("box_y_lo", 1, false), ("box_y_hi", 1, false), ("lens_x", 1, false), ("lens_y", 1, false), ("dual_x", 1, false), ("dual_y", 1, false)])
+                .packed(&[
+                    ("visible", 1, false),
+                    ("cull", 2, false),
+                    ("class", 2, false),
+                    ("box_x_lo", 1, false),
+                    ("box_x_hi", 1, false),
+                    ("box_y_lo", 1, false),
+                    ("box_y_hi", 1, false),
+                    ("lens_x", 1, false),
+                    ("lens_y", 1, false),
+                    ("dual_x", 1, false),
+                    ("dual_y", 1, false),
+                ])
                 .packed(&[("fp_x0", 16, false), ("fp_y0", 16, false)])
                 .packed(&[("fp_x1", 16, false), ("fp_y1", 16, false)])
                 .w("span_lo", 32, true, 16)
@@ -104,12 +133,20 @@ pub fn layout(file: &str, spp: u32) -> Layout {
             }
             for a in ["x", "y"] {
                 for side in ["lo", "hi"] {
-                    l = l.w(&format!("lens_{a}_{side}_base"), 64, true, 16).w(&format!("lens_{a}_{side}_d"), 64, true, 16)
-                        .w(&format!("lens_{a}_{side}_rup"), 128, true, 80).w(&format!("lens_{a}_{side}_rdn"), 128, true, 80);
+                    l = l
+                        .w(&format!("lens_{a}_{side}_base"), 64, true, 16)
+                        .w(&format!("lens_{a}_{side}_d"), 64, true, 16)
+                        .w(&format!("lens_{a}_{side}_rup"), 128, true, 80)
+                        .w(&format!("lens_{a}_{side}_rdn"), 128, true, 80);
                 }
             }
             for a in ["x", "y"] {
-                l = l.w(&format!("dual_{a}_xi_a"), 32, true, 0).w(&format!("dual_{a}_xi_b"), 32, true, 0);
+                l = l.w(&format!("dual_{a}_xi_a"), 32, true, 0).w(
+                    &format!("dual_{a}_xi_b"),
+                    32,
+                    true,
+                    0,
+                );
                 for m in ["lo", "hi"] {
                     for t in 0..2 {
                         for e in ["a", "b"] {
@@ -120,20 +157,51 @@ pub fn layout(file: &str, spp: u32) -> Layout {
             }
             l
         }
-        "bounds_in" => l.w("tri", 32, false, 0).packed(&[("x0", 16, false), ("y0", 16, false)]).packed(&[("x1", 16, false), ("y1", 16, false)]),
-        "bounds_out" => l.packed(&[("nonempty", 1, false)]).w("u_lo", 32, true, 16).w("u_hi", 32, true, 16).w("v_lo", 32, true, 16)
-            .w("v_hi", 32, true, 16).w("t_lo", 32, true, 16).w("t_hi", 32, true, 16),
-        "select_in" => l.w("u_lo", 32, true, 16).w("u_hi", 32, true, 16).w("v_lo", 32, true, 16).w("v_hi", 32, true, 16)
-            .w("t_lo", 32, true, 16).w("t_hi", 32, true, 16).w("u", 32, true, 16).w("v", 32, true, 16).w("t", 32, true, 16),
+        "bounds_in" => l
+            .w("tri", 32, false, 0)
+            .packed(&[("x0", 16, false), ("y0", 16, false)])
+            .packed(&[("x1", 16, false), ("y1", 16, false)]),
+        "bounds_out" => l
+            .packed(&[("nonempty", 1, false)])
+            .w("u_lo", 32, true, 16)
+            .w("u_hi", 32, true, 16)
+            .w("v_lo", 32, true, 16)
+            .w("v_hi", 32, true, 16)
+            .w("t_lo", 32, true, 16)
+            .w("t_hi", 32, true, 16),
+        "select_in" => l
+            .w("u_lo", 32, true, 16)
+            .w("u_hi", 32, true, 16)
+            .w("v_lo", 32, true, 16)
+            .w("v_hi", 32, true, 16)
+            .w("t_lo", 32, true, 16)
+            .w("t_hi", 32, true, 16)
+            .w("u", 32, true, 16)
+            .w("v", 32, true, 16)
+            .w("t", 32, true, 16),
         "select_out" => l.packed(&[("inside", 1, false)]),
-        "sample_in" => l.w("tri", 32, false, 0).packed(&[("px", 16, false), ("py", 16, false)]).packed(&[("sx", 8, false), ("sy", 8, false)])
-            .w("u", 32, true, 16).w("v", 32, true, 16).w("t", 32, true, 16),
-        "sample_out" => l.packed(&[("covered", 1, false), ("det_sign", 2, true)]).w("depth", 32, true, 24)
-            .w("e0", 192, true, 0).w("e1", 192, true, 0).w("e2", 192, true, 0).w("det", 192, true, 0),
+        "sample_in" => l
+            .w("tri", 32, false, 0)
+            .packed(&[("px", 16, false), ("py", 16, false)])
+            .packed(&[("sx", 8, false), ("sy", 8, false)])
+            .w("u", 32, true, 16)
+            .w("v", 32, true, 16)
+            .w("t", 32, true, 16),
+        "sample_out" => l
+            .packed(&[("covered", 1, false), ("det_sign", 2, true)])
+            .w("depth", 32, true, 24)
+            .w("e0", 192, true, 0)
+            .w("e1", 192, true, 0)
+            .w("e2", 192, true, 0)
+            .w("det", 192, true, 0),
         "resolve_in" => {
             let mut l = l;
             for s in 0..spp {
-                l = l.packed(&[(&format!("s{s}_b"), 8, false), (&format!("s{s}_g"), 8, false), (&format!("s{s}_r"), 8, false)]);
+                l = l.packed(&[
+                    (&format!("s{s}_b"), 8, false),
+                    (&format!("s{s}_g"), 8, false),
+                    (&format!("s{s}_r"), 8, false),
+                ]);
             }
             l
         }
@@ -173,7 +241,11 @@ impl Rec {
         let mut w = 0u32;
         let mut bit = 0;
         for &(v, width) in subs {
-            let mask = if width >= 32 { u32::MAX } else { (1u32 << width) - 1 };
+            let mask = if width >= 32 {
+                u32::MAX
+            } else {
+                (1u32 << width) - 1
+            };
             w |= ((v as u32) & mask) << bit;
             bit += width;
         }
@@ -186,25 +258,47 @@ impl Rec {
 pub fn field_value(f: &Field, words: &[u32]) -> (i128, Option<u64>) {
     if f.width <= 32 {
         let w = words.get(f.word as usize).copied().unwrap_or(0);
-        let raw = (w >> f.bit) as u64 & if f.width == 32 { u32::MAX as u64 } else { (1u64 << f.width) - 1 };
-        let v = if f.signed && f.width < 64 && raw >> (f.width - 1) & 1 == 1 { raw as i128 - (1i128 << f.width) } else { raw as i128 };
+        let raw = (w >> f.bit) as u64
+            & if f.width == 32 {
+                u32::MAX as u64
+            } else {
+                (1u64 << f.width) - 1
+            };
+        let v = if f.signed && f.width < 64 && raw >> (f.width - 1) & 1 == 1 {
+            raw as i128 - (1i128 << f.width)
+        } else {
+            raw as i128
+        };
         return (v, None);
     }
     let n = f.words() as usize;
-    let ws: Vec<u32> = (0..n).map(|i| words.get(f.word as usize + i).copied().unwrap_or(0)).collect();
+    let ws: Vec<u32> = (0..n)
+        .map(|i| words.get(f.word as usize + i).copied().unwrap_or(0))
+        .collect();
     let take = n.min(4);
     let mut v: i128 = if ws[0] >> 31 == 1 && f.signed { -1 } else { 0 };
     for w in &ws[..take] {
         v = (v << 32) | *w as i128;
     }
-    let rest = if n > 4 { Some(ws[4..].iter().fold(0u64, |a, w| (a << 32) | *w as u64)) } else { None };
+    let rest = if n > 4 {
+        Some(ws[4..].iter().fold(0u64, |a, w| (a << 32) | *w as u64))
+    } else {
+        None
+    };
     (v, rest)
 }
 
 /// A field's raw value as hex and decoded, for messages.
 pub fn show_field(f: &Field, words: &[u32]) -> String {
     let n = f.words() as usize;
-    let hex: Vec<String> = (0..n).map(|i| format!("{:08x}", words.get(f.word as usize + i).copied().unwrap_or(0))).collect();
+    let hex: Vec<String> = (0..n)
+        .map(|i| {
+            format!(
+                "{:08x}",
+                words.get(f.word as usize + i).copied().unwrap_or(0)
+            )
+        })
+        .collect();
     let (v, rest) = field_value(f, words);
     let dec = match rest {
         Some(lo) => format!("{v}·2^64 + {lo}"),
@@ -230,10 +324,19 @@ pub fn parse(text: &str, words: u32, file: &str) -> Result<Vec<Vec<u32>>, String
     text.lines()
         .enumerate()
         .map(|(i, line)| {
-            let ws: Result<Vec<u32>, _> = line.split(' ').map(|h| u32::from_str_radix(h, 16)).collect();
+            let ws: Result<Vec<u32>, _> = line
+                .split(' ')
+                .map(|h| u32::from_str_radix(h, 16))
+                .collect();
             match ws {
-                Ok(ws) if ws.len() == words as usize && line.split(' ').all(|h| h.len() == 8) => Ok(ws),
-                Ok(ws) => Err(format!("{file} line {}: {} words, expected {words}", i + 1, ws.len())),
+                Ok(ws) if ws.len() == words as usize && line.split(' ').all(|h| h.len() == 8) => {
+                    Ok(ws)
+                }
+                Ok(ws) => Err(format!(
+                    "{file} line {}: {} words, expected {words}",
+                    i + 1,
+                    ws.len()
+                )),
                 Err(e) => Err(format!("{file} line {}: not hex: {e}", i + 1)),
             }
         })
@@ -242,7 +345,10 @@ pub fn parse(text: &str, words: u32, file: &str) -> Result<Vec<Vec<u32>>, String
 
 /// Lower-case hex SHA-256.
 pub fn sha256(bytes: &[u8]) -> String {
-    Sha256::digest(bytes).iter().map(|b| format!("{b:02x}")).collect()
+    Sha256::digest(bytes)
+        .iter()
+        .map(|b| format!("{b:02x}"))
+        .collect()
 }
 
 /// Markdown bit-layout table of one file (MSB..LSB per word).
@@ -253,11 +359,26 @@ pub fn layout_md(file: &str, spp: u32) -> String {
     fields.sort_by_key(|f| (f.word, std::cmp::Reverse(f.bit)));
     for f in fields {
         let (w, bits) = if f.width > 32 {
-            (format!("{}..{}", f.word, f.word + f.words() - 1), format!("{}..0 ({} words, MS word first)", f.width - 1, f.words()))
+            (
+                format!("{}..{}", f.word, f.word + f.words() - 1),
+                format!("{}..0 ({} words, MS word first)", f.width - 1, f.words()),
+            )
         } else {
-            (format!("{}", f.word), if f.width == 1 { format!("{}", f.bit) } else { format!("{}..{}", f.bit + f.width - 1, f.bit) })
+            (
+                format!("{}", f.word),
+                if f.width == 1 {
+                    format!("{}", f.bit)
+                } else {
+                    format!("{}..{}", f.bit + f.width - 1, f.bit)
+                },
+            )
         };
-        s += &format!("| {w} | {bits} | {} | {} | {} |\n", f.name, if f.signed { "yes" } else { "no" }, f.frac);
+        s += &format!(
+            "| {w} | {bits} | {} | {} | {} |\n",
+            f.name,
+            if f.signed { "yes" } else { "no" },
+            f.frac
+        );
     }
     s
 }

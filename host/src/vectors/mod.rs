@@ -50,7 +50,8 @@ pub fn export_default(dir: &Path, seed: u64) -> Result<()> {
 
 /// Export frame-level vectors of one scene file into `dir`.
 pub fn export_scene(path: &Path, dir: &Path) -> Result<()> {
-    let text = std::fs::read_to_string(path).map_err(|e| anyhow::anyhow!("cannot read scene file {}: {e}", path.display()))?;
+    let text = std::fs::read_to_string(path)
+        .map_err(|e| anyhow::anyhow!("cannot read scene file {}: {e}", path.display()))?;
     let scene = Scene::load(path)?;
     let set = export::frame(&scene, &text)?;
     export::write(&set, dir, "frame", scene.seed)

@@ -1,12 +1,12 @@
 //! Input record → core → expected output record, per stage. The exporter writes what these
 //! return; the checker runs them again on the files' inputs and compares bit for bit.
 
+use embedded_graphics_core::pixelcolor::RgbColor;
 use uvt_core::bounds::{BoundsStrategy, LaineCoeffs};
 use uvt_core::{
-    resolve_colors, sample_eval, setup, Cull, Interval, Laine2011, Lens, Ops, Outcome, PixelRect, Rgb888, Sample, ScreenPos,
-    Setup, SubPixel, Time, Triangle, UvtBox, Vertex, Viewport,
+    resolve_colors, sample_eval, setup, Cull, Interval, Laine2011, Lens, Ops, Outcome, PixelRect,
+    Rgb888, Sample, ScreenPos, Setup, SubPixel, Time, Triangle, UvtBox, Vertex, Viewport,
 };
-use embedded_graphics_core::pixelcolor::RgbColor;
 
 use super::format::Rec;
 
@@ -26,12 +26,16 @@ pub fn enc_setup_in(t: &Triangle, vp: Viewport) -> Rec {
 /// Decode a setup input record.
 pub fn dec_setup_in(w: &[u32]) -> Result<(Triangle, Viewport), String> {
     let g = |i: usize| w.get(i).copied().unwrap_or(0) as i32;
-    let vert = |base: usize| Vertex::from_bits([g(base), g(base + 1), g(base + 2), g(base + 3), g(base + 4)]);
+    let vert = |base: usize| {
+        Vertex::from_bits([g(base), g(base + 1), g(base + 2), g(base + 3), g(base + 4)])
+    };
     let t0 = [vert(0), vert(5), vert(10)];
     let t1 = [vert(15), vert(20), vert(25)];
-    let tri = Triangle::new(t0, t1).map_err(|e| format!("input triangle refused by the core: {e}"))?;
+    let tri =
+        Triangle::new(t0, t1).map_err(|e| format!("input triangle refused by the core: {e}"))?;
     let vw = w.get(30).copied().unwrap_or(0);
-    let vp = Viewport::new(vw as u16, (vw >> 16) as u16).map_err(|e| format!("input viewport refused: {e}"))?;
+    let vp = Viewport::new(vw as u16, (vw >> 16) as u16)
+        .map_err(|e| format!("input viewport refused: {e}"))?;
     Ok((tri, vp))
 }
 
@@ -52,12 +56,24 @@ pub fn run_setup(w: &[u32]) -> Result<(Option<(Setup, LaineCoeffs)>, Rec), Strin
     };
     let b = |o: bool| o as i64;
     r = r.packed(&[
-        (1, 1), (0, 2), (s.class.index() as i64, 2),
-        (b(s.axes[0].lo.is_some()), 1), (b(s.axes[0].hi.is_some()), 1), (b(s.axes[1].lo.is_some()), 1), (b(s.axes[1].hi.is_some()), 1),
-        (b(c.lens[0].is_some()), 1), (b(c.lens[1].is_some()), 1), (b(c.dual[0].is_some()), 1), (b(c.dual[1].is_some()), 1),
+        (1, 1),
+        (0, 2),
+        (s.class.index() as i64, 2),
+        (b(s.axes[0].lo.is_some()), 1),
+        (b(s.axes[0].hi.is_some()), 1),
+        (b(s.axes[1].lo.is_some()), 1),
+        (b(s.axes[1].hi.is_some()), 1),
+        (b(c.lens[0].is_some()), 1),
+        (b(c.lens[1].is_some()), 1),
+        (b(c.dual[0].is_some()), 1),
+        (b(c.dual[1].is_some()), 1),
     ]);
     let fp = s.footprint;
-    r = r.packed(&[(fp.x0 as i64, 16), (fp.y0 as i64, 16)]).packed(&[(fp.x1 as i64, 16), (fp.y1 as i64, 16)]).i32(s.span.lo).i32(s.span.hi);
+    r = r
+        .packed(&[(fp.x0 as i64, 16), (fp.y0 as i64, 16)])
+        .packed(&[(fp.x1 as i64, 16), (fp.y1 as i64, 16)])
+        .i32(s.span.lo)
+        .i32(s.span.hi);
     for a in &s.axes {
         for side in [a.lo, a.hi] {
             let v = side.unwrap_or([0, 0]);
@@ -101,7 +117,10 @@ fn pad(mut r: Rec, total: usize) -> Rec {
 
 /// Bounds input record.
 pub fn enc_bounds_in(tri: u32, cell: PixelRect) -> Rec {
-    Rec::default().u32(tri).packed(&[(cell.x0 as i64, 16), (cell.y0 as i64, 16)]).packed(&[(cell.x1 as i64, 16), (cell.y1 as i64, 16)])
+    Rec::default()
+        .u32(tri)
+        .packed(&[(cell.x0 as i64, 16), (cell.y0 as i64, 16)])
+        .packed(&[(cell.x1 as i64, 16), (cell.y1 as i64, 16)])
 }
 
 /// Look a setup up by triangle index.
@@ -111,14 +130,28 @@ pub type SetupLookup<'a> = &'a dyn Fn(u32) -> Result<(Setup, LaineCoeffs), Strin
 pub fn run_bounds(setups: SetupLookup<'_>, w: &[u32]) -> Result<(Option<UvtBox>, Rec), String> {
     let (s, c) = setups(w.first().copied().unwrap_or(0))?;
     let g = |i: usize| w.get(i).copied().unwrap_or(0);
-    let cell = PixelRect { x0: g(1) as u16, y0: (g(1) >> 16) as u16, x1: g(2) as u16, y1: (g(2) >> 16) as u16 };
+    let cell = PixelRect {
+        x0: g(1) as u16,
+        y0: (g(1) >> 16) as u16,
+        x1: g(2) as u16,
+        y1: (g(2) >> 16) as u16,
+    };
     let fp = s.footprint;
     if cell.is_empty() || cell.intersect(&fp) != cell {
-        return Err(format!("tile {cell:?} is not a non-empty part of the footprint {fp:?}"));
+        return Err(format!(
+            "tile {cell:?} is not a non-empty part of the footprint {fp:?}"
+        ));
     }
     let b = Laine2011.tile(&s, &c, cell, &mut Ops::default());
     let r = match b {
-        Some(b) => Rec::default().packed(&[(1, 1)]).i32(b.u.lo).i32(b.u.hi).i32(b.v.lo).i32(b.v.hi).i32(b.t.lo).i32(b.t.hi),
+        Some(b) => Rec::default()
+            .packed(&[(1, 1)])
+            .i32(b.u.lo)
+            .i32(b.u.hi)
+            .i32(b.v.lo)
+            .i32(b.v.hi)
+            .i32(b.t.lo)
+            .i32(b.t.hi),
         None => pad(Rec::default().packed(&[(0, 1)]), 7),
     };
     Ok((b, r))
@@ -126,13 +159,26 @@ pub fn run_bounds(setups: SetupLookup<'_>, w: &[u32]) -> Result<(Option<UvtBox>,
 
 /// Interval-check input record.
 pub fn enc_select_in(b: &UvtBox, u: i32, v: i32, t: i32) -> Rec {
-    Rec::default().i32(b.u.lo).i32(b.u.hi).i32(b.v.lo).i32(b.v.hi).i32(b.t.lo).i32(b.t.hi).i32(u).i32(v).i32(t)
+    Rec::default()
+        .i32(b.u.lo)
+        .i32(b.u.hi)
+        .i32(b.v.lo)
+        .i32(b.v.hi)
+        .i32(b.t.lo)
+        .i32(b.t.hi)
+        .i32(u)
+        .i32(v)
+        .i32(t)
 }
 
 /// The per-sample interval check (is the sample's (u, v, t) inside the tile's box?).
 pub fn run_select(w: &[u32]) -> Rec {
     let g = |i: usize| w.get(i).copied().unwrap_or(0) as i32;
-    let b = UvtBox { u: Interval { lo: g(0), hi: g(1) }, v: Interval { lo: g(2), hi: g(3) }, t: Interval { lo: g(4), hi: g(5) } };
+    let b = UvtBox {
+        u: Interval { lo: g(0), hi: g(1) },
+        v: Interval { lo: g(2), hi: g(3) },
+        t: Interval { lo: g(4), hi: g(5) },
+    };
     Rec::default().packed(&[(b.contains(g(6), g(7), g(8)) as i64, 1)])
 }
 
@@ -168,7 +214,9 @@ pub fn run_sample(setups: SetupLookup<'_>, w: &[u32]) -> Result<(Option<i32>, Re
         return Err(format!("pixel ({px},{py}) outside the viewport"));
     }
     let e = sample_eval(&s, ScreenPos::of(px, py, &smp), &smp, &mut Ops::default());
-    let mut r = Rec::default().packed(&[(e.hit.is_some() as i64, 1), (e.det.signum() as i64, 2)]).i32(e.hit.map_or(0, |h| h.depth));
+    let mut r = Rec::default()
+        .packed(&[(e.hit.is_some() as i64, 1), (e.det.signum() as i64, 2)])
+        .i32(e.hit.map_or(0, |h| h.depth));
     for x in e.e.iter().chain(std::iter::once(&e.det)) {
         let (hi, lo) = x.parts();
         r = r.wide(hi, lo);
@@ -178,12 +226,17 @@ pub fn run_sample(setups: SetupLookup<'_>, w: &[u32]) -> Result<(Option<i32>, Re
 
 /// Resolve input record of S colors.
 pub fn enc_resolve_in(colors: &[Rgb888]) -> Rec {
-    colors.iter().fold(Rec::default(), |r, c| r.packed(&[(c.b() as i64, 8), (c.g() as i64, 8), (c.r() as i64, 8)]))
+    colors.iter().fold(Rec::default(), |r, c| {
+        r.packed(&[(c.b() as i64, 8), (c.g() as i64, 8), (c.r() as i64, 8)])
+    })
 }
 
 /// Resolve: the average color.
 pub fn run_resolve(w: &[u32]) -> Rec {
-    let colors: Vec<Rgb888> = w.iter().map(|x| Rgb888::new((x >> 16) as u8, (x >> 8) as u8, *x as u8)).collect();
+    let colors: Vec<Rgb888> = w
+        .iter()
+        .map(|x| Rgb888::new((x >> 16) as u8, (x >> 8) as u8, *x as u8))
+        .collect();
     let c = resolve_colors(&colors);
     Rec::default().packed(&[(c.b() as i64, 8), (c.g() as i64, 8), (c.r() as i64, 8)])
 }
