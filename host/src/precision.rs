@@ -108,27 +108,30 @@ fn shrink(mut s: Scene, f: u16) -> Scene {
 pub fn sweep(sw: &Sweep) -> Vec<PrecRow> {
     let mut rows: Vec<PrecRow> = Vec::new();
     for (ci, &cfg) in CONFIGS.iter().enumerate() {
-        for &tile in &sw.tiles {
-            let mut acc = PrecRow {
+        let mut accs: Vec<PrecRow> = sw
+            .tiles
+            .iter()
+            .map(|&tile| PrecRow {
                 config: cfg,
                 tile,
                 ..Default::default()
-            };
-            for &kind in &sw.scenes {
-                for &row in &sw.rows {
-                    let mut s = shrink(bench(kind, row, true), sw.shrink);
-                    s.tile = tile;
-                    match ci {
-                        0 => one::<Prec<6, 6, 2>>(&s, &mut acc),
-                        1 => one::<Prec<8, 8, 4>>(&s, &mut acc),
-                        2 => one::<Prec<12, 12, 8>>(&s, &mut acc),
-                        _ => one::<Prec<16, 16, 16>>(&s, &mut acc),
-                    }
+            })
+            .collect();
+        for &kind in &sw.scenes {
+            for &row in &sw.rows {
+                let s = shrink(bench(kind, row, true), sw.shrink);
+                match ci {
+                    0 => one::<Prec<6, 6, 2>>(&s, &mut accs),
+                    1 => one::<Prec<8, 8, 4>>(&s, &mut accs),
+                    2 => one::<Prec<12, 12, 8>>(&s, &mut accs),
+                    _ => one::<Prec<16, 16, 16>>(&s, &mut accs),
                 }
             }
-            finish(&mut acc);
-            rows.push(acc);
         }
+        for a in accs.iter_mut() {
+            finish(a);
+        }
+        rows.extend(accs);
     }
     rows
 }
@@ -147,7 +150,8 @@ fn finish(a: &mut PrecRow) {
     ];
 }
 
-fn one<P: Precision + Sync>(s: &Scene, acc: &mut PrecRow) {
+/// One scene at precision `P` for every tile size of `accs` (each row's `tile`).
+fn one<P: Precision + Sync>(s: &Scene, accs: &mut [PrecRow]) {
     let base = Pattern::new(s.pattern, s.spp, s.seed);
     let pat = base.with_tuv(P::TUV_FRAC);
     let core: Vec<Triangle> = s
@@ -157,75 +161,78 @@ fn one<P: Precision + Sync>(s: &Scene, acc: &mut PrecRow) {
         .collect();
     let vp = s.core_viewport();
     let colors: Vec<[u8; 3]> = s.tris.iter().map(|t| t.color).collect();
-    let o = RunOpts {
-        vp: s.viewport,
-        spp: s.spp,
-        tile: s.tile,
-        colors: &colors,
-        clear: [0; 3],
-        image: false,
-        label: &s.name,
-        oracle: None,
-    };
-    let fixed = Fixed::<_, P> {
-        prec: std::marker::PhantomData,
-        strat: Laine2011,
-        vp,
-        tris: &core,
-        pattern: &pat,
-    };
-    // Time both in the same run, alternating, three times each; keep the medians.
-    let mut tf: Vec<Duration> = Vec::new();
-    let mut tr: Vec<Duration> = Vec::new();
-    let mut last = None;
-    for _ in 0..3 {
-        let f = run(&fixed, &pat, &o);
-        let r = run(
-            &Reference {
-                vp: s.viewport,
-                tris: &s.tris,
-                pattern: &base,
-            },
-            &pat,
-            &o,
-        );
-        tf.push(f.time);
-        tr.push(r.time);
-        last = Some((f, r));
+    for acc in accs.iter_mut() {
+        let o = RunOpts {
+            vp: s.viewport,
+            spp: s.spp,
+            tile: acc.tile,
+            colors: &colors,
+            clear: [0; 3],
+            image: false,
+            label: &s.name,
+            oracle: None,
+        };
+        let fixed = Fixed::<_, P> {
+            prec: std::marker::PhantomData,
+            strat: Laine2011,
+            vp,
+            tris: &core,
+            pattern: &pat,
+        };
+        // Time both in the same run, alternating, three times each; keep the medians.
+        let mut tf: Vec<Duration> = Vec::new();
+        let mut tr: Vec<Duration> = Vec::new();
+        let mut last = None;
+        for _ in 0..3 {
+            let f = run(&fixed, &pat, &o);
+            let r = run(
+                &Reference {
+                    vp: s.viewport,
+                    tris: &s.tris,
+                    pattern: &base,
+                },
+                &pat,
+                &o,
+            );
+            tf.push(f.time);
+            tr.push(r.time);
+            last = Some((f, r));
+        }
+        tf.sort();
+        tr.sort();
+        acc.times
+            .push(tf[1].as_secs_f64() / tr[1].as_secs_f64().max(1e-9));
+        let (f, r) = last.expect("ran");
+        let per = |a: u64, b: u64| if b == 0 { 0.0 } else { a as f64 / b as f64 };
+        let n = acc.times.len() as f64;
+        let ops = [
+            per(f.stats.ops_setup, f.stats.triangles),
+            per(f.stats.ops_bounds, f.stats.tiles_visited),
+            per(f.stats.ops_sample, f.stats.samples_tested),
+        ];
+        for (a, o) in acc.ops.iter_mut().zip(ops) {
+            *a += (o - *a) / n;
+        }
+        acc.counts[0] += f.stats.samples_tested;
+        acc.counts[1] += f.stats.samples_covered;
+        acc.counts[2] += r.stats.samples_tested;
+        acc.counts[3] += r.stats.samples_covered;
     }
-    tf.sort();
-    tr.sort();
-    acc.times
-        .push(tf[1].as_secs_f64() / tr[1].as_secs_f64().max(1e-9));
-    let (f, r) = last.expect("ran");
-    let per = |a: u64, b: u64| if b == 0 { 0.0 } else { a as f64 / b as f64 };
-    let n = acc.times.len() as f64;
-    let ops = [
-        per(f.stats.ops_setup, f.stats.triangles),
-        per(f.stats.ops_bounds, f.stats.tiles_visited),
-        per(f.stats.ops_sample, f.stats.samples_tested),
-    ];
-    for (a, o) in acc.ops.iter_mut().zip(ops) {
-        *a += (o - *a) / n;
-    }
-    acc.counts[0] += f.stats.samples_tested;
-    acc.counts[1] += f.stats.samples_covered;
-    acc.counts[2] += r.stats.samples_tested;
-    acc.counts[3] += r.stats.samples_covered;
-    errors::<P>(s, &core, &pat, acc);
+    errors::<P>(s, &core, &pat, accs);
 }
 
-/// Per-triangle brute force over the union of both footprints.
-fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, acc: &mut PrecRow) {
+/// Per-triangle brute force over the union of both footprints: coverage, distance and depth
+/// once; bounds slack, violations and epsilon for every tile size of `accs`.
+fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, accs: &mut [PrecRow]) {
     let vp = s.core_viewport();
     let v = s.viewport;
-    let bt = s.tile as u16;
-    let parts: Vec<PrecRow> = s
+    let tiles: Vec<u16> = accs.iter().map(|a| a.tile as u16).collect();
+    let parts: Vec<Vec<PrecRow>> = s
         .tris
         .par_iter()
         .zip(core.par_iter())
         .map(|(st, ct)| {
-            let mut a = PrecRow::default();
+            let mut a: Vec<PrecRow> = tiles.iter().map(|_| PrecRow::default()).collect();
             let mut ops = Ops::default();
             let fx = match uvt_core::setup_with::<P>(ct, vp, &mut ops) {
                 Outcome::Visible(x) => Some((x, Laine2011.prepare(&x, &mut ops))),
@@ -247,7 +254,7 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, acc:
             };
             let full = Setup::unculled(ct, vp);
             let bound = quant_distance_at(st, v, P::POS_FRAC, P::TUV_FRAC);
-            let cell_of = |px: u16, py: u16, fp: PixelRect| {
+            let cell_of = |px: u16, py: u16, fp: PixelRect, bt: u16| {
                 PixelRect {
                     x0: px - px % bt,
                     y0: py - py % bt,
@@ -256,31 +263,36 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, acc:
                 }
                 .intersect(&fp)
             };
+            let mut boxes = Vec::with_capacity(tiles.len());
             for py in region.y0..region.y1 {
                 for px in region.x0..region.x1 {
-                    let fbox = fx.as_ref().and_then(|(x, c)| {
-                        x.footprint
-                            .contains(px, py)
-                            .then(|| Laine2011.tile(x, c, cell_of(px, py, x.footprint), &mut ops))
-                    });
-                    let rbox = rf.as_ref().and_then(|x| {
-                        x.footprint
-                            .contains(px, py)
-                            .then(|| reference::bounds::tile(x, cell_of(px, py, x.footprint)))
-                    });
-                    // Slack, once per cell (at its top-left pixel).
-                    if px % bt == 0 || px == region.x0 {
-                        if let (Some(Some(fb)), Some(Some(rb))) = (fbox, rbox) {
-                            if py % bt == 0 || py == region.y0 {
-                                let w = [(fb.t, rb.t), (fb.u, rb.u), (fb.v, rb.v)];
-                                for (k, (fi, ri)) in w.iter().enumerate() {
-                                    let d = (fi.hi - fi.lo) as f64 / 65536.0 - (ri.1 - ri.0);
-                                    a.slack_mean[k] += d;
-                                    a.slack_max[k] = a.slack_max[k].max(d);
-                                }
-                                a.slack_n += 1;
+                    boxes.clear();
+                    for (ti, &bt) in tiles.iter().enumerate() {
+                        let fbox = fx.as_ref().and_then(|(x, c)| {
+                            x.footprint.contains(px, py).then(|| {
+                                Laine2011.tile(x, c, cell_of(px, py, x.footprint, bt), &mut ops)
+                            })
+                        });
+                        let rbox = rf.as_ref().and_then(|x| {
+                            x.footprint.contains(px, py).then(|| {
+                                reference::bounds::tile(x, cell_of(px, py, x.footprint, bt))
+                            })
+                        });
+                        // Slack, once per cell (at its top-left pixel inside the region).
+                        let first_x = px % bt == 0 || px == region.x0;
+                        let first_y = py % bt == 0 || py == region.y0;
+                        if let (true, true, Some(Some(fb)), Some(Some(rb))) =
+                            (first_x, first_y, fbox, rbox)
+                        {
+                            let w = [(fb.t, rb.t), (fb.u, rb.u), (fb.v, rb.v)];
+                            for (k, (fi, ri)) in w.iter().enumerate() {
+                                let d = (fi.hi - fi.lo) as f64 / 65536.0 - (ri.1 - ri.0);
+                                a[ti].slack_mean[k] += d;
+                                a[ti].slack_max[k] = a[ti].slack_max[k].max(d);
                             }
+                            a[ti].slack_n += 1;
                         }
+                        boxes.push((fbox, rbox));
                     }
                     for si in 0..pat.spp as usize {
                         let idx = pat.index(px, py, si);
@@ -288,43 +300,49 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, acc:
                         let hf = sample_eval(&full, ScreenPos::of(px, py, q), q, &mut ops).hit;
                         let (x, y) = (px as f64 + e[0], py as f64 + e[1]);
                         let hr = reference::sample::sample_test(st, v, x, y, e[2], e[3], e[4]);
-                        a.compared += 1;
+                        // Tile-independent measures go into row 0 and are copied when merging.
+                        a[0].compared += 1;
                         if hf.is_some() != hr.is_some() {
-                            a.differ += 1;
+                            a[0].differ += 1;
                             let d =
                                 reference::sample::edge_distance_px(st, v, x, y, e[2], e[3], e[4]);
-                            a.max_differ_px = a.max_differ_px.max(d);
+                            a[0].max_differ_px = a[0].max_differ_px.max(d);
                             if d > bound {
-                                a.beyond_bound += 1;
+                                a[0].beyond_bound += 1;
                             }
                         }
                         if let (Some(h), Some(z)) = (hf, hr) {
                             if h.depth != i32::MAX && z.abs() < 128.0 {
                                 let err = (h.depth as f64 - z * 16777216.0).abs();
-                                a.depth_lsb[0] = a.depth_lsb[0].max(err);
-                                a.depth_lsb[1] += err;
-                                a.depth_n += 1;
+                                a[0].depth_lsb[0] = a[0].depth_lsb[0].max(err);
+                                a[0].depth_lsb[1] += err;
+                                a[0].depth_n += 1;
                             }
                         }
                         if hf.is_none() {
                             continue;
                         }
                         let (u, vv, t) = (q.u.to_bits(), q.v.to_bits(), q.t.to_bits());
-                        match fbox {
-                            Some(Some(b)) if b.contains(u, vv, t) => {}
-                            _ => a.violations += 1,
-                        }
-                        match rbox {
-                            Some(Some(rb)) => {
-                                let s3 =
-                                    [t as f64 / 65536.0, u as f64 / 65536.0, vv as f64 / 65536.0];
-                                let r3 = [rb.t, rb.u, rb.v];
-                                for k in 0..3 {
-                                    let out = (r3[k].0 - s3[k]).max(s3[k] - r3[k].1).max(0.0);
-                                    a.eps_measured[k] = a.eps_measured[k].max(out);
-                                }
+                        for (ti, (fbox, rbox)) in boxes.iter().enumerate() {
+                            match fbox {
+                                Some(Some(b)) if b.contains(u, vv, t) => {}
+                                _ => a[ti].violations += 1,
                             }
-                            _ => a.eps_outside += 1,
+                            match rbox {
+                                Some(Some(rb)) => {
+                                    let s3 = [
+                                        t as f64 / 65536.0,
+                                        u as f64 / 65536.0,
+                                        vv as f64 / 65536.0,
+                                    ];
+                                    let r3 = [rb.t, rb.u, rb.v];
+                                    for k in 0..3 {
+                                        let out = (r3[k].0 - s3[k]).max(s3[k] - r3[k].1).max(0.0);
+                                        a[ti].eps_measured[k] = a[ti].eps_measured[k].max(out);
+                                    }
+                                }
+                                _ => a[ti].eps_outside += 1,
+                            }
                         }
                     }
                 }
@@ -332,22 +350,25 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, acc:
             a
         })
         .collect();
-    for p in parts {
-        acc.compared += p.compared;
-        acc.differ += p.differ;
-        acc.max_differ_px = acc.max_differ_px.max(p.max_differ_px);
-        acc.beyond_bound += p.beyond_bound;
-        for k in 0..3 {
-            acc.slack_mean[k] += p.slack_mean[k];
-            acc.slack_max[k] = acc.slack_max[k].max(p.slack_max[k]);
-            acc.eps_measured[k] = acc.eps_measured[k].max(p.eps_measured[k]);
+    for part in parts {
+        let cov = part[0].clone();
+        for (acc, p) in accs.iter_mut().zip(part) {
+            acc.compared += cov.compared;
+            acc.differ += cov.differ;
+            acc.max_differ_px = acc.max_differ_px.max(cov.max_differ_px);
+            acc.beyond_bound += cov.beyond_bound;
+            acc.depth_lsb[0] = acc.depth_lsb[0].max(cov.depth_lsb[0]);
+            acc.depth_lsb[1] += cov.depth_lsb[1];
+            acc.depth_n += cov.depth_n;
+            for k in 0..3 {
+                acc.slack_mean[k] += p.slack_mean[k];
+                acc.slack_max[k] = acc.slack_max[k].max(p.slack_max[k]);
+                acc.eps_measured[k] = acc.eps_measured[k].max(p.eps_measured[k]);
+            }
+            acc.slack_n += p.slack_n;
+            acc.violations += p.violations;
+            acc.eps_outside += p.eps_outside;
         }
-        acc.slack_n += p.slack_n;
-        acc.depth_lsb[0] = acc.depth_lsb[0].max(p.depth_lsb[0]);
-        acc.depth_lsb[1] += p.depth_lsb[1];
-        acc.depth_n += p.depth_n;
-        acc.violations += p.violations;
-        acc.eps_outside += p.eps_outside;
     }
 }
 
@@ -454,7 +475,7 @@ pub fn plot_svg(rows: &[PrecRow], path: &std::path::Path) -> anyhow::Result<()> 
                 + Circle::new((0, 0), 5, style)
                 + Text::new(
                     format!("{}/{}/{}", p.0 .0, p.0 .1, p.0 .2),
-                    (8, -12),
+                    (8, if i % 2 == 0 { -16 } else { 6 }),
                     ("sans-serif", 13),
                 )
         }))
@@ -465,14 +486,15 @@ pub fn plot_svg(rows: &[PrecRow], path: &std::path::Path) -> anyhow::Result<()> 
 
 /// One stress case at the default precision: STE, decisions against f64, conservativeness.
 pub fn stress_row(scene: &Scene) -> PrecRow {
-    let mut acc = PrecRow {
+    let mut acc = [PrecRow {
         config: (16, 16, 16),
         tile: scene.tile,
         ..Default::default()
-    };
+    }];
     one::<uvt_core::DefaultPrecision>(scene, &mut acc);
-    finish(&mut acc);
-    acc
+    let [mut row] = acc;
+    finish(&mut row);
+    row
 }
 
 /// Markdown table of stress cases.

@@ -375,3 +375,54 @@ fn tile_resolve_rounding_and_depth_test() {
     assert!(!fb.write(5, 5, 9, Rgb888::new(1, 1, 1), 0));
     assert_eq!(fb.depth(2, 0, 0), None);
 }
+
+/// The renderer drawing into an embedded-graphics `DrawTarget` produces the same image as
+/// `render_with` (the demo scene's FNV-1a checksum, row-major RGB).
+#[test]
+fn tile_render_into_draw_target() {
+    use embedded_graphics_core::draw_target::DrawTarget;
+    use embedded_graphics_core::geometry::{OriginDimensions, Size};
+    use embedded_graphics_core::pixelcolor::RgbColor;
+    use embedded_graphics_core::Pixel;
+    struct Img(Vec<Rgb888>);
+    impl OriginDimensions for Img {
+        fn size(&self) -> Size {
+            Size::new(32, 32)
+        }
+    }
+    impl DrawTarget for Img {
+        type Color = Rgb888;
+        type Error = core::convert::Infallible;
+        fn draw_iter<I: IntoIterator<Item = Pixel<Rgb888>>>(
+            &mut self,
+            pixels: I,
+        ) -> Result<(), Self::Error> {
+            for Pixel(p, c) in pixels {
+                if let Some(slot) = self.0.get_mut((p.y * 32 + p.x) as usize) {
+                    *slot = c;
+                }
+            }
+            Ok(())
+        }
+    }
+    let prims = uvt_core::demo::prims().unwrap();
+    let pattern = SamplePattern::new(4, 4, &uvt_core::demo::SAMPLES).unwrap();
+    let mut r =
+        Renderer::<Laine2011, 8>::new(Laine2011, uvt_core::demo::viewport().unwrap(), &prims)
+            .unwrap();
+    let mut img = Img(vec![Rgb888::BLACK; 32 * 32]);
+    r.render::<_, 8, 8, 4>(
+        &pattern,
+        uvt_core::demo::BOUNDS_TILE,
+        Rgb888::new(16, 16, 24),
+        &mut img,
+    )
+    .unwrap();
+    let mut h = 0x811c_9dc5u32;
+    for c in &img.0 {
+        for b in [c.r(), c.g(), c.b()] {
+            h = (h ^ b as u32).wrapping_mul(0x0100_0193);
+        }
+    }
+    assert_eq!(h, uvt_core::demo::render().unwrap().checksum);
+}
