@@ -53,6 +53,9 @@ enum Cmd {
         /// output directory for precision.md, precision.json, precision.svg
         #[arg(long, default_value = "out")]
         out: PathBuf,
+        /// do not sweep: redraw the table and plot from a precision.json
+        #[arg(long)]
+        replot: Option<PathBuf>,
     },
     /// Stiff and extreme cases: STE, error against f64 and conservativeness per scene file.
     Stress {
@@ -137,7 +140,7 @@ fn run(cli: Cli) -> Result<()> {
                 std::fs::write(&p, serde_json::to_string_pretty(&rows)? + "\n")?;
             }
         }
-        Cmd::Precision { quick, out } => {
+        Cmd::Precision { quick, out, replot } => {
             let sw = if quick {
                 uvt_host::precision::Sweep {
                     scenes: vec![scenes::Bench::Game, scenes::Bench::Dense],
@@ -153,7 +156,11 @@ fn run(cli: Cli) -> Result<()> {
                     shrink: 1,
                 }
             };
-            let rows = uvt_host::precision::sweep(&sw);
+            let rows: Vec<uvt_host::precision::PrecRow> = match replot {
+                Some(p) => serde_json::from_str(&std::fs::read_to_string(&p)?)
+                    .map_err(|e| anyhow::anyhow!("{}: not a precision.json: {e}", p.display()))?,
+                None => uvt_host::precision::sweep(&sw),
+            };
             let md = uvt_host::precision::table_md(&rows);
             std::fs::create_dir_all(&out)?;
             std::fs::write(out.join("precision.md"), &md)?;

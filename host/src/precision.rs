@@ -26,7 +26,8 @@ use crate::scenes::{bench, Bench, Row};
 pub const CONFIGS: [(u32, u32, u32); 4] = [(6, 6, 2), (8, 8, 4), (12, 12, 8), (16, 16, 16)];
 
 /// Errors and costs of one configuration at one bounds-tile size, summed over the scenes.
-#[derive(Clone, Debug, Default, Serialize)]
+#[derive(Clone, Debug, Default, Serialize, serde::Deserialize)]
+#[serde(default)]
 pub struct PrecRow {
     /// fraction bits (position, t/u/v, bounds)
     pub config: (u32, u32, u32),
@@ -456,6 +457,7 @@ pub fn plot_svg(rows: &[PrecRow], path: &std::path::Path) -> anyhow::Result<()> 
         .configure_mesh()
         .x_desc("median wall time per frame / f64 reference")
         .y_desc("sample decisions differing from f64 (rate)")
+        .y_label_formatter(&|y| format!("{y:.0e}"))
         .draw()
         .map_err(|e| anyhow::anyhow!("{e}"))?;
     let mut fp: Vec<(f64, f64)> = front.iter().map(|&i| (pts[i].1, pts[i].2)).collect();
@@ -475,7 +477,7 @@ pub fn plot_svg(rows: &[PrecRow], path: &std::path::Path) -> anyhow::Result<()> 
                 + Circle::new((0, 0), 5, style)
                 + Text::new(
                     format!("{}/{}/{}", p.0 .0, p.0 .1, p.0 .2),
-                    (8, if i % 2 == 0 { -16 } else { 6 }),
+                    if i % 2 == 0 { (8, -16) } else { (-64, 6) },
                     ("sans-serif", 13),
                 )
         }))
