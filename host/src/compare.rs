@@ -12,7 +12,7 @@
 //! infinite (no claim) when a vertex has w ≤ 0 at either end.
 
 use rayon::prelude::*;
-use uvt_core::{sample_test, ScreenPos, Setup, Triangle, Viewport};
+use uvt_core::{sample_test, PixelRect, ScreenPos, Setup, Triangle, Viewport};
 
 use crate::pattern::Pattern;
 use crate::reference;
@@ -80,6 +80,20 @@ pub fn quant_distance_px(t: &SceneTri, vp: (u16, u16)) -> f64 {
     2.0 * dq + 1e-6
 }
 
+/// The bounding rectangle of two optional footprints (`None` if both are absent).
+pub fn footprint_union(a: Option<PixelRect>, b: Option<PixelRect>) -> Option<PixelRect> {
+    match (a, b) {
+        (Some(a), Some(b)) => Some(PixelRect {
+            x0: a.x0.min(b.x0),
+            y0: a.y0.min(b.y0),
+            x1: a.x1.max(b.x1),
+            y1: a.y1.max(b.y1),
+        }),
+        (Some(a), None) | (None, Some(a)) => Some(a),
+        (None, None) => None,
+    }
+}
+
 /// Compare every sample of every triangle's footprints (the union of the core's and the
 /// reference's; both are conservative, so every covered sample is inside it).
 pub fn compare(tris: &[SceneTri], core: &[Triangle], vp: Viewport, pat: &Pattern) -> CoverageDiff {
@@ -94,15 +108,8 @@ pub fn compare(tris: &[SceneTri], core: &[Triangle], vp: Viewport, pat: &Pattern
                 _ => None,
             };
             let fp_ref = reference::setup::setup(st, v).ok().map(|s| s.footprint);
-            let region = match (fp_fixed, fp_ref) {
-                (Some(a), Some(b)) => uvt_core::PixelRect {
-                    x0: a.x0.min(b.x0),
-                    y0: a.y0.min(b.y0),
-                    x1: a.x1.max(b.x1),
-                    y1: a.y1.max(b.y1),
-                },
-                (Some(a), None) | (None, Some(a)) => a,
-                (None, None) => return d,
+            let Some(region) = footprint_union(fp_fixed, fp_ref) else {
+                return d;
             };
             let full = Setup::unculled(ct, vp);
             let bound = quant_distance_px(st, v);

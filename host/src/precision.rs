@@ -240,18 +240,11 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, accs
                 Outcome::Culled(_) => None,
             };
             let rf = reference::setup::setup(st, v).ok();
-            let region = match (
+            let Some(region) = crate::compare::footprint_union(
                 fx.as_ref().map(|x| x.0.footprint),
                 rf.as_ref().map(|x| x.footprint),
-            ) {
-                (Some(p), Some(q)) => PixelRect {
-                    x0: p.x0.min(q.x0),
-                    y0: p.y0.min(q.y0),
-                    x1: p.x1.max(q.x1),
-                    y1: p.y1.max(q.y1),
-                },
-                (Some(p), None) | (None, Some(p)) => p,
-                (None, None) => return a,
+            ) else {
+                return a;
             };
             let full = Setup::unculled(ct, vp);
             let bound = quant_distance_at(st, v, P::POS_FRAC, P::TUV_FRAC);

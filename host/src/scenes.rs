@@ -7,7 +7,7 @@
 use glam::{DMat4, DQuat, DVec3};
 
 use crate::mesh::{self, Camera, Instance, Pose};
-use crate::scene::{check_domain, PatternKind, Scene};
+use crate::scene::{check_domain, PatternKind, Scene, SceneTri};
 
 /// A benchmark row.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
@@ -217,6 +217,63 @@ fn subdivided_box(h: DVec3, n: u32) -> mesh::Mesh {
         }
     }
     out
+}
+
+/// A random clip-space triangle of kind 0..6: static, moving, defocused, both, crossing the
+/// camera plane, huge (coordinates anywhere in ±8000). Used by the golden-vector generator and
+/// the tests.
+pub fn random_tri(rng: &mut impl rand::Rng, kind: u32) -> SceneTri {
+    let mut r = |lo: f64, hi: f64| rng.gen_range(lo..hi);
+    if kind == 4 {
+        let mut p = || {
+            let w = r(-3.0, 3.0);
+            [r(-3.0, 3.0), r(-3.0, 3.0), 0.5 * w, w, 0.0]
+        };
+        return st([p(), p(), p()], [p(), p(), p()]);
+    }
+    if kind == 5 {
+        let mut p = || {
+            [
+                r(-8000.0, 8000.0),
+                r(-8000.0, 8000.0),
+                r(-8000.0, 8000.0),
+                r(-8000.0, 8000.0),
+                r(-8000.0, 8000.0),
+            ]
+        };
+        return st([p(), p(), p()], [p(), p(), p()]);
+    }
+    let (cx, cy, w, s) = (r(-1.2, 1.2), r(-1.2, 1.2), r(0.5, 6.0), r(0.05, 0.8));
+    let (mx, my, mw) = (r(-1.5, 1.5), r(-1.5, 1.5), r(-0.5, 0.5));
+    let (a, b) = (r(-0.15, 0.15), r(-0.3, 0.3));
+    let defocus = kind == 2 || kind == 3;
+    let motion = kind == 1 || kind == 3;
+    let c = |w: f64| if defocus { a * w + b } else { 0.0 };
+    let mut t0 = [[0.0; 5]; 3];
+    let mut t1 = [[0.0; 5]; 3];
+    for k in 0..3 {
+        let (nx, ny, wk) = (
+            cx + s * r(-1.0, 1.0),
+            cy + s * r(-1.0, 1.0),
+            w * (1.0 + 0.3 * r(-1.0, 1.0)),
+        );
+        t0[k] = [nx * wk, ny * wk, 0.5 * wk, wk, c(wk)];
+        let w1 = wk * (1.0 + mw);
+        t1[k] = if motion {
+            [(nx + mx) * w1, (ny + my) * w1, 0.5 * w1, w1, c(w1)]
+        } else {
+            t0[k]
+        };
+    }
+    st(t0, t1)
+}
+
+fn st(t0: [[f64; 5]; 3], t1: [[f64; 5]; 3]) -> SceneTri {
+    SceneTri {
+        t0,
+        t1,
+        color: [255, 255, 255],
+    }
 }
 
 /// The default scene of `uvt render`: a floor, boxes and spheres, a panning camera with a thin

@@ -13,65 +13,15 @@ use uvt_host::scene::{PatternKind, Scene, SceneTri};
 use uvt_host::scenes;
 use uvt_tests::*;
 
-/// A random f64 triangle: static, moving, defocused, both, or crossing the camera plane.
-fn random_tri(rng: &mut Rng, kind: u64) -> SceneTri {
-    let (cx, cy, w) = (
-        rng.range(-1.2, 1.2),
-        rng.range(-1.2, 1.2),
-        rng.range(0.5, 6.0),
-    );
-    let s = rng.range(0.05, 0.7);
-    let motion = kind == 1 || kind == 3;
-    let defocus = kind == 2 || kind == 3;
-    let (mx, my, mw) = (
-        rng.range(-1.5, 1.5),
-        rng.range(-1.5, 1.5),
-        rng.range(-0.5, 0.5),
-    );
-    let (a, b) = (rng.range(-0.15, 0.15), rng.range(-0.3, 0.3));
-    let mut t0 = [[0.0; 5]; 3];
-    let mut t1 = [[0.0; 5]; 3];
-    for k in 0..3 {
-        if kind == 4 {
-            let (w0, w1) = (rng.range(-3.0, 3.0), rng.range(-3.0, 3.0));
-            t0[k] = [
-                rng.range(-3.0, 3.0),
-                rng.range(-3.0, 3.0),
-                0.5 * w0,
-                w0,
-                0.0,
-            ];
-            t1[k] = [
-                rng.range(-3.0, 3.0),
-                rng.range(-3.0, 3.0),
-                0.5 * w1,
-                w1,
-                0.0,
-            ];
-            continue;
-        }
-        let (nx, ny) = (cx + s * rng.range(-1.0, 1.0), cy + s * rng.range(-1.0, 1.0));
-        let wk = w * (1.0 + 0.3 * rng.range(-1.0, 1.0));
-        let c = |w: f64| if defocus { a * w + b } else { 0.0 };
-        t0[k] = [nx * wk, ny * wk, 0.5 * wk, wk, c(wk)];
-        let w1 = wk * (1.0 + mw);
-        t1[k] = if motion {
-            [(nx + mx) * w1, (ny + my) * w1, 0.5 * w1, w1, c(w1)]
-        } else {
-            t0[k]
-        };
-    }
-    SceneTri {
-        t0,
-        t1,
-        color: [255, 255, 255],
-    }
+/// A random f64 triangle of the generator's kinds (static, moving, defocused, both, crossing).
+fn random_tri(rng: &mut rand_pcg::Pcg64, kind: u64) -> SceneTri {
+    uvt_host::scenes::random_tri(rng, kind as u32)
 }
 
 #[test]
 fn reference_bounds_conservative_against_brute_force() {
     let seed = seed();
-    let mut rng = Rng(seed);
+    let mut rng = <rand_pcg::Pcg64 as rand::SeedableRng>::seed_from_u64(seed);
     let vp = (24u16, 20u16);
     let pat = Pattern::new(PatternKind::Random, 8, seed);
     let mut covered = 0;
@@ -128,7 +78,7 @@ fn reference_bounds_conservative_against_brute_force() {
 #[test]
 fn core_agrees_with_reference_beyond_quantization_distance() {
     let seed = seed();
-    let mut rng = Rng(seed ^ 0xabc);
+    let mut rng = <rand_pcg::Pcg64 as rand::SeedableRng>::seed_from_u64(seed ^ 0xabc);
     // The built-in default scene, and random triangles of every kind.
     let s = scenes::default_scene();
     let pat = Pattern::new(s.pattern, s.spp, s.seed);

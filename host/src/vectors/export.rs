@@ -133,53 +133,6 @@ fn random_sample(rng: &mut rand_pcg::Pcg64, b: Option<&UvtBox>) -> Sample {
     }
 }
 
-/// Random triangle of kind 0..6 (static, moving, defocused, both, crossing, huge).
-fn random_tri(rng: &mut rand_pcg::Pcg64, kind: u32) -> Triangle {
-    let mut r = |lo: f64, hi: f64| rng.gen_range(lo..hi);
-    if kind == 4 {
-        let mut p = || {
-            let w = r(-3.0, 3.0);
-            [r(-3.0, 3.0), r(-3.0, 3.0), 0.5 * w, w, 0.0]
-        };
-        return tri([p(), p(), p()], [p(), p(), p()]);
-    }
-    if kind == 5 {
-        let mut p = || {
-            [
-                r(-8000.0, 8000.0),
-                r(-8000.0, 8000.0),
-                r(-8000.0, 8000.0),
-                r(-8000.0, 8000.0),
-                r(-8000.0, 8000.0),
-            ]
-        };
-        return tri([p(), p(), p()], [p(), p(), p()]);
-    }
-    let (cx, cy, w, s) = (r(-1.2, 1.2), r(-1.2, 1.2), r(0.5, 6.0), r(0.05, 0.8));
-    let (mx, my, mw) = (r(-1.5, 1.5), r(-1.5, 1.5), r(-0.5, 0.5));
-    let (a, b) = (r(-0.15, 0.15), r(-0.3, 0.3));
-    let defocus = kind == 2 || kind == 3;
-    let motion = kind == 1 || kind == 3;
-    let c = |w: f64| if defocus { a * w + b } else { 0.0 };
-    let mut t0 = [[0.0; 5]; 3];
-    let mut t1 = [[0.0; 5]; 3];
-    for k in 0..3 {
-        let (nx, ny, wk) = (
-            cx + s * r(-1.0, 1.0),
-            cy + s * r(-1.0, 1.0),
-            w * (1.0 + 0.3 * r(-1.0, 1.0)),
-        );
-        t0[k] = [nx * wk, ny * wk, 0.5 * wk, wk, c(wk)];
-        let w1 = wk * (1.0 + mw);
-        t1[k] = if motion {
-            [(nx + mx) * w1, (ny + my) * w1, 0.5 * w1, w1, c(w1)]
-        } else {
-            t0[k]
-        };
-    }
-    tri(t0, t1)
-}
-
 /// Named edge cases: (name, triangles, viewport side).
 fn named_cases() -> Vec<(&'static str, Vec<Triangle>, u16)> {
     let base = [
@@ -364,7 +317,9 @@ pub fn unit(seed: u64) -> Result<Set> {
     for i in 0..180u32 {
         let side = [8u16, 17, 32, 61][i as usize % 4];
         let vp = Viewport::new(side, side + 3).map_err(|e| anyhow!("{e}"))?;
-        let t = random_tri(&mut rng, i % 6);
+        let t = crate::scenes::random_tri(&mut rng, i % 6)
+            .to_core()
+            .map_err(|e| anyhow!("{e}"))?;
         set.tri(&t, vp)?;
     }
     set.cases.push(Case {
