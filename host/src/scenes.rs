@@ -76,6 +76,15 @@ pub enum Bench {
     Dense,
 }
 
+/// A camera pose looking from `eye` at `target`, both moved by `travel` (a pan).
+fn panning(eye: DVec3, target: DVec3, travel: DVec3) -> Pose {
+    Pose {
+        eye: eye + travel,
+        target: target + travel,
+        up: DVec3::Y,
+    }
+}
+
 fn inst(mesh: mesh::Mesh, m0: DMat4, m1: DMat4, color: [u8; 3]) -> Instance {
     Instance {
         mesh,
@@ -109,16 +118,8 @@ pub fn bench(kind: Bench, row: Row, quick: bool) -> Scene {
             Bench::Game => 8.0,
             Bench::Dense => 7.0,
         },
-        t0: Pose {
-            eye,
-            target,
-            up: DVec3::Y,
-        },
-        t1: Pose {
-            eye: eye + travel,
-            target: target + travel,
-            up: DVec3::Y,
-        },
+        t0: panning(eye, target, DVec3::ZERO),
+        t1: panning(eye, target, travel),
     };
     let mut list = Vec::new();
     match kind {
@@ -289,16 +290,8 @@ pub fn default_scene() -> Scene {
         far: 100.0,
         aperture: 0.05,
         focus: 6.0,
-        t0: Pose {
-            eye,
-            target,
-            up: DVec3::Y,
-        },
-        t1: Pose {
-            eye: eye + travel,
-            target: target + travel,
-            up: DVec3::Y,
-        },
+        t0: panning(eye, target, DVec3::ZERO),
+        t1: panning(eye, target, travel),
     };
     let mut list = vec![inst(
         mesh::grid((24.0, 24.0), (24, 24)),
