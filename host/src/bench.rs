@@ -44,18 +44,8 @@ pub fn run_table(quick: bool, scenes: &[Bench], rows: &[Row]) -> Vec<BenchRow> {
             let pattern = Pattern::new(s.pattern, s.spp, s.seed);
             let core = s.core_tris().expect("built-in scene converts");
             let vp = s.core_viewport();
-            let colors: Vec<[u8; 3]> = s.tris.iter().map(|t| t.color).collect();
-            let label = s.name.clone();
-            let o = RunOpts {
-                vp: s.viewport,
-                spp: s.spp,
-                tile: s.tile,
-                colors: &colors,
-                clear: [0; 3],
-                image: false,
-                label: &label,
-                oracle: None,
-            };
+            let colors = s.colors();
+            let o = RunOpts::for_scene(&s, &colors);
             let f = run(
                 &Fixed::new(Laine2011, vp, &core, &pattern),
                 &pattern,

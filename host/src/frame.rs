@@ -308,6 +308,23 @@ pub struct RunOpts<'a> {
     pub oracle: Option<&'a [SceneTri]>,
 }
 
+impl<'a> RunOpts<'a> {
+    /// Options for `scene` with its own viewport, spp and tile size, label = its name, black
+    /// background, no image, no oracle; `colors` is `scene.colors()`.
+    pub fn for_scene(scene: &'a crate::scene::Scene, colors: &'a [[u8; 3]]) -> RunOpts<'a> {
+        RunOpts {
+            vp: scene.viewport,
+            spp: scene.spp,
+            tile: scene.tile,
+            colors,
+            clear: [0; 3],
+            image: false,
+            label: &scene.name,
+            oracle: None,
+        }
+    }
+}
+
 /// Dense points per bounds tile for the oracle box (5D Sobol, Owen-scrambled, fixed seed).
 pub const ORACLE_POINTS: u32 = 16;
 

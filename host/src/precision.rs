@@ -161,17 +161,11 @@ fn one<P: Precision + Sync>(s: &Scene, accs: &mut [PrecRow]) {
         .map(|t| t.to_core_with::<P>().expect("bench scene in the domain"))
         .collect();
     let vp = s.core_viewport();
-    let colors: Vec<[u8; 3]> = s.tris.iter().map(|t| t.color).collect();
+    let colors = s.colors();
     for acc in accs.iter_mut() {
         let o = RunOpts {
-            vp: s.viewport,
-            spp: s.spp,
             tile: acc.tile,
-            colors: &colors,
-            clear: [0; 3],
-            image: false,
-            label: &s.name,
-            oracle: None,
+            ..RunOpts::for_scene(s, &colors)
         };
         let fixed = Fixed::<_, P> {
             prec: std::marker::PhantomData,

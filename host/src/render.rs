@@ -32,16 +32,12 @@ pub fn render(scene: &Scene) -> Result<Rendered> {
     let pattern = Pattern::new(scene.pattern, scene.spp, scene.seed);
     let core = scene.core_tris()?;
     let vp = scene.core_viewport();
-    let colors: Vec<[u8; 3]> = scene.tris.iter().map(|t| t.color).collect();
+    let colors = scene.colors();
     let opts = |label| RunOpts {
-        vp: scene.viewport,
-        spp: scene.spp,
-        tile: scene.tile,
-        colors: &colors,
         clear: [24, 24, 32],
         image: true,
         label,
-        oracle: None,
+        ..RunOpts::for_scene(scene, &colors)
     };
     let fixed = run(
         &Fixed::new(Laine2011, vp, &core, &pattern),

@@ -121,6 +121,24 @@ impl Scene {
             .collect()
     }
 
+    /// Flat colors of the triangles, in order.
+    pub fn colors(&self) -> Vec<[u8; 3]> {
+        self.tris.iter().map(|t| t.color).collect()
+    }
+
+    /// A built-in scene: 16 spp, 1×1 bounds tiles, Sobol seed 0.
+    pub fn builtin(name: impl Into<String>, viewport: (u16, u16), tris: Vec<SceneTri>) -> Scene {
+        Scene {
+            name: name.into(),
+            viewport,
+            spp: 16,
+            tile: 1,
+            pattern: PatternKind::Sobol,
+            seed: 0,
+            tris,
+        }
+    }
+
     /// Load and validate a scene file.
     pub fn load(path: &std::path::Path) -> Result<Scene> {
         let text = std::fs::read_to_string(path)

@@ -7,7 +7,7 @@
 use glam::{DMat4, DQuat, DVec3};
 
 use crate::mesh::{self, Camera, Instance, Pose};
-use crate::scene::{check_domain, PatternKind, Scene, SceneTri};
+use crate::scene::{check_domain, Scene, SceneTri};
 
 /// A benchmark row.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, serde::Serialize)]
@@ -173,15 +173,7 @@ pub fn bench(kind: Bench, row: Row, quick: bool) -> Scene {
         },
         row.label()
     );
-    let scene = Scene {
-        name,
-        viewport,
-        spp: 16,
-        tile: 1,
-        pattern: PatternKind::Sobol,
-        seed: 0,
-        tris,
-    };
+    let scene = Scene::builtin(name, viewport, tris);
     check_domain(&scene.tris).expect("built-in scene inside the domain");
     scene
 }
@@ -314,13 +306,5 @@ pub fn default_scene() -> Scene {
     let p = at(DVec3::new(1.2, 0.5, 3.5));
     list.push(inst(mesh::sphere(0.5, 20), p, p, [230, 230, 230]));
     let tris = mesh::to_clip(&cam, &list, viewport);
-    Scene {
-        name: "default".into(),
-        viewport,
-        spp: 16,
-        tile: 1,
-        pattern: PatternKind::Sobol,
-        seed: 0,
-        tris,
-    }
+    Scene::builtin("default", viewport, tris)
 }

@@ -126,17 +126,13 @@ fn driver_matches() {
     let core = s.core_tris().unwrap();
     let vp = s.core_viewport();
     let pat = Pattern::new(s.pattern, s.spp, s.seed);
-    let colors: Vec<[u8; 3]> = s.tris.iter().map(|t| t.color).collect();
+    let colors = s.colors();
     for tile in [1u8, 2, 4, 8] {
         let o = RunOpts {
-            vp: s.viewport,
-            spp: s.spp,
             tile,
-            colors: &colors,
             clear: [24, 24, 32],
             image: true,
-            label: "",
-            oracle: None,
+            ..RunOpts::for_scene(&s, &colors)
         };
         let f = run(&Fixed::new(Laine2011, vp, &core, &pat), &pat, &o);
         let prims: Vec<Prim> = core

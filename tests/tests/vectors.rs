@@ -111,16 +111,11 @@ fn frame_vectors_agree_with_the_renderer() {
         let s = uvt_host::scene::Scene::parse(text, set, Path::new(".")).unwrap();
         let pat = uvt_host::pattern::Pattern::new(s.pattern, s.spp, s.seed);
         let core = s.core_tris().unwrap();
-        let colors: Vec<[u8; 3]> = s.tris.iter().map(|t| t.color).collect();
+        let colors = s.colors();
         let o = RunOpts {
-            vp: s.viewport,
-            spp: s.spp,
-            tile: s.tile,
-            colors: &colors,
             clear: [24, 24, 32],
             image: true,
-            label: "",
-            oracle: None,
+            ..RunOpts::for_scene(&s, &colors)
         };
         let f = run(
             &Fixed::new(uvt_core::Laine2011, s.core_viewport(), &core, &pat),
