@@ -11,7 +11,7 @@
 //! | lens u, v | [`Lens`] = I16F16 in `i32` | 2.16 signed used | 2^-16 | -1 ≤ u ≤ 1 |
 //! | sub-pixel x, y | [`SubPixel`] = U0F8 in `u8` | 0.8 | 2^-8 px | [0, 255/256] |
 //! | pixel column/row | `u16` | 11.0 | 1 px | < 2048 |
-//! | depth z/w | [`Depth`] = I8F24 in `i32` | 8.24 | 2^-24 | saturated to [-128, 128) |
+//! | depth z/w | [`Depth`] = I8F24 in `i32` | 8.24 | 2^-24 | saturated to raw [`DEPTH_NEAR`, `DEPTH_FAR`]; raw [`DEPTH_EMPTY`] is never produced |
 //! | box / footprint coordinates | [`PixelCoord`] = `i64` raw | 42.16 | 2^-16 px | \|X\| < 2^57 |
 //! | dual-space δ | [`DualDelta`] = `i64` raw | 28.16 (clip·px) | 2^-16 | \|δ\| < 2^44 raw |
 //! | sample-test vertex P | `i64` raw | 14.F, F = 16/32/48 by class | 2^-F | \|P\| ≤ 2^14 |
@@ -31,7 +31,9 @@ pub type Time = I16F16;
 pub type Lens = I16F16;
 /// Sub-pixel sample offset inside a pixel: U0F8, [0, 1).
 pub type SubPixel = U0F8;
-/// Depth z/w of a covered sample: I8F24, saturated to [-128, 128).
+/// Depth z/w of a covered sample: I8F24, saturated to raw [`DEPTH_NEAR`, `DEPTH_FAR`] =
+/// [-128, 128 − 2^-23]. Raw [`DEPTH_EMPTY`] (= `i32::MAX`) is reserved for "no sample written" and
+/// is never a depth output, so a covered sample always wins against an empty slot.
 pub type Depth = I8F24;
 /// Screen position in pixels with [`PX_FRAC`] fraction bits (raw `i64`), used by bounds.
 pub type PixelCoord = i64;
@@ -52,6 +54,13 @@ pub const SUBPIXEL_BITS: u32 = 8;
 pub const MAX_VIEWPORT: u16 = 2048;
 /// Fraction bits of [`Depth`].
 pub const DEPTH_FRAC: u32 = 24;
+/// Raw depth a tile buffer clears to: "empty". The sample test never outputs it.
+pub const DEPTH_EMPTY: i32 = i32::MAX;
+/// The far end of the depth outputs (raw): z/w ≥ 128 − 2^-23 saturates here, and so does a hit
+/// whose shifted denominator is not positive (see `sample.rs`).
+pub const DEPTH_FAR: i32 = i32::MAX - 1;
+/// The near end of the depth outputs (raw): z/w ≤ −128 saturates here.
+pub const DEPTH_NEAR: i32 = i32::MIN;
 /// Fraction bits of [`PixelCoord`].
 pub const PX_FRAC: u32 = 16;
 /// Fixed-point shift of the lens-bound reciprocals (`2^RECIP_SHIFT / Δ`), see `bounds.rs`.

@@ -40,5 +40,5 @@ pub use interval::Interval;
 pub use sample::{sample_eval, sample_test, Hit, SampleEval, ScreenPos};
 pub use setup::{setup, setup_with, Class, Cull, Outcome, Setup};
 pub use stats::{Ops, Stats};
-pub use tile::{resolve_colors, PixelStats, Prim, RenderError, Renderer, TileBuffer};
+pub use tile::{resolve_colors, DepthTest, PixelStats, Prim, RenderError, Renderer, TileBuffer};
 pub use wide::Wide;

@@ -22,10 +22,25 @@
 //!
 //! **Depth** `z/w` at the hit equals `Σ E_k z_k / Σ E_k w_k`. The `E_k` are first shifted right
 //! by a common amount (floor) so the largest keeps [`DEPTH_EDGE_BITS`] significant bits, then
-//! `floor(num·2^24 / den)` after orienting `den > 0`; saturated to the `Depth` range, and the far
-//! value `i32::MAX` if the shifted `den` is not positive. Depth never influences coverage.
+//! `floor(num·2^24 / den)` after orienting `den > 0`. Depth never influences coverage.
+//!
+//! **Depth format (saturating, with a reserved empty value).** Outputs lie in raw
+//! `[DEPTH_NEAR, DEPTH_FAR] = [i32::MIN, i32::MAX − 1]`: a quotient below `i32::MIN` (z/w < −128)
+//! saturates to `DEPTH_NEAR`, one above `i32::MAX − 1` (z/w ≥ 128 − 2^-23) to `DEPTH_FAR`. Raw
+//! `i32::MAX` is `DEPTH_EMPTY`, the value a tile buffer clears to, and is never produced, so with
+//! the buffer's strict "less wins" test a covered sample always replaces an empty slot.
+//! **Shifted denominator ≤ 0.** The exact `Σ E_k w_k` (oriented) is the hit's w times a positive
+//! factor, and a covered sample's hit lies on the ray `λ·d, λ > 0`, so it has w > 0: the exact
+//! denominator is positive. Only the floor shift of the `E_k` can make it ≤ 0, when the hit is at
+//! w → 0+ (a triangle crossing the camera plane) and z/w → ±∞. The shifted numerator has lost its
+//! significance too, so the sign of the divergence is not known reliably; the output is the far
+//! end `DEPTH_FAR`: deterministic, written into an empty slot, and never occluding a sample of smaller
+//! depth (D3D would clip such a hit by the near plane; here it stays visible only where
+//! nothing else is).
 
-use crate::formats::{DEPTH_EDGE_BITS, DEPTH_FRAC, SUBPIXEL_BITS, TUV_FRAC};
+use crate::formats::{
+    DEPTH_EDGE_BITS, DEPTH_FAR, DEPTH_FRAC, DEPTH_NEAR, SUBPIXEL_BITS, TUV_FRAC,
+};
 use crate::input::{Sample, Viewport, C, W, X, Y, Z};
 use crate::setup::{Class, Setup};
 use crate::stats::Ops;
@@ -64,7 +79,8 @@ pub fn direction(vp: Viewport, pos: ScreenPos) -> [i64; 3] {
 /// Result of a sample test that covers: the depth z/w, raw I8F24.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Hit {
-    /// z/w at the hit, raw `Depth` bits (i32::MAX = far, see module docs)
+    /// z/w at the hit, raw `Depth` bits in `[DEPTH_NEAR, DEPTH_FAR]` (never `DEPTH_EMPTY`; see
+    /// the module docs)
     pub depth: i32,
 }
 
@@ -181,11 +197,11 @@ fn depth(e: &[Wide; 3], wz: &[(i64, i64); 3], det_sign: i32) -> i32 {
         den = -den;
     }
     if den <= 0 {
-        return i32::MAX;
+        return DEPTH_FAR;
     }
     // |num·2^24| < 2^120.
     let q = (num << DEPTH_FRAC).div_euclid(den);
-    q.clamp(i32::MIN as i128, i32::MAX as i128) as i32
+    q.clamp(DEPTH_NEAR as i128, DEPTH_FAR as i128) as i32
 }
 
 /// Everything the sample test computed for one sample: the exact edge values, the determinant and

@@ -43,6 +43,11 @@ pub struct Stats {
     pub samples_tested: u64,
     /// samples the sample test covered
     pub samples_covered: u64,
+    /// covered samples written to the tile buffer (the slot was empty or farther)
+    pub samples_written: u64,
+    /// covered samples that failed the depth test against a value an earlier triangle wrote;
+    /// `samples_covered = samples_written + samples_occluded` (the empty value is never a depth)
+    pub samples_occluded: u64,
     /// operation counts
     pub ops: Ops,
 }
@@ -68,6 +73,8 @@ impl Stats {
         self.tiles_skipped += o.tiles_skipped;
         self.samples_tested += o.samples_tested;
         self.samples_covered += o.samples_covered;
+        self.samples_written += o.samples_written;
+        self.samples_occluded += o.samples_occluded;
         self.ops.add(&o.ops);
     }
 }

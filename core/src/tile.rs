@@ -1,7 +1,11 @@
 //! Stage 4 — the tiny tile framebuffer and the render loop.
 //!
-//! [`TileBuffer`] holds `TW×TH` pixels × `S` samples of color and depth (depth test: strictly
-//! less wins, cleared to far = `i32::MAX`). Resolve averages the S samples per channel with
+//! [`TileBuffer`] holds `TW×TH` pixels × `S` samples of color and depth. Depth test: strictly
+//! less wins, so of equal depths the first writer keeps the slot. The buffer clears to
+//! [`DEPTH_EMPTY`] (raw `i32::MAX`), which the sample test never outputs (its depths saturate to
+//! `[DEPTH_NEAR, DEPTH_FAR]`, `sample.rs`): a covered sample is either written or rejected by the
+//! depth test against a value an earlier triangle wrote, and [`Stats`] counts which
+//! (`samples_covered = samples_written + samples_occluded`). Resolve averages the S samples per channel with
 //! round-half-up: `(Σ + S/2) / S`. [`Renderer`] sets every triangle up exactly once into a
 //! fixed-capacity `heapless::Vec` (no heap; memory is `N` setups plus one tile buffer), then walks
 //! the screen tile by tile; per screen tile, per triangle whose footprint meets it, per bounds
@@ -14,7 +18,7 @@ use embedded_graphics_core::prelude::{Pixel, Point};
 
 use crate::bounds::BoundsStrategy;
 use crate::error::Error;
-use crate::formats::{DefaultPrecision, Precision};
+use crate::formats::{DefaultPrecision, Precision, DEPTH_EMPTY};
 use crate::input::{PixelRect, SamplePattern, Triangle, Viewport};
 use crate::sample::{sample_test, ScreenPos};
 use crate::setup::{setup_with, Cull, Outcome, Setup};
@@ -36,6 +40,17 @@ pub struct PixelStats {
     pub tested: u32,
     /// of which covered
     pub covered: u32,
+    /// of the covered, written (the others were occluded by an earlier triangle's sample)
+    pub written: u32,
+}
+
+/// Outcome of the depth test of one covered sample.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DepthTest {
+    /// the slot was empty or held a larger depth: color and depth written
+    Written,
+    /// the slot held a depth ≤ this one, written by an earlier sample: nothing changed
+    Occluded,
 }
 
 /// Color and depth of `TW×TH` pixels with `S` samples each.
@@ -51,40 +66,45 @@ impl<const TW: usize, const TH: usize, const S: usize> TileBuffer<TW, TH, S> {
     pub fn new(clear: Rgb888) -> Self {
         TileBuffer {
             color: [[[clear; S]; TW]; TH],
-            depth: [[[i32::MAX; S]; TW]; TH],
+            depth: [[[DEPTH_EMPTY; S]; TW]; TH],
             stats: [[PixelStats::default(); TW]; TH],
         }
     }
 
-    /// Clear color, depth (to far) and per-pixel counters.
+    /// Clear color, depth (to [`DEPTH_EMPTY`]) and per-pixel counters.
     pub fn clear(&mut self, clear: Rgb888) {
         *self = Self::new(clear);
     }
 
-    /// Depth-test and write one sample; returns whether it was written. Out-of-range indices are
-    /// ignored (returns false).
-    pub fn write(&mut self, x: usize, y: usize, s: usize, color: Rgb888, depth: i32) -> bool {
-        let slot = self
-            .depth
+    /// Depth-test and write one sample (strictly less wins). `None`, with nothing changed, for
+    /// out-of-range indices or `depth == DEPTH_EMPTY` (not a depth the sample test outputs).
+    pub fn write(
+        &mut self,
+        x: usize,
+        y: usize,
+        s: usize,
+        color: Rgb888,
+        depth: i32,
+    ) -> Option<DepthTest> {
+        if depth == DEPTH_EMPTY {
+            return None;
+        }
+        let d = self.depth.get_mut(y)?.get_mut(x)?.get_mut(s)?;
+        if depth >= *d {
+            return Some(DepthTest::Occluded);
+        }
+        *d = depth;
+        if let Some(c) = self
+            .color
             .get_mut(y)
             .and_then(|r| r.get_mut(x))
-            .and_then(|p| p.get_mut(s));
-        match slot {
-            Some(d) if depth < *d => {
-                *d = depth;
-                if let Some(c) = self
-                    .color
-                    .get_mut(y)
-                    .and_then(|r| r.get_mut(x))
-                    .and_then(|p| p.get_mut(s))
-                {
-                    *c = color;
-                }
-                true
-            }
-            _ => false,
+            .and_then(|p| p.get_mut(s))
+        {
+            *c = color;
         }
+        Some(DepthTest::Written)
     }
+
 
     /// Stored depth of one sample (raw I8F24), if in range.
     pub fn depth(&self, x: usize, y: usize, s: usize) -> Option<i32> {
@@ -326,7 +346,17 @@ fn shade_cell<const TW: usize, const TH: usize, const S: usize>(
                 }
                 if let Some(h) = hit {
                     stats.samples_covered += 1;
-                    fb.write(tx, ty, si, color, h.depth);
+                    // In range (tx < TW, ty < TH, si < S = spp) and h.depth ≠ DEPTH_EMPTY.
+                    match fb.write(tx, ty, si, color, h.depth) {
+                        Some(DepthTest::Written) => {
+                            stats.samples_written += 1;
+                            if let Some(ps) = fb.stats.get_mut(ty).and_then(|r| r.get_mut(tx)) {
+                                ps.written += 1;
+                            }
+                        }
+                        Some(DepthTest::Occluded) => stats.samples_occluded += 1,
+                        None => {}
+                    }
                 }
             }
         }

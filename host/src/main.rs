@@ -186,12 +186,12 @@ fn run(cli: Cli) -> Result<()> {
             print!("{}", uvt_host::precision::stress_md(&rows));
             let bad: Vec<_> = rows
                 .iter()
-                .filter(|r| r.2.violations > 0 || r.2.beyond_bound > 0)
+                .filter(|r| r.2.violations > 0 || r.2.beyond_bound > 0 || r.2.lost > 0)
                 .map(|r| r.0.clone())
                 .collect();
             if !bad.is_empty() {
                 anyhow::bail!(
-                    "conservativeness or error-bound failures in: {}",
+                    "conservativeness, error-bound or lost-sample failures in: {}",
                     bad.join(", ")
                 );
             }

@@ -62,6 +62,9 @@ pub struct PrecRow {
     /// samples the core covers outside the reference's footprint or in a tile the reference
     /// skips (no finite t/u/v margin covers these)
     pub eps_outside: u64,
+    /// covered samples whose framebuffer slot was still empty and that were not written
+    /// (counted by [`lost_samples`], independently of the core's counters; must be 0)
+    pub lost: u64,
     #[serde(skip)]
     times: Vec<f64>,
     #[serde(skip)]
@@ -300,7 +303,7 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, accs
                             }
                         }
                         if let (Some(h), Some(z)) = (hf, hr) {
-                            if h.depth != i32::MAX && z.abs() < 128.0 {
+                            if h.depth != uvt_core::formats::DEPTH_FAR && z.abs() < 128.0 {
                                 let err = (h.depth as f64 - z * 16777216.0).abs();
                                 a[0].depth_lsb[0] = a[0].depth_lsb[0].max(err);
                                 a[0].depth_lsb[1] += err;
@@ -483,15 +486,69 @@ pub fn stress_row(scene: &Scene) -> PrecRow {
     one::<uvt_core::DefaultPrecision>(scene, &mut acc);
     let [mut row] = acc;
     finish(&mut row);
+    row.lost = lost_samples(scene).1;
     row
+}
+
+/// Covered samples that reach an empty framebuffer slot, and of those the ones not written:
+/// `(reached_empty, lost)`. Counted independently of the core's counters: every pixel gets its
+/// own cleared core `TileBuffer`; the triangles run in submission order over every sample of
+/// their footprint (no bounds: coverage is the sample test's alone); a covered sample whose slot
+/// still holds the clear value (depth and color) must afterwards hold its depth and color.
+pub fn lost_samples(scene: &Scene) -> (u64, u64) {
+    let pat = Pattern::new(scene.pattern, scene.spp, scene.seed);
+    let vp = scene.core_viewport();
+    let mut ops = Ops::default();
+    let setups: Vec<Setup> = scene
+        .tris
+        .iter()
+        .map(|t| t.to_core().expect("loaded scene is in the domain"))
+        .filter_map(|t| match uvt_core::setup(&t, vp, &mut ops) {
+            Outcome::Visible(s) => Some(s),
+            Outcome::Culled(_) => None,
+        })
+        .collect();
+    let black = uvt_core::Rgb888::new(0, 0, 0);
+    let white = uvt_core::Rgb888::new(255, 255, 255);
+    let spp = usize::from(pat.spp);
+    (0..vp.height())
+        .into_par_iter()
+        .map(|py| {
+            let (mut reached, mut lost) = (0u64, 0u64);
+            let mut fb = uvt_core::TileBuffer::<1, 1, 64>::new(black);
+            let mut ops = Ops::default();
+            for px in 0..vp.width() {
+                fb.clear(black);
+                for s in setups.iter().filter(|s| s.footprint.contains(px, py)) {
+                    for si in 0..spp {
+                        let q = &pat.quant[pat.index(px, py, si)];
+                        let pos = ScreenPos::of(px, py, q);
+                        let Some(h) = uvt_core::sample_test(s, pos, q, &mut ops) else {
+                            continue;
+                        };
+                        let empty = fb.depth(0, 0, si) == Some(uvt_core::formats::DEPTH_EMPTY)
+                            && fb.sample_color(0, 0, si) == Some(black);
+                        let _ = fb.write(0, 0, si, white, h.depth);
+                        if empty {
+                            reached += 1;
+                            let written = fb.depth(0, 0, si) == Some(h.depth)
+                                && fb.sample_color(0, 0, si) == Some(white);
+                            lost += u64::from(!written);
+                        }
+                    }
+                }
+            }
+            (reached, lost)
+        })
+        .reduce(|| (0, 0), |a, b| (a.0 + b.0, a.1 + b.1))
 }
 
 /// Markdown table of stress cases.
 pub fn stress_md(rows: &[(String, usize, PrecRow)]) -> String {
-    let mut s = String::from("| case | triangles | STE core / f64 | decisions ≠ f64 (rate) | max distance px | beyond d_q | depth err LSB max | violations |\n|---|---|---|---|---|---|---|---|\n");
+    let mut s = String::from("| case | triangles | STE core / f64 | decisions ≠ f64 (rate) | max distance px | beyond d_q | depth err LSB max | violations | covered but not written |\n|---|---|---|---|---|---|---|---|---|\n");
     for (name, n, r) in rows {
         s += &format!(
-            "| {name} | {n} | {:.2}% / {:.2}% | {} ({:.1e}) | {:.2e} | {} | {:.0} | {} |\n",
+            "| {name} | {n} | {:.2}% / {:.2}% | {} ({:.1e}) | {:.2e} | {} | {:.0} | {} | {} |\n",
             100.0 * r.ste[0],
             100.0 * r.ste[1],
             r.differ,
@@ -499,7 +556,8 @@ pub fn stress_md(rows: &[(String, usize, PrecRow)]) -> String {
             r.max_differ_px,
             r.beyond_bound,
             r.depth_lsb[0],
-            r.violations
+            r.violations,
+            r.lost
         );
     }
     s

@@ -4,6 +4,7 @@
 use uvt_core::bounds::BoundsStrategy;
 use uvt_core::setup::AxisBoxes;
 use uvt_core::*;
+use uvt_core::formats::{DEPTH_EMPTY, DEPTH_FAR, DEPTH_NEAR};
 use uvt_tests::*;
 
 #[track_caller]
@@ -361,18 +362,27 @@ fn sample_test_fill_rule_shared_edge() {
 #[test]
 fn tile_resolve_rounding_and_depth_test() {
     let mut fb = TileBuffer::<2, 1, 4>::new(Rgb888::new(0, 0, 0));
-    assert!(fb.write(0, 0, 0, Rgb888::new(255, 1, 1), 100));
-    assert!(fb.write(0, 0, 1, Rgb888::new(0, 1, 0), 100));
+    let (w, o) = (Some(DepthTest::Written), Some(DepthTest::Occluded));
+    assert_eq!(fb.write(0, 0, 0, Rgb888::new(255, 1, 1), 100), w);
+    assert_eq!(fb.write(0, 0, 1, Rgb888::new(0, 1, 0), 100), w);
     assert_eq!(fb.resolve(0, 0), Rgb888::new(64, 1, 0));
-    // depth test: strictly nearer wins
-    assert!(!fb.write(1, 0, 0, Rgb888::new(9, 9, 9), i32::MAX));
-    assert!(fb.write(1, 0, 0, Rgb888::new(9, 9, 9), 20));
-    assert!(!fb.write(1, 0, 0, Rgb888::new(7, 7, 7), 20));
-    assert!(fb.write(1, 0, 0, Rgb888::new(4, 4, 4), 5));
-    assert_eq!(fb.sample_color(1, 0, 0), Some(Rgb888::new(4, 4, 4)));
-    assert_eq!(fb.depth(1, 0, 0), Some(5));
+    // the empty value is not a depth: refused, slot unchanged
+    assert_eq!(fb.depth(1, 0, 0), Some(DEPTH_EMPTY));
+    assert_eq!(fb.write(1, 0, 0, Rgb888::new(9, 9, 9), DEPTH_EMPTY), None);
+    assert_eq!(fb.depth(1, 0, 0), Some(DEPTH_EMPTY));
+    // the far end is written into an empty slot
+    assert_eq!(fb.write(1, 0, 1, Rgb888::new(3, 3, 3), DEPTH_FAR), w);
+    assert_eq!(fb.write(1, 0, 1, Rgb888::new(2, 2, 2), DEPTH_FAR), o);
+    assert_eq!(fb.sample_color(1, 0, 1), Some(Rgb888::new(3, 3, 3)));
+    // depth test: strictly nearer wins, ties keep the first writer
+    assert_eq!(fb.write(1, 0, 0, Rgb888::new(9, 9, 9), 20), w);
+    assert_eq!(fb.write(1, 0, 0, Rgb888::new(7, 7, 7), 20), o);
+    assert_eq!(fb.write(1, 0, 0, Rgb888::new(4, 4, 4), 5), w);
+    assert_eq!(fb.write(1, 0, 0, Rgb888::new(6, 6, 6), DEPTH_NEAR), w);
+    assert_eq!(fb.sample_color(1, 0, 0), Some(Rgb888::new(6, 6, 6)));
+    assert_eq!(fb.depth(1, 0, 0), Some(DEPTH_NEAR));
     // out of range: refused, no panic
-    assert!(!fb.write(5, 5, 9, Rgb888::new(1, 1, 1), 0));
+    assert_eq!(fb.write(5, 5, 9, Rgb888::new(1, 1, 1), 0), None);
     assert_eq!(fb.depth(2, 0, 0), None);
 }
 
