@@ -131,12 +131,23 @@ pub struct DualAxis {
 }
 
 /// [`Laine2011`] coefficients: lens bounds per axis (defocus only), dual lines (motion only).
+/// Only [`Laine2011::prepare`] builds them from a [`Setup`], so their values stay in the ranges
+/// the per-tile arithmetic is proven for; read through the methods.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct LaineCoeffs {
-    /// `[x → u, y → v]`
-    pub lens: [Option<LensAxis>; 2],
-    /// `[x, y]`
-    pub dual: [Option<DualAxis>; 2],
+    lens: [Option<LensAxis>; 2],
+    dual: [Option<DualAxis>; 2],
+}
+
+impl LaineCoeffs {
+    /// Lens bounds `[x → u, y → v]`.
+    pub fn lens(&self) -> [Option<LensAxis>; 2] {
+        self.lens
+    }
+    /// Dual-space lines `[x, y]`.
+    pub fn dual(&self) -> [Option<DualAxis>; 2] {
+        self.dual
+    }
 }
 
 fn lens_axis(setup: &Setup, axis: usize, ops: &mut Ops) -> LensAxis {
@@ -242,9 +253,9 @@ impl BoundsStrategy for Laine2011 {
         };
         for (axis, &(p0, p1)) in xs.iter().enumerate() {
             if let Some(Some(l)) = c.lens.get(axis) {
-                let lens = lens_s(l, p0, p1, setup.prec.bnd, ops)?
+                let lens = lens_s(l, p0, p1, setup.prec.bnd(), ops)?
                     .s_to_lens()
-                    .round_out(setup.prec.tuv);
+                    .round_out(setup.prec.tuv());
                 if axis == 0 {
                     b.u = lens;
                 } else {
@@ -253,7 +264,7 @@ impl BoundsStrategy for Laine2011 {
             }
             if let Some(Some(d)) = c.dual.get(axis) {
                 b.t =
-                    b.t.meet(dual_t(d, p0, p1, ops)?.round_out(setup.prec.tuv))?;
+                    b.t.meet(dual_t(d, p0, p1, ops)?.round_out(setup.prec.tuv()))?;
             }
         }
         Some(b)

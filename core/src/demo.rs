@@ -36,15 +36,11 @@ const fn xs(mut x: u32) -> u32 {
     x
 }
 
-/// The sample table (integer hash; t ∈ [0, 1), u, v ∈ [-1, 1)).
+/// The sample table (integer hash; t ∈ [0, 1), u, v ∈ [-1, 1)). Built at compile time through
+/// the checked [`Sample::new`]: an out-of-domain value would stop the build (the `panic!` below
+/// runs only in const evaluation, never in the program).
 pub const SAMPLES: [Sample; NSAMPLES] = {
-    let mut out = [Sample {
-        sx: SubPixel::from_bits(0),
-        sy: SubPixel::from_bits(0),
-        u: Lens::from_bits(0),
-        v: Lens::from_bits(0),
-        t: Time::from_bits(0),
-    }; NSAMPLES];
+    let mut out = [Sample::ZERO; NSAMPLES];
     let mut x = 0x1234_5678u32;
     let mut i = 0;
     while i < NSAMPLES {
@@ -55,12 +51,16 @@ pub const SAMPLES: [Sample; NSAMPLES] = {
             r[k] = x;
             k += 1;
         }
-        out[i] = Sample {
-            sx: SubPixel::from_bits((r[0] >> 24) as u8),
-            sy: SubPixel::from_bits((r[1] >> 24) as u8),
-            u: Lens::from_bits((r[2] >> 15) as i32 - 65536),
-            v: Lens::from_bits((r[3] >> 15) as i32 - 65536),
-            t: Time::from_bits((r[4] >> 16) as i32),
+        // r >> 15 < 2^17 and r >> 16 < 2^16 fit i32; r >> 24 < 2^8 fits u8.
+        out[i] = match Sample::new(
+            SubPixel::from_bits((r[0] >> 24) as u8),
+            SubPixel::from_bits((r[1] >> 24) as u8),
+            Lens::from_bits((r[2] >> 15) as i32 - 65536),
+            Lens::from_bits((r[3] >> 15) as i32 - 65536),
+            Time::from_bits((r[4] >> 16) as i32),
+        ) {
+            Ok(s) => s,
+            Err(_) => panic!("demo sample table: value outside the sample domain"),
         };
         i += 1;
     }

@@ -29,6 +29,27 @@ impl fmt::Display for Field {
     }
 }
 
+/// Which coordinate of a sample.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SampleField {
+    /// shutter time t
+    T,
+    /// lens u
+    U,
+    /// lens v
+    V,
+}
+
+impl fmt::Display for SampleField {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            SampleField::T => "t",
+            SampleField::U => "u",
+            SampleField::V => "v",
+        })
+    }
+}
+
 /// Everything the core can refuse.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Error {
@@ -72,10 +93,19 @@ pub enum Error {
         /// number of samples supplied
         len: usize,
     },
-    /// A sample's t is outside [0, 1] or u/v outside [-1, 1].
+    /// A sample's t is outside [0, 1] or u/v outside [-1, 1] (refused by `Sample::new`).
     SampleOutOfDomain {
-        /// index in the table
-        index: usize,
+        /// which coordinate
+        field: SampleField,
+        /// its raw I16F16 bits
+        raw: i32,
+    },
+    /// An interval's ends are outside [-1, 1] (raw ±65536) or `lo > hi`.
+    Interval {
+        /// requested lower end, raw
+        lo: i32,
+        /// requested upper end, raw
+        hi: i32,
     },
     /// A sample's t, u or v has bits below the configured precision's t/u/v grid.
     SampleOffGrid {
@@ -126,9 +156,14 @@ impl fmt::Display for Error {
                 f,
                 "sample table: block {block}, spp {spp} need block*block*spp samples (1..=64 each), got {len}"
             ),
-            Error::SampleOutOfDomain { index } => {
-                write!(f, "sample {index}: t must be in [0,1] and u, v in [-1,1]")
-            }
+            Error::SampleOutOfDomain { field, raw } => write!(
+                f,
+                "sample {field} = raw {raw:#010x} ({raw}) is outside the domain (t in [0,1], u and v in [-1,1])"
+            ),
+            Error::Interval { lo, hi } => write!(
+                f,
+                "interval [{lo:#x}, {hi:#x}] (raw {lo}, {hi}): ends must satisfy -65536 <= lo <= hi <= 65536"
+            ),
             Error::SppMismatch { tile, pattern } => {
                 write!(f, "tile buffer has {tile} samples per pixel, the pattern {pattern}")
             }

@@ -76,13 +76,33 @@ pub const DEPTH_EDGE_BITS: u32 = 32;
 /// `Triangle::new_with` and `SamplePattern::new_with` refuse anything else). The sample test is
 /// exact on its inputs and the bounds round to the configuration's grids, so every output is the
 /// one a datapath of exactly these widths produces. The integer bits and the domain are fixed.
-pub trait Precision: Copy + Default + core::fmt::Debug + 'static {
+///
+/// The trait is sealed: [`Prec`] is its only implementor, whose const assertions keep every
+/// width inside the ranges the overflow proofs assume (a user impl with, say, 20 position
+/// fraction bits would break them). Implementing it outside the crate does not build:
+///
+/// ```compile_fail,E0277
+/// #[derive(Clone, Copy, Debug, Default)]
+/// struct Wider;
+/// impl uvt_core::Precision for Wider {
+///     const POS_FRAC: u32 = 20;
+///     const TUV_FRAC: u32 = 16;
+///     const BOUND_FRAC: u32 = 16;
+/// }
+/// ```
+pub trait Precision: sealed::Sealed + Copy + Default + core::fmt::Debug + 'static {
     /// fraction bits of positions and CoC (2..=16)
     const POS_FRAC: u32;
     /// fraction bits of t, u, v (2..=16)
     const TUV_FRAC: u32;
     /// fraction bits of the bounds' pixel coordinates (0..=16)
     const BOUND_FRAC: u32;
+}
+
+mod sealed {
+    /// Private supertrait of [`super::Precision`]: only this crate can implement it.
+    pub trait Sealed {}
+    impl<const POS: u32, const TUV: u32, const BND: u32> Sealed for super::Prec<POS, TUV, BND> {}
 }
 
 /// The precision with `POS`, `TUV` and `BND` fraction bits (checked at compile time).
@@ -107,18 +127,28 @@ impl<const POS: u32, const TUV: u32, const BND: u32> Precision for Prec<POS, TUV
 /// The documented default: 16 fraction bits everywhere.
 pub type DefaultPrecision = Prec<16, 16, 16>;
 
-/// The fraction bits of a [`Precision`], carried at run time by a setup.
+/// The fraction bits of a [`Precision`], carried at run time by a setup. Only built from a
+/// [`Precision`] ([`PrecisionBits::of`]), so `pos`, `tuv` ∈ 2..=16 and `bnd` ∈ 0..=16.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct PrecisionBits {
-    /// positions
-    pub pos: u32,
-    /// t, u, v
-    pub tuv: u32,
-    /// bound pixel coordinates
-    pub bnd: u32,
+    pos: u32,
+    tuv: u32,
+    bnd: u32,
 }
 
 impl PrecisionBits {
+    /// Fraction bits of positions (2..=16).
+    pub const fn pos(&self) -> u32 {
+        self.pos
+    }
+    /// Fraction bits of t, u, v (2..=16).
+    pub const fn tuv(&self) -> u32 {
+        self.tuv
+    }
+    /// Fraction bits of the bounds' pixel coordinates (0..=16).
+    pub const fn bnd(&self) -> u32 {
+        self.bnd
+    }
     /// The bits of `P`.
     pub const fn of<P: Precision>() -> PrecisionBits {
         PrecisionBits {

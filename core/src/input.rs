@@ -1,7 +1,7 @@
 //! Checked inputs: triangles, viewport, sample table. Constructors refuse anything outside the
 //! declared domain of `formats.rs`, so every later stage may rely on those ranges.
 
-use crate::error::{Error, Field};
+use crate::error::{Error, Field, SampleField};
 use crate::formats::{
     Coord, DefaultPrecision, Lens, Precision, SubPixel, Time, COORD_FRAC, COORD_LIMIT_RAW,
     MAX_VIEWPORT, TUV_FRAC, TUV_ONE,
@@ -223,19 +223,79 @@ impl Iterator for Cells {
     }
 }
 
-/// One sample of the table: sub-pixel position, lens point and time.
+/// One sample of the table: sub-pixel position, lens point and time. Only [`Sample::new`]
+/// builds one (or `Default`, all zero), so t ∈ [0, 1] and u, v ∈ [−1, 1] always hold.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
 pub struct Sample {
-    /// sub-pixel x in [0, 1)
-    pub sx: SubPixel,
-    /// sub-pixel y in [0, 1), downward
-    pub sy: SubPixel,
-    /// lens u in [-1, 1]
-    pub u: Lens,
-    /// lens v in [-1, 1]
-    pub v: Lens,
-    /// time in [0, 1]
-    pub t: Time,
+    sx: SubPixel,
+    sy: SubPixel,
+    u: Lens,
+    v: Lens,
+    t: Time,
+}
+
+impl Sample {
+    /// The sample at sub-pixel (0, 0), lens centre, t = 0 (equal to `Sample::default()`).
+    pub const ZERO: Sample = Sample {
+        sx: SubPixel::ZERO,
+        sy: SubPixel::ZERO,
+        u: Lens::ZERO,
+        v: Lens::ZERO,
+        t: Time::ZERO,
+    };
+
+    /// Checked constructor: t in [0, 1] (raw 0..=65536), u and v in [−1, 1] (raw ±65536); the
+    /// error names the coordinate and its raw bits. A `const fn`: in a `const` table an
+    /// out-of-domain value fails the build (`match … { Err(_) => panic!() }` in const context).
+    pub const fn new(
+        sx: SubPixel,
+        sy: SubPixel,
+        u: Lens,
+        v: Lens,
+        t: Time,
+    ) -> Result<Sample, Error> {
+        let (tr, ur, vr) = (t.to_bits(), u.to_bits(), v.to_bits());
+        if tr < 0 || tr > TUV_ONE {
+            return Err(Error::SampleOutOfDomain {
+                field: SampleField::T,
+                raw: tr,
+            });
+        }
+        if ur < -TUV_ONE || ur > TUV_ONE {
+            return Err(Error::SampleOutOfDomain {
+                field: SampleField::U,
+                raw: ur,
+            });
+        }
+        if vr < -TUV_ONE || vr > TUV_ONE {
+            return Err(Error::SampleOutOfDomain {
+                field: SampleField::V,
+                raw: vr,
+            });
+        }
+        Ok(Sample { sx, sy, u, v, t })
+    }
+
+    /// Sub-pixel x in [0, 1).
+    pub const fn sx(&self) -> SubPixel {
+        self.sx
+    }
+    /// Sub-pixel y in [0, 1), downward.
+    pub const fn sy(&self) -> SubPixel {
+        self.sy
+    }
+    /// Lens u in [−1, 1].
+    pub const fn u(&self) -> Lens {
+        self.u
+    }
+    /// Lens v in [−1, 1].
+    pub const fn v(&self) -> Lens {
+        self.v
+    }
+    /// Time in [0, 1].
+    pub const fn t(&self) -> Time {
+        self.t
+    }
 }
 
 /// The caller's sample table: an N×N pixel block with S samples per pixel, repeated over the
@@ -251,7 +311,8 @@ pub struct SamplePattern<'a> {
 pub const MAX_PATTERN: u16 = 64;
 
 impl<'a> SamplePattern<'a> {
-    /// Checked constructor: 1 ≤ N, S ≤ 64, `len = N²·S`, every t in [0,1], u and v in [-1,1].
+    /// Checked constructor: 1 ≤ N, S ≤ 64 and `len = N²·S` (every [`Sample`] is in the domain
+    /// by construction).
     pub fn new(block: u16, spp: u16, samples: &'a [Sample]) -> Result<Self, Error> {
         SamplePattern::new_with::<DefaultPrecision>(block, spp, samples)
     }
@@ -276,14 +337,6 @@ impl<'a> SamplePattern<'a> {
             return Err(shape);
         }
         for (index, s) in samples.iter().enumerate() {
-            let t = s.t.to_bits();
-            let ok_t = (0..=TUV_ONE).contains(&t);
-            let ok_uv = [s.u, s.v]
-                .iter()
-                .all(|l| (-TUV_ONE..=TUV_ONE).contains(&l.to_bits()));
-            if !(ok_t && ok_uv) {
-                return Err(Error::SampleOutOfDomain { index });
-            }
             if [s.t, s.u, s.v].iter().any(|x| x.to_bits() & grid != 0) {
                 return Err(Error::SampleOffGrid {
                     index,

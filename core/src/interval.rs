@@ -4,18 +4,34 @@
 //! and round the answer outward to the t/u/v grid (upper ends up, lower ends down). Every bound in
 //! `setup.rs` and `bounds.rs` is a conjunction of such linear constraints.
 
+use crate::error::Error;
 use crate::formats::{ceil_div, floor_div, TUV_FRAC, TUV_ONE};
 
 /// Inclusive interval `[lo, hi]` of raw t/u/v values (`TUV_FRAC` fraction bits); never empty.
+/// Invariant (kept by every constructor): `−TUV_ONE ≤ lo ≤ hi ≤ TUV_ONE`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Interval {
-    /// lower end, raw
-    pub lo: i32,
-    /// upper end, raw
-    pub hi: i32,
+    lo: i32,
+    hi: i32,
 }
 
 impl Interval {
+    /// Checked constructor: `−1 ≤ lo ≤ hi ≤ 1` (raw `−TUV_ONE ..= TUV_ONE`).
+    pub const fn new(lo: i32, hi: i32) -> Result<Interval, Error> {
+        if lo < -TUV_ONE || lo > TUV_ONE || hi < -TUV_ONE || hi > TUV_ONE || lo > hi {
+            return Err(Error::Interval { lo, hi });
+        }
+        Ok(Interval { lo, hi })
+    }
+    /// Lower end, raw.
+    pub const fn lo(&self) -> i32 {
+        self.lo
+    }
+    /// Upper end, raw.
+    pub const fn hi(&self) -> i32 {
+        self.hi
+    }
+
     /// t ∈ [0, 1] (or a lens parameter s ∈ [0, 1]).
     pub const UNIT: Interval = Interval { lo: 0, hi: TUV_ONE };
     /// u or v ∈ [-1, 1].
@@ -51,12 +67,15 @@ impl Interval {
         Interval { lo, hi }
     }
 
-    /// Map a lens parameter s ∈ [0, 1] to the lens coordinate u = 2s − 1 (exact).
+    /// Map a lens parameter s ∈ [0, 1] to the lens coordinate u = 2s − 1 (exact for s ∈ [0, 1];
+    /// the ends are clamped to [−1, 1], which only matters for an interval reaching below 0).
     #[inline]
     pub fn s_to_lens(self) -> Interval {
+        // |lo|, |hi| ≤ 2^16: 2·x − 2^16 ∈ [−3·2^16, 2^16], far inside i32.
+        let map = |x: i32| (2 * x - TUV_ONE).max(-TUV_ONE);
         Interval {
-            lo: 2 * self.lo - TUV_ONE,
-            hi: 2 * self.hi - TUV_ONE,
+            lo: map(self.lo),
+            hi: map(self.hi),
         }
     }
 }
@@ -112,17 +131,30 @@ pub fn solve_le(d: i128, n: i128) -> Option<Interval> {
 /// A precomputed constraint `s·d ≤ n(tile)` whose `d` is fixed per triangle: the two reciprocals
 /// `r_up = ceil(2^K/|d|)` and `r_dn = floor(2^K/|d|)` (K = `RECIP_SHIFT`) let each tile solve it
 /// with one multiply instead of a division (Laine 2011 §3.1, "u' = a·x − b").
+///
+/// Only [`RecipConstraint::new`] builds one, so the reciprocals always belong to `d`
+/// (`r_up`, `r_dn` ≤ 2^K), which the range argument of [`RecipConstraint::solve`] needs.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct RecipConstraint {
-    /// the fixed slope d (raw pixel units)
-    pub d: i64,
-    /// ceil(2^K / |d|), 0 when d = 0
-    pub r_up: i128,
-    /// floor(2^K / |d|), 0 when d = 0
-    pub r_dn: i128,
+    d: i64,
+    r_up: i128,
+    r_dn: i128,
 }
 
 impl RecipConstraint {
+    /// The fixed slope d (raw pixel units).
+    pub fn d(&self) -> i64 {
+        self.d
+    }
+    /// ceil(2^K / |d|), 0 when d = 0.
+    pub fn r_up(&self) -> i128 {
+        self.r_up
+    }
+    /// floor(2^K / |d|), 0 when d = 0.
+    pub fn r_dn(&self) -> i128 {
+        self.r_dn
+    }
+
     /// Precompute the reciprocals of `d` (setup, once per triangle).
     pub fn new(d: i64) -> RecipConstraint {
         let k = 1i128 << crate::formats::RECIP_SHIFT;

@@ -31,7 +31,7 @@ pub mod wide;
 
 pub use bounds::{BboxScan, BoundsStrategy, Laine2011, UvtBox};
 pub use embedded_graphics_core::pixelcolor::Rgb888;
-pub use error::{Error, Field};
+pub use error::{Error, Field, SampleField};
 pub use formats::{
     Coord, DefaultPrecision, Depth, Lens, Prec, Precision, PrecisionBits, SubPixel, Time,
 };

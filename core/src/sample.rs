@@ -38,9 +38,7 @@
 //! depth (D3D would clip such a hit by the near plane; here it stays visible only where
 //! nothing else is).
 
-use crate::formats::{
-    DEPTH_EDGE_BITS, DEPTH_FAR, DEPTH_FRAC, DEPTH_NEAR, SUBPIXEL_BITS, TUV_FRAC,
-};
+use crate::formats::{DEPTH_EDGE_BITS, DEPTH_FAR, DEPTH_FRAC, DEPTH_NEAR, SUBPIXEL_BITS, TUV_FRAC};
 use crate::input::{Sample, Viewport, C, W, X, Y, Z};
 use crate::setup::{Class, Setup};
 use crate::stats::Ops;
@@ -59,8 +57,8 @@ impl ScreenPos {
     /// Position of `sample` in pixel (`px`, `py`).
     pub fn of(px: u16, py: u16, sample: &Sample) -> ScreenPos {
         ScreenPos {
-            xs: ((px as u32) << SUBPIXEL_BITS) + sample.sx.to_bits() as u32,
-            ys: ((py as u32) << SUBPIXEL_BITS) + sample.sy.to_bits() as u32,
+            xs: ((px as u32) << SUBPIXEL_BITS) + sample.sx().to_bits() as u32,
+            ys: ((py as u32) << SUBPIXEL_BITS) + sample.sy().to_bits() as u32,
         }
     }
 }
@@ -89,8 +87,8 @@ pub struct Hit {
 /// ≤ 2^14 in real terms and |raw| ≤ 2^62 at 48 fraction bits.
 fn positions(setup: &Setup, s: &Sample, ops: &mut Ops) -> ([[i64; 4]; 3], u32) {
     let [v0, v1] = &setup.tri.v;
-    let t = s.t.to_bits() as i64;
-    let (u, v) = (s.u.to_bits() as i64, s.v.to_bits() as i64);
+    let t = s.t().to_bits() as i64;
+    let (u, v) = (s.u().to_bits() as i64, s.v().to_bits() as i64);
     let mut out = [[0i64; 4]; 3];
     let frac = match setup.class {
         Class::Static => {

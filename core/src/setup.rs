@@ -73,33 +73,78 @@ pub struct AxisBoxes {
 }
 
 /// Static in-focus edge data: normals `n_k = P_{k+1} × P_{k+2}` and `det`, raw 2·16 fraction bits.
+/// Built only by setup from a checked [`Triangle`], so |n| < 2^59 and `det_sign` is ±1.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct StaticEdges {
-    /// edge normals (a, b, c) per edge
-    pub n: [[i128; 3]; 3],
-    /// sign of P0·(P1×P2): −1 or 1 (0 is culled)
-    pub det_sign: i32,
+    pub(crate) n: [[i128; 3]; 3],
+    pub(crate) det_sign: i32,
 }
 
-/// Everything later stages need about one triangle.
+impl StaticEdges {
+    /// Edge normals (a, b, c) per edge.
+    pub fn n(&self) -> [[i128; 3]; 3] {
+        self.n
+    }
+    /// Sign of P0·(P1×P2): −1 or 1 (0 is culled).
+    pub fn det_sign(&self) -> i32 {
+        self.det_sign
+    }
+}
+
+/// Everything later stages need about one triangle. Built only by [`setup_with`] (or
+/// [`Setup::unculled`]) from a checked [`Triangle`] and [`Viewport`]; read through its methods,
+/// so no out-of-domain value (say a bound precision of 70 bits) can reach the bounds' shifts:
+///
+/// ```compile_fail,E0616
+/// fn widen(s: &mut uvt_core::Setup) {
+///     s.prec.bnd = 70;
+/// }
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Setup {
-    /// effects present
-    pub class: Class,
-    /// pixels to visit
-    pub footprint: PixelRect,
-    /// t span inside the frustum
-    pub span: Interval,
-    /// lens-corner boxes, `[x axis, y axis]`
-    pub axes: [AxisBoxes; 2],
-    /// the input triangle
-    pub tri: Triangle,
-    /// viewport
-    pub viewport: Viewport,
-    /// static in-focus edge data (class `Static` only)
-    pub edges: Option<StaticEdges>,
-    /// the precision this setup (and its bounds) use
-    pub prec: PrecisionBits,
+    pub(crate) class: Class,
+    pub(crate) footprint: PixelRect,
+    pub(crate) span: Interval,
+    pub(crate) axes: [AxisBoxes; 2],
+    pub(crate) tri: Triangle,
+    pub(crate) viewport: Viewport,
+    pub(crate) edges: Option<StaticEdges>,
+    pub(crate) prec: PrecisionBits,
+}
+
+impl Setup {
+    /// Effects present.
+    pub fn class(&self) -> Class {
+        self.class
+    }
+    /// Pixels to visit (inside the viewport).
+    pub fn footprint(&self) -> PixelRect {
+        self.footprint
+    }
+    /// t span inside the frustum.
+    pub fn span(&self) -> Interval {
+        self.span
+    }
+    /// Lens-corner boxes, `[x axis, y axis]`.
+    pub fn axes(&self) -> [AxisBoxes; 2] {
+        self.axes
+    }
+    /// The input triangle.
+    pub fn tri(&self) -> &Triangle {
+        &self.tri
+    }
+    /// Viewport.
+    pub fn viewport(&self) -> Viewport {
+        self.viewport
+    }
+    /// Static in-focus edge data (class `Static` only).
+    pub fn edges(&self) -> Option<StaticEdges> {
+        self.edges
+    }
+    /// The precision this setup (and its bounds) use.
+    pub fn prec(&self) -> PrecisionBits {
+        self.prec
+    }
 }
 
 /// Result of setup. (No heap in core, so the large variant stays inline.)
@@ -370,7 +415,7 @@ pub fn setup_with<P: Precision>(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> 
     let class = classify(tri);
     ops.setup += 30;
     let span = match frustum_span(tri, ops) {
-        Some(s) => s.round_out(prec.tuv),
+        Some(s) => s.round_out(prec.tuv()),
         None => return Outcome::Culled(Cull::Outside),
     };
     if degenerate(tri, class, ops) {
@@ -378,11 +423,11 @@ pub fn setup_with<P: Precision>(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> 
     }
     let (ew, eh) = (vp.w as i64, vp.h as i64);
     let axes = [
-        axis_boxes(tri, 0, ew, prec.bnd, ops),
-        axis_boxes(tri, 1, eh, prec.bnd, ops),
+        axis_boxes(tri, 0, ew, prec.bnd(), ops),
+        axis_boxes(tri, 1, eh, prec.bnd(), ops),
     ];
-    let (x0, x1) = axis_range(&axes[0], ew, prec.bnd);
-    let (y0, y1) = axis_range(&axes[1], eh, prec.bnd);
+    let (x0, x1) = axis_range(&axes[0], ew, prec.bnd());
+    let (y0, y1) = axis_range(&axes[1], eh, prec.bnd());
     let footprint = PixelRect { x0, y0, x1, y1 };
     if footprint.is_empty() {
         return Outcome::Culled(Cull::Outside);

@@ -18,8 +18,8 @@ use embedded_graphics_core::prelude::{Pixel, Point};
 
 use crate::bounds::BoundsStrategy;
 use crate::error::Error;
-use crate::formats::{DefaultPrecision, Precision, DEPTH_EMPTY};
-use crate::input::{PixelRect, SamplePattern, Triangle, Viewport};
+use crate::formats::{DefaultPrecision, Precision, DEPTH_EMPTY, MAX_VIEWPORT};
+use crate::input::{PixelRect, SamplePattern, Triangle, Viewport, MAX_PATTERN};
 use crate::sample::{sample_test, ScreenPos};
 use crate::setup::{setup_with, Cull, Outcome, Setup};
 use crate::stats::{Ops, Stats};
@@ -54,6 +54,32 @@ pub enum DepthTest {
 }
 
 /// Color and depth of `TW×TH` pixels with `S` samples each.
+///
+/// Sizes are checked at compile time: `1 ≤ TW, TH ≤ 2048` (the render loop walks the screen in
+/// `u16` steps of `TW`, `TH`; a zero step would never advance) and `1 ≤ S ≤ 64` (the pattern's
+/// limit). A buffer outside these fails to build:
+///
+/// ```
+/// use uvt_core::{Rgb888, TileBuffer};
+/// let fb = TileBuffer::<8, 8, 4>::new(Rgb888::new(0, 0, 0));
+/// assert_eq!(fb.depth(7, 7, 3), Some(uvt_core::formats::DEPTH_EMPTY));
+/// ```
+/// ```compile_fail,E0080
+/// use uvt_core::{Rgb888, TileBuffer};
+/// let fb = TileBuffer::<0, 8, 4>::new(Rgb888::new(0, 0, 0));
+/// ```
+/// ```compile_fail,E0080
+/// use uvt_core::{Rgb888, TileBuffer};
+/// let fb = TileBuffer::<8, 0, 4>::new(Rgb888::new(0, 0, 0));
+/// ```
+/// ```compile_fail,E0080
+/// use uvt_core::{Rgb888, TileBuffer};
+/// let fb = TileBuffer::<8, 8, 0>::new(Rgb888::new(0, 0, 0));
+/// ```
+/// ```compile_fail,E0080
+/// use uvt_core::{Rgb888, TileBuffer};
+/// let fb = TileBuffer::<4096, 1, 1>::new(Rgb888::new(0, 0, 0));
+/// ```
 #[derive(Clone, Debug)]
 pub struct TileBuffer<const TW: usize, const TH: usize, const S: usize> {
     color: [[[Rgb888; S]; TW]; TH],
@@ -62,8 +88,22 @@ pub struct TileBuffer<const TW: usize, const TH: usize, const S: usize> {
 }
 
 impl<const TW: usize, const TH: usize, const S: usize> TileBuffer<TW, TH, S> {
-    /// A cleared buffer.
+    /// A cleared buffer. Fails to build unless `1 ≤ TW, TH ≤ 2048` and `1 ≤ S ≤ 64`.
     pub fn new(clear: Rgb888) -> Self {
+        const {
+            assert!(
+                TW >= 1 && TW <= MAX_VIEWPORT as usize,
+                "TileBuffer: TW must be 1..=2048"
+            );
+            assert!(
+                TH >= 1 && TH <= MAX_VIEWPORT as usize,
+                "TileBuffer: TH must be 1..=2048"
+            );
+            assert!(
+                S >= 1 && S <= MAX_PATTERN as usize,
+                "TileBuffer: S must be 1..=64"
+            );
+        }
         TileBuffer {
             color: [[[clear; S]; TW]; TH],
             depth: [[[DEPTH_EMPTY; S]; TW]; TH],
@@ -104,7 +144,6 @@ impl<const TW: usize, const TH: usize, const S: usize> TileBuffer<TW, TH, S> {
         }
         Some(DepthTest::Written)
     }
-
 
     /// Stored depth of one sample (raw I8F24), if in range.
     pub fn depth(&self, x: usize, y: usize, s: usize) -> Option<i32> {
@@ -334,7 +373,7 @@ fn shade_cell<const TW: usize, const TH: usize, const S: usize>(
         for px in cell.x0..cell.x1 {
             let (tx, ty) = ((px - screen.x0) as usize, (py - screen.y0) as usize);
             for (si, s) in pattern.pixel(px, py).iter().enumerate() {
-                if !uvt.contains(s.u.to_bits(), s.v.to_bits(), s.t.to_bits()) {
+                if !uvt.contains(s.u().to_bits(), s.v().to_bits(), s.t().to_bits()) {
                     continue;
                 }
                 stats.samples_tested += 1;

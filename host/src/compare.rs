@@ -104,7 +104,7 @@ pub fn compare(tris: &[SceneTri], core: &[Triangle], vp: Viewport, pat: &Pattern
             let mut d = CoverageDiff::default();
             let mut ops = Default::default();
             let fp_fixed = match uvt_core::setup(ct, vp, &mut ops) {
-                uvt_core::Outcome::Visible(s) => Some(s.footprint),
+                uvt_core::Outcome::Visible(s) => Some(s.footprint()),
                 _ => None,
             };
             let fp_ref = reference::setup::setup(st, v).ok().map(|s| s.footprint);

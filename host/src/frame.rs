@@ -95,24 +95,24 @@ where
         match uvt_core::setup_with::<P>(&self.tris[i], self.vp, ops) {
             Outcome::Visible(s) => {
                 let c = self.strat.prepare(&s, ops);
-                SetupOut::Visible((s, c), s.class)
+                SetupOut::Visible((s, c), s.class())
             }
             Outcome::Culled(c) => SetupOut::Culled(c),
         }
     }
     fn footprint(&self, s: &Self::Setup) -> PixelRect {
-        s.0.footprint
+        s.0.footprint()
     }
     fn bounds(&self, s: &Self::Setup, cell: PixelRect, ops: &mut Ops) -> Option<Self::Bounds> {
         self.strat.tile(&s.0, &s.1, cell, ops)
     }
     fn inside(&self, b: &Self::Bounds, idx: usize) -> bool {
         let q = &self.pattern.quant[idx];
-        b.contains(q.u.to_bits(), q.v.to_bits(), q.t.to_bits())
+        b.contains(q.u().to_bits(), q.v().to_bits(), q.t().to_bits())
     }
     fn uvt(&self, idx: usize) -> [f64; 3] {
         let q = &self.pattern.quant[idx];
-        [q.u.to_num(), q.v.to_num(), q.t.to_num()]
+        [q.u().to_num(), q.v().to_num(), q.t().to_num()]
     }
     fn test(&self, s: &Self::Setup, px: u16, py: u16, idx: usize, ops: &mut Ops) -> Option<f64> {
         let q = &self.pattern.quant[idx];
@@ -123,7 +123,7 @@ where
         i32::MAX as f64
     }
     fn ranges(&self, b: &Self::Bounds) -> [(f64, f64); 3] {
-        let r = |i: uvt_core::Interval| (i.lo as f64 / 65536.0, i.hi as f64 / 65536.0);
+        let r = |i: uvt_core::Interval| (i.lo() as f64 / 65536.0, i.hi() as f64 / 65536.0);
         [r(b.u), r(b.v), r(b.t)]
     }
 }

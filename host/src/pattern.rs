@@ -28,13 +28,14 @@ pub struct Pattern {
 pub fn quantize(s: &[f64; 5]) -> Sample {
     let sub = |x: f64| SubPixel::from_bits((x * 256.0).floor().clamp(0.0, 255.0) as u8);
     let tuv = |x: f64, lo: f64| (x * 65536.0).round().clamp(lo * 65536.0, 65536.0) as i32;
-    Sample {
-        sx: sub(s[0]),
-        sy: sub(s[1]),
-        u: Lens::from_bits(tuv(s[2], -1.0)),
-        v: Lens::from_bits(tuv(s[3], -1.0)),
-        t: Time::from_bits(tuv(s[4], 0.0)),
-    }
+    Sample::new(
+        sub(s[0]),
+        sub(s[1]),
+        Lens::from_bits(tuv(s[2], -1.0)),
+        Lens::from_bits(tuv(s[3], -1.0)),
+        Time::from_bits(tuv(s[4], 0.0)),
+    )
+    .expect("clamped to the sample domain")
 }
 
 impl Pattern {
@@ -100,11 +101,15 @@ impl Pattern {
         let quant = self
             .quant
             .iter()
-            .map(|s| Sample {
-                u: snap(s.u, -65536),
-                v: snap(s.v, -65536),
-                t: snap(s.t, 0),
-                ..*s
+            .map(|s| {
+                Sample::new(
+                    s.sx(),
+                    s.sy(),
+                    snap(s.u(), -65536),
+                    snap(s.v(), -65536),
+                    snap(s.t(), 0),
+                )
+                .expect("snapped inside the sample domain")
             })
             .collect();
         Pattern {

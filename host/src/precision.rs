@@ -238,7 +238,7 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, accs
             };
             let rf = reference::setup::setup(st, v).ok();
             let Some(region) = crate::compare::footprint_union(
-                fx.as_ref().map(|x| x.0.footprint),
+                fx.as_ref().map(|x| x.0.footprint()),
                 rf.as_ref().map(|x| x.footprint),
             ) else {
                 return a;
@@ -260,8 +260,8 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, accs
                     boxes.clear();
                     for (ti, &bt) in tiles.iter().enumerate() {
                         let fbox = fx.as_ref().and_then(|(x, c)| {
-                            x.footprint.contains(px, py).then(|| {
-                                Laine2011.tile(x, c, cell_of(px, py, x.footprint, bt), &mut ops)
+                            x.footprint().contains(px, py).then(|| {
+                                Laine2011.tile(x, c, cell_of(px, py, x.footprint(), bt), &mut ops)
                             })
                         });
                         let rbox = rf.as_ref().and_then(|x| {
@@ -277,7 +277,7 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, accs
                         {
                             let w = [(fb.t, rb.t), (fb.u, rb.u), (fb.v, rb.v)];
                             for (k, (fi, ri)) in w.iter().enumerate() {
-                                let d = (fi.hi - fi.lo) as f64 / 65536.0 - (ri.1 - ri.0);
+                                let d = (fi.hi() - fi.lo()) as f64 / 65536.0 - (ri.1 - ri.0);
                                 a[ti].slack_mean[k] += d;
                                 a[ti].slack_max[k] = a[ti].slack_max[k].max(d);
                             }
@@ -313,7 +313,7 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, accs
                         if hf.is_none() {
                             continue;
                         }
-                        let (u, vv, t) = (q.u.to_bits(), q.v.to_bits(), q.t.to_bits());
+                        let (u, vv, t) = (q.u().to_bits(), q.v().to_bits(), q.t().to_bits());
                         for (ti, (fbox, rbox)) in boxes.iter().enumerate() {
                             match fbox {
                                 Some(Some(b)) if b.contains(u, vv, t) => {}
@@ -519,7 +519,7 @@ pub fn lost_samples(scene: &Scene) -> (u64, u64) {
             let mut ops = Ops::default();
             for px in 0..vp.width() {
                 fb.clear(black);
-                for s in setups.iter().filter(|s| s.footprint.contains(px, py)) {
+                for s in setups.iter().filter(|s| s.footprint().contains(px, py)) {
                     for si in 0..spp {
                         let q = &pat.quant[pat.index(px, py, si)];
                         let pos = ScreenPos::of(px, py, q);

@@ -101,15 +101,30 @@ pub fn dump(t: &Triangle) -> String {
     s
 }
 
+/// A sample from raw bits (sub-pixel x, y; u, v, t), through the checked `Sample::new`; panics
+/// (test helper) naming the value if it is outside the domain.
+pub fn sample_raw(sx: u8, sy: u8, u: i32, v: i32, t: i32) -> Sample {
+    Sample::new(
+        SubPixel::from_bits(sx),
+        SubPixel::from_bits(sy),
+        Lens::from_bits(u),
+        Lens::from_bits(v),
+        Time::from_bits(t),
+    )
+    .unwrap_or_else(|e| panic!("test sample ({sx}, {sy}, {u}, {v}, {t}): {e}"))
+}
+
 /// A random sample table (block × block pixels × spp), quantized to the core's formats.
 pub fn random_samples(rng: &mut Rng, block: u16, spp: u16) -> Vec<Sample> {
     (0..block as usize * block as usize * spp as usize)
-        .map(|_| Sample {
-            sx: SubPixel::from_bits(rng.below(256) as u8),
-            sy: SubPixel::from_bits(rng.below(256) as u8),
-            u: Lens::from_bits(rng.below(2 * 65536 + 1) as i32 - 65536),
-            v: Lens::from_bits(rng.below(2 * 65536 + 1) as i32 - 65536),
-            t: Time::from_bits(rng.below(65537) as i32),
+        .map(|_| {
+            sample_raw(
+                rng.below(256) as u8,
+                rng.below(256) as u8,
+                rng.below(2 * 65536 + 1) as i32 - 65536,
+                rng.below(2 * 65536 + 1) as i32 - 65536,
+                rng.below(65537) as i32,
+            )
         })
         .collect()
 }
@@ -121,12 +136,11 @@ pub fn grid_samples(rng: &mut Rng, block: u16, spp: u16) -> Vec<Sample> {
         Lens::from_bits(lo + rng.below(5) as i32 * 16384 * if lo < 0 { 2 } else { 1 })
     };
     (0..block as usize * block as usize * spp as usize)
-        .map(|_| Sample {
-            sx: SubPixel::from_bits(if rng.below(2) == 0 { 0 } else { 128 }),
-            sy: SubPixel::from_bits(if rng.below(2) == 0 { 0 } else { 128 }),
-            u: q(rng, -65536),
-            v: q(rng, -65536),
-            t: q(rng, 0),
+        .map(|_| {
+            let sx = if rng.below(2) == 0 { 0 } else { 128 };
+            let sy = if rng.below(2) == 0 { 0 } else { 128 };
+            let (u, v, t) = (q(rng, -65536), q(rng, -65536), q(rng, 0));
+            sample_raw(sx, sy, u.to_bits(), v.to_bits(), t.to_bits())
         })
         .collect()
 }
@@ -135,14 +149,14 @@ pub fn grid_samples(rng: &mut Rng, block: u16, spp: u16) -> Vec<Sample> {
 pub fn dump_sample(px: u16, py: u16, s: &Sample) -> String {
     format!(
         "pixel ({px},{py}) sx {} sy {} u {:.6} ({:#x}) v {:.6} ({:#x}) t {:.6} ({:#x})",
-        s.sx.to_bits(),
-        s.sy.to_bits(),
-        s.u.to_num::<f64>(),
-        s.u.to_bits(),
-        s.v.to_num::<f64>(),
-        s.v.to_bits(),
-        s.t.to_num::<f64>(),
-        s.t.to_bits()
+        s.sx().to_bits(),
+        s.sy().to_bits(),
+        s.u().to_num::<f64>(),
+        s.u().to_bits(),
+        s.v().to_num::<f64>(),
+        s.v().to_bits(),
+        s.t().to_num::<f64>(),
+        s.t().to_bits()
     )
 }
 
@@ -186,9 +200,9 @@ pub fn check_conservative_with<B: BoundsStrategy, P: uvt_core::Precision>(
                     x1: px - px % bt + bt,
                     y1: py - py % bt + bt,
                 }
-                .intersect(&s.footprint);
+                .intersect(&s.footprint());
                 (
-                    s.footprint.contains(px, py),
+                    s.footprint().contains(px, py),
                     if cell.is_empty() {
                         None
                     } else {
@@ -207,12 +221,12 @@ pub fn check_conservative_with<B: BoundsStrategy, P: uvt_core::Precision>(
                     Some((false, _)) => Some("pixel outside the footprint".to_string()),
                     Some((true, None)) => Some(format!("{}x{bt} tile bounds empty", bt)),
                     Some((true, Some(b))) => {
-                        (!b.contains(smp.u.to_bits(), smp.v.to_bits(), smp.t.to_bits()))
+                        (!b.contains(smp.u().to_bits(), smp.v().to_bits(), smp.t().to_bits()))
                             .then(|| format!("outside tile box {b:?}"))
                     }
                 };
                 if let Some(why) = why {
-                    let fp = visible.as_ref().map(|(s, _)| s.footprint);
+                    let fp = visible.as_ref().map(|(s, _)| s.footprint());
                     return Err(format!(
                         "conservativeness violated ({}, tile {bt}): {why}\n  sample {si}: {}\n  footprint {fp:?}\n  viewport {}x{}\n{}",
                         strat.name(), dump_sample(px, py, smp), vp.width(), vp.height(), dump(t)
@@ -353,11 +367,14 @@ pub fn snap_samples<P: uvt_core::Precision>(s: &[Sample]) -> Vec<Sample> {
         Lens::from_bits((((x.to_bits() + step / 2).div_euclid(step)) * step).clamp(lo, 65536))
     };
     s.iter()
-        .map(|x| Sample {
-            u: q(x.u, -65536),
-            v: q(x.v, -65536),
-            t: q(x.t, 0),
-            ..*x
+        .map(|x| {
+            sample_raw(
+                x.sx().to_bits(),
+                x.sy().to_bits(),
+                q(x.u(), -65536).to_bits(),
+                q(x.v(), -65536).to_bits(),
+                q(x.t(), 0).to_bits(),
+            )
         })
         .collect()
 }

@@ -4,7 +4,7 @@
 //! the buffer clears to, and the strict depth test dropped them.
 
 use embedded_graphics_core::pixelcolor::RgbColor;
-use uvt_core::{Laine2011, Rgb888, Renderer, SamplePattern};
+use uvt_core::{Laine2011, Renderer, Rgb888, SamplePattern};
 use uvt_tests::*;
 
 const CLEAR: Rgb888 = Rgb888::new(0, 0, 0);
@@ -47,7 +47,12 @@ fn far_saturated_depth_is_written() {
     .unwrap();
     assert!(covered > 0, "seed {}: the triangle covers samples", seed());
     let st = r.stats;
-    assert_eq!(st.samples_written, st.samples_covered, "seed {}: {st:?}", seed());
+    assert_eq!(
+        st.samples_written,
+        st.samples_covered,
+        "seed {}: {st:?}",
+        seed()
+    );
     assert_eq!(st.samples_occluded, 0, "seed {}: {st:?}", seed());
     assert_eq!(
         drawn_px,
@@ -66,7 +71,10 @@ fn crossing_camera_plane_loses_nothing() {
     let scene = uvt_host::scene::Scene::load(&path).unwrap();
     let (reached, lost) = uvt_host::precision::lost_samples(&scene);
     assert!(reached > 0, "the scene covers samples");
-    assert_eq!(lost, 0, "{lost} of {reached} covered samples reaching an empty slot were lost");
+    assert_eq!(
+        lost, 0,
+        "{lost} of {reached} covered samples reaching an empty slot were lost"
+    );
 }
 
 /// Overlapping triangles at different depths, one at the far saturation: covered = written +
@@ -82,10 +90,22 @@ fn covered_is_written_plus_occluded() {
         tri(v, v)
     };
     let prims = [
-        uvt_core::Prim { tri: mk(0.5, 0.0), color: RED },
-        uvt_core::Prim { tri: mk(0.25, 0.2), color: Rgb888::new(0, 255, 0) },
-        uvt_core::Prim { tri: mk(300.0, -0.2), color: Rgb888::new(0, 0, 255) },
-        uvt_core::Prim { tri: mk(0.5, 0.0), color: Rgb888::new(9, 9, 9) },
+        uvt_core::Prim {
+            tri: mk(0.5, 0.0),
+            color: RED,
+        },
+        uvt_core::Prim {
+            tri: mk(0.25, 0.2),
+            color: Rgb888::new(0, 255, 0),
+        },
+        uvt_core::Prim {
+            tri: mk(300.0, -0.2),
+            color: Rgb888::new(0, 0, 255),
+        },
+        uvt_core::Prim {
+            tri: mk(0.5, 0.0),
+            color: Rgb888::new(9, 9, 9),
+        },
     ];
     let vp = uvt_core::Viewport::new(16, 16).unwrap();
     let mut rng = Rng(seed());
@@ -99,17 +119,42 @@ fn covered_is_written_plus_occluded() {
     })
     .unwrap();
     let st = r.stats;
-    assert!(st.samples_occluded > 0 && st.samples_written > 0, "seed {}: {st:?}", seed());
-    assert_eq!(st.samples_covered, st.samples_written + st.samples_occluded, "seed {}: {st:?}", seed());
-    assert_eq!((pw, pc), (st.samples_written, st.samples_covered), "seed {}", seed());
+    assert!(
+        st.samples_occluded > 0 && st.samples_written > 0,
+        "seed {}: {st:?}",
+        seed()
+    );
+    assert_eq!(
+        st.samples_covered,
+        st.samples_written + st.samples_occluded,
+        "seed {}: {st:?}",
+        seed()
+    );
+    assert_eq!(
+        (pw, pc),
+        (st.samples_written, st.samples_covered),
+        "seed {}",
+        seed()
+    );
     // The last triangle repeats the first one's depth exactly: first writer keeps ties, so it is
     // occluded wherever the first triangle is, i.e. everywhere it covers.
-    let tie = [prims[0], uvt_core::Prim { tri: prims[0].tri, color: Rgb888::new(0, 0, 255) }];
+    let tie = [
+        prims[0],
+        uvt_core::Prim {
+            tri: prims[0].tri,
+            color: Rgb888::new(0, 0, 255),
+        },
+    ];
     let mut r = Renderer::<Laine2011, 2>::new(Laine2011, vp, &tie).unwrap();
     let mut blue = 0;
     r.render_with::<8, 8, 4>(&pat, 2, CLEAR, |_, _, c, _| blue += u32::from(c.b()))
         .unwrap();
     let st = r.stats;
     assert_eq!(blue, 0, "seed {}: {st:?}", seed());
-    assert_eq!(st.samples_written, st.samples_occluded, "seed {}: {st:?}", seed());
+    assert_eq!(
+        st.samples_written,
+        st.samples_occluded,
+        "seed {}: {st:?}",
+        seed()
+    );
 }

@@ -71,23 +71,66 @@ fn viewport_and_pattern_errors() {
         SamplePattern::new(1, 65, &[s; 65]),
         Err(Error::PatternShape { .. })
     ));
-    let mut bad = [s; 4];
-    bad[2].t = Time::from_bits(-1);
-    assert_eq!(
-        SamplePattern::new(1, 4, &bad).unwrap_err(),
-        Error::SampleOutOfDomain { index: 2 }
-    );
-    bad[2].t = Time::from_bits(65537);
-    assert_eq!(
-        SamplePattern::new(1, 4, &bad).unwrap_err(),
-        Error::SampleOutOfDomain { index: 2 }
-    );
-    let mut bad = [s; 4];
-    bad[3].u = Lens::from_bits(65537);
-    assert_eq!(
-        SamplePattern::new(1, 4, &bad).unwrap_err(),
-        Error::SampleOutOfDomain { index: 3 }
-    );
+}
+
+/// `Sample::new` refuses t outside [0, 1] and u, v outside [-1, 1], naming field and raw bits;
+/// the ends of the domain are accepted. (Before, `Sample` had public fields and a t = 256
+/// reached the sample test's 2^70 products with no error.)
+#[test]
+fn sample_constructor_checks_each_field() {
+    let z = SubPixel::from_bits(0);
+    let mk = |u: i32, v: i32, t: i32| {
+        Sample::new(
+            z,
+            z,
+            Lens::from_bits(u),
+            Lens::from_bits(v),
+            Time::from_bits(t),
+        )
+    };
+    for (u, v, t) in [(-65536, -65536, 0), (65536, 65536, 65536), (0, 0, 1)] {
+        let s = mk(u, v, t).unwrap();
+        assert_eq!(
+            (s.u().to_bits(), s.v().to_bits(), s.t().to_bits()),
+            (u, v, t)
+        );
+    }
+    let cases = [
+        ((0, 0, -1), SampleField::T, -1),
+        ((0, 0, 65537), SampleField::T, 65537),
+        ((0, 0, 256 << 16), SampleField::T, 256 << 16),
+        ((0, 0, i32::MIN), SampleField::T, i32::MIN),
+        ((65537, 0, 0), SampleField::U, 65537),
+        ((-65537, 0, 0), SampleField::U, -65537),
+        ((0, 65537, 0), SampleField::V, 65537),
+        ((0, i32::MIN, 0), SampleField::V, i32::MIN),
+    ];
+    for ((u, v, t), field, raw) in cases {
+        let e = mk(u, v, t).unwrap_err();
+        assert_eq!(
+            e,
+            Error::SampleOutOfDomain { field, raw },
+            "u={u} v={v} t={t}"
+        );
+        let msg = e.to_string();
+        assert!(msg.contains(&format!("{field} = raw")), "{msg}");
+        assert!(msg.contains(&format!("{raw}")), "{msg}");
+    }
+}
+
+/// `Interval::new` keeps -1 <= lo <= hi <= 1 (raw); the accessors return what was given.
+#[test]
+fn interval_constructor_checks_its_invariant() {
+    let i = Interval::new(-65536, 65536).unwrap();
+    assert_eq!((i.lo(), i.hi()), (-65536, 65536));
+    assert_eq!(Interval::new(5, 5).unwrap().lo(), 5);
+    for (lo, hi) in [(1, 0), (-65537, 0), (0, 65537), (i32::MIN, i32::MAX)] {
+        assert_eq!(
+            Interval::new(lo, hi),
+            Err(Error::Interval { lo, hi }),
+            "{lo} {hi}"
+        );
+    }
 }
 
 #[test]
@@ -159,13 +202,7 @@ fn sample() -> impl Strategy<Value = Sample> {
         -65536i32..=65536,
         0i32..=65536,
     )
-        .prop_map(|(sx, sy, u, v, t)| Sample {
-            sx: SubPixel::from_bits(sx),
-            sy: SubPixel::from_bits(sy),
-            u: Lens::from_bits(u),
-            v: Lens::from_bits(v),
-            t: Time::from_bits(t),
-        })
+        .prop_map(|(sx, sy, u, v, t)| sample_raw(sx, sy, u, v, t))
 }
 
 proptest! {
@@ -181,7 +218,7 @@ proptest! {
         let mut ops = Ops::default();
         if let Outcome::Visible(s) = setup(&t, vp, &mut ops) {
             let co = Laine2011.prepare(&s, &mut ops);
-            let fp = s.footprint;
+            let fp = s.footprint();
             for bt in [1u16, 2, 4, 8] {
                 for (x, y) in [(fp.x0, fp.y0), (fp.x1 - 1, fp.y1 - 1), ((fp.x0 + fp.x1) / 2, (fp.y0 + fp.y1) / 2)] {
                     let cell = PixelRect { x0: x - x % bt, y0: y - y % bt, x1: x - x % bt + bt, y1: y - y % bt + bt }.intersect(&fp);

@@ -78,29 +78,22 @@ fn precision_grids_are_enforced() {
         "the default accepts every I16F16 value"
     );
     let mut s = [Sample::default(); 1];
-    s[0].t = uvt_core::Time::from_bits(64);
+    s[0] = uvt_tests::sample_raw(0, 0, 0, 0, 64);
     assert!(SamplePattern::new_with::<P>(1, 1, &s).is_ok());
-    s[0].t = uvt_core::Time::from_bits(65);
+    s[0] = uvt_tests::sample_raw(0, 0, 0, 0, 65);
     assert_eq!(
         SamplePattern::new_with::<P>(1, 1, &s).unwrap_err(),
         Error::SampleOffGrid { index: 0, frac: 10 }
     );
     // Outward rounding to a coarser grid: 4 fraction bits = steps of 4096 raw.
-    let i = Interval { lo: 5000, hi: 5001 }.round_out(4);
-    assert_eq!(i, Interval { lo: 4096, hi: 8192 });
+    let i = Interval::new(5000, 5001).unwrap().round_out(4);
+    assert_eq!(i, Interval::new(4096, 8192).unwrap());
     assert_eq!(
-        Interval {
-            lo: -65536,
-            hi: 65535
-        }
-        .round_out(4),
-        Interval {
-            lo: -65536,
-            hi: 65536
-        }
+        Interval::new(-65536, 65535).unwrap().round_out(4),
+        Interval::new(-65536, 65536).unwrap()
     );
     assert_eq!(
-        Interval { lo: 7, hi: 9 }.round_out(16),
-        Interval { lo: 7, hi: 9 }
+        Interval::new(7, 9).unwrap().round_out(16),
+        Interval::new(7, 9).unwrap()
     );
 }

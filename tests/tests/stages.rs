@@ -2,9 +2,9 @@
 //! in the comment above it; a failure prints inputs, expected and observed as decimal and hex.
 
 use uvt_core::bounds::BoundsStrategy;
+use uvt_core::formats::{DEPTH_EMPTY, DEPTH_FAR, DEPTH_NEAR};
 use uvt_core::setup::AxisBoxes;
 use uvt_core::*;
-use uvt_core::formats::{DEPTH_EMPTY, DEPTH_FAR, DEPTH_NEAR};
 use uvt_tests::*;
 
 #[track_caller]
@@ -40,14 +40,14 @@ fn setup_static_boxes_and_footprint() {
         [0.0, 0.5, 0.25, 1.0, 0.0],
     ]);
     let s = visible(&t, vp);
-    assert_eq!(s.class, Class::Static);
+    assert_eq!(s.class(), Class::Static);
     let b = AxisBoxes {
         lo: Some([4 << 16; 2]),
         hi: Some([12 << 16; 2]),
     };
-    assert_eq!(s.axes, [b, b], "\n{}", dump(&t));
+    assert_eq!(s.axes(), [b, b], "\n{}", dump(&t));
     assert_eq!(
-        s.footprint,
+        s.footprint(),
         PixelRect {
             x0: 4,
             y0: 4,
@@ -55,7 +55,7 @@ fn setup_static_boxes_and_footprint() {
             y1: 13
         }
     );
-    assert_eq!(s.span, Interval::UNIT);
+    assert_eq!(s.span(), Interval::UNIT);
 }
 
 /// (x, w) = (0, 1), (1, 1), (1, −1): the hull meets w = 0 only at x ∈ [½, 1] (right of the
@@ -72,7 +72,7 @@ fn setup_separating_line_behind_camera() {
     ]);
     let s = visible(&t, vp);
     assert_eq!(
-        s.axes[0],
+        s.axes()[0],
         AxisBoxes {
             lo: Some([8 << 16; 2]),
             hi: None
@@ -80,9 +80,9 @@ fn setup_separating_line_behind_camera() {
         "\n{}",
         dump(&t)
     );
-    assert_eq!(s.axes[1], AxisBoxes { lo: None, hi: None });
+    assert_eq!(s.axes()[1], AxisBoxes { lo: None, hi: None });
     assert_eq!(
-        s.footprint,
+        s.footprint(),
         PixelRect {
             x0: 8,
             y0: 0,
@@ -111,9 +111,9 @@ fn setup_frustum_time_span() {
         ],
     );
     let s = visible(&t, vp);
-    assert_eq!(s.class, Class::Motion);
-    same("span.lo", &t, 0, s.span.lo as i128);
-    same("span.hi", &t, 24030, s.span.hi as i128);
+    assert_eq!(s.class(), Class::Motion);
+    same("span.lo", &t, 0, s.span().lo() as i128);
+    same("span.hi", &t, 24030, s.span().hi() as i128);
 }
 
 #[test]
@@ -187,7 +187,7 @@ fn bounds_lens_intervals() {
         [0.0, 0.125, 0.0, 1.0, 0.25],
     ]);
     let s = visible(&t, vp);
-    assert_eq!(s.class, Class::Defocus);
+    assert_eq!(s.class(), Class::Defocus);
     let mut ops = Ops::default();
     let co = Laine2011.prepare(&s, &mut ops);
     let b = Laine2011
@@ -203,10 +203,10 @@ fn bounds_lens_intervals() {
             &mut ops,
         )
         .expect("non-empty");
-    same("u.lo", &t, 32768, b.u.lo as i128);
-    same("u.hi", &t, ONE, b.u.hi as i128);
-    same("v.lo", &t, -ONE, b.v.lo as i128);
-    same("v.hi", &t, 32768, b.v.hi as i128);
+    same("u.lo", &t, 32768, b.u.lo() as i128);
+    same("u.hi", &t, ONE, b.u.hi() as i128);
+    same("v.lo", &t, -ONE, b.v.lo() as i128);
+    same("v.hi", &t, 32768, b.v.hi() as i128);
     assert_eq!(b.t, Interval::UNIT);
     // A column the box never reaches at any lens point: [14, 15) needs 7 + 4s ≥ 14 → empty.
     assert_eq!(
@@ -245,7 +245,7 @@ fn bounds_time_interval_dual_space() {
     );
     let s = visible(&t, vp);
     assert_eq!(
-        s.footprint,
+        s.footprint(),
         PixelRect {
             x0: 2,
             y0: 7,
@@ -268,19 +268,13 @@ fn bounds_time_interval_dual_space() {
             &mut ops,
         )
         .expect("non-empty");
-    same("t.lo", &t, 32768, b.t.lo as i128);
-    same("t.hi", &t, 45876, b.t.hi as i128);
+    same("t.lo", &t, 32768, b.t.lo() as i128);
+    same("t.hi", &t, 45876, b.t.hi() as i128);
     assert_eq!((b.u, b.v), (Interval::LENS, Interval::LENS));
 }
 
 fn smp(sx: u8, sy: u8, u: i32, v: i32, t: i32) -> Sample {
-    Sample {
-        sx: SubPixel::from_bits(sx),
-        sy: SubPixel::from_bits(sy),
-        u: Lens::from_bits(u),
-        v: Lens::from_bits(v),
-        t: Time::from_bits(t),
-    }
+    sample_raw(sx, sy, u, v, t)
 }
 
 /// The static triangle of the first test with z = w/4: the screen centre (pixel (8,8), sub-pixel

@@ -103,6 +103,51 @@ fn a_changed_bit_is_reported_with_file_line_and_field() {
     );
 }
 
+/// Replace word `word` of record `line` (0-based) of `file` in a copied set, fixing the manifest
+/// checksum so the record reaches the core.
+fn corrupt_word(set: &Path, file: &str, line: usize, word: usize, value: u32) {
+    let f = set.join(file);
+    let text = std::fs::read_to_string(&f).unwrap();
+    let mut lines: Vec<String> = text.lines().map(String::from).collect();
+    let mut words: Vec<String> = lines[line].split(' ').map(String::from).collect();
+    words[word] = format!("{value:08x}");
+    lines[line] = words.join(" ");
+    let new = lines.join("\n") + "\n";
+    std::fs::write(&f, &new).unwrap();
+    let m = set.join("manifest.json");
+    let mt = std::fs::read_to_string(&m)
+        .unwrap()
+        .replace(&sha256(text.as_bytes()), &sha256(new.as_bytes()));
+    std::fs::write(&m, mt).unwrap();
+}
+
+/// Decoded input records go through the core's checked constructors: an out-of-domain sample
+/// (t = 256, which reached 2^70 products in the sample test before) or interval is refused with
+/// file, record and field, not fed to the core.
+#[test]
+fn out_of_domain_input_records_are_refused_with_file_record_and_field() {
+    let dir = tempfile::tempdir().unwrap();
+    let set = dir.path().join("unit");
+    copy_set(&committed().join("unit"), &set);
+    // sample_in word 5 is t (raw I16F16): 256.0.
+    corrupt_word(&set, "sample_in.hex", 2, 5, 256 << 16);
+    // select_in word 0 is u_lo: -2.0.
+    corrupt_word(&set, "select_in.hex", 4, 0, (-131072i32) as u32);
+    let e = format!("{:#}", check(&set).unwrap_err());
+    assert!(
+        e.contains(
+            "sample_in.hex line 3: input sample refused by the core: sample t = raw 0x01000000"
+        ),
+        "{e}"
+    );
+    assert!(
+        e.contains(
+            "select_in.hex line 5: fields u_lo, u_hi refused by the core: interval [0xfffe0000"
+        ),
+        "{e}"
+    );
+}
+
 /// Frame vectors' resolved pixels (trace) equal the renderer's image for the same scene.
 #[test]
 fn frame_vectors_agree_with_the_renderer() {

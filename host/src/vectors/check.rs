@@ -124,7 +124,10 @@ fn check_set(dir: &Path) -> Result<u64> {
         }
     }
     for (line, (i, o)) in get("select_in").iter().zip(&get("select_out")).enumerate() {
-        diffs.cmp("select_out", line, o, &run_select(i).0);
+        match run_select(i) {
+            Ok(r) => diffs.cmp("select_out", line, o, &r.0),
+            Err(e) => diffs.fail("select_in", line, &e),
+        }
     }
     for (line, (i, o)) in get("sample_in").iter().zip(&get("sample_out")).enumerate() {
         match run_sample(&lookup, i) {

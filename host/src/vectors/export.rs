@@ -75,8 +75,8 @@ impl Set {
         Ok(b)
     }
     fn select(&mut self, b: &UvtBox, s: &Sample) -> bool {
-        let input = enc_select_in(b, s.u.to_bits(), s.v.to_bits(), s.t.to_bits());
-        let out = run_select(&input.0);
+        let input = enc_select_in(b, s.u().to_bits(), s.v().to_bits(), s.t().to_bits());
+        let out = run_select(&input.0).expect("a box built by the core passes Interval::new");
         let inside = out.0.first() == Some(&1);
         self.push("select_in", input);
         self.push("select_out", out);
@@ -118,19 +118,20 @@ fn random_sample(rng: &mut rand_pcg::Pcg64, b: Option<&UvtBox>) -> Sample {
     let mut pick = |lo: i32, hi: i32| rng.gen_range(lo..=hi);
     let (u, vv, t) = match b {
         Some(b) => (
-            pick(b.u.lo, b.u.hi),
-            pick(b.v.lo, b.v.hi),
-            pick(b.t.lo, b.t.hi),
+            pick(b.u.lo(), b.u.hi()),
+            pick(b.v.lo(), b.v.hi()),
+            pick(b.t.lo(), b.t.hi()),
         ),
         None => (pick(-65536, 65536), pick(-65536, 65536), pick(0, 65536)),
     };
-    Sample {
-        sx: SubPixel::from_bits(rng.gen()),
-        sy: SubPixel::from_bits(rng.gen()),
-        u: Lens::from_bits(u),
-        v: Lens::from_bits(vv),
-        t: Time::from_bits(t),
-    }
+    Sample::new(
+        SubPixel::from_bits(rng.gen()),
+        SubPixel::from_bits(rng.gen()),
+        Lens::from_bits(u),
+        Lens::from_bits(vv),
+        Time::from_bits(t),
+    )
+    .expect("drawn inside the domain or a core box")
 }
 
 /// Named edge cases: (name, triangles, viewport side).
@@ -334,7 +335,7 @@ pub fn unit(seed: u64) -> Result<Set> {
         let Some((s, _)) = set.setups[i as usize] else {
             continue;
         };
-        let fp = s.footprint;
+        let fp = s.footprint();
         for bt in [1u16, 2, 4, 8] {
             for _ in 0..3 {
                 let x = rng.gen_range(fp.x0..fp.x1);
@@ -373,13 +374,14 @@ pub fn unit(seed: u64) -> Result<Set> {
         .unwrap_or([0, 0]);
     for py in 10..22u16 {
         for u in [-65536, 0, 65536] {
-            let smp = Sample {
-                sx: SubPixel::from_bits(0),
-                sy: SubPixel::from_bits((py * 37 % 256) as u8),
-                u: Lens::from_bits(u),
-                v: Lens::from_bits(0),
-                t: Time::from_bits(0),
-            };
+            let smp = Sample::new(
+                SubPixel::from_bits(0),
+                SubPixel::from_bits((py * 37 % 256) as u8),
+                Lens::from_bits(u),
+                Lens::from_bits(0),
+                Time::from_bits(0),
+            )
+            .expect("u in [-1, 1]");
             for i in tie[0]..=tie[1] {
                 set.sample(i as u32, 16, py, &smp)?;
             }
@@ -434,8 +436,8 @@ pub fn frame(scene: &Scene, scene_json: &str) -> Result<Set> {
         set.tri(t, vp)?;
         let rec = match &set.setups[i] {
             Some((s, _)) => {
-                json!({"type": "setup", "tri": i, "class": format!("{:?}", s.class), "footprint": [s.footprint.x0, s.footprint.y0, s.footprint.x1, s.footprint.y1],
-                "span": [s.span.lo as f64 / 65536.0, s.span.hi as f64 / 65536.0]})
+                json!({"type": "setup", "tri": i, "class": format!("{:?}", s.class()), "footprint": [s.footprint().x0, s.footprint().y0, s.footprint().x1, s.footprint().y1],
+                "span": [s.span().lo() as f64 / 65536.0, s.span().hi() as f64 / 65536.0]})
             }
             None => {
                 let o = uvt_core::setup(t, vp, &mut Default::default());
@@ -467,14 +469,14 @@ pub fn frame(scene: &Scene, scene_json: &str) -> Result<Set> {
                 let Some((s, _)) = set.setups[i] else {
                     continue;
                 };
-                let region = s.footprint.intersect(&screen);
+                let region = s.footprint().intersect(&screen);
                 if region.is_empty() {
                     continue;
                 }
                 for cell in region.cells(bt) {
                     let b = set.bounds(i as u32, cell)?;
                     trace += &(json!({"type": "tile", "tri": i, "rect": [cell.x0, cell.y0, cell.x1, cell.y1],
-                    "bounds": b.map(|b| json!({"u": [f(b.u.lo), f(b.u.hi)], "v": [f(b.v.lo), f(b.v.hi)], "t": [f(b.t.lo), f(b.t.hi)]}))}).to_string() + "\n");
+                    "bounds": b.map(|b| json!({"u": [f(b.u.lo()), f(b.u.hi())], "v": [f(b.v.lo()), f(b.v.hi())], "t": [f(b.t.lo()), f(b.t.hi())]}))}).to_string() + "\n");
                     let Some(b) = b else { continue };
                     for py in cell.y0..cell.y1 {
                         for px in cell.x0..cell.x1 {
@@ -496,8 +498,8 @@ pub fn frame(scene: &Scene, scene_json: &str) -> Result<Set> {
                                     fb.write((px - x0) as usize, (py - y0) as usize, si, color, d);
                                 }
                                 trace += &(json!({"type": "sample", "tri": i, "px": px, "py": py, "s": si,
-                                "x": px as f64 + smp.sx.to_bits() as f64 / 256.0, "y": py as f64 + smp.sy.to_bits() as f64 / 256.0,
-                                "u": f(smp.u.to_bits()), "v": f(smp.v.to_bits()), "t": f(smp.t.to_bits()),
+                                "x": px as f64 + smp.sx().to_bits() as f64 / 256.0, "y": py as f64 + smp.sy().to_bits() as f64 / 256.0,
+                                "u": f(smp.u().to_bits()), "v": f(smp.v().to_bits()), "t": f(smp.t().to_bits()),
                                 "inside": inside, "covered": hit.is_some(), "depth": hit.map(|d| d as f64 / 16777216.0)}).to_string() + "\n");
                             }
                         }

@@ -58,37 +58,41 @@ pub fn run_setup(w: &[u32]) -> Result<(Option<(Setup, LaineCoeffs)>, Rec), Strin
     r = r.packed(&[
         (1, 1),
         (0, 2),
-        (s.class.index() as i64, 2),
-        (b(s.axes[0].lo.is_some()), 1),
-        (b(s.axes[0].hi.is_some()), 1),
-        (b(s.axes[1].lo.is_some()), 1),
-        (b(s.axes[1].hi.is_some()), 1),
-        (b(c.lens[0].is_some()), 1),
-        (b(c.lens[1].is_some()), 1),
-        (b(c.dual[0].is_some()), 1),
-        (b(c.dual[1].is_some()), 1),
+        (s.class().index() as i64, 2),
+        (b(s.axes()[0].lo.is_some()), 1),
+        (b(s.axes()[0].hi.is_some()), 1),
+        (b(s.axes()[1].lo.is_some()), 1),
+        (b(s.axes()[1].hi.is_some()), 1),
+        (b(c.lens()[0].is_some()), 1),
+        (b(c.lens()[1].is_some()), 1),
+        (b(c.dual()[0].is_some()), 1),
+        (b(c.dual()[1].is_some()), 1),
     ]);
-    let fp = s.footprint;
+    let fp = s.footprint();
     r = r
         .packed(&[(fp.x0 as i64, 16), (fp.y0 as i64, 16)])
         .packed(&[(fp.x1 as i64, 16), (fp.y1 as i64, 16)])
-        .i32(s.span.lo)
-        .i32(s.span.hi);
-    for a in &s.axes {
+        .i32(s.span().lo())
+        .i32(s.span().hi());
+    for a in &s.axes() {
         for side in [a.lo, a.hi] {
             let v = side.unwrap_or([0, 0]);
             r = r.i64(v[0]).i64(v[1]);
         }
     }
-    for l in &c.lens {
+    for l in &c.lens() {
         for side in [l.and_then(|l| l.lo), l.and_then(|l| l.hi)] {
             r = match side {
-                Some(sd) => r.i64(sd.base).i64(sd.c.d).i128(sd.c.r_up).i128(sd.c.r_dn),
+                Some(sd) => r
+                    .i64(sd.base)
+                    .i64(sd.c.d())
+                    .i128(sd.c.r_up())
+                    .i128(sd.c.r_dn()),
                 None => pad_n(r, 12),
             };
         }
     }
-    for d in &c.dual {
+    for d in &c.dual() {
         r = match d {
             Some(d) => {
                 let mut r = r.i32(d.xi[0] as i32).i32(d.xi[1] as i32);
@@ -136,7 +140,7 @@ pub fn run_bounds(setups: SetupLookup<'_>, w: &[u32]) -> Result<(Option<UvtBox>,
         x1: g(2) as u16,
         y1: (g(2) >> 16) as u16,
     };
-    let fp = s.footprint;
+    let fp = s.footprint();
     if cell.is_empty() || cell.intersect(&fp) != cell {
         return Err(format!(
             "tile {cell:?} is not a non-empty part of the footprint {fp:?}"
@@ -146,12 +150,12 @@ pub fn run_bounds(setups: SetupLookup<'_>, w: &[u32]) -> Result<(Option<UvtBox>,
     let r = match b {
         Some(b) => Rec::default()
             .packed(&[(1, 1)])
-            .i32(b.u.lo)
-            .i32(b.u.hi)
-            .i32(b.v.lo)
-            .i32(b.v.hi)
-            .i32(b.t.lo)
-            .i32(b.t.hi),
+            .i32(b.u.lo())
+            .i32(b.u.hi())
+            .i32(b.v.lo())
+            .i32(b.v.hi())
+            .i32(b.t.lo())
+            .i32(b.t.hi()),
         None => pad(Rec::default().packed(&[(0, 1)]), 7),
     };
     Ok((b, r))
@@ -160,26 +164,31 @@ pub fn run_bounds(setups: SetupLookup<'_>, w: &[u32]) -> Result<(Option<UvtBox>,
 /// Interval-check input record.
 pub fn enc_select_in(b: &UvtBox, u: i32, v: i32, t: i32) -> Rec {
     Rec::default()
-        .i32(b.u.lo)
-        .i32(b.u.hi)
-        .i32(b.v.lo)
-        .i32(b.v.hi)
-        .i32(b.t.lo)
-        .i32(b.t.hi)
+        .i32(b.u.lo())
+        .i32(b.u.hi())
+        .i32(b.v.lo())
+        .i32(b.v.hi())
+        .i32(b.t.lo())
+        .i32(b.t.hi())
         .i32(u)
         .i32(v)
         .i32(t)
 }
 
-/// The per-sample interval check (is the sample's (u, v, t) inside the tile's box?).
-pub fn run_select(w: &[u32]) -> Rec {
+/// The per-sample interval check (is the sample's (u, v, t) inside the tile's box?). The box
+/// is validated through `Interval::new`; an out-of-domain one is refused naming its fields.
+pub fn run_select(w: &[u32]) -> Result<Rec, String> {
     let g = |i: usize| w.get(i).copied().unwrap_or(0) as i32;
-    let b = UvtBox {
-        u: Interval { lo: g(0), hi: g(1) },
-        v: Interval { lo: g(2), hi: g(3) },
-        t: Interval { lo: g(4), hi: g(5) },
+    let iv = |name: &str, k: usize| {
+        Interval::new(g(k), g(k + 1))
+            .map_err(|e| format!("fields {name}_lo, {name}_hi refused by the core: {e}"))
     };
-    Rec::default().packed(&[(b.contains(g(6), g(7), g(8)) as i64, 1)])
+    let b = UvtBox {
+        u: iv("u", 0)?,
+        v: iv("v", 2)?,
+        t: iv("t", 4)?,
+    };
+    Ok(Rec::default().packed(&[(b.contains(g(6), g(7), g(8)) as i64, 1)]))
 }
 
 /// Sample-test input record.
@@ -187,30 +196,32 @@ pub fn enc_sample_in(tri: u32, px: u16, py: u16, s: &Sample) -> Rec {
     Rec::default()
         .u32(tri)
         .packed(&[(px as i64, 16), (py as i64, 16)])
-        .packed(&[(s.sx.to_bits() as i64, 8), (s.sy.to_bits() as i64, 8)])
-        .i32(s.u.to_bits())
-        .i32(s.v.to_bits())
-        .i32(s.t.to_bits())
+        .packed(&[(s.sx().to_bits() as i64, 8), (s.sy().to_bits() as i64, 8)])
+        .i32(s.u().to_bits())
+        .i32(s.v().to_bits())
+        .i32(s.t().to_bits())
 }
 
-/// Decode a sample-test input record: (tri, px, py, sample).
-pub fn dec_sample_in(w: &[u32]) -> (u32, u16, u16, Sample) {
+/// Decode a sample-test input record: (tri, px, py, sample). The sample goes through the
+/// checked `Sample::new`; an out-of-domain t, u or v is refused naming the field and raw value.
+pub fn dec_sample_in(w: &[u32]) -> Result<(u32, u16, u16, Sample), String> {
     let g = |i: usize| w.get(i).copied().unwrap_or(0);
-    let s = Sample {
-        sx: SubPixel::from_bits(g(2) as u8),
-        sy: SubPixel::from_bits((g(2) >> 8) as u8),
-        u: Lens::from_bits(g(3) as i32),
-        v: Lens::from_bits(g(4) as i32),
-        t: Time::from_bits(g(5) as i32),
-    };
-    (g(0), g(1) as u16, (g(1) >> 16) as u16, s)
+    let s = Sample::new(
+        SubPixel::from_bits(g(2) as u8),
+        SubPixel::from_bits((g(2) >> 8) as u8),
+        Lens::from_bits(g(3) as i32),
+        Lens::from_bits(g(4) as i32),
+        Time::from_bits(g(5) as i32),
+    )
+    .map_err(|e| format!("input sample refused by the core: {e}"))?;
+    Ok((g(0), g(1) as u16, (g(1) >> 16) as u16, s))
 }
 
 /// The sample test: output record (coverage, depth, exact edge values, determinant).
 pub fn run_sample(setups: SetupLookup<'_>, w: &[u32]) -> Result<(Option<i32>, Rec), String> {
-    let (tri, px, py, smp) = dec_sample_in(w);
+    let (tri, px, py, smp) = dec_sample_in(w)?;
     let (s, _) = setups(tri)?;
-    if px >= s.viewport.width() || py >= s.viewport.height() {
+    if px >= s.viewport().width() || py >= s.viewport().height() {
         return Err(format!("pixel ({px},{py}) outside the viewport"));
     }
     let e = sample_eval(&s, ScreenPos::of(px, py, &smp), &smp, &mut Ops::default());
