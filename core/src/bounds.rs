@@ -150,6 +150,8 @@ impl LaineCoeffs {
     }
 }
 
+// Box coordinates |X| < 2^58 (`core/README.md`), so the slopes m1 − m0, h0 − h1 are < 2^59.
+#[allow(clippy::arithmetic_side_effects)]
 fn lens_axis(setup: &Setup, axis: usize, ops: &mut Ops) -> LensAxis {
     let b = setup.axes.get(axis).copied();
     let lo = b.and_then(|b| b.lo).map(|[m0, m1]| LensSide {
@@ -160,29 +162,32 @@ fn lens_axis(setup: &Setup, axis: usize, ops: &mut Ops) -> LensAxis {
         base: h0,
         c: RecipConstraint::new(h0 - h1),
     });
-    ops.setup += 8;
+    ops.add_setup(8);
     LensAxis { lo, hi }
 }
 
+// Ranges (checked triangle and viewport): |a + w| < 2^31, E ≤ 2^11, ξ ≤ 2^11 (footprint inside
+// the viewport), |c| ≤ 2^29: |(a + w)·E| < 2^42, |2·w·ξ| < 2^41, |c|·E < 2^40, so
+// |δ ± |c|·E| < 2^44 in i64.
+#[allow(clippy::arithmetic_side_effects)]
 fn dual_axis(tri: &Triangle, fp: &PixelRect, axis: usize, extent: i64, ops: &mut Ops) -> DualAxis {
     let xi = if axis == 0 {
-        [fp.x0 as i64, fp.x1 as i64]
+        [fp.x0, fp.x1].map(i64::from)
     } else {
-        [fp.y0 as i64, fp.y1 as i64]
+        [fp.y0, fp.y1].map(i64::from)
     };
     let mut lo = [[DualDelta::MAX; 2]; 2];
     let mut hi = [[DualDelta::MIN; 2]; 2];
     for ((ends, lo_t), hi_t) in tri.v.iter().zip(lo.iter_mut()).zip(hi.iter_mut()) {
         for p in ends.iter() {
             let (a, cs) = axis_coord(p, axis);
-            let w = p[W] as i64;
-            // |a + w| < 2^31, E, ξ ≤ 2^11, |c| ≤ 2^29: |δ ± |c|E| < 2^44.
+            let w = i64::from(p[W]);
             let bias = cs.abs() * extent;
             for ((l, h), x) in lo_t.iter_mut().zip(hi_t.iter_mut()).zip(xi.iter()) {
                 let delta = (a + w) * extent - 2 * w * x;
                 *l = (*l).min(delta - bias);
                 *h = (*h).max(delta + bias);
-                ops.setup += 7;
+                ops.add_setup(7);
             }
         }
     }
@@ -190,32 +195,43 @@ fn dual_axis(tri: &Triangle, fp: &PixelRect, axis: usize, extent: i64, ops: &mut
 }
 
 /// t interval of one axis for a tile [x0, x1] ⊆ [ξa, ξb].
+// Ranges: |δ| < 2^44; ξa, ξb, x0, x1 are pixel indices < 2^16 (u16), so |ξb − x|, |x − ξa| < 2^17
+// and each line value (scaled by D = ξb − ξa) is < 2·2^44·2^17 = 2^62; the differences handed to
+// `solve_le` are < 2^63. All far inside i128.
+#[allow(clippy::arithmetic_side_effects)]
 fn dual_t(d: &DualAxis, x0: i64, x1: i64, ops: &mut Ops) -> Option<Interval> {
-    let [xa, xb] = d.xi;
-    // Scaled by D = ξb − ξa > 0: |value| < 2^44 · 2^12 = 2^56.
+    let [xa, xb] = d.xi.map(i128::from);
     let line = |v: &[DualDelta; 2], x: i64| {
-        v[0] as i128 * (xb - x) as i128 + v[1] as i128 * (x - xa) as i128
+        let x = i128::from(x);
+        i128::from(v[0]) * (xb - x) + i128::from(v[1]) * (x - xa)
     };
-    let [lo0, lo1] = [0usize, 1].map(|t| line(&d.lo[t], x0).min(line(&d.lo[t], x1)));
-    let [hi0, hi1] = [0usize, 1].map(|t| line(&d.hi[t], x0).max(line(&d.hi[t], x1)));
-    ops.bounds += 24;
+    let [lo0, lo1] = d.lo.map(|v| line(&v, x0).min(line(&v, x1)));
+    let [hi0, hi1] = d.hi.map(|v| line(&v, x0).max(line(&v, x1)));
+    ops.add_bounds(24);
     // (1−t)·lo0 + t·lo1 ≤ 0  and  (1−t)·hi0 + t·hi1 ≥ 0.
     let a = solve_le(lo1 - lo0, -lo0)?;
     let b = solve_le(hi0 - hi1, hi0)?;
-    ops.bounds += 8;
+    ops.add_bounds(8);
     a.meet(b)
 }
 
 /// s interval (lens parameter) of one axis for tile columns [x0, x1).
-fn lens_s(l: &LensAxis, x0: i64, x1: i64, bnd: u32, ops: &mut Ops) -> Option<Interval> {
+///
+/// The tile edges go to the bound grid by a multiplication by `2^bnd` (no shift): x0, x1 are
+/// pixel indices < 2^16 and bnd ≤ 16 (`PrecisionBits`), so `x·2^bnd` < 2^32; box values
+/// |base| < 2^58: every difference is < 2^59 in i64. Tested at the corners by
+/// `tests::lens_edges_at_the_domain_corners`.
+#[allow(clippy::arithmetic_side_effects)]
+pub(crate) fn lens_s(l: &LensAxis, x0: i64, x1: i64, bnd: u32, ops: &mut Ops) -> Option<Interval> {
+    let scale = 2i64.pow(bnd);
     let mut s = Interval::UNIT;
     if let Some(side) = l.lo {
-        s = s.meet(side.c.solve((x1 << bnd) - side.base)?)?;
-        ops.bounds += 4;
+        s = s.meet(side.c.solve(x1 * scale - side.base)?)?;
+        ops.add_bounds(4);
     }
     if let Some(side) = l.hi {
-        s = s.meet(side.c.solve(side.base - (x0 << bnd))?)?;
-        ops.bounds += 4;
+        s = s.meet(side.c.solve(side.base - x0 * scale)?)?;
+        ops.add_bounds(4);
     }
     Some(s)
 }
@@ -229,10 +245,11 @@ impl BoundsStrategy for Laine2011 {
     fn prepare(&self, setup: &Setup, ops: &mut Ops) -> LaineCoeffs {
         let defocus = setup.class.defocus();
         let motion = setup.class.motion();
-        let ext = [setup.viewport.w as i64, setup.viewport.h as i64];
+        let ext = [(0usize, setup.viewport.w), (1, setup.viewport.h)];
         let lens = [0usize, 1].map(|a| defocus.then(|| lens_axis(setup, a, ops)));
-        let dual = [0usize, 1]
-            .map(|a| motion.then(|| dual_axis(&setup.tri, &setup.footprint, a, ext[a], ops)));
+        let dual = ext.map(|(a, e)| {
+            motion.then(|| dual_axis(&setup.tri, &setup.footprint, a, i64::from(e), ops))
+        });
         LaineCoeffs { lens, dual }
     }
 

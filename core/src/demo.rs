@@ -12,7 +12,7 @@ use embedded_graphics_core::pixelcolor::{Rgb888, RgbColor};
 use crate::bounds::{BoundsStrategy, Laine2011};
 use crate::error::Error;
 use crate::formats::{Coord, Lens, SubPixel, Time};
-use crate::input::{PixelRect, Sample, SamplePattern, Triangle, Vertex, Viewport};
+use crate::input::{Sample, SamplePattern, Triangle, Vertex, Viewport};
 use crate::sample::{sample_test, ScreenPos};
 use crate::setup::{setup, Outcome};
 use crate::stats::{Ops, Stats};
@@ -21,24 +21,34 @@ use crate::tile::{Prim, Renderer};
 /// Viewport side.
 pub const SIZE: u16 = 32;
 /// Samples per pixel.
-pub const SPP: usize = 4;
+pub const SPP: usize = SPP_U16 as usize;
+const SPP_U16: u16 = 4;
 /// Bounds-tile size.
 pub const BOUNDS_TILE: u8 = 2;
 const BLOCK: u16 = 4;
 const NSAMPLES: usize = BLOCK as usize * BLOCK as usize * SPP;
 const NTRIS: usize = 7;
+const NPIXELS: usize = SIZE as usize * SIZE as usize;
 
-/// xorshift32 step.
+/// xorshift32 step. A hash: the bits shifted out of the top are discarded by design, written
+/// as wrapping multiplications by 2^13 and 2^5 (the same bits as `<<`, and explicit about it).
 const fn xs(mut x: u32) -> u32 {
-    x ^= x << 13;
+    x ^= x.wrapping_mul(1 << 13);
     x ^= x >> 17;
-    x ^= x << 5;
+    x ^= x.wrapping_mul(1 << 5);
     x
 }
 
 /// The sample table (integer hash; t ∈ [0, 1), u, v ∈ [-1, 1)). Built at compile time through
 /// the checked [`Sample::new`]: an out-of-domain value would stop the build (the `panic!` below
 /// runs only in const evaluation, never in the program).
+// Evaluated at compile time: an out-of-range index or an overflow would be a build error. The
+// casts are proven below.
+#[allow(
+    clippy::indexing_slicing,
+    clippy::arithmetic_side_effects,
+    clippy::cast_possible_wrap
+)]
 pub const SAMPLES: [Sample; NSAMPLES] = {
     let mut out = [Sample::ZERO; NSAMPLES];
     let mut x = 0x1234_5678u32;
@@ -67,15 +77,21 @@ pub const SAMPLES: [Sample; NSAMPLES] = {
     out
 };
 
-/// A vertex from values in 1/256 clip units: `[x, y, z, w, coc]`.
+/// A vertex from values in 1/256 clip units: `[x, y, z, w, coc]`, scaled by 256 (saturating;
+/// the scene's values are ≤ 500 in magnitude, so 256·a < 2^17 and nothing saturates).
 const fn v(a: [i32; 5]) -> Vertex {
     Vertex {
-        x: Coord::from_bits(a[0] << 8),
-        y: Coord::from_bits(a[1] << 8),
-        z: Coord::from_bits(a[2] << 8),
-        w: Coord::from_bits(a[3] << 8),
-        coc: Coord::from_bits(a[4] << 8),
+        x: scaled(a[0]),
+        y: scaled(a[1]),
+        z: scaled(a[2]),
+        w: scaled(a[3]),
+        coc: scaled(a[4]),
     }
+}
+
+/// `256·x` as a `Coord` raw value (saturating).
+const fn scaled(x: i32) -> Coord {
+    Coord::from_bits(x.saturating_mul(256))
 }
 
 /// Three vertices `[x, y, z, w, coc]` in 1/256 clip units.
@@ -207,15 +223,19 @@ pub struct DemoResult {
 /// Render the scene and return checksum and counters.
 pub fn render() -> Result<DemoResult, Error> {
     let prims = prims()?;
-    let pattern = SamplePattern::new(BLOCK, SPP as u16, &SAMPLES)?;
+    let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLES)?;
     let mut r = Renderer::<Laine2011, NTRIS>::new(Laine2011, viewport()?, &prims)?;
-    let mut image = [[0u8; 3]; SIZE as usize * SIZE as usize];
+    let mut image = [[0u8; 3]; NPIXELS];
     r.render_with::<8, 8, SPP>(
         &pattern,
         BOUNDS_TILE,
         Rgb888::new(16, 16, 24),
         |x, y, c, _| {
-            if let Some(p) = image.get_mut(y as usize * SIZE as usize + x as usize) {
+            // x, y < SIZE = 32: the index < 1024.
+            let idx = usize::from(y)
+                .saturating_mul(usize::from(SIZE))
+                .saturating_add(usize::from(x));
+            if let Some(p) = image.get_mut(idx) {
                 *p = [c.r(), c.g(), c.b()];
             }
         },
@@ -241,13 +261,13 @@ pub mod cost {
         let prims = prims()?;
         let vp = viewport()?;
         let mut ops = Ops::default();
-        let mut calls = 0;
+        let mut calls = 0u64;
         for _ in 0..reps {
             for p in prims.iter() {
                 if let Outcome::Visible(s) = black_box(setup(black_box(&p.tri), vp, &mut ops)) {
                     black_box(Laine2011.prepare(&s, &mut ops));
                 }
-                calls += 1;
+                calls = calls.saturating_add(1);
             }
         }
         Ok(calls)
@@ -258,30 +278,16 @@ pub mod cost {
         let prims = prims()?;
         let vp = viewport()?;
         let mut ops = Ops::default();
-        let mut calls = 0;
+        let mut calls = 0u64;
         for p in prims.iter() {
             let Outcome::Visible(s) = setup(&p.tri, vp, &mut ops) else {
                 continue;
             };
             let c = Laine2011.prepare(&s, &mut ops);
             for _ in 0..reps {
-                let fp = s.footprint;
-                let mut y = fp.y0 - fp.y0 % 2;
-                while y < fp.y1 {
-                    let mut x = fp.x0 - fp.x0 % 2;
-                    while x < fp.x1 {
-                        let cell = PixelRect {
-                            x0: x,
-                            y0: y,
-                            x1: x + 2,
-                            y1: y + 2,
-                        }
-                        .intersect(&fp);
-                        black_box(Laine2011.tile(black_box(&s), &c, cell, &mut ops));
-                        calls += 1;
-                        x += 2;
-                    }
-                    y += 2;
+                for cell in s.footprint().cells(2) {
+                    black_box(Laine2011.tile(black_box(&s), &c, cell, &mut ops));
+                    calls = calls.saturating_add(1);
                 }
             }
         }
@@ -292,9 +298,9 @@ pub mod cost {
     pub fn samples_all(reps: u32) -> Result<u64, Error> {
         let prims = prims()?;
         let vp = viewport()?;
-        let pattern = SamplePattern::new(BLOCK, SPP as u16, &SAMPLES)?;
+        let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLES)?;
         let mut ops = Ops::default();
-        let mut calls = 0;
+        let mut calls = 0u64;
         for p in prims.iter() {
             let Outcome::Visible(s) = setup(&p.tri, vp, &mut ops) else {
                 continue;
@@ -309,7 +315,7 @@ pub mod cost {
                                 smp,
                                 &mut ops,
                             ));
-                            calls += 1;
+                            calls = calls.saturating_add(1);
                         }
                     }
                 }

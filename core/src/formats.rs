@@ -161,6 +161,15 @@ impl PrecisionBits {
     pub const DEFAULT: PrecisionBits = PrecisionBits::of::<DefaultPrecision>();
 }
 
+/// `2^k − 1`, the mask of the low `k` bits, for `k ≤ 30` (`None` above): the grid check of a
+/// narrower precision (`k = 16 − frac ≤ 14`).
+pub(crate) const fn low_bits_mask(k: u32) -> Option<i32> {
+    match 2i32.checked_pow(k) {
+        Some(p) => p.checked_sub(1),
+        None => None,
+    }
+}
+
 /// Floor division of `n` by a positive `d` (rounds toward -∞). `d > 0` is the caller's duty and
 /// is checked: a non-positive `d` returns `None`.
 #[inline]

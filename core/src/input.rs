@@ -3,8 +3,8 @@
 
 use crate::error::{Error, Field, SampleField};
 use crate::formats::{
-    Coord, DefaultPrecision, Lens, Precision, SubPixel, Time, COORD_FRAC, COORD_LIMIT_RAW,
-    MAX_VIEWPORT, TUV_FRAC, TUV_ONE,
+    low_bits_mask, Coord, DefaultPrecision, Lens, Precision, SubPixel, Time, COORD_FRAC,
+    COORD_LIMIT_RAW, MAX_VIEWPORT, TUV_FRAC, TUV_ONE,
 };
 
 /// One vertex at one end of the shutter: clip-space position and signed CoC radius.
@@ -71,26 +71,29 @@ impl Triangle {
     /// Checked constructor for precision `P`: |v| ≤ 2^13 and every coordinate on `P`'s position
     /// grid (low 16 − `P::POS_FRAC` bits zero).
     pub fn new_with<P: Precision>(t0: [Vertex; 3], t1: [Vertex; 3]) -> Result<Triangle, Error> {
-        let grid = (1i32 << (COORD_FRAC - P::POS_FRAC)) - 1;
+        // POS_FRAC ∈ 2..=16 (sealed `Precision`), so the mask exists and has ≤ 14 bits.
+        let grid = low_bits_mask(COORD_FRAC.saturating_sub(P::POS_FRAC)).unwrap_or(0);
+        let frac = u8::try_from(P::POS_FRAC).unwrap_or(u8::MAX);
         let mut v = [[[0i32; 5]; 3]; 2];
-        for (time, ends) in [t0, t1].iter().enumerate() {
-            for (k, vert) in ends.iter().enumerate() {
-                for ((f, raw), slot) in FIELDS.iter().zip(vert.bits()).zip(v[time][k].iter_mut()) {
-                    if raw.unsigned_abs() > COORD_LIMIT_RAW as u32 {
+        for ((time, ends), out) in (0u8..).zip([t0, t1].iter()).zip(v.iter_mut()) {
+            for ((vertex, vert), out) in (0u8..).zip(ends.iter()).zip(out.iter_mut()) {
+                for ((f, raw), slot) in FIELDS.iter().zip(vert.bits()).zip(out.iter_mut()) {
+                    let field = *f;
+                    if raw.unsigned_abs() > COORD_LIMIT_RAW.unsigned_abs() {
                         return Err(Error::CoordOutOfDomain {
-                            vertex: k as u8,
-                            time: time as u8,
-                            field: *f,
+                            vertex,
+                            time,
+                            field,
                             raw,
                         });
                     }
                     if raw & grid != 0 {
                         return Err(Error::CoordOffGrid {
-                            vertex: k as u8,
-                            time: time as u8,
-                            field: *f,
+                            vertex,
+                            time,
+                            field,
                             raw,
-                            frac: P::POS_FRAC as u8,
+                            frac,
                         });
                     }
                     *slot = raw;
@@ -184,10 +187,16 @@ impl PixelRect {
         Cells {
             r: self,
             b,
-            x: self.x0 - self.x0 % b,
-            y: self.y0 - self.y0 % b,
+            x: align_down(self.x0, b),
+            y: align_down(self.y0, b),
         }
     }
+}
+
+/// `x` rounded down to a multiple of `b ≥ 1` (`x − x mod b`, never below 0).
+#[inline]
+fn align_down(x: u16, b: u16) -> u16 {
+    x.saturating_sub(x.checked_rem(b).unwrap_or(0))
 }
 
 /// Iterator of [`PixelRect::cells`].
@@ -212,7 +221,7 @@ impl Iterator for Cells {
             .intersect(&self.r);
             self.x = self.x.saturating_add(self.b);
             if self.x >= self.r.x1 {
-                self.x = self.r.x0 - self.r.x0 % self.b;
+                self.x = align_down(self.r.x0, self.b);
                 self.y = self.y.saturating_add(self.b);
             }
             if !cell.is_empty() {
@@ -324,7 +333,8 @@ impl<'a> SamplePattern<'a> {
         spp: u16,
         samples: &'a [Sample],
     ) -> Result<Self, Error> {
-        let grid = (1i32 << (TUV_FRAC - P::TUV_FRAC)) - 1;
+        // TUV_FRAC ∈ 2..=16 (sealed `Precision`), so the mask exists and has ≤ 14 bits.
+        let grid = low_bits_mask(TUV_FRAC.saturating_sub(P::TUV_FRAC)).unwrap_or(0);
         let shape = Error::PatternShape {
             block,
             spp,
@@ -333,14 +343,18 @@ impl<'a> SamplePattern<'a> {
         if block == 0 || spp == 0 || block > MAX_PATTERN || spp > MAX_PATTERN {
             return Err(shape);
         }
-        if samples.len() != block as usize * block as usize * spp as usize {
+        // block, spp ≤ 64: the product ≤ 2^18 cannot overflow (checked anyway).
+        let len = usize::from(block)
+            .checked_mul(usize::from(block))
+            .and_then(|x| x.checked_mul(usize::from(spp)));
+        if len != Some(samples.len()) {
             return Err(shape);
         }
         for (index, s) in samples.iter().enumerate() {
             if [s.t, s.u, s.v].iter().any(|x| x.to_bits() & grid != 0) {
                 return Err(Error::SampleOffGrid {
                     index,
-                    frac: P::TUV_FRAC as u8,
+                    frac: u8::try_from(P::TUV_FRAC).unwrap_or(u8::MAX),
                 });
             }
         }
@@ -366,9 +380,15 @@ impl<'a> SamplePattern<'a> {
 
     /// The samples of pixel (x, y) (a slice of length S).
     pub fn pixel(&self, x: u16, y: u16) -> &'a [Sample] {
-        let n = self.block as usize;
-        let s = self.spp as usize;
-        let start = ((y as usize % n) * n + (x as usize % n)) * s;
-        self.samples.get(start..start + s).unwrap_or(&[])
+        let (n, s) = (usize::from(self.block), usize::from(self.spp));
+        // n, s ∈ 1..=64 (checked constructor): every step is in range; checked regardless.
+        let start = usize::from(y)
+            .checked_rem(n)
+            .and_then(|r| r.checked_mul(n))
+            .and_then(|r| r.checked_add(usize::from(x).checked_rem(n)?))
+            .and_then(|i| i.checked_mul(s));
+        start
+            .and_then(|a| self.samples.get(a..a.checked_add(s)?))
+            .unwrap_or(&[])
     }
 }

@@ -57,11 +57,15 @@ impl Interval {
     /// Round outward to the grid of `frac` fraction bits (in the 16-fraction-bit container):
     /// the low end down, the high end up, then clamp the high end to 1. A no-op for `frac` ≥ 16.
     #[inline]
+    // Ranges: frac < 16 here, so step = 2^(16−frac) ∈ [2, 2^16]; |lo|, |hi| ≤ 2^16 (invariant),
+    // so every quotient·step is a multiple of step within [−2^16, 2^16] (±2^16 are multiples of
+    // every step): no product or negation leaves i32, and the result keeps the invariant.
+    #[allow(clippy::arithmetic_side_effects)]
     pub fn round_out(self, frac: u32) -> Interval {
         if frac >= TUV_FRAC {
             return self;
         }
-        let step = 1i32 << (TUV_FRAC - frac);
+        let step = 2i32.pow(TUV_FRAC - frac);
         let lo = self.lo.div_euclid(step) * step;
         let hi = (-((-self.hi).div_euclid(step)) * step).min(TUV_ONE);
         Interval { lo, hi }
@@ -70,8 +74,9 @@ impl Interval {
     /// Map a lens parameter s ∈ [0, 1] to the lens coordinate u = 2s − 1 (exact for s ∈ [0, 1];
     /// the ends are clamped to [−1, 1], which only matters for an interval reaching below 0).
     #[inline]
+    // |lo|, |hi| ≤ 2^16 (invariant): 2·x − 2^16 ∈ [−3·2^16, 2^16], far inside i32.
+    #[allow(clippy::arithmetic_side_effects)]
     pub fn s_to_lens(self) -> Interval {
-        // |lo|, |hi| ≤ 2^16: 2·x − 2^16 ∈ [−3·2^16, 2^16], far inside i32.
         let map = |x: i32| (2 * x - TUV_ONE).max(-TUV_ONE);
         Interval {
             lo: map(self.lo),
@@ -80,9 +85,11 @@ impl Interval {
     }
 }
 
+/// `x` clamped to [0, 1] (raw [0, 2^16]).
 #[inline]
 fn clamp_raw(x: i128) -> i32 {
-    x.clamp(0, TUV_ONE as i128) as i32
+    // The clamped value is in [0, 2^16], so the conversion never fails.
+    i32::try_from(x.clamp(0, i128::from(TUV_ONE))).unwrap_or(TUV_ONE)
 }
 
 /// `{ s ∈ [0,1] : s·d ≤ n }` by exact division, ends rounded outward; `None` if empty.
@@ -157,8 +164,10 @@ impl RecipConstraint {
 
     /// Precompute the reciprocals of `d` (setup, once per triangle).
     pub fn new(d: i64) -> RecipConstraint {
-        let k = 1i128 << crate::formats::RECIP_SHIFT;
-        let a = (d as i128).abs();
+        const K: i128 = 1i128 << crate::formats::RECIP_SHIFT;
+        let k = K;
+        // |d| ≤ 2^63 as i128: abs exact.
+        let a = i128::from(d).saturating_abs();
         let (r_up, r_dn) = match (ceil_div(k, a), floor_div(k, a)) {
             (Some(u), Some(l)) => (u, l),
             _ => (0, 0),
@@ -172,10 +181,13 @@ impl RecipConstraint {
     /// shift to 16 fraction bits rounds up (ceil); for d < 0 and 0 < −n ≤ |d| the true end is
     /// (−n)/|d| ≥ (−n)·r_dn/2^K and the shift floors. Range: n < |d| < 2^60 and r ≤ 2^80 +1, so
     /// the product is < 2^K + 2^60 < 2^81 (no overflow in i128).
+    ///
+    /// The products are `checked_mul` anyway; should one fail, the interval falls back to the
+    /// whole unit range (conservative: nothing is culled).
     pub fn solve(&self, n: i64) -> Option<Interval> {
-        let shift = crate::formats::RECIP_SHIFT - TUV_FRAC;
-        let sh = 1i128 << shift;
-        let (d, n) = (self.d as i128, n as i128);
+        // 2^(K − 16) = 2^64 as a constant (no run-time shift).
+        const SH: i128 = 1i128 << (crate::formats::RECIP_SHIFT - TUV_FRAC);
+        let (d, n) = (i128::from(self.d), i128::from(n));
         if d > 0 {
             if n < 0 {
                 return None;
@@ -183,20 +195,27 @@ impl RecipConstraint {
             if n >= d {
                 return Some(Interval::UNIT);
             }
-            let hi = ceil_div(n * self.r_up, sh).unwrap_or(TUV_ONE as i128);
+            let hi = n
+                .checked_mul(self.r_up)
+                .and_then(|p| ceil_div(p, SH))
+                .unwrap_or(i128::from(TUV_ONE));
             Some(Interval {
                 lo: 0,
                 hi: clamp_raw(hi),
             })
         } else if d < 0 {
-            let (a, b) = (-d, -n);
+            // |d|, |n| ≤ 2^63 as i128: negation exact.
+            let (a, b) = (d.checked_neg()?, n.checked_neg()?);
             if b <= 0 {
                 return Some(Interval::UNIT);
             }
             if b > a {
                 return None;
             }
-            let lo = floor_div(b * self.r_dn, sh).unwrap_or(0);
+            let lo = b
+                .checked_mul(self.r_dn)
+                .and_then(|p| floor_div(p, SH))
+                .unwrap_or(0);
             Some(Interval {
                 lo: clamp_raw(lo),
                 hi: TUV_ONE,

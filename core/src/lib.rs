@@ -16,6 +16,16 @@
 #![cfg_attr(not(test), no_std)]
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
+// The proof obligations of "nothing overflows, nothing panics": every arithmetic operator,
+// index and narrowing cast is flagged; each remaining one carries an `#[allow]` on the smallest
+// item with the range argument beside it. (Warnings are errors in CI: `-D warnings`.)
+#![warn(
+    clippy::arithmetic_side_effects,
+    clippy::indexing_slicing,
+    clippy::cast_possible_truncation,
+    clippy::cast_sign_loss,
+    clippy::cast_possible_wrap
+)]
 
 pub mod bounds;
 pub mod demo;

@@ -39,6 +39,13 @@
 //! nothing else is).
 
 use crate::formats::{DEPTH_EDGE_BITS, DEPTH_FAR, DEPTH_FRAC, DEPTH_NEAR, SUBPIXEL_BITS, TUV_FRAC};
+
+/// 2^16: scales a 16-fraction-bit value by one t/u/v step (a constant, not a run-time shift).
+const TUV_SCALE: i64 = 1 << TUV_FRAC;
+/// 2^8: one pixel in sample-position units.
+const SUBPIXEL_SCALE: u32 = 1 << SUBPIXEL_BITS;
+/// 2^24: the depth quotient's scale.
+const DEPTH_SCALE: i128 = 1 << DEPTH_FRAC;
 use crate::input::{Sample, Viewport, C, W, X, Y, Z};
 use crate::setup::{Class, Setup};
 use crate::stats::Ops;
@@ -55,23 +62,26 @@ pub struct ScreenPos {
 
 impl ScreenPos {
     /// Position of `sample` in pixel (`px`, `py`).
+    // px, py < 2^16 and the sub-pixel offset < 2^8: 256·p + s < 2^24, exact in u32.
+    #[allow(clippy::arithmetic_side_effects)]
     pub fn of(px: u16, py: u16, sample: &Sample) -> ScreenPos {
         ScreenPos {
-            xs: ((px as u32) << SUBPIXEL_BITS) + sample.sx().to_bits() as u32,
-            ys: ((py as u32) << SUBPIXEL_BITS) + sample.sy().to_bits() as u32,
+            xs: u32::from(px) * SUBPIXEL_SCALE + u32::from(sample.sx().to_bits()),
+            ys: u32::from(py) * SUBPIXEL_SCALE + u32::from(sample.sy().to_bits()),
         }
     }
 }
 
-/// The scaled direction `d` of a screen position (|d_i| ≤ 2^30 for viewports ≤ 2048).
+/// The scaled direction `d` of a screen position (|d_i| ≤ 2^30 for positions inside viewports
+/// ≤ 2048; < 2^45 for any `u32` position).
+// W, H ≤ 2^11 (checked `Viewport`), xs, ys < 2^32: |2·xs − 256·W| < 2^33 and times H < 2^44;
+// 256·W·H ≤ 2^30. Every intermediate is far inside i64.
+#[allow(clippy::arithmetic_side_effects)]
 pub fn direction(vp: Viewport, pos: ScreenPos) -> [i64; 3] {
-    let (w, h) = (vp.w as i64, vp.h as i64);
-    let one = 1i64 << SUBPIXEL_BITS;
-    [
-        (2 * pos.xs as i64 - one * w) * h,
-        (one * h - 2 * pos.ys as i64) * w,
-        one * w * h,
-    ]
+    let (w, h) = (i64::from(vp.w), i64::from(vp.h));
+    let one = i64::from(SUBPIXEL_SCALE);
+    let (xs, ys) = (i64::from(pos.xs), i64::from(pos.ys));
+    [(2 * xs - one * w) * h, (one * h - 2 * ys) * w, one * w * h]
 }
 
 /// Result of a sample test that covers: the depth z/w, raw I8F24.
@@ -85,50 +95,58 @@ pub struct Hit {
 /// Exact vertex positions `(x, y, w, z)` at (t, u, v) for the triangle's class, and their
 /// fraction bits. Ranges: |q| ≤ 2^29, |r − q| ≤ 2^30, |T| ≤ 2^16, |U| ≤ 2^16, so every value is
 /// ≤ 2^14 in real terms and |raw| ≤ 2^62 at 48 fraction bits.
-fn positions(setup: &Setup, s: &Sample, ops: &mut Ops) -> ([[i64; 4]; 3], u32) {
+///
+/// Overflow, line by line (checked `Triangle` and `Sample`): `lerp(f) = q·2^16 + T·(r − q)` is
+/// `(2^16 − T)·q + T·r`, so |lerp| ≤ 2^16·2^29 = 2^45 (the products: |q·2^16| ≤ 2^45,
+/// |T·(r − q)| ≤ 2^46); static or defocus-only `q·2^16 + U·c`: ≤ 2^45 + 2^45 = 2^46;
+/// motion+defocus `lerp·2^16 + U·l[C]`: ≤ 2^61 + 2^61 = 2^62. All < 2^63: no i64 overflow.
+/// The scalings are multiplications by the constant 2^16 (no shift), so debug builds' overflow
+/// checks see them; `tests::positions_at_the_domain_corners` drives the extremes.
+#[allow(clippy::arithmetic_side_effects)]
+pub(crate) fn positions(setup: &Setup, s: &Sample, ops: &mut Ops) -> ([[i64; 4]; 3], u32) {
     let [v0, v1] = &setup.tri.v;
-    let t = s.t().to_bits() as i64;
-    let (u, v) = (s.u().to_bits() as i64, s.v().to_bits() as i64);
+    let t = i64::from(s.t().to_bits());
+    let (u, v) = (i64::from(s.u().to_bits()), i64::from(s.v().to_bits()));
     let mut out = [[0i64; 4]; 3];
     let frac = match setup.class {
         Class::Static => {
             for (q, o) in v0.iter().zip(out.iter_mut()) {
-                *o = [q[X] as i64, q[Y] as i64, q[W] as i64, q[Z] as i64];
+                *o = [q[X], q[Y], q[W], q[Z]].map(i64::from);
             }
             16
         }
         Class::Motion => {
             for ((q, r), o) in v0.iter().zip(v1.iter()).zip(out.iter_mut()) {
-                let lerp = |f: usize| ((q[f] as i64) << TUV_FRAC) + t * (r[f] as i64 - q[f] as i64);
-                *o = [lerp(X), lerp(Y), lerp(W), lerp(Z)];
-                ops.sample += 8;
+                let l = lerp5(q, r, t);
+                *o = [l[X], l[Y], l[W], l[Z]];
+                ops.add_sample(8);
             }
             32
         }
         Class::Defocus => {
             for (q, o) in v0.iter().zip(out.iter_mut()) {
-                let c = q[C] as i64;
+                let c = i64::from(q[C]);
                 *o = [
-                    ((q[X] as i64) << TUV_FRAC) + u * c,
-                    ((q[Y] as i64) << TUV_FRAC) + v * c,
-                    (q[W] as i64) << TUV_FRAC,
-                    (q[Z] as i64) << TUV_FRAC,
+                    i64::from(q[X]) * TUV_SCALE + u * c,
+                    i64::from(q[Y]) * TUV_SCALE + v * c,
+                    i64::from(q[W]) * TUV_SCALE,
+                    i64::from(q[Z]) * TUV_SCALE,
                 ];
-                ops.sample += 4;
+                ops.add_sample(4);
             }
             32
         }
         Class::MotionDefocus => {
             for ((q, r), o) in v0.iter().zip(v1.iter()).zip(out.iter_mut()) {
-                let lerp = |f: usize| ((q[f] as i64) << TUV_FRAC) + t * (r[f] as i64 - q[f] as i64);
-                let c = lerp(C);
+                let l = lerp5(q, r, t);
+                let c = l[C];
                 *o = [
-                    (lerp(X) << TUV_FRAC) + u * c,
-                    (lerp(Y) << TUV_FRAC) + v * c,
-                    lerp(W) << TUV_FRAC,
-                    lerp(Z) << TUV_FRAC,
+                    l[X] * TUV_SCALE + u * c,
+                    l[Y] * TUV_SCALE + v * c,
+                    l[W] * TUV_SCALE,
+                    l[Z] * TUV_SCALE,
                 ];
-                ops.sample += 14;
+                ops.add_sample(14);
             }
             48
         }
@@ -136,11 +154,23 @@ fn positions(setup: &Setup, s: &Sample, ops: &mut Ops) -> ([[i64; 4]; 3], u32) {
     (out, frac)
 }
 
+/// `q·2^16 + T·(r − q)` per field: |.| ≤ 2^45 (see [`positions`]).
+#[inline]
+#[allow(clippy::arithmetic_side_effects)] // |q·2^16| ≤ 2^45, |T·(r − q)| ≤ 2^46, sum ≤ 2^45
+fn lerp5(q: &[i32; 5], r: &[i32; 5], t: i64) -> [i64; 5] {
+    let mut out = [0i64; 5];
+    for ((o, &a), &b) in out.iter_mut().zip(q).zip(r) {
+        *o = i64::from(a) * TUV_SCALE + t * (i64::from(b) - i64::from(a));
+    }
+    out
+}
+
 /// Cross product of the (x, y, w) parts, exact: |P| ≤ 2^62 so each term < 2^124, sum < 2^125.
 #[inline]
+#[allow(clippy::arithmetic_side_effects)] // |each product| ≤ 2^124, |difference| ≤ 2^125 < 2^127
 fn cross(a: &[i64; 4], b: &[i64; 4]) -> [i128; 3] {
-    let (ax, ay, aw) = (a[0] as i128, a[1] as i128, a[2] as i128);
-    let (bx, by, bw) = (b[0] as i128, b[1] as i128, b[2] as i128);
+    let [ax, ay, aw, _] = a.map(i128::from);
+    let [bx, by, bw, _] = b.map(i128::from);
     [ay * bw - aw * by, aw * bx - ax * bw, ax * by - ay * bx]
 }
 
@@ -156,10 +186,12 @@ fn dot_wide(n: &[i128; 3], d: &[i64; 3]) -> Wide {
 /// Fill-rule decision for an edge whose value is exactly zero.
 #[inline]
 fn fill_rule(n: &[i128; 3], det_sign: i32) -> bool {
+    let [n0, n1, _] = *n;
+    // |n| < 2^126 (sample-test normals, < 2^61 static): negation exact; saturating regardless.
     let (a, b) = if det_sign > 0 {
-        (n[0], n[1])
+        (n0, n1)
     } else {
-        (-n[0], -n[1])
+        (n0.saturating_neg(), n1.saturating_neg())
     };
     a > 0 || (a == 0 && b > 0)
 }
@@ -172,23 +204,31 @@ fn decide(e: &[Wide; 3], n: &[[i128; 3]; 3], det_sign: i32) -> bool {
     }
     e.iter()
         .zip(n.iter())
-        .all(|(ek, nk)| match ek.signum() * det_sign {
-            1 => true,
-            0 => fill_rule(nk, det_sign),
+        .all(|(ek, nk)| match (ek.signum(), det_sign > 0) {
+            (1, true) | (-1, false) => true,
+            (0, _) => fill_rule(nk, det_sign),
             _ => false,
         })
 }
 
 /// Depth z/w from the edge values and the vertices' (w, z), see module docs.
-fn depth(e: &[Wide; 3], wz: &[(i64, i64); 3], det_sign: i32) -> i32 {
+///
+/// Ranges: after the shift every |e'| ≤ 2^32 (bit length ≤ 32), |w|, |z| ≤ 2^62, so each product
+/// is < 2^94 and the sums < 2^96; `num·2^24` (a multiplication by a constant, no shift) is
+/// < 2^120; `den > 0` at the division. `tests::depth_at_the_range_corners` drives the extremes.
+#[allow(clippy::arithmetic_side_effects)]
+pub(crate) fn depth(e: &[Wide; 3], wz: &[(i64, i64); 3], det_sign: i32) -> i32 {
     let len = e.iter().map(Wide::bit_len).max().unwrap_or(0);
     let sh = len.saturating_sub(DEPTH_EDGE_BITS);
     let (mut num, mut den) = (0i128, 0i128);
     for (ek, &(w, z)) in e.iter().zip(wz.iter()) {
-        // |e'| ≤ 2^32 and |w|, |z| ≤ 2^62: each product < 2^94, sums < 2^96.
-        let ek = ek.shr_floor(sh);
-        num += ek * z as i128;
-        den += ek * w as i128;
+        // The quotient has ≤ 32 significant bits, so `shr_floor` cannot return None; if it did,
+        // the far end is the documented "no reliable depth" value.
+        let Some(ek) = ek.shr_floor(sh) else {
+            return DEPTH_FAR;
+        };
+        num += ek * i128::from(z);
+        den += ek * i128::from(w);
     }
     if det_sign < 0 {
         num = -num;
@@ -197,9 +237,9 @@ fn depth(e: &[Wide; 3], wz: &[(i64, i64); 3], det_sign: i32) -> i32 {
     if den <= 0 {
         return DEPTH_FAR;
     }
-    // |num·2^24| < 2^120.
-    let q = (num << DEPTH_FRAC).div_euclid(den);
-    q.clamp(DEPTH_NEAR as i128, DEPTH_FAR as i128) as i32
+    let q = (num * DEPTH_SCALE).div_euclid(den);
+    let clamped = q.clamp(i128::from(DEPTH_NEAR), i128::from(DEPTH_FAR));
+    i32::try_from(clamped).unwrap_or(DEPTH_FAR)
 }
 
 /// Everything the sample test computed for one sample: the exact edge values, the determinant and
@@ -217,19 +257,22 @@ pub struct SampleEval {
 /// The sample test with its intermediates. Counts its arithmetic in `ops.sample`.
 pub fn sample_eval(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> SampleEval {
     let d = direction(setup.viewport, pos);
-    ops.sample += 5;
+    ops.add_sample(5);
     if let (Class::Static, Some(st)) = (setup.class, setup.edges.as_ref()) {
-        // Plain 2D test: normals precomputed in setup, |n·d| < 2^92.
-        let e = st.n.map(|n| {
-            Wide::from_i128(n[0] * d[0] as i128 + n[1] * d[1] as i128 + n[2] * d[2] as i128)
+        // Plain 2D test: normals precomputed in setup (|n| < 2^61), |d| < 2^45: each product
+        // < 2^106, the sum < 2^108.
+        #[allow(clippy::arithmetic_side_effects)]
+        let e = st.n.map(|[a, b, c]| {
+            let [dx, dy, dw] = d.map(i128::from);
+            Wide::from_i128(a * dx + b * dy + c * dw)
         });
-        ops.sample += 18;
-        let det = Wide::from_i128(st.det_sign as i128);
+        ops.add_sample(18);
+        let det = Wide::from_i128(i128::from(st.det_sign));
         if !decide(&e, &st.n, st.det_sign) {
             return SampleEval { e, det, hit: None };
         }
-        let wz = setup.tri.v[0].map(|q| (q[W] as i64, q[Z] as i64));
-        ops.sample += 12;
+        let wz = setup.tri.v[0].map(|q| (i64::from(q[W]), i64::from(q[Z])));
+        ops.add_sample(12);
         return SampleEval {
             e,
             det,
@@ -249,13 +292,13 @@ pub fn sample_eval(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> 
     for (nc, pc) in n[0].iter().zip(p[0].iter()) {
         det.mul_add(*nc, *pc);
     }
-    ops.sample += 18 + 15 + 5 + 6;
+    ops.add_sample(18 + 15 + 5 + 6);
     let det_sign = det.signum();
     if !decide(&e, &n, det_sign) {
         return SampleEval { e, det, hit: None };
     }
     let wz = p.map(|q| (q[2], q[3]));
-    ops.sample += 12;
+    ops.add_sample(12);
     SampleEval {
         e,
         det,

@@ -160,10 +160,14 @@ pub enum Outcome {
 /// Axis coordinate `a` of raw vertex `p` (x, or −y) and its lens coefficient `cs`.
 #[inline]
 pub(crate) fn axis_coord(p: &[i32; 5], axis: usize) -> (i64, i64) {
+    // |raw| ≤ 2^31 as i64: negation exact (saturating regardless).
     if axis == 0 {
-        (p[X] as i64, p[C] as i64)
+        (i64::from(p[X]), i64::from(p[C]))
     } else {
-        (-(p[Y] as i64), -(p[C] as i64))
+        (
+            i64::from(p[Y]).saturating_neg(),
+            i64::from(p[C]).saturating_neg(),
+        )
     }
 }
 
@@ -187,18 +191,23 @@ pub fn classify(tri: &Triangle) -> Class {
 ///
 /// In 2D a direction lies in the cone of a point set iff it lies in the cone of one point or of
 /// two points less than π apart (Carathéodory), and the hull meets the camera point iff a point is
-/// the origin or two points are opposite. All products are exact (|a| ≤ 2^30, |w| ≤ 2^29 raw).
+/// the origin or two points are opposite. All products are exact for any `i64` inputs: they are
+/// formed in `i128` (each product < 2^126, each sum of two < 2^127); setup's own points have
+/// |a| ≤ 2^30, |w| ≤ 2^29.
+#[allow(clippy::arithmetic_side_effects)] // ranges in the doc comment above
 pub fn crosses_camera_plane(pts: &[(i64, i64)], dir: i64, ops: &mut Ops) -> bool {
+    let dir = i128::from(dir);
     for &(a, w) in pts {
-        ops.setup += 2;
-        if w == 0 && (a == 0 || a * dir > 0) {
+        ops.add_setup(2);
+        if w == 0 && (a == 0 || i128::from(a) * dir > 0) {
             return true;
         }
     }
     for (i, &(ai, wi)) in pts.iter().enumerate() {
-        for &(aj, wj) in pts.iter().skip(i + 1) {
-            ops.setup += 6;
-            // |a| ≤ 2^30, |w| ≤ 2^29: each product < 2^60, sums < 2^61, exact in i64.
+        let (ai, wi) = (i128::from(ai), i128::from(wi));
+        for &(aj, wj) in pts.iter().skip(i.saturating_add(1)) {
+            let (aj, wj) = (i128::from(aj), i128::from(wj));
+            ops.add_setup(6);
             let cr = ai * wj - wi * aj;
             let dot = ai * aj + wi * wj;
             if cr == 0 && dot < 0 {
@@ -215,23 +224,38 @@ pub fn crosses_camera_plane(pts: &[(i64, i64)], dir: i64, ops: &mut Ops) -> bool
     false
 }
 
+/// Largest |box coordinate| setup produces (raw, 2^-bnd px): |num| < 2^58 in [`project`].
+const BOX_LIMIT: PixelCoord = 1 << 58;
+
 /// Pixel position `(a + w)·E·2^bnd / (2w)` of a front point (w > 0), floored or ceiled to the
 /// bound grid of `bnd` fraction bits.
+///
+/// Ranges: |a + w| < 2^31 (|a| ≤ 2^30 with the lens term, |w| ≤ 2^29), E ≤ 2^11, bnd ≤ 16
+/// (`PrecisionBits`): the numerator is < 2^58, formed in i128 by multiplications (the 2^bnd
+/// factor is `2^bnd` by `pow`, not a shift, so overflow checks see it). The caller passes
+/// w > 0, so the division exists and |q| ≤ |num| < 2^58 fits i64. Should either fail, the result
+/// is the outward limit (−2^58 for a minimum, 2^58 for a maximum): conservative.
+/// `tests::projection_at_the_domain_corners` checks the extremes against an independent
+/// computation.
 #[inline]
+#[allow(clippy::arithmetic_side_effects)] // ranges in the doc comment above
 fn project(a: i64, w: i64, extent: i64, up: bool, bnd: u32) -> PixelCoord {
-    // |a + w| < 2^31, E ≤ 2^11, bnd ≤ 16: numerator < 2^58 (i128 for headroom); w > 0 checked.
-    let num = (a as i128 + w as i128) * extent as i128 * (1i128 << bnd);
-    let den = 2 * w as i128;
+    let num = (i128::from(a) + i128::from(w)) * i128::from(extent) * 2i128.pow(bnd);
+    let den = 2 * i128::from(w);
     let q = if up {
         ceil_div(num, den)
     } else {
         floor_div(num, den)
     };
-    // |q| ≤ |num| < 2^58: fits i64.
-    q.unwrap_or(0) as PixelCoord
+    let limit = if up { BOX_LIMIT } else { -BOX_LIMIT };
+    q.and_then(|q| PixelCoord::try_from(q).ok())
+        .unwrap_or(limit)
 }
 
 /// Lens-corner boxes of one axis (Laine §3.1), with the separating-line test per side.
+// Ranges: |a|, |cs|, |w| ≤ 2^29 (checked triangle): a ± |cs| and a + lens·cs are ≤ 2^30; the
+// index i counts the six vertices.
+#[allow(clippy::arithmetic_side_effects)]
 fn axis_boxes(tri: &Triangle, axis: usize, extent: i64, bnd: u32, ops: &mut Ops) -> AxisBoxes {
     let mut left = [(0i64, 0i64); 6];
     let mut right = [(0i64, 0i64); 6];
@@ -239,13 +263,13 @@ fn axis_boxes(tri: &Triangle, axis: usize, extent: i64, bnd: u32, ops: &mut Ops)
     for ends in tri.v.iter() {
         for p in ends.iter() {
             let (a, cs) = axis_coord(p, axis);
-            let w = p[W] as i64;
+            let w = i64::from(p[W]);
             if let (Some(l), Some(r)) = (left.get_mut(i), right.get_mut(i)) {
                 *l = (a - cs.abs(), w);
                 *r = (a + cs.abs(), w);
             }
             i += 1;
-            ops.setup += 2;
+            ops.add_setup(2);
         }
     }
     let unbounded_lo = crosses_camera_plane(&left, -1, ops);
@@ -256,14 +280,14 @@ fn axis_boxes(tri: &Triangle, axis: usize, extent: i64, bnd: u32, ops: &mut Ops)
     for ends in tri.v.iter() {
         for p in ends.iter() {
             let (a, cs) = axis_coord(p, axis);
-            let w = p[W] as i64;
+            let w = i64::from(p[W]);
             if w <= 0 {
                 continue;
             }
             any_front = true;
             for (corner, lens) in [-1i64, 1].into_iter().enumerate() {
                 let au = a + lens * cs;
-                ops.setup += 6;
+                ops.add_setup(6);
                 if let (Some(l), Some(h)) = (lo.get_mut(corner), hi.get_mut(corner)) {
                     *l = (*l).min(project(au, w, extent, false, bnd));
                     *h = (*h).max(project(au, w, extent, true, bnd));
@@ -279,28 +303,39 @@ fn axis_boxes(tri: &Triangle, axis: usize, extent: i64, bnd: u32, ops: &mut Ops)
 
 /// Footprint columns (or rows) `[p0, p1)` of one axis from its boxes, clamped to `[0, E]`.
 /// A sample at ξ is in column floor(ξ); ξ ≤ max means columns up to floor(max) are needed.
-fn axis_range(b: &AxisBoxes, extent: i64, bnd: u32) -> (u16, u16) {
+/// Pixel index floor(X / 2^bnd) by an exact floor division (bnd ≤ 16; no shift needed).
+fn floor_px(x: PixelCoord, bnd: u32) -> PixelCoord {
+    x.div_euclid(2i64.pow(bnd))
+}
+
+fn axis_range(b: &AxisBoxes, extent: u16, bnd: u32) -> (u16, u16) {
+    let e = i64::from(extent);
     let p0 = match b.lo {
-        Some([l0, l1]) => l0.min(l1) >> bnd,
+        Some([l0, l1]) => floor_px(l0.min(l1), bnd),
         None => 0,
     };
     let p1 = match b.hi {
-        Some([h0, h1]) => (h0.max(h1) >> bnd).saturating_add(1),
-        None => extent,
+        Some([h0, h1]) => floor_px(h0.max(h1), bnd).saturating_add(1),
+        None => e,
     };
-    (p0.clamp(0, extent) as u16, p1.clamp(0, extent) as u16)
+    // Clamped to [0, E] with E ≤ 2048: the conversions are exact.
+    let px = |p: i64| u16::try_from(p.clamp(0, e)).unwrap_or(extent);
+    (px(p0), px(p1))
 }
 
 /// Time span inside the frustum: for each plane w ∓ a ≥ 0 (both axes, widened by |c| for the
 /// lens), the largest vertex distance is convex in t and lies below its chord; the chord's
 /// non-negative part is a conservative span. The camera plane uses max w > 0 the same way.
+// Ranges: every raw field ≤ 2^29 in magnitude: w + sign·x + |c| ≤ 3·2^29 and the differences
+// a − b ≤ 3·2^30, all in i128.
+#[allow(clippy::arithmetic_side_effects)]
 fn frustum_span(tri: &Triangle, ops: &mut Ops) -> Option<Interval> {
     let [v0, v1] = &tri.v;
     let mut span = Interval::UNIT;
     // camera plane: a hit needs w > 0, so both ends' max w ≤ 0 means never visible.
-    let wmax = |v: &[[i32; 5]; 3]| v.iter().map(|p| p[W] as i128).max().unwrap_or(0);
+    let wmax = |v: &[[i32; 5]; 3]| v.iter().map(|p| i128::from(p[W])).max().unwrap_or(0);
     let (a, b) = (wmax(v0), wmax(v1));
-    ops.setup += 6;
+    ops.add_setup(6);
     if a <= 0 && b <= 0 {
         return None;
     }
@@ -311,13 +346,13 @@ fn frustum_span(tri: &Triangle, ops: &mut Ops) -> Option<Interval> {
                 v.iter()
                     .map(|p| {
                         let (x, cs) = axis_coord(p, axis);
-                        p[W] as i128 + sign * x as i128 + (cs as i128).abs()
+                        i128::from(p[W]) + sign * i128::from(x) + i128::from(cs).abs()
                     })
                     .max()
                     .unwrap_or(0)
             };
             let (a, b) = (dist(v0), dist(v1));
-            ops.setup += 14;
+            ops.add_setup(14);
             span = span.meet(solve_le(a - b, a)?)?;
         }
     }
@@ -326,6 +361,8 @@ fn frustum_span(tri: &Triangle, ops: &mut Ops) -> Option<Interval> {
 
 /// det(P0, P1, P2) of raw (x, y, w) triples, exact in i128 (|P| < 2^33 here, so |det| < 2^102).
 #[inline]
+// Callers pass |P| < 2^33: products of three < 2^99, the sum of six < 2^102.
+#[allow(clippy::arithmetic_side_effects)]
 pub(crate) fn det3(p: &[[i128; 3]; 3]) -> i128 {
     let [a, b, c] = p;
     a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
@@ -335,6 +372,9 @@ pub(crate) fn det3(p: &[[i128; 3]; 3]) -> i128 {
 /// Whether det(t, u, v) is zero for every t, u, v. det is cubic in t and bilinear in (u, v), so it
 /// vanishes identically iff it vanishes at t ∈ {0, 1/3, 2/3, 1} × (u, v) ∈ {0, 1}² (evaluated
 /// exactly, scaled by 3 so every point is an integer).
+// Ranges: j, u, v ∈ {0..3}; (3 − j)·q + j·r ≤ 3·2^29, plus u·c ≤ 3·2^29: |P| < 2^32 < 2^33 as
+// `det3` needs.
+#[allow(clippy::arithmetic_side_effects)]
 fn degenerate(tri: &Triangle, class: Class, ops: &mut Ops) -> bool {
     let [v0, v1] = &tri.v;
     let tj: &[i128] = if class.motion() { &[0, 1, 2, 3] } else { &[0] };
@@ -344,11 +384,14 @@ fn degenerate(tri: &Triangle, class: Class, ops: &mut Ops) -> bool {
             for &v in lens {
                 let mut p = [[0i128; 3]; 3];
                 for ((q, r), out) in v0.iter().zip(v1.iter()).zip(p.iter_mut()) {
-                    let lerp = |f: usize| (3 - j) * q[f] as i128 + j * r[f] as i128;
-                    let c = lerp(C);
-                    *out = [lerp(X) + u * c, lerp(Y) + v * c, lerp(W)];
+                    let mut l = [0i128; 5];
+                    for ((o, &a), &b) in l.iter_mut().zip(q).zip(r) {
+                        *o = (3 - j) * i128::from(a) + j * i128::from(b);
+                    }
+                    let c = l[C];
+                    *out = [l[X] + u * c, l[Y] + v * c, l[W]];
                 }
-                ops.setup += 30;
+                ops.add_setup(30);
                 if det3(&p) != 0 {
                     return false;
                 }
@@ -385,12 +428,13 @@ impl Setup {
     }
 }
 
+// |P| ≤ 2^29 raw: each product < 2^58, each normal component < 2^59.
+#[allow(clippy::arithmetic_side_effects)]
 fn static_edges(tri: &Triangle) -> StaticEdges {
-    let p = tri.v[0].map(|q| [q[X] as i128, q[Y] as i128, q[W] as i128]);
+    let p = tri.v[0].map(|q| [q[X], q[Y], q[W]].map(i128::from));
     let det = det3(&p);
-    let n = [0usize, 1, 2].map(|k| {
-        let a = p[(k + 1) % 3];
-        let b = p[(k + 2) % 3];
+    let [p0, p1, p2] = p;
+    let n = [(p1, p2), (p2, p0), (p0, p1)].map(|(a, b)| {
         [
             a[1] * b[2] - a[2] * b[1],
             a[2] * b[0] - a[0] * b[2],
@@ -399,7 +443,7 @@ fn static_edges(tri: &Triangle) -> StaticEdges {
     });
     StaticEdges {
         n,
-        det_sign: det.signum() as i32,
+        det_sign: if det < 0 { -1 } else { i32::from(det > 0) },
     }
 }
 
@@ -413,7 +457,7 @@ pub fn setup(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> Outcome {
 pub fn setup_with<P: Precision>(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> Outcome {
     let prec = PrecisionBits::of::<P>();
     let class = classify(tri);
-    ops.setup += 30;
+    ops.add_setup(30);
     let span = match frustum_span(tri, ops) {
         Some(s) => s.round_out(prec.tuv()),
         None => return Outcome::Culled(Cull::Outside),
@@ -426,14 +470,14 @@ pub fn setup_with<P: Precision>(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> 
         axis_boxes(tri, 0, ew, prec.bnd(), ops),
         axis_boxes(tri, 1, eh, prec.bnd(), ops),
     ];
-    let (x0, x1) = axis_range(&axes[0], ew, prec.bnd());
-    let (y0, y1) = axis_range(&axes[1], eh, prec.bnd());
+    let (x0, x1) = axis_range(&axes[0], vp.w, prec.bnd());
+    let (y0, y1) = axis_range(&axes[1], vp.h, prec.bnd());
     let footprint = PixelRect { x0, y0, x1, y1 };
     if footprint.is_empty() {
         return Outcome::Culled(Cull::Outside);
     }
     let edges = (class == Class::Static).then(|| {
-        ops.setup += 30;
+        ops.add_setup(30);
         static_edges(tri)
     });
     Outcome::Visible(Setup {

@@ -16,11 +16,26 @@ pub struct Ops {
 }
 
 impl Ops {
-    /// Element-wise sum.
+    /// Element-wise sum (saturating: a counter stops at `u64::MAX`).
     pub fn add(&mut self, o: &Ops) {
-        self.setup += o.setup;
-        self.bounds += o.bounds;
-        self.sample += o.sample;
+        self.setup = self.setup.saturating_add(o.setup);
+        self.bounds = self.bounds.saturating_add(o.bounds);
+        self.sample = self.sample.saturating_add(o.sample);
+    }
+    /// Count `n` setup operations (saturating).
+    #[inline]
+    pub fn add_setup(&mut self, n: u64) {
+        self.setup = self.setup.saturating_add(n);
+    }
+    /// Count `n` bounds operations (saturating).
+    #[inline]
+    pub fn add_bounds(&mut self, n: u64) {
+        self.bounds = self.bounds.saturating_add(n);
+    }
+    /// Count `n` sample-test operations (saturating).
+    #[inline]
+    pub fn add_sample(&mut self, n: u64) {
+        self.sample = self.sample.saturating_add(n);
     }
 }
 
@@ -61,20 +76,27 @@ impl Stats {
             .unwrap_or(0)
     }
 
-    /// Element-wise sum.
+    /// Element-wise sum (saturating).
     pub fn add(&mut self, o: &Stats) {
-        self.triangles += o.triangles;
-        self.culled_outside += o.culled_outside;
-        self.culled_degenerate += o.culled_degenerate;
+        let sum = |a: &mut u64, b: u64| *a = a.saturating_add(b);
+        sum(&mut self.triangles, o.triangles);
+        sum(&mut self.culled_outside, o.culled_outside);
+        sum(&mut self.culled_degenerate, o.culled_degenerate);
         for (a, b) in self.by_class.iter_mut().zip(o.by_class.iter()) {
-            *a += b;
+            sum(a, *b);
         }
-        self.tiles_visited += o.tiles_visited;
-        self.tiles_skipped += o.tiles_skipped;
-        self.samples_tested += o.samples_tested;
-        self.samples_covered += o.samples_covered;
-        self.samples_written += o.samples_written;
-        self.samples_occluded += o.samples_occluded;
+        sum(&mut self.tiles_visited, o.tiles_visited);
+        sum(&mut self.tiles_skipped, o.tiles_skipped);
+        sum(&mut self.samples_tested, o.samples_tested);
+        sum(&mut self.samples_covered, o.samples_covered);
+        sum(&mut self.samples_written, o.samples_written);
+        sum(&mut self.samples_occluded, o.samples_occluded);
         self.ops.add(&o.ops);
+    }
+
+    /// Increment one counter by 1 (saturating).
+    #[inline]
+    pub(crate) fn inc(c: &mut u64) {
+        *c = c.saturating_add(1);
     }
 }

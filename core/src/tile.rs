@@ -174,19 +174,20 @@ impl<const TW: usize, const TH: usize, const S: usize> TileBuffer<TW, TH, S> {
 }
 
 /// Resolve one pixel's sample colors: per channel `(Σ + S/2) / S` with S = `colors.len()`
-/// (round half up; S ≤ 64 keeps Σ + S/2 < 2^15). Black for S = 0.
+/// (round half up; S ≤ 64 keeps Σ + S/2 < 2^15, exact for any S < 2^24). Black for S = 0.
 pub fn resolve_colors(colors: &[Rgb888]) -> Rgb888 {
-    let n = colors.len() as u32;
-    if n == 0 {
-        return Rgb888::BLACK;
-    }
+    let n = u32::try_from(colors.len()).unwrap_or(u32::MAX);
     let mut sum = [0u32; 3];
     for c in colors {
-        sum[0] += c.r() as u32;
-        sum[1] += c.g() as u32;
-        sum[2] += c.b() as u32;
+        for (s, ch) in sum.iter_mut().zip([c.r(), c.g(), c.b()]) {
+            *s = s.saturating_add(u32::from(ch));
+        }
     }
-    let avg = sum.map(|v| ((v + n / 2) / n).min(255) as u8);
+    // checked_div: None only for S = 0 (black); the quotient is ≤ 255 for S < 2^24.
+    let avg = sum.map(|v| {
+        let q = v.saturating_add(n / 2).checked_div(n).unwrap_or(0);
+        u8::try_from(q).unwrap_or(u8::MAX)
+    });
     Rgb888::new(avg[0], avg[1], avg[2])
 }
 
@@ -212,13 +213,13 @@ impl<B: BoundsStrategy, const N: usize, P: Precision> Renderer<B, N, P> {
             stats: Stats::default(),
         };
         for p in prims {
-            r.stats.triangles += 1;
+            Stats::inc(&mut r.stats.triangles);
             match setup_with::<P>(&p.tri, vp, &mut r.stats.ops) {
-                Outcome::Culled(Cull::Outside) => r.stats.culled_outside += 1,
-                Outcome::Culled(Cull::Degenerate) => r.stats.culled_degenerate += 1,
+                Outcome::Culled(Cull::Outside) => Stats::inc(&mut r.stats.culled_outside),
+                Outcome::Culled(Cull::Degenerate) => Stats::inc(&mut r.stats.culled_degenerate),
                 Outcome::Visible(s) => {
                     if let Some(c) = r.stats.by_class.get_mut(s.class.index()) {
-                        *c += 1;
+                        Stats::inc(c);
                     }
                     let coeffs = r.bounds.prepare(&s, &mut r.stats.ops);
                     r.setups
@@ -245,37 +246,39 @@ impl<B: BoundsStrategy, const N: usize, P: Precision> Renderer<B, N, P> {
         clear: Rgb888,
         fb: &mut TileBuffer<TW, TH, S>,
     ) -> Result<(), Error> {
-        if pattern.spp() as usize != S {
+        if usize::from(pattern.spp()) != S {
             return Err(Error::SppMismatch {
-                tile: S as u16,
+                tile: u16::try_from(S).unwrap_or(u16::MAX),
                 pattern: pattern.spp(),
             });
         }
-        let bt = bounds_tile as usize;
-        if !matches!(bounds_tile, 1 | 2 | 4 | 8) || TW % bt != 0 || TH % bt != 0 {
+        let bt = usize::from(bounds_tile);
+        let divides = |n: usize| n.checked_rem(bt) == Some(0);
+        if !matches!(bounds_tile, 1 | 2 | 4 | 8) || !divides(TW) || !divides(TH) {
             return Err(Error::BoundsTile { size: bounds_tile });
         }
         if x0 >= self.vp.w || y0 >= self.vp.h {
             return Err(Error::PixelOutOfRange);
         }
         fb.clear(clear);
+        let (tw, th) = Self::tile_size::<TW, TH>();
         let screen = PixelRect {
             x0,
             y0,
-            x1: (x0 as usize + TW).min(self.vp.w as usize) as u16,
-            y1: (y0 as usize + TH).min(self.vp.h as usize) as u16,
+            x1: x0.saturating_add(tw).min(self.vp.w),
+            y1: y0.saturating_add(th).min(self.vp.h),
         };
-        let b = bounds_tile as u16;
+        let b = u16::from(bounds_tile);
         for (setup, coeffs, color) in self.setups.iter() {
             let region = setup.footprint.intersect(&screen);
             if region.is_empty() {
                 continue;
             }
             for cell in region.cells(b) {
-                self.stats.tiles_visited += 1;
+                Stats::inc(&mut self.stats.tiles_visited);
                 let bounds = self.bounds.tile(setup, coeffs, cell, &mut self.stats.ops);
                 let Some(uvt) = bounds else {
-                    self.stats.tiles_skipped += 1;
+                    Stats::inc(&mut self.stats.tiles_skipped);
                     continue;
                 };
                 shade_cell(
@@ -303,29 +306,37 @@ impl<B: BoundsStrategy, const N: usize, P: Precision> Renderer<B, N, P> {
         mut out: impl FnMut(u16, u16, Rgb888, PixelStats),
     ) -> Result<(), Error> {
         let mut fb = TileBuffer::<TW, TH, S>::new(clear);
+        let (tw, th) = Self::tile_size::<TW, TH>();
         let mut y0 = 0u16;
         while y0 < self.vp.h {
             let mut x0 = 0u16;
             while x0 < self.vp.w {
                 self.render_tile(x0, y0, pattern, bounds_tile, clear, &mut fb)?;
-                for ty in 0..TH {
-                    for tx in 0..TW {
-                        let (x, y) = (x0 as usize + tx, y0 as usize + ty);
-                        if x < self.vp.w as usize && y < self.vp.h as usize {
-                            out(
-                                x as u16,
-                                y as u16,
-                                fb.resolve(tx, ty),
-                                fb.pixel_stats(tx, ty),
-                            );
+                for ty in 0..th {
+                    for tx in 0..tw {
+                        // x0 + tx < 2048 + 2048: no saturation happens.
+                        let (x, y) = (x0.saturating_add(tx), y0.saturating_add(ty));
+                        if x < self.vp.w && y < self.vp.h {
+                            let (tx, ty) = (usize::from(tx), usize::from(ty));
+                            out(x, y, fb.resolve(tx, ty), fb.pixel_stats(tx, ty));
                         }
                     }
                 }
-                x0 = x0.saturating_add(TW as u16);
+                // tw ≥ 1 (TileBuffer's const assertion), so the walk advances.
+                x0 = x0.saturating_add(tw);
             }
-            y0 = y0.saturating_add(TH as u16);
+            y0 = y0.saturating_add(th);
         }
         Ok(())
+    }
+
+    /// `(TW, TH)` as `u16`: both are 1..=2048 (asserted at compile time by [`TileBuffer::new`],
+    /// the only way to obtain the buffer the walk uses), so the conversion is exact.
+    fn tile_size<const TW: usize, const TH: usize>() -> (u16, u16) {
+        (
+            u16::try_from(TW).unwrap_or(MAX_VIEWPORT),
+            u16::try_from(TH).unwrap_or(MAX_VIEWPORT),
+        )
     }
 
     /// Render the whole viewport into an embedded-graphics `DrawTarget`, one tile at a time.
@@ -371,29 +382,34 @@ fn shade_cell<const TW: usize, const TH: usize, const S: usize>(
     let mut ops = Ops::default();
     for py in cell.y0..cell.y1 {
         for px in cell.x0..cell.x1 {
-            let (tx, ty) = ((px - screen.x0) as usize, (py - screen.y0) as usize);
+            // The cell lies inside the screen tile, so both differences are in [0, TW), [0, TH).
+            let (Some(tx), Some(ty)) = (px.checked_sub(screen.x0), py.checked_sub(screen.y0))
+            else {
+                continue;
+            };
+            let (tx, ty) = (usize::from(tx), usize::from(ty));
             for (si, s) in pattern.pixel(px, py).iter().enumerate() {
                 if !uvt.contains(s.u().to_bits(), s.v().to_bits(), s.t().to_bits()) {
                     continue;
                 }
-                stats.samples_tested += 1;
+                Stats::inc(&mut stats.samples_tested);
                 let hit = sample_test(setup, ScreenPos::of(px, py, s), s, &mut ops);
                 let ps = fb.stats.get_mut(ty).and_then(|r| r.get_mut(tx));
                 if let Some(ps) = ps {
-                    ps.tested += 1;
-                    ps.covered += hit.is_some() as u32;
+                    ps.tested = ps.tested.saturating_add(1);
+                    ps.covered = ps.covered.saturating_add(u32::from(hit.is_some()));
                 }
                 if let Some(h) = hit {
-                    stats.samples_covered += 1;
+                    Stats::inc(&mut stats.samples_covered);
                     // In range (tx < TW, ty < TH, si < S = spp) and h.depth ≠ DEPTH_EMPTY.
                     match fb.write(tx, ty, si, color, h.depth) {
                         Some(DepthTest::Written) => {
-                            stats.samples_written += 1;
+                            Stats::inc(&mut stats.samples_written);
                             if let Some(ps) = fb.stats.get_mut(ty).and_then(|r| r.get_mut(tx)) {
-                                ps.written += 1;
+                                ps.written = ps.written.saturating_add(1);
                             }
                         }
-                        Some(DepthTest::Occluded) => stats.samples_occluded += 1,
+                        Some(DepthTest::Occluded) => Stats::inc(&mut stats.samples_occluded),
                         None => {}
                     }
                 }

@@ -20,6 +20,9 @@ impl Wide {
     pub const ZERO: Wide = Wide { hi: 0, lo: 0 };
 
     /// The value of a plain `i128`.
+    // The mask keeps bits 0..64, so the value is in [0, 2^64) and the sign-dropping cast to u64
+    // is exact.
+    #[allow(clippy::cast_sign_loss, clippy::cast_possible_truncation)]
     pub fn from_i128(x: i128) -> Wide {
         // x = (x >> 64) · 2^64 + (x & MASK64), the shift floors so the low part is non-negative.
         Wide {
@@ -30,6 +33,15 @@ impl Wide {
 
     /// `self + x`. Caller keeps |self| < 2^190 (three terms of < 2^189 each).
     #[inline]
+    // Ranges on each line below; `hi` uses wrapping adds whose true sum is proven in range, so
+    // wrapping never happens. Casts: `x & MASK64` ∈ [0, 2^64) (sign-free), `s as u64` keeps the
+    // low 64 bits on purpose (the carry is `s >> 64` ∈ {0, 1}, which fits i128).
+    #[allow(
+        clippy::arithmetic_side_effects,
+        clippy::cast_sign_loss,
+        clippy::cast_possible_truncation,
+        clippy::cast_possible_wrap
+    )]
     fn add_i128(&mut self, x: i128) {
         let xh = x >> 64; // |xh| < 2^63
         let xl = (x & MASK64) as u128; // < 2^64
@@ -41,6 +53,9 @@ impl Wide {
 
     /// `self + a · b` exactly, for |a| < 2^127 and |b| ≤ 2^63.
     #[inline]
+    // ah·b: |ah| ≤ 2^63, |b| ≤ 2^63, so |ah·b| ≤ 2^126; al·b: 0 ≤ al < 2^64, so |al·b| < 2^127.
+    // Both fit i128; `a >> 64` and `a & MASK64` cannot overflow.
+    #[allow(clippy::arithmetic_side_effects)]
     pub fn mul_add(&mut self, a: i128, b: i64) {
         let ah = a >> 64; // |ah| ≤ 2^63
         let al = a & MASK64; // [0, 2^64)
@@ -64,6 +79,8 @@ impl Wide {
 
     /// Number of significant bits of the value, counting a negative value `v` as `!v = -v-1`
     /// (so `-1` and `0` have length 0). At most 191.
+    // leading_zeros ≤ 128 and ≤ 64: both subtractions stay in [0, 128]; the sum ≤ 192.
+    #[allow(clippy::arithmetic_side_effects)]
     pub fn bit_len(&self) -> u32 {
         let (h, l) = if self.hi < 0 {
             (!self.hi, !self.lo)
@@ -77,17 +94,24 @@ impl Wide {
         }
     }
 
-    /// `floor(self / 2^s)` as `i128`, for a shift `s` that leaves at most 120 significant bits
-    /// (`bit_len() - s ≤ 120`, which the caller arranges); `s ≤ 191`.
-    pub fn shr_floor(&self, s: u32) -> i128 {
-        if s >= 64 {
-            // hi >> (s-64) floors exactly: lo only adds a fraction < 1 at this scale.
-            self.hi >> (s - 64).min(127)
-        } else if s == 0 {
-            // Caller guarantees the value fits in 120 bits, so hi ∈ {-1, 0} or small.
-            (self.hi << 64) | self.lo as i128
-        } else {
-            (self.hi << (64 - s)) | (self.lo >> s) as i128
+    /// `floor(self / 2^s)` as `i128`, exact; `None` when the quotient does not fit in `i128`
+    /// (the caller picks `s` so that it does: the sample test keeps `bit_len() − s ≤ 32`).
+    ///
+    /// No left shift: `s ≥ 64` divides `hi` by `2^(s−64)` (floor; `lo < 2^64` only adds a
+    /// fraction < 1 at that scale); `s < 64` forms `hi·2^(64−s) + floor(lo/2^s)` with a
+    /// `checked_mul` and `checked_add`, so no bit can be lost unnoticed.
+    pub fn shr_floor(&self, s: u32) -> Option<i128> {
+        match s.checked_sub(64) {
+            // |hi| < 2^127, so a shift of 127 or more leaves the sign only: floor is −1 or 0.
+            Some(k) if k >= 127 => Some(if self.hi < 0 { -1 } else { 0 }),
+            // k ≤ 126: 2^k fits i128; div_euclid by a positive divisor is the floor.
+            Some(k) => self.hi.checked_div_euclid(2i128.checked_pow(k)?),
+            None => {
+                // 64 − s ∈ [1, 64]: 2^(64−s) ≤ 2^64 fits i128.
+                let scale = 2i128.checked_pow(64u32.checked_sub(s)?)?;
+                let low = i128::from(self.lo.checked_shr(s)?);
+                self.hi.checked_mul(scale)?.checked_add(low)
+            }
         }
     }
 
@@ -118,8 +142,8 @@ mod tests {
             if let Some(e) = exact {
                 assert_eq!(w, Wide::from_i128(e), "a={a} b={b}");
                 assert_eq!(w.signum(), e.signum() as i32);
-                assert_eq!(w.shr_floor(0), e);
-                assert_eq!(w.shr_floor(3), e >> 3);
+                assert_eq!(w.shr_floor(0), Some(e));
+                assert_eq!(w.shr_floor(3), Some(e >> 3));
             }
         }
     }
@@ -131,12 +155,12 @@ mod tests {
         w.mul_add(1 << 125, 1 << 62);
         assert_eq!(w.signum(), 1);
         assert_eq!(w.bit_len(), 188);
-        assert_eq!(w.shr_floor(180), 128);
+        assert_eq!(w.shr_floor(180), Some(128));
         w.mul_add(-(1 << 125), 1 << 62);
         assert_eq!(w, Wide::ZERO);
         w.mul_add(-(1 << 125), 1 << 62);
         assert_eq!(w.signum(), -1);
-        assert_eq!(w.shr_floor(180), -128);
+        assert_eq!(w.shr_floor(180), Some(-128));
         // -1 has length 0, 1 has length 1.
         assert_eq!(Wide::from_i128(-1).bit_len(), 0);
         assert_eq!(Wide::from_i128(1).bit_len(), 1);
