@@ -28,6 +28,8 @@
 )]
 
 pub mod bounds;
+#[cfg(test)]
+mod corners;
 pub mod demo;
 pub mod error;
 pub mod formats;

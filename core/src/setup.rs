@@ -239,7 +239,7 @@ const BOX_LIMIT: PixelCoord = 1 << 58;
 /// computation.
 #[inline]
 #[allow(clippy::arithmetic_side_effects)] // ranges in the doc comment above
-fn project(a: i64, w: i64, extent: i64, up: bool, bnd: u32) -> PixelCoord {
+pub(crate) fn project(a: i64, w: i64, extent: i64, up: bool, bnd: u32) -> PixelCoord {
     let num = (i128::from(a) + i128::from(w)) * i128::from(extent) * 2i128.pow(bnd);
     let den = 2 * i128::from(w);
     let q = if up {
