@@ -4,6 +4,14 @@
 //! 16 bound fraction bits) and compares the result with an independent wider computation
 //! (`i128` from the start, or a different formula), so a lost bit would show as a mismatch; the
 //! tests run with overflow checks on, which see the multiplications that replaced the shifts.
+// Test code: the independent reference computations use plain i128 operators on values far
+// inside i128 (≤ 2^120), and an out-of-range index or overflow panics, which is the failure
+// signal of a test.
+#![allow(
+    clippy::arithmetic_side_effects,
+    clippy::indexing_slicing,
+    clippy::cast_possible_truncation
+)]
 
 use crate::bounds::{lens_s, LensAxis, LensSide};
 use crate::formats::{Lens, SubPixel, Time, DEPTH_FAR, DEPTH_NEAR};
@@ -147,7 +155,8 @@ fn depth_at_the_range_corners() {
     // Edge values m_k·2^126 (bit length up to 158) keep m_k exactly after the shift to 32
     // significant bits; w, z at the 48-fraction-bit extremes ±2^62.
     let big = (1i64 << 32) - 1;
-    let cases: [([i64; 3], [(i64, i64); 3], i32); 6] = [
+    type Case = ([i64; 3], [(i64, i64); 3], i32);
+    let cases: [Case; 6] = [
         (
             [big, big, big],
             [(1 << 62, 1 << 62), (1 << 62, -(1 << 62)), (1, 1 << 62)],
