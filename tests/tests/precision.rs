@@ -54,6 +54,7 @@ fn stress_scenes_hold() {
         let r = stress_row(s);
         assert_eq!(r.violations, 0, "{}: {r:?}", s.name);
         assert_eq!(r.beyond_bound, 0, "{}: {r:?}", s.name);
+        assert_eq!(r.lost, 0, "{}: covered but not written: {r:?}", s.name);
     }
 }
 
