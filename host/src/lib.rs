@@ -7,8 +7,11 @@
 #![deny(missing_docs)]
 
 pub mod bench;
+pub mod budget;
 pub mod compare;
 pub mod frame;
+pub mod heatmap;
+pub mod json;
 pub mod mesh;
 pub mod pattern;
 pub mod precision;
