@@ -125,9 +125,9 @@ fn integers_are_read_alike_everywhere() {
             "{e}"
         );
     }
-    let e = err(&format!(
-        r#""viewport":[8,6],"triangles":[{{"t0":[[0,0,0,1],[1,0,0,1],[0,1,0,1]],"color":[1,2,3.5]}}]"#
-    ));
+    let e = err(
+        r#""viewport":[8,6],"triangles":[{"t0":[[0,0,0,1],[1,0,0,1],[0,1,0,1]],"color":[1,2,3.5]}]"#,
+    );
     assert!(
         e.contains("triangles[0].color[2]") && e.contains("whole number"),
         "{e}"
@@ -168,9 +168,7 @@ fn mesh_entries_need_exactly_one_shape() {
     );
     let e = err(r#""viewport":[8,6],"camera":{"t0":{}},"meshes":[{"obj":3}]"#);
     assert!(e.contains("meshes[0].obj: expected a file name"), "{e}");
-    let e = err(&format!(
-        r#""viewport":[8,6],"coc":[0,0],"camera":{{"t0":{{}}}},"meshes":[]"#
-    ));
+    let e = err(r#""viewport":[8,6],"coc":[0,0],"camera":{"t0":{}},"meshes":[]"#);
     assert!(e.starts_with("coc: not used with meshes"), "{e}");
 }
 
