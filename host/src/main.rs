@@ -368,6 +368,7 @@ fn run(cli: Cli) -> Result<()> {
             }
         }
         Cmd::Vectors(VecCmd::Export { scene, out, seed }) => {
+            render::check_out_dir(&out)?;
             match scene {
                 Some(p) => uvt_host::vectors::export_scene(&p, &out)?,
                 None => uvt_host::vectors::export_default(&out, seed)?,

@@ -581,6 +581,19 @@ fn closed_stdout_exits_quietly() {
 }
 
 #[test]
+fn bench_ste_prints_row_progress() {
+    let o = uvt(&["bench-ste", "--quick", "--scene", "game", "--row", "static"]);
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{e}");
+    // Plain lines, also when stderr is not a terminal (here: a pipe).
+    assert!(
+        e.lines().any(|l| l == "bench-ste: row 1 of 1: Game static"),
+        "{e}"
+    );
+    assert!(String::from_utf8_lossy(&o.stdout).contains("| GAME |"));
+}
+
+#[test]
 fn file_errors_name_their_path() {
     let o = uvt(&["stress", "nosuchdir"]);
     let e = String::from_utf8_lossy(&o.stderr);
@@ -593,6 +606,7 @@ fn file_errors_name_their_path() {
     for args in [
         &["render", "--out", file.as_str()][..],
         &["precision", "--quick", "--out", file.as_str()][..],
+        &["vectors", "export", "--out", file.as_str()][..],
     ] {
         let o = uvt(args);
         let e = String::from_utf8_lossy(&o.stderr);
