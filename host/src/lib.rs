@@ -17,6 +17,7 @@ pub mod pattern;
 pub mod precision;
 pub mod reference;
 pub mod render;
+pub mod report;
 pub mod scene;
 pub mod scenes;
 pub mod vectors;

@@ -13,6 +13,10 @@
 //! Thin lens with aperture radius A and focus distance F: a lens point u shifts clip x by
 //! `u·P00·A·(w/F − 1)`, so CoC(w) = a·w + b with a = P00·A/F, b = −P00·A (signed, affine in w).
 //! The same c moves y by v·c, i.e. the lens is scaled by P00/P11 vertically (the core's model).
+//!
+//! Keys are checked strictly ([`crate::json`]), a mesh's triangle count is checked against the
+//! memory budget before it is generated ([`crate::budget`]); user documentation:
+//! `host/scenes/README.md`.
 
 use std::path::Path;
 
@@ -261,7 +265,7 @@ fn model(v: Option<&Value>, field: &str) -> Result<DMat4> {
 }
 
 /// Load an OBJ file: a regular file of at most [`budget::FILE_MAX_BYTES`]; material libraries
-/// are not read. `check` sees the triangle count before the mesh is converted.
+/// are not read.
 fn load_obj(path: &Path, field: &str) -> Result<Mesh> {
     let bytes = budget::read_limited(path, budget::FILE_MAX_BYTES, "OBJ file")
         .map_err(|e| anyhow!("{field}: {e}"))?;
