@@ -112,6 +112,10 @@ pub struct Decisions {
     pub beyond_bound: u64,
     /// largest distance (px) of a differing sample from the nearest edge
     pub max_distance_px: f64,
+    /// largest documented quantization distance among triangles with a difference (default
+    /// precision only)
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_bound_px: Option<f64>,
     /// covered samples outside the core's own bounds (non-default precision only)
     #[serde(skip_serializing_if = "Option::is_none")]
     pub violations: Option<u64>,
@@ -126,6 +130,7 @@ impl Decisions {
             f64_only: Some(c.f64_only),
             beyond_bound: c.beyond_bound,
             max_distance_px: c.max_distance_px,
+            max_bound_px: Some(c.max_bound_px),
             violations: None,
         }
     }
@@ -262,6 +267,7 @@ where
             f64_only: None,
             beyond_bound: r.beyond_bound,
             max_distance_px: r.max_differ_px,
+            max_bound_px: None,
             violations: Some(r.violations),
         }
     };
