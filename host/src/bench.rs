@@ -38,8 +38,15 @@ pub struct BenchRow {
 /// Run the benchmark table.
 pub fn run_table(quick: bool, scenes: &[Bench], rows: &[Row]) -> Vec<BenchRow> {
     let mut out = Vec::new();
+    let total = scenes.len() * rows.len();
     for &kind in scenes {
         for &row in rows {
+            // Progress as plain lines on stderr (readable in logs, not only on a terminal).
+            eprintln!(
+                "bench-ste: row {} of {total}: {kind:?} {}",
+                out.len() + 1,
+                row.label()
+            );
             let s = bench(kind, row, quick);
             let pattern = Pattern::new(s.pattern, s.spp, s.seed);
             let core = s.core_tris().expect("built-in scene converts");

@@ -7,13 +7,17 @@
 #![deny(missing_docs)]
 
 pub mod bench;
+pub mod budget;
 pub mod compare;
 pub mod frame;
+pub mod heatmap;
+pub mod json;
 pub mod mesh;
 pub mod pattern;
 pub mod precision;
 pub mod reference;
 pub mod render;
+pub mod report;
 pub mod scene;
 pub mod scenes;
 pub mod vectors;

@@ -2,12 +2,14 @@
 //! naming what is wrong.
 #![forbid(unsafe_code)]
 
+use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
 
-use anyhow::Result;
+use anyhow::{anyhow, bail, Context, Result};
 use clap::{Parser, Subcommand};
-use uvt_host::{bench, render, scene::Scene, scenes};
+use uvt_host::scene::{LoadOpts, Scene};
+use uvt_host::{bench, budget, render, scenes};
 
 #[derive(Parser)]
 #[command(
@@ -24,12 +26,37 @@ struct Cli {
 enum Cmd {
     /// Render a scene (default: the built-in scene) with the core and the f64 reference.
     Render {
-        /// scene file (JSON); omitted: the built-in default scene with motion and defocus
+        /// scene file (JSON, format in host/scenes/README.md); omitted: the built-in default
+        /// scene with motion and defocus
         scene: Option<PathBuf>,
-        /// output directory
+        /// output directory (created if absent)
         #[arg(long, default_value = "out")]
         out: PathBuf,
+        /// samples per pixel, 1..=64 (overrides the scene file)
+        #[arg(long)]
+        spp: Option<u16>,
+        /// bounds tile size 1, 2, 4 or 8 (overrides the scene file)
+        #[arg(long)]
+        tile: Option<u8>,
+        /// viewport WxH, e.g. 320x180 (overrides the scene file; the mesh form is re-projected)
+        #[arg(long)]
+        viewport: Option<String>,
+        /// sample pattern seed (overrides the scene file)
+        #[arg(long)]
+        seed: Option<u64>,
+        /// bounds strategy of the core: laine2011 or bbox
+        #[arg(long, default_value = "laine2011")]
+        bounds: String,
+        /// core precision POS/TUV/BND fraction bits: 16/16/16, 12/12/8, 8/8/4 or 6/6/2
+        #[arg(long, default_value = "16/16/16")]
+        precision: String,
+        /// memory budget of the scene, e.g. 512M or 8G (estimate in host/src/budget.rs)
+        #[arg(long, default_value = "4G")]
+        mem_budget: String,
     },
+    /// Built-in scenes.
+    #[command(subcommand)]
+    Scene(SceneCmd),
     /// STE table analogous to Laine 2011 Table 1 (game and dense scenes, seven rows each).
     BenchSte {
         /// quarter resolution and tessellation (for tests)
@@ -69,6 +96,20 @@ enum Cmd {
 }
 
 #[derive(Subcommand)]
+enum SceneCmd {
+    /// List the built-in scenes.
+    List,
+    /// Write a built-in scene as a scene file (direct form, clip space) to stdout or --out.
+    Export {
+        /// scene name (see `uvt scene list`)
+        name: String,
+        /// write to this file instead of stdout
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
+}
+
+#[derive(Subcommand)]
 enum VecCmd {
     /// Write vectors: without --scene the committed set (unit/, frame_a/, frame_b/) into DIR.
     Export {
@@ -94,6 +135,8 @@ enum VecCmd {
 fn main() -> ExitCode {
     match run(Cli::parse()) {
         Ok(()) => ExitCode::SUCCESS,
+        // A closed stdout (`uvt vectors layout | head`) ends the program quietly.
+        Err(e) if is_broken_pipe(&e) => ExitCode::SUCCESS,
         Err(e) => {
             eprintln!("uvt: error: {e:#}");
             ExitCode::FAILURE
@@ -101,18 +144,140 @@ fn main() -> ExitCode {
     }
 }
 
+fn is_broken_pipe(e: &anyhow::Error) -> bool {
+    e.chain().any(|c| {
+        c.downcast_ref::<std::io::Error>()
+            .is_some_and(|io| io.kind() == std::io::ErrorKind::BrokenPipe)
+    })
+}
+
+/// Write to stdout; a closed pipe comes back as an error that `main` treats as a quiet exit.
+fn say(text: &str) -> Result<()> {
+    let mut out = std::io::stdout().lock();
+    out.write_all(text.as_bytes())?;
+    out.flush()?;
+    Ok(())
+}
+
+/// `WxH` → (W, H).
+fn parse_viewport(s: &str) -> Result<(u16, u16)> {
+    let bad = || anyhow!("--viewport {s:?}: expected WxH with W, H in 1..=2048, e.g. 320x180");
+    let (w, h) = s.split_once(['x', 'X']).ok_or_else(bad)?;
+    let d = |x: &str| {
+        x.trim()
+            .parse::<u16>()
+            .ok()
+            .filter(|v| (1..=2048).contains(v))
+    };
+    Ok((d(w).ok_or_else(bad)?, d(h).ok_or_else(bad)?))
+}
+
+/// Built-in scenes by name: `default` and the benchmark rows `game-motion`, `dense-both2`, …
+/// (`-quick` for the quarter size).
+fn builtin(name: &str) -> Result<Scene> {
+    let names = builtin_names();
+    if name == "default" {
+        return Ok(scenes::default_scene());
+    }
+    let (base, quick) = match name.strip_suffix("-quick") {
+        Some(b) => (b, true),
+        None => (name, false),
+    };
+    for kind in [scenes::Bench::Game, scenes::Bench::Dense] {
+        for row in scenes::Row::ALL {
+            if bench_name(kind, row) == base {
+                let mut s = scenes::bench(kind, row, quick);
+                s.name = name.to_string();
+                return Ok(s);
+            }
+        }
+    }
+    let hint = uvt_host::json::nearest(name, &names.iter().map(String::as_str).collect::<Vec<_>>())
+        .map_or(String::new(), |n| format!("did you mean {n:?}? "));
+    bail!("unknown built-in scene {name:?}; {hint}(see `uvt scene list`)")
+}
+
+fn bench_name(kind: scenes::Bench, row: scenes::Row) -> String {
+    let k = match kind {
+        scenes::Bench::Game => "game",
+        scenes::Bench::Dense => "dense",
+    };
+    format!("{k}-{}", row.label().replace(" x", ""))
+}
+
+fn builtin_names() -> Vec<String> {
+    let mut v = vec!["default".to_string()];
+    for kind in [scenes::Bench::Game, scenes::Bench::Dense] {
+        for row in scenes::Row::ALL {
+            v.push(bench_name(kind, row));
+        }
+    }
+    v
+}
+
 fn run(cli: Cli) -> Result<()> {
     match cli.cmd {
-        Cmd::Render { scene, out } => {
-            let s = match scene {
-                Some(p) => Scene::load(&p)?,
-                None => scenes::default_scene(),
+        Cmd::Render {
+            scene,
+            out,
+            spp,
+            tile,
+            viewport,
+            seed,
+            bounds,
+            precision,
+            mem_budget,
+        } => {
+            render::check_out_dir(&out)?;
+            let opts = render::RenderOpts {
+                bounds: render::Strategy::from_name(&bounds).context("--bounds")?,
+                precision: render::precision_from_name(&precision).context("--precision")?,
+                progress: true,
             };
-            let r = render::render(&s)?;
+            if let Some(n) = spp.filter(|n| !(1..=64).contains(n)) {
+                bail!("--spp {n}: not in 1..=64");
+            }
+            if let Some(t) = tile.filter(|t| ![1, 2, 4, 8].contains(t)) {
+                bail!("--tile {t}: not one of 1, 2, 4, 8");
+            }
+            let load = LoadOpts {
+                mem_budget: budget::parse_size(&mem_budget).context("--mem-budget")?,
+                viewport: viewport.as_deref().map(parse_viewport).transpose()?,
+                spp,
+            };
+            let mut s = match scene {
+                Some(p) => {
+                    let l = Scene::load_with(&p, &load)?;
+                    for w in &l.warnings {
+                        eprintln!("uvt: warning: {}: {w}", p.display());
+                    }
+                    l.scene
+                }
+                None => {
+                    let mut s = scenes::default_scene();
+                    s.viewport = load.viewport.unwrap_or(s.viewport);
+                    s.spp = spp.unwrap_or(s.spp);
+                    s
+                }
+            };
+            s.tile = tile.unwrap_or(s.tile);
+            s.seed = seed.unwrap_or(s.seed);
+            let r = render::render_with(&s, &opts)?;
             let files = render::write(&r, &s, &out)?;
-            print!("{}", render::report_md(&r));
+            say(&render::report_md(&r))?;
             for f in files {
-                println!("wrote {}", f.display());
+                say(&format!("wrote {}\n", f.display()))?;
+            }
+        }
+        Cmd::Scene(SceneCmd::List) => {
+            say(&(builtin_names().join("\n") + "\n"))?;
+        }
+        Cmd::Scene(SceneCmd::Export { name, out }) => {
+            let s = builtin(&name)?;
+            let text = serde_json::to_string(&s.to_json())? + "\n";
+            match out {
+                None => say(&text)?,
+                Some(p) => write_atomic(&p, text.as_bytes())?,
             }
         }
         Cmd::BenchSte {
@@ -125,19 +290,19 @@ fn run(cli: Cli) -> Result<()> {
                 None => vec![scenes::Bench::Game, scenes::Bench::Dense],
                 Some("game") => vec![scenes::Bench::Game],
                 Some("dense") => vec![scenes::Bench::Dense],
-                Some(o) => anyhow::bail!("--scene: unknown scene {o:?} (game, dense)"),
+                Some(o) => bail!("--scene: unknown scene {o:?} (game, dense)"),
             };
             let rows_sel: Vec<scenes::Row> = match row.as_deref() {
                 None => scenes::Row::ALL.to_vec(),
                 Some(r) => vec![scenes::Row::ALL
                     .into_iter()
                     .find(|x| x.label().replace(" x", "") == r)
-                    .ok_or_else(|| anyhow::anyhow!("--row: unknown row {r:?} (static, motion, motion2, defocus, defocus2, both, both2)"))?],
+                    .ok_or_else(|| anyhow!("--row: unknown row {r:?} (static, motion, motion2, defocus, defocus2, both, both2)"))?],
             };
             let rows = bench::run_table(quick, &kinds, &rows_sel);
-            print!("{}", bench::table_md(&rows));
+            say(&bench::table_md(&rows))?;
             if let Some(p) = json {
-                std::fs::write(&p, serde_json::to_string_pretty(&rows)? + "\n")?;
+                write_atomic(&p, (serde_json::to_string_pretty(&rows)? + "\n").as_bytes())?;
             }
         }
         Cmd::Precision { quick, out, replot } => {
@@ -156,20 +321,26 @@ fn run(cli: Cli) -> Result<()> {
                     shrink: 1,
                 }
             };
+            render::check_out_dir(&out)?;
             let rows: Vec<uvt_host::precision::PrecRow> = match replot {
-                Some(p) => serde_json::from_str(&std::fs::read_to_string(&p)?)
-                    .map_err(|e| anyhow::anyhow!("{}: not a precision.json: {e}", p.display()))?,
+                Some(p) => serde_json::from_str(
+                    &std::fs::read_to_string(&p)
+                        .with_context(|| format!("cannot read {}", p.display()))?,
+                )
+                .map_err(|e| anyhow!("{}: not a precision.json: {e}", p.display()))?,
                 None => uvt_host::precision::sweep(&sw),
             };
             let md = uvt_host::precision::table_md(&rows);
-            std::fs::create_dir_all(&out)?;
-            std::fs::write(out.join("precision.md"), &md)?;
-            std::fs::write(
-                out.join("precision.json"),
-                serde_json::to_string_pretty(&rows)? + "\n",
+            std::fs::create_dir_all(&out)
+                .with_context(|| format!("cannot create {}", out.display()))?;
+            write_atomic(&out.join("precision.md"), md.as_bytes())?;
+            write_atomic(
+                &out.join("precision.json"),
+                (serde_json::to_string_pretty(&rows)? + "\n").as_bytes(),
             )?;
-            uvt_host::precision::plot_svg(&rows, &out.join("precision.svg"))?;
-            print!("{md}");
+            uvt_host::precision::plot_svg(&rows, &out.join("precision.svg"))
+                .with_context(|| format!("writing {}", out.join("precision.svg").display()))?;
+            say(&md)?;
         }
         Cmd::Stress { dir } => {
             let scenes = uvt_host::precision::stress_scenes(&dir)?;
@@ -183,44 +354,61 @@ fn run(cli: Cli) -> Result<()> {
                     )
                 })
                 .collect();
-            print!("{}", uvt_host::precision::stress_md(&rows));
+            say(&uvt_host::precision::stress_md(&rows))?;
             let bad: Vec<_> = rows
                 .iter()
                 .filter(|r| r.2.violations > 0 || r.2.beyond_bound > 0 || r.2.lost > 0)
                 .map(|r| r.0.clone())
                 .collect();
             if !bad.is_empty() {
-                anyhow::bail!(
+                bail!(
                     "conservativeness, error-bound or lost-sample failures in: {}",
                     bad.join(", ")
                 );
             }
         }
         Cmd::Vectors(VecCmd::Export { scene, out, seed }) => {
+            render::check_out_dir(&out)?;
             match scene {
                 Some(p) => uvt_host::vectors::export_scene(&p, &out)?,
                 None => uvt_host::vectors::export_default(&out, seed)?,
             }
-            println!("wrote vectors to {}", out.display());
+            say(&format!("wrote vectors to {}\n", out.display()))?;
         }
         Cmd::Vectors(VecCmd::Check { dir }) => {
             let c = uvt_host::vectors::check::check(&dir)?;
             for s in &c.sets {
-                println!("ok {}", s.display());
+                say(&format!("ok {}\n", s.display()))?;
             }
-            println!("{} records match the core bit for bit", c.records);
+            say(&format!(
+                "{} records match the core bit for bit\n",
+                c.records
+            ))?;
         }
         Cmd::Vectors(VecCmd::Layout) => {
             for st in uvt_host::vectors::format::STAGES {
                 for io in ["in", "out"] {
                     let spp = if st == "resolve" { 4 } else { 0 };
-                    println!(
-                        "{}",
-                        uvt_host::vectors::format::layout_md(&format!("{st}_{io}"), spp)
-                    );
+                    say(
+                        &(uvt_host::vectors::format::layout_md(&format!("{st}_{io}"), spp) + "\n"),
+                    )?;
                 }
             }
         }
     }
     Ok(())
+}
+
+/// Write a file through a temporary name in the same folder, so a failure leaves nothing
+/// half-written; errors name the path.
+fn write_atomic(path: &std::path::Path, bytes: &[u8]) -> Result<()> {
+    let name = path
+        .file_name()
+        .ok_or_else(|| anyhow!("{}: not a file name", path.display()))?;
+    let tmp = path.with_file_name(format!(".{}.tmp", name.to_string_lossy()));
+    std::fs::write(&tmp, bytes).with_context(|| format!("cannot write {}", path.display()))?;
+    std::fs::rename(&tmp, path).map_err(|e| {
+        let _ = std::fs::remove_file(&tmp);
+        anyhow!("cannot write {}: {e}", path.display())
+    })
 }

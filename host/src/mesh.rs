@@ -13,12 +13,19 @@
 //! Thin lens with aperture radius A and focus distance F: a lens point u shifts clip x by
 //! `u·P00·A·(w/F − 1)`, so CoC(w) = a·w + b with a = P00·A/F, b = −P00·A (signed, affine in w).
 //! The same c moves y by v·c, i.e. the lens is scaled by P00/P11 vertically (the core's model).
+//!
+//! Keys are checked strictly ([`crate::json`]), a mesh's triangle count is checked against the
+//! memory budget before it is generated ([`crate::budget`]); user documentation:
+//! `host/scenes/README.md`.
+
+use std::path::Path;
 
 use anyhow::{anyhow, bail, Result};
 use glam::{DMat4, DVec3, DVec4};
 use serde_json::Value;
 
 use crate::scene::{num_array, SceneTri};
+use crate::{budget, json};
 
 /// A camera pose.
 #[derive(Clone, Copy, Debug)]
@@ -99,7 +106,7 @@ pub fn to_clip(cam: &Camera, inst: &[Instance], viewport: (u16, u16)) -> Vec<Sce
     let aspect = viewport.0 as f64 / viewport.1 as f64;
     let (vp0, vp1) = cam.view_proj(aspect);
     let (a, b) = cam.coc(aspect);
-    let mut out = Vec::new();
+    let mut out = Vec::with_capacity(inst.iter().map(|i| i.mesh.tris.len()).sum());
     for ins in inst {
         let (c0, c1) = (vp0 * ins.m0, vp1 * ins.m1);
         let clip = |m: &DMat4, p: DVec3| {
@@ -207,14 +214,13 @@ fn vec3(v: Option<&Value>, field: &str, default: DVec3) -> Result<DVec3> {
     }
 }
 
-fn number(v: Option<&Value>, field: &str, default: Option<f64>) -> Result<f64> {
-    match (v, default) {
-        (None, Some(d)) => Ok(d),
-        (None, None) => bail!("{field}: missing"),
-        (Some(x), _) => {
+fn number(v: Option<&Value>, field: &str, default: f64) -> Result<f64> {
+    match v {
+        None => Ok(default),
+        Some(x) => {
             let f = x
                 .as_f64()
-                .ok_or_else(|| anyhow!("{field}: {x} is not a number"))?;
+                .ok_or_else(|| anyhow!("{field}: {} is not a number", json::show(Some(x))))?;
             if !f.is_finite() {
                 bail!("{field}: not finite");
             }
@@ -225,10 +231,11 @@ fn number(v: Option<&Value>, field: &str, default: Option<f64>) -> Result<f64> {
 
 fn pose(v: Option<&Value>, field: &str) -> Result<Pose> {
     let v = v.ok_or_else(|| anyhow!("{field}: missing"))?;
+    let o = json::object(v, field, &["eye", "target", "up"])?;
     Ok(Pose {
-        eye: vec3(v.get("eye"), &format!("{field}.eye"), DVec3::ZERO)?,
-        target: vec3(v.get("target"), &format!("{field}.target"), DVec3::NEG_Z)?,
-        up: vec3(v.get("up"), &format!("{field}.up"), DVec3::Y)?,
+        eye: vec3(o.get("eye"), &format!("{field}.eye"), DVec3::ZERO)?,
+        target: vec3(o.get("target"), &format!("{field}.target"), DVec3::NEG_Z)?,
+        up: vec3(o.get("up"), &format!("{field}.up"), DVec3::Y)?,
     })
 }
 
@@ -236,13 +243,14 @@ fn model(v: Option<&Value>, field: &str) -> Result<DMat4> {
     let Some(v) = v else {
         return Ok(DMat4::IDENTITY);
     };
+    let o = json::object(v, field, &["translate", "rotate", "scale"])?;
     let t = vec3(
-        v.get("translate"),
+        o.get("translate"),
         &format!("{field}.translate"),
         DVec3::ZERO,
     )?;
-    let r = vec3(v.get("rotate"), &format!("{field}.rotate"), DVec3::ZERO)?;
-    let s = number(v.get("scale"), &format!("{field}.scale"), Some(1.0))?;
+    let r = vec3(o.get("rotate"), &format!("{field}.rotate"), DVec3::ZERO)?;
+    let s = number(o.get("scale"), &format!("{field}.scale"), 1.0)?;
     let rot = glam::DQuat::from_euler(
         glam::EulerRot::XYZ,
         r.x.to_radians(),
@@ -256,14 +264,20 @@ fn model(v: Option<&Value>, field: &str) -> Result<DMat4> {
     ))
 }
 
-fn load_obj(path: &std::path::Path, field: &str) -> Result<Mesh> {
+/// Load an OBJ file: a regular file of at most [`budget::FILE_MAX_BYTES`]; material libraries
+/// are not read.
+fn load_obj(path: &Path, field: &str) -> Result<Mesh> {
+    let bytes = budget::read_limited(path, budget::FILE_MAX_BYTES, "OBJ file")
+        .map_err(|e| anyhow!("{field}: {e}"))?;
     let opts = tobj::LoadOptions {
         triangulate: true,
         single_index: true,
         ..Default::default()
     };
-    let (models, _) = tobj::load_obj(path, &opts)
-        .map_err(|e| anyhow!("{field}: cannot load {}: {e}", path.display()))?;
+    let (models, _) = tobj::load_obj_buf(&mut bytes.as_slice(), &opts, |_| {
+        Err(tobj::LoadError::OpenFileFailed)
+    })
+    .map_err(|e| anyhow!("{field}: cannot load {}: {e}", path.display()))?;
     let mut m = Mesh::default();
     for model in models {
         let base = m.pos.len() as u32;
@@ -282,23 +296,40 @@ fn load_obj(path: &std::path::Path, field: &str) -> Result<Mesh> {
     Ok(m)
 }
 
-/// Build clip-space triangles from the JSON camera and meshes.
+/// Triangles of [`sphere`]`(_, seg)`.
+pub fn sphere_triangles(seg: u32) -> u64 {
+    let rings = (seg / 2).max(2) as u64;
+    seg as u64 * (2 * rings - 2)
+}
+
+/// Keys of a mesh entry.
+const MESH_KEYS: &[&str] = &["obj", "grid", "sphere", "model", "model_t1", "color"];
+
+/// Build clip-space triangles from the JSON camera and meshes. `check(n, path)` is called with
+/// the running triangle count before each mesh is generated (after loading, for OBJ files) and
+/// refuses a scene over the memory budget.
 pub fn build(
     cam: &Value,
     meshes: &Value,
     viewport: (u16, u16),
-    base: &std::path::Path,
+    base: &Path,
+    check: &dyn Fn(u64, &str) -> Result<()>,
 ) -> Result<Vec<SceneTri>> {
-    let t0 = pose(cam.get("t0"), "camera.t0")?;
+    let c = json::object(
+        cam,
+        "camera",
+        &["fov_y", "near", "far", "aperture", "focus", "t0", "t1"],
+    )?;
+    let t0 = pose(c.get("t0"), "camera.t0")?;
     let camera = Camera {
-        fov_y: number(cam.get("fov_y"), "camera.fov_y", Some(60.0))?,
-        near: number(cam.get("near"), "camera.near", Some(0.1))?,
-        far: number(cam.get("far"), "camera.far", Some(100.0))?,
-        aperture: number(cam.get("aperture"), "camera.aperture", Some(0.0))?,
-        focus: number(cam.get("focus"), "camera.focus", Some(1.0))?,
+        fov_y: number(c.get("fov_y"), "camera.fov_y", 60.0)?,
+        near: number(c.get("near"), "camera.near", 0.1)?,
+        far: number(c.get("far"), "camera.far", 100.0)?,
+        aperture: number(c.get("aperture"), "camera.aperture", 0.0)?,
+        focus: number(c.get("focus"), "camera.focus", 1.0)?,
         t0,
-        t1: if cam.get("t1").is_some() {
-            pose(cam.get("t1"), "camera.t1")?
+        t1: if c.contains_key("t1") {
+            pose(c.get("t1"), "camera.t1")?
         } else {
             t0
         },
@@ -316,55 +347,73 @@ pub fn build(
         .as_array()
         .ok_or_else(|| anyhow!("meshes: expected an array"))?;
     let mut inst = Vec::new();
+    let mut total = 0u64;
     for (i, m) in list.iter().enumerate() {
         let f = format!("meshes[{i}]");
-        let mesh = if let Some(p) = m.get("obj").and_then(Value::as_str) {
-            load_obj(&base.join(p), &format!("{f}.obj"))?
-        } else if let Some(g) = m.get("grid") {
-            let s = num_array(
-                g.get("size").unwrap_or(&Value::Null),
-                2,
-                &format!("{f}.grid.size"),
-            )?;
-            let c = num_array(
-                g.get("cells").unwrap_or(&Value::Null),
-                2,
-                &format!("{f}.grid.cells"),
-            )?;
-            if c.iter()
-                .any(|&x| !(1.0..=2048.0).contains(&x) || x.fract() != 0.0)
-            {
-                bail!("{f}.grid.cells: whole numbers in 1..=2048");
+        let o = json::object(m, &f, MESH_KEYS)?;
+        let kinds: Vec<&str> = ["obj", "grid", "sphere"]
+            .into_iter()
+            .filter(|k| o.contains_key(*k))
+            .collect();
+        let mesh = match kinds.as_slice() {
+            ["obj"] => {
+                let p = o["obj"].as_str().ok_or_else(|| {
+                    anyhow!(
+                        "{f}.obj: expected a file name, got {}",
+                        json::show(o.get("obj"))
+                    )
+                })?;
+                let mesh = load_obj(&base.join(p), &format!("{f}.obj"))?;
+                total += mesh.tris.len() as u64;
+                check(total, &format!("{f}.obj"))?;
+                mesh
             }
-            grid((s[0], s[1]), (c[0] as u32, c[1] as u32))
-        } else if let Some(s) = m.get("sphere") {
-            let r = number(s.get("radius"), &format!("{f}.sphere.radius"), Some(1.0))?;
-            let n = number(
-                s.get("segments"),
-                &format!("{f}.sphere.segments"),
-                Some(16.0),
-            )?;
-            if !(3.0..=4096.0).contains(&n) || n.fract() != 0.0 {
-                bail!("{f}.sphere.segments: whole number in 3..=4096");
+            ["grid"] => {
+                let g = json::object(&o["grid"], &format!("{f}.grid"), &["size", "cells"])?;
+                let s = num_array(
+                    g.get("size").unwrap_or(&Value::Null),
+                    2,
+                    &format!("{f}.grid.size"),
+                )?;
+                let cells = g
+                    .get("cells")
+                    .and_then(Value::as_array)
+                    .filter(|a| a.len() == 2)
+                    .ok_or_else(|| anyhow!("{f}.grid.cells: expected [nx, nz]"))?;
+                let n =
+                    |k: usize| json::integer(&cells[k], &format!("{f}.grid.cells[{k}]"), 1, 2048);
+                let (nx, nz) = (n(0)? as u32, n(1)? as u32);
+                total += 2 * nx as u64 * nz as u64;
+                check(total, &format!("{f}.grid"))?;
+                grid((s[0], s[1]), (nx, nz))
             }
-            sphere(r, n as u32)
-        } else {
-            bail!("{f}: needs one of obj, grid, sphere");
+            ["sphere"] => {
+                let sp = &o["sphere"];
+                let s = json::object(sp, &format!("{f}.sphere"), &["radius", "segments"])?;
+                let r = number(s.get("radius"), &format!("{f}.sphere.radius"), 1.0)?;
+                let n = match s.get("segments") {
+                    None => 16,
+                    Some(x) => json::integer(x, &format!("{f}.sphere.segments"), 3, 4096)? as u32,
+                };
+                total += sphere_triangles(n);
+                check(total, &format!("{f}.sphere"))?;
+                sphere(r, n)
+            }
+            [] => bail!("{f}: needs one of obj, grid, sphere"),
+            more => bail!(
+                "{f}: give one of obj, grid, sphere, not {}",
+                more.join(" and ")
+            ),
         };
-        let m0 = model(m.get("model"), &format!("{f}.model"))?;
-        let m1 = if m.get("model_t1").is_some() {
-            model(m.get("model_t1"), &format!("{f}.model_t1"))?
+        let m0 = model(o.get("model"), &format!("{f}.model"))?;
+        let m1 = if o.contains_key("model_t1") {
+            model(o.get("model_t1"), &format!("{f}.model_t1"))?
         } else {
             m0
         };
-        let color = match m.get("color") {
+        let color = match o.get("color") {
             None => [200, 200, 200],
-            Some(c) => num_array(c, 3, &format!("{f}.color"))?
-                .iter()
-                .map(|x| x.clamp(0.0, 255.0) as u8)
-                .collect::<Vec<_>>()
-                .try_into()
-                .unwrap_or([200; 3]),
+            Some(c) => crate::scene::color(c, &format!("{f}.color"))?,
         };
         inst.push(Instance {
             mesh,

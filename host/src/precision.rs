@@ -121,8 +121,19 @@ pub fn sweep(sw: &Sweep) -> Vec<PrecRow> {
                 ..Default::default()
             })
             .collect();
-        for &kind in &sw.scenes {
-            for &row in &sw.rows {
+        for (k, &kind) in sw.scenes.iter().enumerate() {
+            for (r, &row) in sw.rows.iter().enumerate() {
+                // Progress as plain lines on stderr (readable in logs, not only on a terminal).
+                let per = sw.scenes.len() * sw.rows.len();
+                eprintln!(
+                    "precision: row {} of {}: {}/{}/{} {kind:?} {}",
+                    ci * per + k * sw.rows.len() + r + 1,
+                    CONFIGS.len() * per,
+                    cfg.0,
+                    cfg.1,
+                    cfg.2,
+                    row.label()
+                );
                 let s = shrink(bench(kind, row, true), sw.shrink);
                 match ci {
                     0 => one::<Prec<6, 6, 2>>(&s, &mut accs),
@@ -543,6 +554,20 @@ pub fn lost_samples(scene: &Scene) -> (u64, u64) {
         .reduce(|| (0, 0), |a, b| (a.0 + b.0, a.1 + b.1))
 }
 
+/// The core's decisions at precision `P` (triangles `core`, table `pat` quantized to `P`) against
+/// the f64 reference on every footprint sample, with the quantization distance at `P` and the
+/// conservativeness check at the scene's tile size (used by `uvt render --precision`).
+pub fn decisions<P: Precision + Sync>(scene: &Scene, core: &[Triangle], pat: &Pattern) -> PrecRow {
+    let mut acc = [PrecRow {
+        tile: scene.tile,
+        ..Default::default()
+    }];
+    errors::<P>(scene, core, pat, &mut acc);
+    let [mut row] = acc;
+    finish(&mut row);
+    row
+}
+
 /// Markdown table of stress cases.
 pub fn stress_md(rows: &[(String, usize, PrecRow)]) -> String {
     let mut s = String::from("| case | triangles | STE core / f64 | decisions ≠ f64 (rate) | max distance px | beyond d_q | depth err LSB max | violations | covered but not written |\n|---|---|---|---|---|---|---|---|---|\n");
@@ -565,7 +590,9 @@ pub fn stress_md(rows: &[(String, usize, PrecRow)]) -> String {
 
 /// Load every scene of a stress folder (sorted by name).
 pub fn stress_scenes(dir: &std::path::Path) -> anyhow::Result<Vec<Scene>> {
-    let mut paths: Vec<_> = std::fs::read_dir(dir)?
+    use anyhow::Context;
+    let mut paths: Vec<_> = std::fs::read_dir(dir)
+        .with_context(|| format!("cannot read stress folder {}", dir.display()))?
         .filter_map(|e| e.ok().map(|e| e.path()))
         .filter(|p| p.extension().is_some_and(|x| x == "json"))
         .collect();

@@ -4,33 +4,211 @@
 
 use std::path::{Path, PathBuf};
 
-use anyhow::{Context, Result};
-use serde_json::json;
-use uvt_core::{BboxScan, Laine2011};
+use anyhow::{anyhow, Context, Result};
+use uvt_core::bounds::BoundsStrategy;
+use uvt_core::{BboxScan, Laine2011, Precision};
 
 use crate::compare::{compare, CoverageDiff};
-use crate::frame::{run, Fixed, Frame, FrameStats, Reference, RunOpts};
+use crate::frame::{run, Fixed, Frame, Reference, RunOpts};
 use crate::pattern::Pattern;
+pub use crate::report::{image_diff, report_md};
+use crate::report::{per, report_json};
 use crate::scene::Scene;
+
+/// Bounds strategies of the core that `uvt render --bounds` accepts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Strategy {
+    /// Laine et al. 2011 (u, v, t) bounds
+    Laine2011,
+    /// the bounding-box scan: every sample of the footprint
+    Bbox,
+}
+
+impl Strategy {
+    /// Every strategy by its command-line name.
+    pub const NAMES: [(&'static str, Strategy); 2] =
+        [("laine2011", Strategy::Laine2011), ("bbox", Strategy::Bbox)];
+
+    /// The strategy called `name`; the error lists the accepted names.
+    pub fn from_name(name: &str) -> Result<Strategy> {
+        Self::NAMES
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|(_, s)| *s)
+            .ok_or_else(|| {
+                anyhow!(
+                    "unknown bounds strategy {name:?} (accepted: {})",
+                    Self::NAMES.map(|n| n.0).join(", ")
+                )
+            })
+    }
+
+    /// The command-line name.
+    pub fn name(self) -> &'static str {
+        Self::NAMES
+            .iter()
+            .find(|(_, s)| *s == self)
+            .map_or("?", |n| n.0)
+    }
+}
+
+/// Precisions `uvt render --precision` accepts, as `POS/TUV/BND` fraction bits (the
+/// configurations of [`crate::precision::CONFIGS`]).
+pub fn precision_from_name(name: &str) -> Result<(u32, u32, u32)> {
+    let show = |c: &(u32, u32, u32)| format!("{}/{}/{}", c.0, c.1, c.2);
+    crate::precision::CONFIGS
+        .iter()
+        .find(|c| show(c) == name)
+        .copied()
+        .ok_or_else(|| {
+            anyhow!(
+                "unknown precision {name:?} (accepted: {})",
+                crate::precision::CONFIGS
+                    .iter()
+                    .map(show)
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            )
+        })
+}
+
+/// How `uvt render` runs the core.
+#[derive(Clone, Copy, Debug)]
+pub struct RenderOpts {
+    /// bounds strategy of the "uvt fixed" pipeline
+    pub bounds: Strategy,
+    /// fraction bits (position, t/u/v, bounds) of the core
+    pub precision: (u32, u32, u32),
+    /// print one line per phase on stderr
+    pub progress: bool,
+}
+
+impl Default for RenderOpts {
+    fn default() -> Self {
+        RenderOpts {
+            bounds: Strategy::Laine2011,
+            precision: (16, 16, 16),
+            progress: false,
+        }
+    }
+}
+
+/// Sample-level comparison core vs reference. At the default precision it is
+/// [`crate::compare::compare`]; at another it comes from [`crate::precision::decisions`], which
+/// does not split the differences by side but adds the conservativeness check.
+#[derive(Clone, Copy, Debug, Default, serde::Serialize)]
+pub struct Decisions {
+    /// (triangle, sample) pairs compared
+    pub compared: u64,
+    /// pairs whose coverage differs
+    pub differ: u64,
+    /// covered by the core only (default precision only)
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub fixed_only: Option<u64>,
+    /// covered by the reference only (default precision only)
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub f64_only: Option<u64>,
+    /// differences farther from an edge than the quantization distance at this precision
+    pub beyond_bound: u64,
+    /// largest distance (px) of a differing sample from the nearest edge
+    pub max_distance_px: f64,
+    /// largest documented quantization distance among triangles with a difference (default
+    /// precision only)
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_bound_px: Option<f64>,
+    /// covered samples outside the core's own bounds (non-default precision only)
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub violations: Option<u64>,
+}
+
+impl Decisions {
+    fn from_diff(c: &CoverageDiff) -> Decisions {
+        Decisions {
+            compared: c.compared,
+            differ: c.fixed_only + c.f64_only,
+            fixed_only: Some(c.fixed_only),
+            f64_only: Some(c.f64_only),
+            beyond_bound: c.beyond_bound,
+            max_distance_px: c.max_distance_px,
+            max_bound_px: Some(c.max_bound_px),
+            violations: None,
+        }
+    }
+    /// Differences per compared pair.
+    pub fn rate(&self) -> f64 {
+        per(self.differ, self.compared)
+    }
+}
 
 /// Results of `uvt render`.
 pub struct Rendered {
-    /// the core with Laine 2011 bounds
+    /// the core with the chosen bounds (default Laine 2011)
     pub fixed: Frame,
     /// the f64 reference
     pub f64: Frame,
     /// the core with the bounding-box scan
     pub bbox: Frame,
     /// sample-level comparison core vs reference
-    pub coverage: CoverageDiff,
+    pub coverage: Decisions,
+    /// how the core ran
+    pub opts: RenderOpts,
     /// the JSON report
     pub report: serde_json::Value,
 }
 
-/// Render a scene with all pipelines.
+/// Render a scene with all pipelines at the default options.
 pub fn render(scene: &Scene) -> Result<Rendered> {
-    let pattern = Pattern::new(scene.pattern, scene.spp, scene.seed);
-    let core = scene.core_tris()?;
+    render_with(scene, &RenderOpts::default())
+}
+
+/// Render a scene with all pipelines, the core at `o.precision` with `o.bounds`.
+pub fn render_with(scene: &Scene, o: &RenderOpts) -> Result<Rendered> {
+    use uvt_core::Prec;
+    match o.precision {
+        (6, 6, 2) => with_prec::<Prec<6, 6, 2>>(scene, o),
+        (8, 8, 4) => with_prec::<Prec<8, 8, 4>>(scene, o),
+        (12, 12, 8) => with_prec::<Prec<12, 12, 8>>(scene, o),
+        (16, 16, 16) => with_prec::<uvt_core::DefaultPrecision>(scene, o),
+        (a, b, c) => Err(precision_from_name(&format!("{a}/{b}/{c}")).unwrap_err()),
+    }
+}
+
+fn with_prec<P: Precision + Sync>(scene: &Scene, o: &RenderOpts) -> Result<Rendered> {
+    match o.bounds {
+        Strategy::Laine2011 => pipelines::<P, _>(scene, o, Laine2011),
+        Strategy::Bbox => pipelines::<P, _>(scene, o, BboxScan),
+    }
+}
+
+fn pipelines<P: Precision + Sync, B: BoundsStrategy + Sync>(
+    scene: &Scene,
+    o: &RenderOpts,
+    strat: B,
+) -> Result<Rendered>
+where
+    B::Coeffs: Send + Sync,
+{
+    let say = |k: u32, what: &str| {
+        if o.progress {
+            eprintln!("render: [{k}/4] {what}");
+        }
+    };
+    let default = o.precision == (16, 16, 16);
+    let exact = Pattern::new(scene.pattern, scene.spp, scene.seed);
+    let pattern = if default {
+        exact.clone()
+    } else {
+        exact.with_tuv(P::TUV_FRAC)
+    };
+    let core = scene
+        .tris
+        .iter()
+        .enumerate()
+        .map(|(i, t)| {
+            t.to_core_with::<P>()
+                .map_err(|e| anyhow!("triangles[{i}]: {e}"))
+        })
+        .collect::<Result<Vec<_>>>()?;
     let vp = scene.core_viewport();
     let colors = scene.colors();
     let opts = |label| RunOpts {
@@ -39,163 +217,69 @@ pub fn render(scene: &Scene) -> Result<Rendered> {
         label,
         ..RunOpts::for_scene(scene, &colors)
     };
+    let fixed = Fixed::<_, P> {
+        prec: std::marker::PhantomData,
+        strat,
+        vp,
+        tris: &core,
+        pattern: &pattern,
+    };
+    say(1, "core with its bounds, and the oracle's dense sampling");
     let fixed = run(
-        &Fixed::new(Laine2011, vp, &core, &pattern),
+        &fixed,
         &pattern,
         &RunOpts {
             oracle: Some(&scene.tris),
             ..opts("uvt fixed")
         },
     );
+    say(2, "f64 reference");
     let f64 = run(
         &Reference {
             vp: scene.viewport,
             tris: &scene.tris,
-            pattern: &pattern,
+            pattern: &exact,
         },
         &pattern,
         &opts("uvt f64"),
     );
+    say(3, "core with the bounding-box scan");
     let bbox = run(
-        &Fixed::new(BboxScan, vp, &core, &pattern),
+        &Fixed::<_, P> {
+            prec: std::marker::PhantomData,
+            strat: BboxScan,
+            vp,
+            tris: &core,
+            pattern: &pattern,
+        },
         &pattern,
         &opts("bbox scan"),
     );
-    let coverage = compare(&scene.tris, &core, vp, &pattern);
-    let report = report_json(scene, &fixed, &f64, &bbox, &coverage);
+    say(4, "comparing core and reference sample by sample");
+    let coverage = if default {
+        Decisions::from_diff(&compare(&scene.tris, &core, vp, &pattern))
+    } else {
+        let r = crate::precision::decisions::<P>(scene, &core, &pattern);
+        Decisions {
+            compared: r.compared,
+            differ: r.differ,
+            fixed_only: None,
+            f64_only: None,
+            beyond_bound: r.beyond_bound,
+            max_distance_px: r.max_differ_px,
+            max_bound_px: None,
+            violations: Some(r.violations),
+        }
+    };
+    let report = report_json(scene, o, &fixed, &f64, &bbox, &coverage);
     Ok(Rendered {
         fixed,
         f64,
         bbox,
         coverage,
+        opts: *o,
         report,
     })
-}
-
-fn per(a: u64, b: u64) -> f64 {
-    if b == 0 {
-        0.0
-    } else {
-        a as f64 / b as f64
-    }
-}
-
-fn frame_json(f: &Frame) -> serde_json::Value {
-    let mut v = serde_json::to_value(f.stats).unwrap_or_default();
-    v["wall_ms"] = json!(f.time.as_secs_f64() * 1e3);
-    v["ste"] = json!(f.stats.ste());
-    v
-}
-
-/// Pixels whose resolved colors differ, and the largest channel difference.
-pub fn image_diff(a: &[[u8; 3]], b: &[[u8; 3]]) -> (u64, u8) {
-    let mut n = 0;
-    let mut m = 0;
-    for (p, q) in a.iter().zip(b) {
-        let d = (0..3).map(|k| p[k].abs_diff(q[k])).max().unwrap_or(0);
-        if d > 0 {
-            n += 1;
-        }
-        m = m.max(d);
-    }
-    (n, m)
-}
-
-fn report_json(
-    s: &Scene,
-    fixed: &Frame,
-    f64: &Frame,
-    bbox: &Frame,
-    cov: &CoverageDiff,
-) -> serde_json::Value {
-    let st: &FrameStats = &fixed.stats;
-    let visible: u64 = st.by_class.iter().sum();
-    let (npix, maxd) = image_diff(&fixed.image, &f64.image);
-    json!({
-        "format": "uvt-render-report", "version": 1,
-        "scene": s.name, "viewport": [s.viewport.0, s.viewport.1], "spp": s.spp, "tile": s.tile,
-        "pattern": s.pattern, "seed": s.seed, "triangles": s.tris.len(),
-        "classes": {"static": st.by_class[0], "motion": st.by_class[1], "defocus": st.by_class[2], "motion_defocus": st.by_class[3],
-                     "culled_outside": st.culled_outside, "culled_degenerate": st.culled_degenerate},
-        "fixed": frame_json(fixed), "f64": frame_json(f64), "bbox_scan": frame_json(bbox),
-        "ste": {"bbox_scan": bbox.stats.ste(), "uvt_fixed": st.ste(), "uvt_f64": f64.stats.ste(), "oracle": st.ste_oracle()},
-        "ops": {"setup_per_triangle": per(st.ops_setup, visible + st.culled_outside + st.culled_degenerate),
-                 "bounds_per_tile": per(st.ops_bounds, st.tiles_visited),
-                 "sample_per_test": per(st.ops_sample, st.samples_tested)},
-        "image_diff_fixed_vs_f64": {"pixels": npix, "max_channel": maxd},
-        "coverage_fixed_vs_f64": cov,
-    })
-}
-
-fn pct(x: f64) -> String {
-    format!("{:.2}%", 100.0 * x)
-}
-
-/// The Markdown report.
-pub fn report_md(r: &Rendered) -> String {
-    let j = &r.report;
-    let row = |name: &str, f: &Frame, ste: f64| {
-        format!(
-            "| {name} | {} | {} | {} | {} | {} | {:.1} |\n",
-            f.stats.tiles_visited,
-            f.stats.tiles_skipped,
-            f.stats.samples_tested,
-            f.stats.samples_covered,
-            pct(ste),
-            f.time.as_secs_f64() * 1e3
-        )
-    };
-    let c = &r.coverage;
-    let mut s = format!(
-        "# uvt render report: {}\n\n{}×{} px, {} spp, bounds tile {}, pattern {} (seed {}), {} triangles.\n\n",
-        j["scene"].as_str().unwrap_or(""), j["viewport"][0], j["viewport"][1], j["spp"], j["tile"], j["pattern"].as_str().unwrap_or(""), j["seed"], j["triangles"]
-    );
-    s += &format!(
-        "Triangles by class (core): static {}, motion {}, defocus {}, motion+defocus {}; culled outside {}, degenerate {}.\n\n",
-        j["classes"]["static"], j["classes"]["motion"], j["classes"]["defocus"], j["classes"]["motion_defocus"],
-        j["classes"]["culled_outside"], j["classes"]["culled_degenerate"]
-    );
-    s += "| pipeline | tiles visited | tiles skipped | samples tested | samples covered | STE | wall ms |\n|---|---|---|---|---|---|---|\n";
-    s += &row("bbox scan (core)", &r.bbox, r.bbox.stats.ste());
-    s += &row(
-        "uvt fixed (core, Laine 2011)",
-        &r.fixed,
-        r.fixed.stats.ste(),
-    );
-    s += &row("uvt f64 (reference)", &r.f64, r.f64.stats.ste());
-    s += &format!(
-        "| oracle box (covered samples + dense points) | | | {} | {} | {} | |\n\n",
-        r.fixed.stats.oracle_tested,
-        r.fixed.stats.samples_covered,
-        pct(r.fixed.stats.ste_oracle())
-    );
-    s += &format!(
-        "Operations (core): {:.0} per triangle setup, {:.1} per tile bounds, {:.1} per sample test (Laine 2011: ~500 / ~40 / ~25).\n\n",
-        j["ops"]["setup_per_triangle"].as_f64().unwrap_or(0.0), j["ops"]["bounds_per_tile"].as_f64().unwrap_or(0.0), j["ops"]["sample_per_test"].as_f64().unwrap_or(0.0)
-    );
-    s += &format!(
-        "Core vs f64 reference: {} (triangle, sample) pairs compared, {} covered by the core only, {} by the reference only \
-         (rate {:.2e}); largest distance of a differing sample from an edge {:.2e} px; beyond the documented quantization \
-         distance: {}. Resolved images differ in {} pixels (max channel difference {}).\n",
-        c.compared, c.fixed_only, c.f64_only, c.rate(), c.max_distance_px, c.beyond_bound,
-        j["image_diff_fixed_vs_f64"]["pixels"], j["image_diff_fixed_vs_f64"]["max_channel"]
-    );
-    s
-}
-
-fn heat_color(x: f64) -> [u8; 3] {
-    // black → blue → red → yellow → white
-    let stops = [
-        [0.0, 0.0, 0.0],
-        [0.1, 0.2, 0.9],
-        [0.9, 0.1, 0.1],
-        [1.0, 0.9, 0.1],
-        [1.0, 1.0, 1.0],
-    ];
-    let f = x.clamp(0.0, 1.0) * (stops.len() - 1) as f64;
-    let i = (f.floor() as usize).min(stops.len() - 2);
-    let a = f - i as f64;
-    [0, 1, 2].map(|k| ((stops[i][k] * (1.0 - a) + stops[i + 1][k] * a) * 255.0) as u8)
 }
 
 fn png(path: &Path, w: u16, h: u16, px: &[[u8; 3]]) -> Result<()> {
@@ -205,8 +289,20 @@ fn png(path: &Path, w: u16, h: u16, px: &[[u8; 3]]) -> Result<()> {
         .with_context(|| format!("writing {}", path.display()))
 }
 
+/// `dir` is usable as an output directory: absent (it will be created) or a directory.
+pub fn check_out_dir(dir: &Path) -> Result<()> {
+    match std::fs::metadata(dir) {
+        Ok(m) if !m.is_dir() => Err(anyhow!(
+            "--out {}: exists and is not a directory",
+            dir.display()
+        )),
+        _ => Ok(()),
+    }
+}
+
 /// Write all outputs into `dir` (created if needed); temp names, then renames.
 pub fn write(r: &Rendered, scene: &Scene, dir: &Path) -> Result<Vec<PathBuf>> {
+    check_out_dir(dir)?;
     std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
     let (w, h) = scene.viewport;
     let diff: Vec<[u8; 3]> = r
@@ -223,13 +319,7 @@ pub fn write(r: &Rendered, scene: &Scene, dir: &Path) -> Result<Vec<PathBuf>> {
             }
         })
         .collect();
-    let maxh = r.fixed.heat.iter().copied().max().unwrap_or(1).max(1) as f64;
-    let heat: Vec<[u8; 3]> = r
-        .fixed
-        .heat
-        .iter()
-        .map(|&n| heat_color(n as f64 / maxh))
-        .collect();
+    let heat = crate::heatmap::draw(w, h, &r.fixed.heat);
     type Writer<'a> = Box<dyn Fn(&Path) -> Result<()> + 'a>;
     let files: Vec<(&str, Writer<'_>)> = vec![
         (
@@ -238,7 +328,13 @@ pub fn write(r: &Rendered, scene: &Scene, dir: &Path) -> Result<Vec<PathBuf>> {
         ),
         ("f64.png", Box::new(|p: &Path| png(p, w, h, &r.f64.image))),
         ("diff.png", Box::new(|p: &Path| png(p, w, h, &diff))),
-        ("heat.png", Box::new(|p: &Path| png(p, w, h, &heat))),
+        (
+            "heat.png",
+            Box::new(|p: &Path| {
+                heat.save_with_format(p, image::ImageFormat::Png)
+                    .with_context(|| format!("writing {}", p.display()))
+            }),
+        ),
         (
             "report.json",
             Box::new(|p: &Path| {

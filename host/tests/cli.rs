@@ -269,3 +269,362 @@ fn vectors_export_and_check_cli() {
         "{e}"
     );
 }
+
+#[test]
+fn bad_unknown_and_duplicate_keys_name_the_file() {
+    // `"sp": 4` rendered at 16 spp before; now an error naming the key and the nearest one.
+    bad(
+        &SMALL.replace("\"spp\":4", "\"sp\":4"),
+        &["bad.json", "sp: unknown key; did you mean \"spp\"?"],
+    );
+    bad(
+        &SMALL.replace("\"color\":[1,2,3]", "\"colour\":[1,2,3]"),
+        &["triangles[2].colour: unknown key; did you mean \"color\"?"],
+    );
+    bad(
+        &SMALL.replace("\"tile\":2", "\"tile\":2,\"tile\":4"),
+        &["bad.json", "duplicate key \"tile\""],
+    );
+}
+
+#[test]
+fn bad_resource_limits_fail_fast() {
+    let cam = r#""camera":{"t0":{"eye":[0,1,5],"target":[0,0,0]}}"#;
+    for (mesh, needles) in [
+        (
+            r#"{"sphere":{"segments":4096}}"#,
+            &[
+                "meshes[0].sphere",
+                "16769024 triangles",
+                "over the memory budget of 4.00 GiB",
+            ][..],
+        ),
+        (
+            r#"{"grid":{"size":[4,4],"cells":[2048,2048]}}"#,
+            &["meshes[0].grid", "8388608 triangles", "--mem-budget"][..],
+        ),
+        (
+            r#"{"obj":"/dev/zero"}"#,
+            &["meshes[0].obj", "/dev/zero", "not a regular file"][..],
+        ),
+    ] {
+        bad(
+            &format!(
+                r#"{{"format":"uvt-scene","version":1,"viewport":[320,180],{cam},"meshes":[{mesh}]}}"#
+            ),
+            needles,
+        );
+    }
+    // The budget flag: a tiny budget refuses the small scene, a bad size is named.
+    let dir = tempfile::tempdir().unwrap();
+    let scene = write(dir.path(), "small.json", SMALL);
+    let o = uvt(&[
+        "render",
+        &scene,
+        "--mem-budget",
+        "1K",
+        "--out",
+        "/nonexistent/x",
+    ]);
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        !o.status.success() && e.contains("triangles: 3 triangles") && e.contains("1.00 KiB"),
+        "{e}"
+    );
+    let o = uvt(&[
+        "render",
+        &scene,
+        "--mem-budget",
+        "lots",
+        "--out",
+        "/nonexistent/x",
+    ]);
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(!o.status.success() && e.contains("--mem-budget"), "{e}");
+}
+
+#[test]
+fn empty_scene_warns_and_renders() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = write(
+        dir.path(),
+        "empty.json",
+        r#"{"format":"uvt-scene","version":1,"viewport":[8,8],"spp":1,"triangles":[]}"#,
+    );
+    let out = dir.path().join("o");
+    let o = uvt(&["render", &scene, "--out", out.to_str().unwrap()]);
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{e}");
+    assert!(
+        e.contains("warning: ") && e.contains("empty.json") && e.contains("empty"),
+        "{e}"
+    );
+    assert!(out.join("report.md").exists());
+}
+
+fn report(dir: &Path) -> Value {
+    serde_json::from_str(&std::fs::read_to_string(dir.join("report.json")).unwrap()).unwrap()
+}
+
+#[test]
+fn render_options_override_the_scene() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = write(dir.path(), "small.json", SMALL);
+    let out = dir.path().join("o");
+    let o = uvt(&[
+        "render",
+        &scene,
+        "--out",
+        out.to_str().unwrap(),
+        "--spp",
+        "2",
+        "--tile",
+        "4",
+        "--viewport",
+        "16x12",
+        "--seed",
+        "9",
+        "--bounds",
+        "bbox",
+        "--precision",
+        "8/8/4",
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let r = report(&out);
+    assert_eq!(r["viewport"], serde_json::json!([16, 12]));
+    assert_eq!(
+        (r["spp"].as_u64(), r["tile"].as_u64(), r["seed"].as_u64()),
+        (Some(2), Some(4), Some(9))
+    );
+    assert_eq!(
+        (r["bounds"].as_str(), r["precision"].as_str()),
+        (Some("bbox"), Some("8/8/4"))
+    );
+    // With bbox bounds the core tests every footprint sample, like the bbox scan.
+    assert_eq!(
+        r["fixed"]["samples_tested"],
+        r["bbox_scan"]["samples_tested"]
+    );
+    // At a non-default precision the comparison checks conservativeness against d_q there.
+    assert_eq!(r["coverage_fixed_vs_f64"]["violations"].as_u64(), Some(0));
+    assert_eq!(r["coverage_fixed_vs_f64"]["beyond_bound"].as_u64(), Some(0));
+    assert_eq!(image::open(out.join("fixed.png")).unwrap().width(), 16);
+    // Bad values list what is accepted.
+    for (args, needles) in [
+        (
+            &["--bounds", "laine"][..],
+            &["--bounds", "laine2011, bbox"][..],
+        ),
+        (
+            &["--precision", "10/10/10"][..],
+            &["--precision", "6/6/2, 8/8/4, 12/12/8, 16/16/16"][..],
+        ),
+        (&["--viewport", "16*12"][..], &["--viewport", "WxH"][..]),
+        (&["--viewport", "0x12"][..], &["--viewport"][..]),
+        (&["--spp", "65"][..], &["--spp 65"][..]),
+        (&["--tile", "3"][..], &["--tile 3"][..]),
+    ] {
+        let o2 = dir.path().join("never");
+        let mut a = vec!["render", scene.as_str(), "--out", o2.to_str().unwrap()];
+        a.extend_from_slice(args);
+        let o = uvt(&a);
+        let e = String::from_utf8_lossy(&o.stderr);
+        assert!(!o.status.success(), "{args:?} accepted");
+        for n in needles {
+            assert!(e.contains(n), "{args:?}: {e:?} lacks {n:?}");
+        }
+        assert!(!o2.exists());
+    }
+}
+
+#[test]
+fn report_explains_itself_and_nulls_what_is_not_counted() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = write(dir.path(), "small.json", SMALL);
+    let out = dir.path().join("o");
+    let o = uvt(&["render", &scene, "--out", out.to_str().unwrap()]);
+    assert!(o.status.success());
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        e.contains("[1/4]") && e.contains("oracle") && e.contains("[4/4] comparing"),
+        "{e}"
+    );
+    let r = report(&out);
+    for k in ["ops_setup", "ops_bounds", "ops_sample"] {
+        assert!(r["f64"][k].is_null(), "f64.{k} = {}", r["f64"][k]);
+        assert!(r["fixed"][k].is_u64(), "fixed.{k}");
+    }
+    assert!(r["bbox_scan"]["ops_sample"].as_u64().unwrap() > 0);
+    assert!(r["fixed"]["ops_sample"].as_u64().unwrap() > 0);
+    let md = std::fs::read_to_string(out.join("report.md")).unwrap();
+    for n in [
+        "`fixed.png`",
+        "`f64.png`",
+        "`diff.png`",
+        "`heat.png`",
+        "**STE**",
+        "tiles skipped",
+        "**Oracle**",
+        "**Wall ms**",
+    ] {
+        assert!(md.contains(n), "report.md lacks {n}");
+    }
+    // The heat map carries its legend below the map: wider/taller than the viewport, with white
+    // (the scale's maximum) at the right end of the colour bar.
+    let heat = image::open(out.join("heat.png")).unwrap().to_rgb8();
+    assert_eq!(
+        (heat.width(), heat.height()),
+        (uvt_host::heatmap::MIN_W, 24 + uvt_host::heatmap::LEGEND_H)
+    );
+    assert_eq!(heat.get_pixel(heat.width() - 5, 24 + 18).0, [255, 255, 255]);
+}
+
+#[test]
+fn example_scenes_render() {
+    let dir = tempfile::tempdir().unwrap();
+    let scenes = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+    let mut n = 0;
+    for e in std::fs::read_dir(&scenes).unwrap() {
+        let p = e.unwrap().path();
+        if !p.extension().is_some_and(|x| x == "json") {
+            continue;
+        }
+        let out = dir.path().join(p.file_stem().unwrap());
+        let o = uvt(&[
+            "render",
+            p.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ]);
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert!(
+            o.status.success() && !err.contains("warning"),
+            "{}: {err}",
+            p.display()
+        );
+        let r = report(&out);
+        assert!(
+            r["fixed"]["samples_covered"].as_u64().unwrap() > 0,
+            "{}",
+            p.display()
+        );
+        assert_eq!(r["coverage_fixed_vs_f64"]["beyond_bound"].as_u64(), Some(0));
+        n += 1;
+    }
+    assert_eq!(n, 3, "host/scenes holds three example scenes");
+}
+
+#[test]
+fn scene_export_writes_a_loadable_scene() {
+    let dir = tempfile::tempdir().unwrap();
+    let o = uvt(&["scene", "list"]);
+    let list = String::from_utf8_lossy(&o.stdout);
+    assert!(list.lines().any(|l| l == "default") && list.lines().any(|l| l == "dense-both2"));
+    let f = dir.path().join("g.json");
+    let o = uvt(&[
+        "scene",
+        "export",
+        "game-motion-quick",
+        "--out",
+        f.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let s = uvt_host::scene::Scene::load(&f).unwrap();
+    let b = uvt_host::scenes::bench(
+        uvt_host::scenes::Bench::Game,
+        uvt_host::scenes::Row::Motion,
+        true,
+    );
+    assert_eq!((s.viewport, s.tris.len()), (b.viewport, b.tris.len()));
+    assert_eq!(s.tris, b.tris);
+    let o = uvt(&["scene", "export", "defualt"]);
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        !o.status.success() && e.contains("did you mean \"default\""),
+        "{e}"
+    );
+}
+
+#[test]
+fn closed_stdout_exits_quietly() {
+    use std::io::Write;
+    use std::process::Stdio;
+    // Deterministic: the shell waits for a line on stdin before it starts uvt, and the test
+    // closes the read end of uvt's stdout before sending it, so every write gets EPIPE (like
+    // `uvt vectors layout | head -1` once head has exited).
+    for args in [
+        &["vectors", "layout"][..],
+        &["scene", "export", "default"][..],
+    ] {
+        let mut c = Command::new("sh")
+            .args([
+                "-c",
+                "read go; exec \"$0\" \"$@\"",
+                env!("CARGO_BIN_EXE_uvt"),
+            ])
+            .args(args)
+            .stdin(Stdio::piped())
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        drop(c.stdout.take());
+        writeln!(c.stdin.take().unwrap(), "go").unwrap();
+        let o = c.wait_with_output().unwrap();
+        let e = String::from_utf8_lossy(&o.stderr);
+        assert!(
+            o.status.success() && e.is_empty(),
+            "{args:?}: {:?} {e}",
+            o.status
+        );
+    }
+}
+
+#[test]
+fn bench_ste_prints_row_progress() {
+    let o = uvt(&["bench-ste", "--quick", "--scene", "game", "--row", "static"]);
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(o.status.success(), "{e}");
+    // Plain lines, also when stderr is not a terminal (here: a pipe).
+    assert!(
+        e.lines().any(|l| l == "bench-ste: row 1 of 1: Game static"),
+        "{e}"
+    );
+    assert!(String::from_utf8_lossy(&o.stdout).contains("| GAME |"));
+}
+
+#[test]
+fn file_errors_name_their_path() {
+    let o = uvt(&["stress", "nosuchdir"]);
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        !o.status.success() && e.contains("nosuchdir") && e.contains("No such file"),
+        "{e}"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let file = write(dir.path(), "afile", "x");
+    for args in [
+        &["render", "--out", file.as_str()][..],
+        &["precision", "--quick", "--out", file.as_str()][..],
+        &["vectors", "export", "--out", file.as_str()][..],
+    ] {
+        let o = uvt(args);
+        let e = String::from_utf8_lossy(&o.stderr);
+        assert!(
+            !o.status.success()
+                && e.contains(&format!("--out {file}: exists and is not a directory")),
+            "{args:?}: {e}"
+        );
+    }
+    let o = uvt(&[
+        "render",
+        dir.path().to_str().unwrap(),
+        "--out",
+        "/nonexistent/x",
+    ]);
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        !o.status.success() && e.contains("not a regular file"),
+        "{e}"
+    );
+}
