@@ -41,11 +41,16 @@
 //! terms. With `m_k` the sum of |x|, |y|, |w|, |c| of vertex k over both ends (it bounds every
 //! coordinate of p_k at any t, u, v) and `Σ|d_i| ≤ 3` inside the viewport, that sum is at most
 //! `3·m_a·m_b` for `E_k` and `m_0·m_1·m_2` for det, so `F_E = 2^-40·3(Σm_k)²` and
-//! `F_det = 2^-40·(Σm_k)³` bound the round-off with a 256× margin (still 2^-23 below the
-//! 2^-17 quantization scale, so the margin does not blunt the check). The
-//! reference's ray test divides by `ΣE` and compares barycentrics with 0 and 1; when all
-//! `|E_k| > F_E` with equal signs, `|ΣE| > F_E` and those comparisons have the signs of `E_k`, so
-//! round-off cannot flip its decision outside the same margins.
+//! `F_det = 2^-40·(Σm_k)³` bound the round-off with a 256× margin (still 2^-23 below the 2^-17
+//! quantization scale, so the margin does not blunt the check). The reference's ray test divides
+//! by `ΣE` and compares barycentrics with 0 and 1; when all `|E_k| > F_E` with equal signs,
+//! `|ΣE| > F_E` and those comparisons have the signs of `E_k`, so round-off cannot flip its
+//! decision outside the same margins.
+//!
+//! **Tightness (measured).** Rounding every input to a corner of its box moves a value by up to
+//! 0.88 of its bound (`tests/tests/quant_check.rs`, 4000 random triangles of every kind); the
+//! differing samples of the test scenes use at most 0.31 of it (default precision), 0.21 (8/8
+//! bits, camera-plane crossing), so a bound 16× smaller would already be violated there.
 //!
 //! **In pixels.** `E_k` is affine in the screen position with gradient `(2n_x/W, −2n_y/H)`
 //! (`n = a × b`), so `|E_k| ≤ B_k` says the sample lies within `B_k/|∇E_k|` px of edge line k at
