@@ -57,7 +57,7 @@ fn bound_contains_every_admissible_rounding() {
                     (2.0 * r.unit() - 1.0) * lim
                 }
             };
-            let mut q = tri.clone();
+            let mut q = tri;
             for vtx in q.t0.iter_mut().chain(q.t1.iter_mut()) {
                 for f in [0, 1, 3, 4] {
                     vtx[f] += e(rd.pos);
@@ -75,8 +75,8 @@ fn bound_contains_every_admissible_rounding() {
                 got[k] = p[(k + 1) % 3].cross(p[(k + 2) % 3]).dot(d);
             }
             got[3] = p[0].dot(p[1].cross(p[2]));
-            for k in 0..4 {
-                let moved = (got[k] - c.values[k]).abs();
+            for (k, g) in got.iter().enumerate() {
+                let moved = (g - c.values[k]).abs();
                 worst = worst.max(moved / c.bounds[k]);
                 assert!(
                     moved <= c.bounds[k],
@@ -85,7 +85,7 @@ fn bound_contains_every_admissible_rounding() {
                      {xq} {yq} {uq} {vq} {tq}, rounding {rd:?}, seed {seed}",
                     c.bounds[k],
                     c.values[k],
-                    got[k],
+                    g,
                     moved.to_bits(),
                     c.bounds[k].to_bits()
                 );
