@@ -1,16 +1,16 @@
 #!/usr/bin/env bash
 # The one command that runs every uvt test on a fresh machine (README.md names it; .ci/run calls it).
-# Installs what the tests need, then: thumbv7 build of the core, clippy and tests with warnings as
-# errors. UVT_SEED and UVT_EXTENSIVE=1 are passed through to the tests.
+# Installs what the tests need, then: thumbv7em and thumbv7m builds of the core, clippy and tests
+# with warnings as errors. UVT_SEED and UVT_EXTENSIVE=1 are passed through to the tests.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export RUSTFLAGS="${RUSTFLAGS:-} -D warnings"
 export CARGO_TERM_COLOR=never
 
 echo "== installing test prerequisites"
-rustup target add thumbv7em-none-eabihf >/dev/null
+rustup target add thumbv7em-none-eabihf thumbv7m-none-eabi >/dev/null
 rustup component add clippy >/dev/null 2>&1 || true
-# Debian packages: qemu-system-arm (the Cortex-M4F run), iverilog (the RTL testbench).
+# Debian packages: qemu-system-arm (the Cortex-M4F and Cortex-M3 runs), iverilog (the RTL testbench).
 missing=()
 for pkg in qemu-system-arm iverilog; do
   dpkg -s "$pkg" >/dev/null 2>&1 || missing+=("$pkg")
@@ -21,8 +21,9 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-echo "== core for Cortex-M4F (thumbv7em-none-eabihf)"
+echo "== core for Cortex-M4F (thumbv7em-none-eabihf) and Cortex-M3 (thumbv7m-none-eabi, no FPU)"
 cargo build --locked -p uvt-core --target thumbv7em-none-eabihf --release
+cargo build --locked -p uvt-core --target thumbv7m-none-eabi --release
 
 echo "== rustfmt"
 rustup component add rustfmt >/dev/null 2>&1 || true
@@ -31,6 +32,7 @@ cargo fmt --all --check
 echo "== clippy (warnings are errors), host and the bare-metal program"
 cargo clippy --locked --workspace --all-targets -- -D warnings
 cargo clippy --locked -p uvt-core --example m4_render --target thumbv7em-none-eabihf -- -D warnings
+cargo clippy --locked -p uvt-core --example m4_render --target thumbv7m-none-eabi -- -D warnings
 
 echo "== tests"
 cargo test --locked --workspace

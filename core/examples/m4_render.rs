@@ -1,12 +1,14 @@
 //! The built-in demo scene (`uvt_core::demo`) rendered through the tile framebuffer, printing the
 //! image checksum, the core's counters and per-stage cost.
 //!
-//! On `thumbv7em-none-eabihf` it is a bare-metal Cortex-M4F program for QEMU's `mps2-an386`
-//! (cortex-m-rt, output over semihosting). Run under `-icount shift=0` QEMU advances virtual time
-//! 1 ns per executed instruction and SysTick counts the 25 MHz system clock, so one SysTick tick
-//! is 40 instructions: the cost lines report instructions per stage call. It also paints the
-//! stack and reports its peak use. On the host the same program prints the same checksum and
-//! counters, and the cost in nanoseconds.
+//! On `thumbv7em-none-eabihf` it is a bare-metal Cortex-M4F program for QEMU's `mps2-an386`, and
+//! the same source on `thumbv7m-none-eabi` (no FPU; the program uses none) a Cortex-M3 program for
+//! `mps2-an385` (cortex-m-rt, output over semihosting; both boards have 4 MiB SSRAM at 0x0 and at
+//! 0x2000_0000, `memory.x`). Run under `-icount shift=0` QEMU advances virtual time 1 ns per
+//! executed instruction and SysTick counts the 25 MHz system clock of both boards, so one SysTick
+//! tick is 40 instructions (checked on every run by the calibration line): the cost lines report
+//! instructions per stage call. It also paints the stack and reports its peak use. On the host the
+//! same program prints the same checksum and counters, and the cost in nanoseconds.
 #![cfg_attr(target_os = "none", no_std)]
 #![cfg_attr(target_os = "none", no_main)]
 
@@ -32,7 +34,7 @@ mod target {
     use uvt_core::demo;
 
     const PAINT: u32 = 0x5AA5_C33C;
-    /// Instructions per SysTick tick under `-icount shift=0` on mps2-an386 (25 MHz SYSCLK).
+    /// Instructions per SysTick tick under `-icount shift=0` on mps2-an385/an386 (25 MHz SYSCLK).
     const INSN_PER_TICK: u64 = 40;
 
     extern "C" {

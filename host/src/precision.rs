@@ -15,11 +15,11 @@ use uvt_core::{
     sample_eval, Laine2011, Ops, Outcome, PixelRect, Prec, Precision, ScreenPos, Setup, Triangle,
 };
 
-use crate::compare::quant_distance_px;
+use crate::compare::{check_sample, Rounding};
 use crate::frame::{run, Fixed, Reference, RunOpts};
 use crate::pattern::Pattern;
 use crate::reference;
-use crate::scene::{Scene, SceneTri};
+use crate::scene::Scene;
 use crate::scenes::{bench, Bench, Row};
 
 /// The swept configurations (position, t/u/v, bound fraction bits), narrow to the default.
@@ -43,9 +43,14 @@ pub struct PrecRow {
     pub differ: u64,
     /// largest distance (px) of a differing sample from the nearest edge
     pub max_differ_px: f64,
-    /// differing samples farther from an edge than the documented quantization distance at
-    /// this precision
+    /// differing samples that no input rounding at this precision explains
+    /// (`compare::check_sample`; must be 0)
     pub beyond_bound: u64,
+    /// largest quantization-check ratio of a differing sample (≤ 1 when `beyond_bound` is 0)
+    pub max_ratio: f64,
+    /// differing samples of triangles with a vertex at w ≤ 0 at either end of the shutter
+    /// (checked like all others)
+    pub behind: u64,
     /// bound slack (core width − reference width) mean and max, per axis t, u, v
     pub slack_mean: [f64; 3],
     /// max slack per axis
@@ -255,7 +260,7 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, accs
                 return a;
             };
             let full = Setup::unculled(ct, vp);
-            let bound = quant_distance_at(st, v, P::POS_FRAC, P::TUV_FRAC);
+            let rounding = Rounding::at(P::POS_FRAC, P::TUV_FRAC);
             let cell_of = |px: u16, py: u16, fp: PixelRect, bt: u16| {
                 PixelRect {
                     x0: px - px % bt,
@@ -309,9 +314,10 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, accs
                             let d =
                                 reference::sample::edge_distance_px(st, v, x, y, e[2], e[3], e[4]);
                             a[0].max_differ_px = a[0].max_differ_px.max(d);
-                            if d > bound {
-                                a[0].beyond_bound += 1;
-                            }
+                            let c = check_sample(st, v, x, y, e[2], e[3], e[4], &rounding);
+                            a[0].max_ratio = a[0].max_ratio.max(c.ratio);
+                            a[0].beyond_bound += u64::from(c.ratio > 1.0);
+                            a[0].behind += u64::from(c.behind);
                         }
                         if let (Some(h), Some(z)) = (hf, hr) {
                             if h.depth != uvt_core::formats::DEPTH_FAR && z.abs() < 128.0 {
@@ -359,6 +365,8 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, accs
             acc.differ += cov.differ;
             acc.max_differ_px = acc.max_differ_px.max(cov.max_differ_px);
             acc.beyond_bound += cov.beyond_bound;
+            acc.max_ratio = acc.max_ratio.max(cov.max_ratio);
+            acc.behind += cov.behind;
             acc.depth_lsb[0] = acc.depth_lsb[0].max(cov.depth_lsb[0]);
             acc.depth_lsb[1] += cov.depth_lsb[1];
             acc.depth_n += cov.depth_n;
@@ -374,31 +382,16 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, accs
     }
 }
 
-/// The documented quantization distance (`compare::quant_distance_px`) generalised to `pos`
-/// position and `tuv` t/u/v fraction bits: the 2^-17 rounding terms become 2^-(pos+1) and
-/// 2^-(tuv+1).
-pub fn quant_distance_at(t: &SceneTri, vp: (u16, u16), pos: u32, tuv: u32) -> f64 {
-    let base = quant_distance_px(t, vp);
-    if !base.is_finite() {
-        return base;
-    }
-    // base = 2·(√2/256 + S·2^-17·K/w) + 1e-6; rescale the 2^-17 part by the coarser grids.
-    let sub = 2.0 * 2f64.sqrt() / 256.0 + 1e-6;
-    let geo = (base - sub).max(0.0);
-    let scale = 2f64.powi(16 - pos.min(tuv) as i32);
-    sub + geo * scale
-}
-
 /// Markdown table of a sweep.
 pub fn table_md(rows: &[PrecRow]) -> String {
     let mut s = String::from(
-        "| pos/tuv/bnd bits | tile | time ÷ f64 | ops setup/tile/sample | decisions ≠ f64 (rate, max px) | beyond d_q | slack t/u/v mean (max) | STE core / f64 | depth err LSB max (mean) | violations | ε t/u/v measured | outside exact bounds | core margin | analytic ε (sample part) |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| pos/tuv/bnd bits | tile | time ÷ f64 | ops setup/tile/sample | decisions ≠ f64 (rate, max px) | beyond bound (max ratio) | slack t/u/v mean (max) | STE core / f64 | depth err LSB max (mean) | violations | ε t/u/v measured | outside exact bounds | core margin | analytic ε (sample part) |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     for r in rows {
         s += &format!(
-            "| {}/{}/{} | {} | {:.2} | {:.0}/{:.0}/{:.0} | {} ({:.1e}, {:.3}) | {} | {:.4}/{:.4}/{:.4} ({:.4}/{:.4}/{:.4}) | {:.2}% / {:.2}% | {:.0} ({:.1}) | {} | {:.1e}/{:.1e}/{:.1e} | {} | 2^-{} | 2^-{} |\n",
+            "| {}/{}/{} | {} | {:.2} | {:.0}/{:.0}/{:.0} | {} ({:.1e}, {:.3}) | {} ({:.2}) | {:.4}/{:.4}/{:.4} ({:.4}/{:.4}/{:.4}) | {:.2}% / {:.2}% | {:.0} ({:.1}) | {} | {:.1e}/{:.1e}/{:.1e} | {} | 2^-{} | 2^-{} |\n",
             r.config.0, r.config.1, r.config.2, r.tile, r.time_ratio_median, r.ops[0], r.ops[1], r.ops[2],
-            r.differ, r.differ as f64 / r.compared.max(1) as f64, r.max_differ_px, r.beyond_bound,
+            r.differ, r.differ as f64 / r.compared.max(1) as f64, r.max_differ_px, r.beyond_bound, r.max_ratio,
             r.slack_mean[0], r.slack_mean[1], r.slack_mean[2], r.slack_max[0], r.slack_max[1], r.slack_max[2],
             100.0 * r.ste[0], 100.0 * r.ste[1], r.depth_lsb[0], r.depth_lsb[1], r.violations,
             r.eps_measured[0], r.eps_measured[1], r.eps_measured[2], r.eps_outside, r.config.1, r.config.1 + 1
@@ -570,16 +563,21 @@ pub fn decisions<P: Precision + Sync>(scene: &Scene, core: &[Triangle], pat: &Pa
 
 /// Markdown table of stress cases.
 pub fn stress_md(rows: &[(String, usize, PrecRow)]) -> String {
-    let mut s = String::from("| case | triangles | STE core / f64 | decisions ≠ f64 (rate) | max distance px | beyond d_q | depth err LSB max | violations | covered but not written |\n|---|---|---|---|---|---|---|---|---|\n");
+    let mut s = String::from("| case | triangles | STE core / f64 | decisions ≠ f64 (rate) | of which w ≤ 0 | max distance px | beyond bound (max ratio) | depth err LSB max | violations | covered but not written |
+|---|---|---|---|---|---|---|---|---|---|
+");
     for (name, n, r) in rows {
         s += &format!(
-            "| {name} | {n} | {:.2}% / {:.2}% | {} ({:.1e}) | {:.2e} | {} | {:.0} | {} | {} |\n",
+            "| {name} | {n} | {:.2}% / {:.2}% | {} ({:.1e}) | {} | {:.2e} | {} ({:.2}) | {:.0} | {} | {} |
+",
             100.0 * r.ste[0],
             100.0 * r.ste[1],
             r.differ,
             r.differ as f64 / r.compared.max(1) as f64,
+            r.behind,
             r.max_differ_px,
             r.beyond_bound,
+            r.max_ratio,
             r.depth_lsb[0],
             r.violations,
             r.lost

@@ -108,11 +108,12 @@ pub struct Decisions {
     /// covered by the reference only (default precision only)
     #[serde(skip_serializing_if = "Option::is_none")]
     pub f64_only: Option<u64>,
-    /// differences farther from an edge than the quantization distance at this precision
+    /// differences not explained by the derived quantization bound at this precision
+    /// (`compare.rs`: some edge value or det within its bound; must be 0)
     pub beyond_bound: u64,
     /// largest distance (px) of a differing sample from the nearest edge
     pub max_distance_px: f64,
-    /// largest documented quantization distance among triangles with a difference (default
+    /// largest per-sample quantization distance (px) among explained differences (default
     /// precision only)
     #[serde(skip_serializing_if = "Option::is_none")]
     pub max_bound_px: Option<f64>,
