@@ -76,24 +76,14 @@ fn a_changed_bit_is_reported_with_file_line_and_field() {
     copy_set(&committed().join("frame_b"), &set);
     // Change the depth (word 1) of the first covered sample, and fix the manifest checksum so
     // the change reaches the bit comparison.
-    let f = set.join("sample_out.hex");
-    let text = std::fs::read_to_string(&f).unwrap();
-    let mut lines: Vec<String> = text.lines().map(String::from).collect();
-    let idx = lines
-        .iter()
-        .position(|l| l.starts_with("00000003") || l.starts_with("00000007"))
+    let text = std::fs::read_to_string(set.join("sample_out.hex")).unwrap();
+    let (idx, line) = text
+        .lines()
+        .enumerate()
+        .find(|(_, l)| l.starts_with("00000003") || l.starts_with("00000007"))
         .expect("a covered sample");
-    let mut words: Vec<String> = lines[idx].split(' ').map(String::from).collect();
-    let d = u32::from_str_radix(&words[1], 16).unwrap() ^ 1;
-    words[1] = format!("{d:08x}");
-    lines[idx] = words.join(" ");
-    let new = lines.join("\n") + "\n";
-    std::fs::write(&f, &new).unwrap();
-    let m = set.join("manifest.json");
-    let mt = std::fs::read_to_string(&m)
-        .unwrap()
-        .replace(&sha256(text.as_bytes()), &sha256(new.as_bytes()));
-    std::fs::write(&m, mt).unwrap();
+    let depth = u32::from_str_radix(line.split(' ').nth(1).unwrap(), 16).unwrap();
+    corrupt_word(&set, "sample_out.hex", idx, 1, depth ^ 1);
     let e = format!("{:#}", check(&set).unwrap_err());
     assert!(
         e.contains(&format!("sample_out.hex line {} field depth", idx + 1))
