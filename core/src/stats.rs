@@ -13,6 +13,9 @@ pub struct Ops {
     pub bounds: u64,
     /// sample tests
     pub sample: u64,
+    /// per-sample predicates of a bounds strategy, run on every sample inside its tile's box
+    /// before the sample test (0 for box-only strategies)
+    pub predicate: u64,
 }
 
 impl Ops {
@@ -21,6 +24,7 @@ impl Ops {
         self.setup += o.setup;
         self.bounds += o.bounds;
         self.sample += o.sample;
+        self.predicate += o.predicate;
     }
 }
 

@@ -12,7 +12,7 @@ use embedded_graphics_core::draw_target::DrawTarget;
 use embedded_graphics_core::pixelcolor::{Rgb888, RgbColor};
 use embedded_graphics_core::prelude::{Pixel, Point};
 
-use crate::bounds::BoundsStrategy;
+use crate::bounds::{BoundsStrategy, TileBounds};
 use crate::error::Error;
 use crate::formats::{DefaultPrecision, Precision};
 use crate::input::{PixelRect, SamplePattern, Triangle, Viewport};
@@ -299,9 +299,9 @@ impl<B: BoundsStrategy, const N: usize, P: Precision> Renderer<B, N, P> {
 
 /// Test the samples of one bounds tile that fall inside its intervals.
 #[allow(clippy::too_many_arguments)]
-fn shade_cell<const TW: usize, const TH: usize, const S: usize>(
+fn shade_cell<T: TileBounds, const TW: usize, const TH: usize, const S: usize>(
     setup: &Setup,
-    uvt: &crate::bounds::UvtBox,
+    uvt: &T,
     cell: PixelRect,
     screen: PixelRect,
     pattern: &SamplePattern<'_>,
@@ -314,7 +314,7 @@ fn shade_cell<const TW: usize, const TH: usize, const S: usize>(
         for px in cell.x0..cell.x1 {
             let (tx, ty) = ((px - screen.x0) as usize, (py - screen.y0) as usize);
             for (si, s) in pattern.pixel(px, py).iter().enumerate() {
-                if !uvt.contains(s.u.to_bits(), s.v.to_bits(), s.t.to_bits()) {
+                if !uvt.admits(s.u.to_bits(), s.v.to_bits(), s.t.to_bits(), &mut ops) {
                     continue;
                 }
                 stats.samples_tested += 1;

@@ -19,7 +19,7 @@ use std::time::{Duration, Instant};
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
-use uvt_core::bounds::BoundsStrategy;
+use uvt_core::bounds::{BoundsStrategy, TileBounds};
 use uvt_core::{Class, Cull, Ops, Outcome, PixelRect, Triangle, Viewport};
 
 use crate::pattern::Pattern;
@@ -46,8 +46,9 @@ pub trait Pipeline: Sync {
     fn footprint(&self, s: &Self::Setup) -> PixelRect;
     /// bounds of one tile
     fn bounds(&self, s: &Self::Setup, cell: PixelRect, ops: &mut Ops) -> Option<Self::Bounds>;
-    /// whether sample `idx` of the table lies inside the bounds
-    fn inside(&self, b: &Self::Bounds, idx: usize) -> bool;
+    /// whether sample `idx` of the table lies inside the bounds (box, then the strategy's
+    /// per-sample predicate, counted in `ops.predicate`)
+    fn inside(&self, b: &Self::Bounds, idx: usize, ops: &mut Ops) -> bool;
     /// (u, v, t) of sample `idx` as this pipeline sees it
     fn uvt(&self, idx: usize) -> [f64; 3];
     /// sample test: depth on a hit
@@ -90,7 +91,7 @@ where
     B::Coeffs: Send + Sync,
 {
     type Setup = (uvt_core::Setup, B::Coeffs);
-    type Bounds = uvt_core::UvtBox;
+    type Bounds = B::Tile;
     fn setup(&self, i: usize, ops: &mut Ops) -> SetupOut<Self::Setup> {
         match uvt_core::setup_with::<P>(&self.tris[i], self.vp, ops) {
             Outcome::Visible(s) => {
@@ -106,9 +107,9 @@ where
     fn bounds(&self, s: &Self::Setup, cell: PixelRect, ops: &mut Ops) -> Option<Self::Bounds> {
         self.strat.tile(&s.0, &s.1, cell, ops)
     }
-    fn inside(&self, b: &Self::Bounds, idx: usize) -> bool {
+    fn inside(&self, b: &Self::Bounds, idx: usize, ops: &mut Ops) -> bool {
         let q = &self.pattern.quant[idx];
-        b.contains(q.u.to_bits(), q.v.to_bits(), q.t.to_bits())
+        b.admits(q.u.to_bits(), q.v.to_bits(), q.t.to_bits(), ops)
     }
     fn uvt(&self, idx: usize) -> [f64; 3] {
         let q = &self.pattern.quant[idx];
@@ -124,6 +125,7 @@ where
     }
     fn ranges(&self, b: &Self::Bounds) -> [(f64, f64); 3] {
         let r = |i: uvt_core::Interval| (i.lo as f64 / 65536.0, i.hi as f64 / 65536.0);
+        let b = b.uvt_box();
         [r(b.u), r(b.v), r(b.t)]
     }
 }
@@ -153,7 +155,7 @@ impl Pipeline for Reference<'_> {
     fn bounds(&self, s: &Self::Setup, cell: PixelRect, _: &mut Ops) -> Option<Self::Bounds> {
         reference::bounds::tile(s, cell)
     }
-    fn inside(&self, b: &Self::Bounds, idx: usize) -> bool {
+    fn inside(&self, b: &Self::Bounds, idx: usize, _: &mut Ops) -> bool {
         let e = &self.pattern.exact[idx];
         b.contains(e[2], e[3], e[4])
     }
@@ -468,7 +470,7 @@ fn band<P: Pipeline>(
                     let pix = (py - y0) as usize * w + px as usize;
                     for si in 0..s {
                         let idx = pat.index(px, py, si);
-                        if !p.inside(&bounds, idx) {
+                        if !p.inside(&bounds, idx, &mut ops) {
                             continue;
                         }
                         st.samples_tested += 1;

@@ -2,7 +2,7 @@
 //! RNG, random sample tables, and the brute-force checkers for conservativeness and
 //! watertightness. Failures are reported as strings with the inputs in decimal and raw hex.
 
-use uvt_core::bounds::BoundsStrategy;
+use uvt_core::bounds::{BoundsStrategy, TileBounds};
 use uvt_core::{
     sample_test, Coord, Lens, Outcome, PixelRect, Sample, SamplePattern, ScreenPos, Setup, Stats,
     SubPixel, Time, Triangle, Vertex, Viewport,
@@ -207,8 +207,8 @@ pub fn check_conservative_with<B: BoundsStrategy, P: uvt_core::Precision>(
                     Some((false, _)) => Some("pixel outside the footprint".to_string()),
                     Some((true, None)) => Some(format!("{}x{bt} tile bounds empty", bt)),
                     Some((true, Some(b))) => {
-                        (!b.contains(smp.u.to_bits(), smp.v.to_bits(), smp.t.to_bits()))
-                            .then(|| format!("outside tile box {b:?}"))
+                        (!b.admits(smp.u.to_bits(), smp.v.to_bits(), smp.t.to_bits(), &mut ops))
+                            .then(|| format!("outside tile bounds {b:?}"))
                     }
                 };
                 if let Some(why) = why {
