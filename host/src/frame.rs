@@ -212,6 +212,8 @@ pub struct FrameStats {
     pub ops_bounds: u64,
     /// sample-test ops
     pub ops_sample: u64,
+    /// per-sample predicate ops of the bounds strategy
+    pub ops_predicate: u64,
 }
 
 impl FrameStats {
@@ -229,6 +231,7 @@ impl FrameStats {
             &mut self.ops_setup,
             &mut self.ops_bounds,
             &mut self.ops_sample,
+            &mut self.ops_predicate,
         ];
         let b = [
             o.triangles,
@@ -243,6 +246,7 @@ impl FrameStats {
             o.ops_setup,
             o.ops_bounds,
             o.ops_sample,
+            o.ops_predicate,
         ];
         for (x, y) in a.into_iter().zip(b) {
             *x += y;
@@ -255,6 +259,7 @@ impl FrameStats {
         self.ops_setup += o.setup;
         self.ops_bounds += o.bounds;
         self.ops_sample += o.sample;
+        self.ops_predicate += o.predicate;
     }
     /// STE of the pipeline's bounds (covered / tested), in [0, 1].
     pub fn ste(&self) -> f64 {
@@ -291,6 +296,7 @@ pub struct Frame {
 }
 
 /// Options of a frame run.
+#[derive(Clone)]
 pub struct RunOpts<'a> {
     /// viewport (W, H)
     pub vp: (u16, u16),

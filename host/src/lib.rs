@@ -10,6 +10,7 @@ pub mod bench;
 pub mod compare;
 pub mod frame;
 pub mod mesh;
+pub mod oracle;
 pub mod pattern;
 pub mod precision;
 pub mod reference;

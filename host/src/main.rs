@@ -44,6 +44,9 @@ enum Cmd {
         /// only this row (static, motion, motion2, defocus, defocus2, both, both2)
         #[arg(long)]
         row: Option<String>,
+        /// add the table over bounds-tile sizes 1, 2, 4, 8 (four times the strategy runs)
+        #[arg(long)]
+        tile_sweep: bool,
     },
     /// Sweep precisions against the f64 reference (error, run time, epsilon).
     Precision {
@@ -120,6 +123,7 @@ fn run(cli: Cli) -> Result<()> {
             json,
             scene,
             row,
+            tile_sweep,
         } => {
             let kinds: Vec<scenes::Bench> = match scene.as_deref() {
                 None => vec![scenes::Bench::Game, scenes::Bench::Dense],
@@ -134,7 +138,13 @@ fn run(cli: Cli) -> Result<()> {
                     .find(|x| x.label().replace(" x", "") == r)
                     .ok_or_else(|| anyhow::anyhow!("--row: unknown row {r:?} (static, motion, motion2, defocus, defocus2, both, both2)"))?],
             };
-            let rows = bench::run_table(quick, &kinds, &rows_sel);
+            let rows = bench::run_table(
+                quick,
+                &kinds,
+                &rows_sel,
+                tile_sweep,
+                Some(bench::ORACLE_DENSITY),
+            );
             print!("{}", bench::table_md(&rows));
             if let Some(p) = json {
                 std::fs::write(&p, serde_json::to_string_pretty(&rows)? + "\n")?;
