@@ -74,24 +74,36 @@ pub fn run_strategy(
     pattern: &Pattern,
     o: &RunOpts<'_>,
 ) -> Option<StratResult> {
+    run_strategy_image(name, vp, tris, pattern, o).map(|r| r.0)
+}
+
+/// [`run_strategy`] with the resolved image (empty unless `o.image`).
+pub fn run_strategy_image(
+    name: &str,
+    vp: Viewport,
+    tris: &[Triangle],
+    pattern: &Pattern,
+    o: &RunOpts<'_>,
+) -> Option<(StratResult, Vec<[u8; 3]>)> {
     fn go<B: BoundsStrategy + Sync>(
         s: B,
         vp: Viewport,
         tris: &[Triangle],
         pattern: &Pattern,
         o: &RunOpts<'_>,
-    ) -> StratResult
+    ) -> (StratResult, Vec<[u8; 3]>)
     where
         B::Coeffs: Send + Sync,
     {
         let name = s.name();
         let f = run(&Fixed::new(s, vp, tris, pattern), pattern, o);
-        StratResult {
+        let r = StratResult {
             name,
             tile: o.tile,
             stats: f.stats,
             ms: f.time.as_secs_f64() * 1e3,
-        }
+        };
+        (r, f.image)
     }
     Some(match name {
         "bbox" => go(uvt_core::BboxScan, vp, tris, pattern, o),

@@ -8,6 +8,7 @@
 
 pub mod bench;
 pub mod compare;
+pub mod converge;
 pub mod frame;
 pub mod mesh;
 pub mod oracle;

@@ -48,6 +48,18 @@ enum Cmd {
         #[arg(long)]
         tile_sweep: bool,
     },
+    /// Image error against run time: every bounds strategy at 1..64 spp against a 256-spp f64
+    /// reference; writes converge.md, converge.json, converge.svg.
+    Converge {
+        /// scene file (JSON); omitted: the built-in default scene
+        scene: Option<PathBuf>,
+        /// output directory
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+        /// frames per point (the median wall time is kept)
+        #[arg(long, default_value_t = 3)]
+        repeats: usize,
+    },
     /// Sweep precisions against the f64 reference (error, run time, epsilon).
     Precision {
         /// small sizes and fewer rows (for tests)
@@ -148,6 +160,21 @@ fn run(cli: Cli) -> Result<()> {
             print!("{}", bench::table_md(&rows));
             if let Some(p) = json {
                 std::fs::write(&p, serde_json::to_string_pretty(&rows)? + "\n")?;
+            }
+        }
+        Cmd::Converge {
+            scene,
+            out,
+            repeats,
+        } => {
+            let s = match scene {
+                Some(p) => Scene::load(&p)?,
+                None => scenes::default_scene(),
+            };
+            let pts = uvt_host::converge::sweep(&s, repeats)?;
+            print!("{}", uvt_host::converge::table_md(&pts));
+            for f in uvt_host::converge::write(&pts, &s, &out)? {
+                println!("wrote {}", f.display());
             }
         }
         Cmd::Precision { quick, out, replot } => {
