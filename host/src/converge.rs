@@ -53,7 +53,7 @@ pub fn sweep(scene: &Scene, repeats: usize) -> Result<Vec<Point>> {
     let (w, h) = (scene.viewport.0 as usize, scene.viewport.1 as usize);
     let mut reference = vec![[0.0f64; 3]; w * h];
     for k in 0..REF_FRAMES {
-        let pat = Pattern::new(scene.pattern, 64, scene.seed ^ (0x5eed_f64 + k));
+        let pat = Pattern::new(scene.pattern, 64, scene.seed ^ (0x05ee_df64 + k));
         let f = run(
             &Reference {
                 vp: scene.viewport,

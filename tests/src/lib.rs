@@ -316,7 +316,10 @@ pub fn render_stats<B: BoundsStrategy>(
     pat: &SamplePattern<'_>,
     bt: u8,
 ) -> Stats {
-    let mut r = uvt_core::Renderer::<B, 256>::new(strat, vp, prims).expect("setup");
+    let mut r = Box::new(
+        uvt_core::Renderer::<B, 16>::new(strat, vp, prims)
+            .expect("setup (at most 16 visible triangles)"),
+    );
     match pat.spp() {
         4 => r.render_with::<8, 8, 4>(pat, bt, uvt_core::Rgb888::new(0, 0, 0), |_, _, _, _| {}),
         16 => r.render_with::<8, 8, 16>(pat, bt, uvt_core::Rgb888::new(0, 0, 0), |_, _, _, _| {}),

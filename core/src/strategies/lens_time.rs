@@ -91,7 +91,7 @@ impl<const R: usize> LensTime<R> {
     #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
     fn slab_range(j: usize) -> Interval {
         let step = (2 * TUV_ONE) >> Self::LOG;
-        let lo = Self::slab_lo(j) * i64::from(TUV_ONE) >> Self::LOG;
+        let lo = (Self::slab_lo(j) * i64::from(TUV_ONE)) >> Self::LOG;
         let lo = lo as i32; // |lo| ≤ 2^16
         Interval { lo, hi: lo + step }
     }

@@ -3,7 +3,7 @@
 //!   (in front of any strategy);
 //! - [`lens_time::LensTime`]: Laine 2011's bounds plus one t interval per lens slab (Wu 2014
 //!   stage II), checked per sample;
-//! - [`best`]: both.
+//! - [`best()`] combines both.
 //!
 //! The conservativeness proof of each is at the top of its file.
 
