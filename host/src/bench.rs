@@ -1,13 +1,14 @@
 //! `uvt bench-ste`: the STE table in the layout of Laine 2011 Table 1 for the 'game' and 'dense'
 //! scenes in seven rows each — columns bbox scan, every bounds strategy of the core (Laine 2011,
-//! swept-hull culling, lens-slab time bounds, the combined best), the f64 reference and the
+//! swept-hull culling, lens-slab time bounds, bilinear (u, t)/(v, t) surfaces, hull + lens slabs,
+//! the combined best = hull + surfaces), the f64 reference and the
 //! axis-aligned limit ([`crate::oracle`]) at two densities — plus the cost of each strategy
 //! (ops per tile, per-sample predicate ops, wall time without the oracle) and a second table over
 //! bounds-tile sizes 1, 2, 4, 8.
 
 use serde::Serialize;
 use uvt_core::bounds::BoundsStrategy;
-use uvt_core::strategies::{best, hull, LensTime, BEST_SLABS};
+use uvt_core::strategies::{best, hull, hull_lens, Hyper, LensTime, BEST_SLABS};
 use uvt_core::{Laine2011, Triangle, Viewport};
 
 use crate::frame::{run, Fixed, FrameStats, Reference, RunOpts};
@@ -16,7 +17,14 @@ use crate::pattern::Pattern;
 use crate::scenes::{bench, Bench, Row};
 
 /// Strategy names in column order.
-pub const STRATEGIES: [&str; 4] = ["laine2011", "hull", "lens-t", "best"];
+pub const STRATEGIES: [&str; 6] = [
+    "laine2011",
+    "hull",
+    "lens-t",
+    "hyper",
+    "hull+lens-t",
+    "best",
+];
 
 /// Dense points per pixel of the axis-aligned limit (low, high).
 pub const ORACLE_DENSITY: [u32; 2] = [64, 256];
@@ -42,6 +50,10 @@ impl StratResult {
     /// Bounds ops per visited tile.
     pub fn ops_tile(&self) -> f64 {
         per(self.stats.ops_bounds, self.stats.tiles_visited)
+    }
+    /// Setup ops (incl. the strategy's preparation) per submitted triangle.
+    pub fn ops_setup(&self) -> f64 {
+        per(self.stats.ops_setup, self.stats.triangles)
     }
     /// Predicate ops per tested sample.
     pub fn ops_predicate(&self) -> f64 {
@@ -114,6 +126,8 @@ pub fn run_strategy_image(
         "lens-t2" => go(LensTime::<2>, vp, tris, pattern, o),
         "lens-t8" => go(LensTime::<8>, vp, tris, pattern, o),
         "best" => go(best(), vp, tris, pattern, o),
+        "hyper" => go(Hyper, vp, tris, pattern, o),
+        "hull+lens-t" => go(hull_lens(), vp, tris, pattern, o),
         _ => return None,
     })
 }
@@ -234,16 +248,18 @@ fn name_of(r: &BenchRow) -> String {
 /// per strategy, and (when swept) STE per bounds-tile size.
 pub fn table_md(rows: &[BenchRow]) -> String {
     let [d0, d1] = rows.first().map_or(ORACLE_DENSITY, |r| r.limit.density);
-    let mut s = format!("STE (%), bounds tile 1×1\n\n| Scene | Bbox scan | Laine 2011 | hull | lens-t | best | Laine f64 | axis-aligned limit {d0}/px | limit {d1}/px | covered samples outside the dense box {d0} / {d1} | avg area px |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+    let mut s = format!("STE (%), bounds tile 1×1\n\n| Scene | Bbox scan | Laine 2011 | hull | lens-t | hyper | hull+lens-t | best | Laine f64 | axis-aligned limit {d0}/px | limit {d1}/px | covered samples outside the dense box {d0} / {d1} | avg area px |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     let ste = |r: &BenchRow, n: &str| r.strat(n).map_or(0.0, |x| 100.0 * x.ste());
     for r in rows {
         s += &format!(
-            "| {} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.3}% / {:.3}% | {:.2} |\n",
+            "| {} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.3}% / {:.3}% | {:.2} |\n",
             name_of(r),
             100.0 * r.bbox,
             ste(r, "laine2011"),
             ste(r, "hull"),
             ste(r, "lens-t"),
+            ste(r, "hyper"),
+            ste(r, "hull+lens-t"),
             ste(r, "best"),
             100.0 * r.f64,
             100.0 * r.limit.ste(0),
@@ -253,16 +269,19 @@ pub fn table_md(rows: &[BenchRow]) -> String {
             r.avg_area_px
         );
     }
-    s += "\nCost per strategy (bounds tile 1×1): ops per tile / predicate ops per tested sample / all bounds + predicate + sample-test ops per covered sample / core wall ms (no oracle)\n\n| Scene |";
+    s += "\nCost per strategy (bounds tile 1×1): setup ops per triangle / ops per tile / predicate ops per tested sample / all tile + predicate + sample-test ops per covered sample / core wall ms (no oracle)\n\n| Scene |";
     for n in STRATEGIES {
         s += &format!(" {n} |");
     }
-    s += " limit ms (dense sampling) |\n|---|---|---|---|---|---|\n";
+    s += " limit ms (dense sampling) |\n|---|";
+    s += &"---|".repeat(STRATEGIES.len() + 1);
+    s += "\n";
     for r in rows {
         s += &format!("| {} |", name_of(r));
         for x in &r.strategies {
             s += &format!(
-                " {:.0} / {:.1} / {:.0} / {:.0} |",
+                " {:.0} / {:.0} / {:.1} / {:.0} / {:.0} |",
+                x.ops_setup(),
                 x.ops_tile(),
                 x.ops_predicate(),
                 x.ops_per_covered(),
@@ -276,7 +295,9 @@ pub fn table_md(rows: &[BenchRow]) -> String {
         for n in STRATEGIES {
             s += &format!(" {n} |");
         }
-        s += "\n|---|---|---|---|---|\n";
+        s += "\n|---|";
+        s += &"---|".repeat(STRATEGIES.len());
+        s += "\n";
         for r in rows.iter().filter(|r| !r.tile_sweep.is_empty()) {
             s += &format!("| {} |", name_of(r));
             for (k, _) in STRATEGIES.iter().enumerate() {

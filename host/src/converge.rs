@@ -19,7 +19,7 @@ use crate::scene::Scene;
 /// Sample counts of the sweep.
 pub const SPP: [u16; 7] = [1, 2, 4, 8, 16, 32, 64];
 /// Strategies of the sweep.
-pub const STRATEGIES: [&str; 5] = ["bbox", "laine2011", "hull", "lens-t", "best"];
+pub const STRATEGIES: [&str; 6] = ["bbox", "laine2011", "hull", "lens-t", "hyper", "best"];
 /// Independent 64-spp f64 frames averaged into the reference (256 spp in all).
 pub const REF_FRAMES: u64 = 4;
 
@@ -157,7 +157,7 @@ pub fn plot_svg(points: &[Point], title: &str, path: &Path) -> Result<()> {
         .y_desc("RMSE vs f64 reference, 0..255 (log)")
         .draw()
         .map_err(|x| e(&x))?;
-    let colors = [BLACK, BLUE, RED, GREEN, MAGENTA];
+    let colors = [BLACK, BLUE, RED, GREEN, MAGENTA, CYAN];
     for (n, c) in STRATEGIES.iter().zip(colors) {
         let pts: Vec<(f64, f64)> = points
             .iter()

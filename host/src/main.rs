@@ -47,6 +47,9 @@ enum Cmd {
         /// add the table over bounds-tile sizes 1, 2, 4, 8 (four times the strategy runs)
         #[arg(long)]
         tile_sweep: bool,
+        /// skip the axis-aligned limit (its dense sampling takes most of the run)
+        #[arg(long)]
+        no_limit: bool,
     },
     /// Image error against run time: every bounds strategy at 1..64 spp against a 256-spp f64
     /// reference; writes converge.md, converge.json, converge.svg.
@@ -136,6 +139,7 @@ fn run(cli: Cli) -> Result<()> {
             scene,
             row,
             tile_sweep,
+            no_limit,
         } => {
             let kinds: Vec<scenes::Bench> = match scene.as_deref() {
                 None => vec![scenes::Bench::Game, scenes::Bench::Dense],
@@ -155,7 +159,7 @@ fn run(cli: Cli) -> Result<()> {
                 &kinds,
                 &rows_sel,
                 tile_sweep,
-                Some(bench::ORACLE_DENSITY),
+                (!no_limit).then_some(bench::ORACLE_DENSITY),
             );
             print!("{}", bench::table_md(&rows));
             if let Some(p) = json {

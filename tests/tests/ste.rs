@@ -77,8 +77,8 @@ fn static_triangle_hull_culls_pixels_outside() {
     assert_eq!(hull.ops.predicate, 0, "hull has no per-sample predicate");
 }
 
-/// Motion + defocus: the lens-slab time bounds follow the (u, t) / (v, t) coupling and the
-/// combined strategy must test clearly fewer samples than Laine 2011's box while covering the
+/// Motion + defocus: the lens-slab time bounds and the bilinear surfaces follow the (u, t) /
+/// (v, t) coupling and must test clearly fewer samples than Laine 2011's box while covering the
 /// same samples; the per-sample predicate is counted.
 #[test]
 fn moving_defocused_triangle_lens_slabs_beat_laine() {
@@ -111,4 +111,15 @@ fn moving_defocused_triangle_lens_slabs_beat_laine() {
         "lens-t {sn} ppm not ≥ 1.2× laine {sl} ppm"
     );
     assert!(sb >= sn, "best {sb} ppm below lens-t {sn} ppm");
+    let hyper = render_stats(uvt_core::strategies::Hyper, &prims, vp, &pat, 1);
+    assert_eq!(
+        hyper.samples_covered, laine.samples_covered,
+        "coverage differs"
+    );
+    let sh = hyper.ste_ppm();
+    println!("both: STE hyper {sh} ppm");
+    assert!(
+        sh * 10 >= sl * 12,
+        "hyper {sh} ppm not ≥ 1.2× laine {sl} ppm"
+    );
 }
