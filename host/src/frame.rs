@@ -10,9 +10,10 @@
 //! per bounds tile, the samples inside the tightest axis-aligned (u, v, t) box around the samples
 //! the pipeline actually covered there and around [`ORACLE_POINTS`] dense points of the tile's
 //! (x, y, u, v, t) box that the exact triangle covers (dense points are drawn only in tiles where
-//! the pattern covered a sample, to keep the full benchmark within minutes). A bound computed without knowing the
-//! samples must contain the whole covered region, so this box approaches (from inside) the limit
-//! any axis-aligned bound can reach.
+//! the pattern covered a sample, and only inside the pipeline's own box). This in-band box is
+//! kept for `uvt render`'s report; it overstates the reachable STE (tiles with no covered pattern
+//! sample count nothing). The axis-aligned limit that `bench-ste` reports is
+//! [`crate::oracle::axis_aligned_limit`]: dense sampling in every tile Laine keeps.
 
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
