@@ -3,8 +3,9 @@
 //! A [`BoundsStrategy`] prepares per-triangle coefficients once (counted as setup) and then, for
 //! a bounds tile (1×1 … 8×8 pixels, clipped to the footprint), returns intervals u ∈ [u0, u1],
 //! v ∈ [v0, v1], t ∈ [t0, t1] or `None` (skip the tile). Contract: **a sample that the sample
-//! test covers never lies outside its tile's intervals.** Tighter strategies (2D swept-footprint
-//! culling, Wu 2014 lens-dependent time bounds, Zmin/Zmax) are new implementations of the trait.
+//! test covers never lies outside its tile's intervals.** A strategy may also return a per-sample
+//! predicate with the box ([`TileBounds`]); the tighter strategies of [`crate::strategies`]
+//! (swept-hull tile culling, lens-dependent time bounds) are such implementations.
 //!
 //! [`Laine2011`] (clipless dual-space bounds) — why each part is conservative:
 //! - **u (and v):** setup's lens-corner boxes floor the minimum and ceil the maximum over the
@@ -63,10 +64,40 @@ impl UvtBox {
     }
 }
 
+/// What a strategy returns for one bounds tile: an axis-aligned (u, v, t) box plus, optionally,
+/// a cheap per-sample predicate (linear constraints, t intervals per lens region, …) that runs on
+/// every sample inside the box before the sample test. Contract as for the box: a sample the
+/// sample test covers is admitted.
+pub trait TileBounds: Copy + core::fmt::Debug {
+    /// The axis-aligned box (samples outside it are never tested and cost nothing).
+    fn uvt_box(&self) -> &UvtBox;
+    /// The per-sample predicate for a sample inside the box (raw u, v, t), its operations counted
+    /// in `ops.predicate`. Box-only bounds admit everything at no cost.
+    fn predicate(&self, u: i32, v: i32, t: i32, ops: &mut Ops) -> bool;
+    /// Box test, then the predicate: whether the sample must be tested.
+    #[inline]
+    fn admits(&self, u: i32, v: i32, t: i32, ops: &mut Ops) -> bool {
+        self.uvt_box().contains(u, v, t) && self.predicate(u, v, t, ops)
+    }
+}
+
+impl TileBounds for UvtBox {
+    #[inline]
+    fn uvt_box(&self) -> &UvtBox {
+        self
+    }
+    #[inline]
+    fn predicate(&self, _: i32, _: i32, _: i32, _: &mut Ops) -> bool {
+        true
+    }
+}
+
 /// A per-tile bounds algorithm.
 pub trait BoundsStrategy {
     /// Per-triangle coefficients, computed once in setup.
     type Coeffs: Copy;
+    /// Per-tile result: a box, possibly with a per-sample predicate.
+    type Tile: TileBounds;
     /// Short name for reports.
     fn name(&self) -> &'static str;
     /// Per-triangle preparation (counted in `ops.setup`).
@@ -78,7 +109,7 @@ pub trait BoundsStrategy {
         c: &Self::Coeffs,
         tile: PixelRect,
         ops: &mut Ops,
-    ) -> Option<UvtBox>;
+    ) -> Option<Self::Tile>;
 }
 
 /// The bounding-box scan: every sample of the footprint is tested, whatever its (u, v, t)
@@ -88,6 +119,7 @@ pub struct BboxScan;
 
 impl BoundsStrategy for BboxScan {
     type Coeffs = ();
+    type Tile = UvtBox;
     fn name(&self) -> &'static str {
         "bbox"
     }
@@ -238,6 +270,7 @@ pub(crate) fn lens_s(l: &LensAxis, x0: i64, x1: i64, bnd: u32, ops: &mut Ops) ->
 
 impl BoundsStrategy for Laine2011 {
     type Coeffs = LaineCoeffs;
+    type Tile = UvtBox;
     fn name(&self) -> &'static str {
         "laine2011"
     }

@@ -48,6 +48,15 @@ impl Interval {
         (lo <= hi).then_some(Interval { lo, hi })
     }
 
+    /// The smallest interval holding both (ends within the invariant's range since both are).
+    #[inline]
+    pub fn join(self, o: Interval) -> Interval {
+        Interval {
+            lo: self.lo.min(o.lo),
+            hi: self.hi.max(o.hi),
+        }
+    }
+
     /// Whether raw value `x` lies inside.
     #[inline]
     pub fn contains(&self, x: i32) -> bool {

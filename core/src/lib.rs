@@ -8,7 +8,8 @@
 //! Pipeline, one module per stage (read them in this order):
 //! 1. [`setup`] — once per triangle: class, culling, lens-corner boxes, footprint, time span.
 //! 2. [`bounds`] — per bounds tile: (u, v, t) intervals, behind the [`BoundsStrategy`] trait
-//!    ([`Laine2011`] dual-space bounds; [`BboxScan`] as the baseline).
+//!    ([`Laine2011`] dual-space bounds; [`BboxScan`] as the baseline; tighter, composable
+//!    strategies in [`strategies`]).
 //! 3. [`sample`] — the exact 5D sample test with a fill rule, and depth.
 //! 4. [`tile`] — the tile framebuffer, resolve and the render loop.
 //!
@@ -38,10 +39,11 @@ pub mod interval;
 pub mod sample;
 pub mod setup;
 pub mod stats;
+pub mod strategies;
 pub mod tile;
 pub mod wide;
 
-pub use bounds::{BboxScan, BoundsStrategy, Laine2011, UvtBox};
+pub use bounds::{BboxScan, BoundsStrategy, Laine2011, TileBounds, UvtBox};
 pub use embedded_graphics_core::pixelcolor::Rgb888;
 pub use error::{Error, Field, SampleField};
 pub use formats::{

@@ -13,6 +13,9 @@ pub struct Ops {
     pub bounds: u64,
     /// sample tests
     pub sample: u64,
+    /// per-sample predicates of a bounds strategy, run on every sample inside its tile's box
+    /// before the sample test (0 for box-only strategies)
+    pub predicate: u64,
 }
 
 impl Ops {
@@ -21,6 +24,7 @@ impl Ops {
         self.setup = self.setup.saturating_add(o.setup);
         self.bounds = self.bounds.saturating_add(o.bounds);
         self.sample = self.sample.saturating_add(o.sample);
+        self.predicate = self.predicate.saturating_add(o.predicate);
     }
     /// Count `n` setup operations (saturating).
     #[inline]

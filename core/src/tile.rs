@@ -16,7 +16,7 @@ use embedded_graphics_core::draw_target::DrawTarget;
 use embedded_graphics_core::pixelcolor::{Rgb888, RgbColor};
 use embedded_graphics_core::prelude::{Pixel, Point};
 
-use crate::bounds::BoundsStrategy;
+use crate::bounds::{BoundsStrategy, TileBounds};
 use crate::error::Error;
 use crate::formats::{DefaultPrecision, Precision, DEPTH_EMPTY, MAX_VIEWPORT};
 use crate::input::{PixelRect, SamplePattern, Triangle, Viewport, MAX_PATTERN};
@@ -270,7 +270,7 @@ impl<B: BoundsStrategy, const N: usize, P: Precision> Renderer<B, N, P> {
         };
         let b = u16::from(bounds_tile);
         for (setup, coeffs, color) in self.setups.iter() {
-            let region = setup.footprint.intersect(&screen);
+            let region = setup.footprint().intersect(&screen);
             if region.is_empty() {
                 continue;
             }
@@ -369,9 +369,9 @@ impl<B: BoundsStrategy, const N: usize, P: Precision> Renderer<B, N, P> {
 
 /// Test the samples of one bounds tile that fall inside its intervals.
 #[allow(clippy::too_many_arguments)]
-fn shade_cell<const TW: usize, const TH: usize, const S: usize>(
+fn shade_cell<T: TileBounds, const TW: usize, const TH: usize, const S: usize>(
     setup: &Setup,
-    uvt: &crate::bounds::UvtBox,
+    uvt: &T,
     cell: PixelRect,
     screen: PixelRect,
     pattern: &SamplePattern<'_>,
@@ -389,7 +389,7 @@ fn shade_cell<const TW: usize, const TH: usize, const S: usize>(
             };
             let (tx, ty) = (usize::from(tx), usize::from(ty));
             for (si, s) in pattern.pixel(px, py).iter().enumerate() {
-                if !uvt.contains(s.u().to_bits(), s.v().to_bits(), s.t().to_bits()) {
+                if !uvt.admits(s.u().to_bits(), s.v().to_bits(), s.t().to_bits(), &mut ops) {
                     continue;
                 }
                 Stats::inc(&mut stats.samples_tested);

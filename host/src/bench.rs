@@ -1,12 +1,136 @@
-//! `uvt bench-ste`: the STE table in the layout of Laine 2011 Table 1, columns bbox scan, uvt fixed,
-//! uvt f64 and the oracle box, for the 'game' and 'dense' scenes in seven rows each.
+//! `uvt bench-ste`: the STE table in the layout of Laine 2011 Table 1 for the 'game' and 'dense'
+//! scenes in seven rows each — columns bbox scan, every bounds strategy of the core (Laine 2011,
+//! swept-hull culling, lens-slab time bounds, bilinear (u, t)/(v, t) surfaces, hull + lens slabs,
+//! the combined best = hull + surfaces), the f64 reference and the
+//! axis-aligned limit ([`crate::oracle`]) at two densities — plus the cost of each strategy
+//! (ops per tile, per-sample predicate ops, wall time without the oracle) and a second table over
+//! bounds-tile sizes 1, 2, 4, 8.
 
 use serde::Serialize;
-use uvt_core::Laine2011;
+use uvt_core::bounds::BoundsStrategy;
+use uvt_core::strategies::{best, hull, hull_lens, Hyper, LensTime, BEST_SLABS};
+use uvt_core::{Laine2011, Triangle, Viewport};
 
-use crate::frame::{run, Fixed, Reference, RunOpts};
+use crate::frame::{run, Fixed, FrameStats, Reference, RunOpts};
+use crate::oracle::{axis_aligned_limit, Limit};
 use crate::pattern::Pattern;
 use crate::scenes::{bench, Bench, Row};
+
+/// Strategy names in column order.
+pub const STRATEGIES: [&str; 6] = [
+    "laine2011",
+    "hull",
+    "lens-t",
+    "hyper",
+    "hull+lens-t",
+    "best",
+];
+
+/// Dense points per pixel of the axis-aligned limit (low, high).
+pub const ORACLE_DENSITY: [u32; 2] = [64, 256];
+
+/// One strategy's result on one row.
+#[derive(Clone, Debug, Serialize)]
+pub struct StratResult {
+    /// strategy name
+    pub name: &'static str,
+    /// bounds-tile size
+    pub tile: u8,
+    /// counters
+    pub stats: FrameStats,
+    /// wall ms of the frame (no oracle)
+    pub ms: f64,
+}
+
+impl StratResult {
+    /// STE covered / tested.
+    pub fn ste(&self) -> f64 {
+        self.stats.ste()
+    }
+    /// Bounds ops per visited tile.
+    pub fn ops_tile(&self) -> f64 {
+        per(self.stats.ops_bounds, self.stats.tiles_visited)
+    }
+    /// Setup ops (incl. the strategy's preparation) per submitted triangle.
+    pub fn ops_setup(&self) -> f64 {
+        per(self.stats.ops_setup, self.stats.triangles)
+    }
+    /// Predicate ops per tested sample.
+    pub fn ops_predicate(&self) -> f64 {
+        per(self.stats.ops_predicate, self.stats.samples_tested)
+    }
+    /// All per-tile, predicate and sample-test ops per covered sample.
+    pub fn ops_per_covered(&self) -> f64 {
+        let s = &self.stats;
+        per(
+            s.ops_bounds + s.ops_predicate + s.ops_sample,
+            s.samples_covered,
+        )
+    }
+}
+
+fn per(a: u64, b: u64) -> f64 {
+    if b == 0 {
+        0.0
+    } else {
+        a as f64 / b as f64
+    }
+}
+
+/// Run strategy `name` over a frame: one of [`STRATEGIES`], "bbox", or "lens-t1", "lens-t2",
+/// "lens-t8" (lens-slab time bounds with 1, 2, 8 slabs; "lens-t" has [`BEST_SLABS`]).
+pub fn run_strategy(
+    name: &str,
+    vp: Viewport,
+    tris: &[Triangle],
+    pattern: &Pattern,
+    o: &RunOpts<'_>,
+) -> Option<StratResult> {
+    run_strategy_image(name, vp, tris, pattern, o).map(|r| r.0)
+}
+
+/// [`run_strategy`] with the resolved image (empty unless `o.image`).
+pub fn run_strategy_image(
+    name: &str,
+    vp: Viewport,
+    tris: &[Triangle],
+    pattern: &Pattern,
+    o: &RunOpts<'_>,
+) -> Option<(StratResult, Vec<[u8; 3]>)> {
+    fn go<B: BoundsStrategy + Sync>(
+        s: B,
+        vp: Viewport,
+        tris: &[Triangle],
+        pattern: &Pattern,
+        o: &RunOpts<'_>,
+    ) -> (StratResult, Vec<[u8; 3]>)
+    where
+        B::Coeffs: Send + Sync,
+    {
+        let name = s.name();
+        let f = run(&Fixed::new(s, vp, tris, pattern), pattern, o);
+        let r = StratResult {
+            name,
+            tile: o.tile,
+            stats: f.stats,
+            ms: f.time.as_secs_f64() * 1e3,
+        };
+        (r, f.image)
+    }
+    Some(match name {
+        "bbox" => go(uvt_core::BboxScan, vp, tris, pattern, o),
+        "laine2011" => go(Laine2011, vp, tris, pattern, o),
+        "hull" => go(hull(), vp, tris, pattern, o),
+        "lens-t" => go(LensTime::<BEST_SLABS>, vp, tris, pattern, o),
+        "lens-t1" => go(LensTime::<1>, vp, tris, pattern, o),
+        "lens-t2" => go(LensTime::<2>, vp, tris, pattern, o),
+        "lens-t8" => go(LensTime::<8>, vp, tris, pattern, o),
+        "best" => go(best(), vp, tris, pattern, o),
+        "hyper" => go(Hyper, vp, tris, pattern, o),
+        "hull+lens-t" => go(hull_lens(), vp, tris, pattern, o),
+        _ => return None,
+    })
+}
 
 /// One row of the table.
 #[derive(Clone, Debug, Serialize)]
@@ -21,22 +145,34 @@ pub struct BenchRow {
     pub avg_area_px: f64,
     /// STE of the bounding-box scan
     pub bbox: f64,
-    /// STE of the core
-    pub fixed: f64,
-    /// STE of the f64 reference
+    /// every strategy at bounds tile 1, in [`STRATEGIES`] order
+    pub strategies: Vec<StratResult>,
+    /// STE of the f64 reference (Laine 2011 in f64)
     pub f64: f64,
-    /// STE of the oracle boxes (from the core's coverage)
-    pub oracle: f64,
-    /// wall ms of the core's frame
-    pub fixed_ms: f64,
-    /// wall ms of the reference's frame
-    pub f64_ms: f64,
-    /// ops per setup / tile / sample test
-    pub ops: [f64; 3],
+    /// the axis-aligned limit at bounds tile 1 (all zero when not requested)
+    pub limit: Limit,
+    /// wall ms of the limit's dense sampling (not part of any strategy's time)
+    pub limit_ms: f64,
+    /// `tile_sweep[i]`: every strategy at bounds tile 2^i (1, 2, 4, 8)
+    pub tile_sweep: Vec<Vec<StratResult>>,
 }
 
-/// Run the benchmark table.
-pub fn run_table(quick: bool, scenes: &[Bench], rows: &[Row]) -> Vec<BenchRow> {
+impl BenchRow {
+    /// The result of strategy `name` at tile 1.
+    pub fn strat(&self, name: &str) -> Option<&StratResult> {
+        self.strategies.iter().find(|s| s.name == name)
+    }
+}
+
+/// Run the benchmark table; `sweep` adds the bounds-tile sweep 1, 2, 4, 8; `density` (dense
+/// points per pixel, low and high) adds the axis-aligned limit.
+pub fn run_table(
+    quick: bool,
+    scenes: &[Bench],
+    rows: &[Row],
+    sweep: bool,
+    density: Option<[u32; 2]>,
+) -> Vec<BenchRow> {
     let mut out = Vec::new();
     let total = scenes.len() * rows.len();
     for &kind in scenes {
@@ -53,14 +189,22 @@ pub fn run_table(quick: bool, scenes: &[Bench], rows: &[Row]) -> Vec<BenchRow> {
             let vp = s.core_viewport();
             let colors = s.colors();
             let o = RunOpts::for_scene(&s, &colors);
-            let f = run(
-                &Fixed::new(Laine2011, vp, &core, &pattern),
-                &pattern,
-                &RunOpts {
-                    oracle: Some(&s.tris),
-                    ..o
-                },
-            );
+            let at = |tile: u8| -> Vec<StratResult> {
+                STRATEGIES
+                    .iter()
+                    .filter_map(|n| {
+                        run_strategy(n, vp, &core, &pattern, &RunOpts { tile, ..o.clone() })
+                    })
+                    .collect()
+            };
+            let strategies = at(1);
+            let tile_sweep = if sweep {
+                let mut v = vec![strategies.clone()];
+                v.extend([2u8, 4, 8].iter().map(|&t| at(t)));
+                v
+            } else {
+                Vec::new()
+            };
             let r = run(
                 &Reference {
                     vp: s.viewport,
@@ -70,54 +214,112 @@ pub fn run_table(quick: bool, scenes: &[Bench], rows: &[Row]) -> Vec<BenchRow> {
                 &pattern,
                 &o,
             );
-            let st = &f.stats;
+            let start = std::time::Instant::now();
+            let limit = match density {
+                Some(d) => axis_aligned_limit(&core, vp, &pattern, 1, d),
+                None => Limit::default(),
+            };
+            let limit_ms = start.elapsed().as_secs_f64() * 1e3;
+            let st = &strategies[0].stats;
             let visible: u64 = st.by_class.iter().sum();
-            let per = |a: u64, b: u64| if b == 0 { 0.0 } else { a as f64 / b as f64 };
             out.push(BenchRow {
                 scene: kind,
                 row,
                 triangles: s.tris.len(),
                 avg_area_px: per(st.samples_covered, visible * s.spp as u64),
                 bbox: st.ste_bbox(),
-                fixed: st.ste(),
+                strategies,
                 f64: r.stats.ste(),
-                oracle: st.ste_oracle(),
-                fixed_ms: f.time.as_secs_f64() * 1e3,
-                f64_ms: r.time.as_secs_f64() * 1e3,
-                ops: [
-                    per(st.ops_setup, st.triangles),
-                    per(st.ops_bounds, st.tiles_visited),
-                    per(st.ops_sample, st.samples_tested),
-                ],
+                limit,
+                limit_ms,
+                tile_sweep,
             });
         }
     }
     out
 }
 
-/// The table as Markdown, STE in percent (Laine's layout: scene rows, method columns).
+fn name_of(r: &BenchRow) -> String {
+    if r.row == Row::Static {
+        match r.scene {
+            Bench::Game => "GAME",
+            Bench::Dense => "DENSE",
+        }
+        .to_string()
+    } else {
+        format!("  {}", r.row.label())
+    }
+}
+
+/// The tables as Markdown, STE in percent: STE per strategy with the axis-aligned limit, the cost
+/// per strategy, and (when swept) STE per bounds-tile size.
 pub fn table_md(rows: &[BenchRow]) -> String {
-    let mut s = String::from("| Scene | Bbox scan | uvt fixed | uvt f64 | oracle | avg area px | fixed ms | f64 ms |\n|---|---|---|---|---|---|---|---|\n");
+    let [d0, d1] = rows.first().map_or(ORACLE_DENSITY, |r| r.limit.density);
+    let mut s = format!("STE (%), bounds tile 1×1\n\n| Scene | Bbox scan | Laine 2011 | hull | lens-t | hyper | hull+lens-t | best | Laine f64 | axis-aligned limit {d0}/px | limit {d1}/px | covered samples outside the dense box {d0} / {d1} | avg area px |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    let ste = |r: &BenchRow, n: &str| r.strat(n).map_or(0.0, |x| 100.0 * x.ste());
     for r in rows {
-        let name = if r.row == Row::Static {
-            match r.scene {
-                Bench::Game => "GAME",
-                Bench::Dense => "DENSE",
-            }
-            .to_string()
-        } else {
-            format!("  {}", r.row.label())
-        };
         s += &format!(
-            "| {name} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.0} | {:.0} |\n",
+            "| {} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.3}% / {:.3}% | {:.2} |\n",
+            name_of(r),
             100.0 * r.bbox,
-            100.0 * r.fixed,
+            ste(r, "laine2011"),
+            ste(r, "hull"),
+            ste(r, "lens-t"),
+            ste(r, "hyper"),
+            ste(r, "hull+lens-t"),
+            ste(r, "best"),
             100.0 * r.f64,
-            100.0 * r.oracle,
-            r.avg_area_px,
-            r.fixed_ms,
-            r.f64_ms
+            100.0 * r.limit.ste(0),
+            100.0 * r.limit.ste(1),
+            100.0 * per(r.limit.missed[0], r.limit.covered),
+            100.0 * per(r.limit.missed[1], r.limit.covered),
+            r.avg_area_px
         );
+    }
+    s += "\nCost per strategy (bounds tile 1×1): setup ops per triangle / ops per tile / predicate ops per tested sample / all tile + predicate + sample-test ops per covered sample / core wall ms (no oracle)\n\n| Scene |";
+    for n in STRATEGIES {
+        s += &format!(" {n} |");
+    }
+    s += " limit ms (dense sampling) |\n|---|";
+    s += &"---|".repeat(STRATEGIES.len() + 1);
+    s += "\n";
+    for r in rows {
+        s += &format!("| {} |", name_of(r));
+        for x in &r.strategies {
+            s += &format!(
+                " {:.0} / {:.0} / {:.1} / {:.0} / {:.0} |",
+                x.ops_setup(),
+                x.ops_tile(),
+                x.ops_predicate(),
+                x.ops_per_covered(),
+                x.ms
+            );
+        }
+        s += &format!(" {:.0} |\n", r.limit_ms);
+    }
+    if rows.iter().any(|r| !r.tile_sweep.is_empty()) {
+        s += "\nSTE (%) by bounds-tile size 1 / 2 / 4 / 8\n\n| Scene |";
+        for n in STRATEGIES {
+            s += &format!(" {n} |");
+        }
+        s += "\n|---|";
+        s += &"---|".repeat(STRATEGIES.len());
+        s += "\n";
+        for r in rows.iter().filter(|r| !r.tile_sweep.is_empty()) {
+            s += &format!("| {} |", name_of(r));
+            for (k, _) in STRATEGIES.iter().enumerate() {
+                let v: Vec<String> = r
+                    .tile_sweep
+                    .iter()
+                    .map(|t| {
+                        t.get(k)
+                            .map_or("-".into(), |x| format!("{:.2}", 100.0 * x.ste()))
+                    })
+                    .collect();
+                s += &format!(" {} |", v.join(" / "));
+            }
+            s += "\n";
+        }
     }
     s
 }

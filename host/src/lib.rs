@@ -9,10 +9,12 @@
 pub mod bench;
 pub mod budget;
 pub mod compare;
+pub mod converge;
 pub mod frame;
 pub mod heatmap;
 pub mod json;
 pub mod mesh;
+pub mod oracle;
 pub mod pattern;
 pub mod precision;
 pub mod reference;

@@ -71,6 +71,24 @@ enum Cmd {
         /// only this row (static, motion, motion2, defocus, defocus2, both, both2)
         #[arg(long)]
         row: Option<String>,
+        /// add the table over bounds-tile sizes 1, 2, 4, 8 (four times the strategy runs)
+        #[arg(long)]
+        tile_sweep: bool,
+        /// skip the axis-aligned limit (its dense sampling takes most of the run)
+        #[arg(long)]
+        no_limit: bool,
+    },
+    /// Image error against run time: every bounds strategy at 1..64 spp against a 256-spp f64
+    /// reference; writes converge.md, converge.json, converge.svg.
+    Converge {
+        /// scene file (JSON); omitted: the built-in default scene
+        scene: Option<PathBuf>,
+        /// output directory
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+        /// frames per point (the median wall time is kept)
+        #[arg(long, default_value_t = 3)]
+        repeats: usize,
     },
     /// Sweep precisions against the f64 reference (error, run time, epsilon).
     Precision {
@@ -285,6 +303,8 @@ fn run(cli: Cli) -> Result<()> {
             json,
             scene,
             row,
+            tile_sweep,
+            no_limit,
         } => {
             let kinds: Vec<scenes::Bench> = match scene.as_deref() {
                 None => vec![scenes::Bench::Game, scenes::Bench::Dense],
@@ -299,10 +319,31 @@ fn run(cli: Cli) -> Result<()> {
                     .find(|x| x.label().replace(" x", "") == r)
                     .ok_or_else(|| anyhow!("--row: unknown row {r:?} (static, motion, motion2, defocus, defocus2, both, both2)"))?],
             };
-            let rows = bench::run_table(quick, &kinds, &rows_sel);
+            let rows = bench::run_table(
+                quick,
+                &kinds,
+                &rows_sel,
+                tile_sweep,
+                (!no_limit).then_some(bench::ORACLE_DENSITY),
+            );
             say(&bench::table_md(&rows))?;
             if let Some(p) = json {
                 write_atomic(&p, (serde_json::to_string_pretty(&rows)? + "\n").as_bytes())?;
+            }
+        }
+        Cmd::Converge {
+            scene,
+            out,
+            repeats,
+        } => {
+            let s = match scene {
+                Some(p) => Scene::load(&p)?,
+                None => scenes::default_scene(),
+            };
+            let pts = uvt_host::converge::sweep(&s, repeats)?;
+            say(&uvt_host::converge::table_md(&pts))?;
+            for f in uvt_host::converge::write(&pts, &s, &out)? {
+                say(&format!("wrote {}\n", f.display()))?;
             }
         }
         Cmd::Precision { quick, out, replot } => {

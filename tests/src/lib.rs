@@ -2,7 +2,7 @@
 //! RNG, random sample tables, and the brute-force checkers for conservativeness and
 //! watertightness. Failures are reported as strings with the inputs in decimal and raw hex.
 
-use uvt_core::bounds::BoundsStrategy;
+use uvt_core::bounds::{BoundsStrategy, TileBounds};
 use uvt_core::{
     sample_test, Coord, Lens, Outcome, PixelRect, Sample, SamplePattern, ScreenPos, Setup, Stats,
     SubPixel, Time, Triangle, Vertex, Viewport,
@@ -220,10 +220,13 @@ pub fn check_conservative_with<B: BoundsStrategy, P: uvt_core::Precision>(
                     None => Some(format!("setup culled it ({out:?})")),
                     Some((false, _)) => Some("pixel outside the footprint".to_string()),
                     Some((true, None)) => Some(format!("{}x{bt} tile bounds empty", bt)),
-                    Some((true, Some(b))) => {
-                        (!b.contains(smp.u().to_bits(), smp.v().to_bits(), smp.t().to_bits()))
-                            .then(|| format!("outside tile box {b:?}"))
-                    }
+                    Some((true, Some(b))) => (!b.admits(
+                        smp.u().to_bits(),
+                        smp.v().to_bits(),
+                        smp.t().to_bits(),
+                        &mut ops,
+                    ))
+                    .then(|| format!("outside tile bounds {b:?}")),
                 };
                 if let Some(why) = why {
                     let fp = visible.as_ref().map(|(s, _)| s.footprint());
@@ -330,7 +333,10 @@ pub fn render_stats<B: BoundsStrategy>(
     pat: &SamplePattern<'_>,
     bt: u8,
 ) -> Stats {
-    let mut r = uvt_core::Renderer::<B, 256>::new(strat, vp, prims).expect("setup");
+    let mut r = Box::new(
+        uvt_core::Renderer::<B, 16>::new(strat, vp, prims)
+            .expect("setup (at most 16 visible triangles)"),
+    );
     match pat.spp() {
         4 => r.render_with::<8, 8, 4>(pat, bt, uvt_core::Rgb888::new(0, 0, 0), |_, _, _, _| {}),
         16 => r.render_with::<8, 8, 16>(pat, bt, uvt_core::Rgb888::new(0, 0, 0), |_, _, _, _| {}),

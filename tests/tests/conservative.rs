@@ -1,9 +1,11 @@
 //! Conservativeness: a sample the sample test covers is never culled by setup, never outside the
-//! footprint and never outside its bounds tile's (u, v, t) intervals — for every triangle kind and
-//! every bounds-tile size. Property tests (proptest, shrinking) plus a seeded-random sweep
+//! footprint and never outside its bounds tile's (u, v, t) intervals or rejected by its per-sample
+//! predicate — for every strategy (Laine 2011, swept-hull culling, lens-slab time bounds with 1,
+//! 2, 8 slabs, bilinear (u, t)/(v, t) surfaces, hull + slabs, the combined best = hull + surfaces), every triangle kind and every bounds-tile size. Property tests (proptest, shrinking) plus a seeded-random sweep
 //! (`UVT_SEED`, printed on failure; `UVT_EXTENSIVE=1` for many more cases).
 
 use proptest::prelude::*;
+use uvt_core::strategies::{best, hull, hull_lens, Hyper, LensTime};
 use uvt_core::{BboxScan, Laine2011, SamplePattern, Triangle, Viewport};
 use uvt_tests::*;
 
@@ -94,8 +96,15 @@ fn check_all(kind: Kind, p: &[f64; NP], pat_seed: u64) -> Result<u64, String> {
     let mut covered = 0;
     for bt in [1u16, 2, 4, 8] {
         covered = check_conservative(&Laine2011, &t, vp, &pat, bt)?;
+        check_conservative(&hull(), &t, vp, &pat, bt)?;
+        check_conservative(&LensTime::<8>, &t, vp, &pat, bt)?;
+        check_conservative(&best(), &t, vp, &pat, bt)?;
+        check_conservative(&Hyper, &t, vp, &pat, bt)?;
+        check_conservative(&hull_lens(), &t, vp, &pat, bt)?;
     }
     check_conservative(&BboxScan, &t, vp, &pat, 1)?;
+    check_conservative(&LensTime::<1>, &t, vp, &pat, 2)?;
+    check_conservative(&LensTime::<2>, &t, vp, &pat, 1)?;
     Ok(covered)
 }
 
@@ -113,6 +122,9 @@ fn check_narrow(kind: Kind, p: &[f64; NP], pat_seed: u64) -> Result<(), String> 
             let pat = SamplePattern::new_with::<$p>(2, 8, &ss).unwrap();
             for bt in [1u16, 2, 4, 8] {
                 check_conservative_with::<_, $p>(&Laine2011, &tt, vp, &pat, bt)?;
+                check_conservative_with::<_, $p>(&best(), &tt, vp, &pat, bt)?;
+                check_conservative_with::<_, $p>(&Hyper, &tt, vp, &pat, bt)?;
+                check_conservative_with::<_, $p>(&hull_lens(), &tt, vp, &pat, bt)?;
             }
         }};
     }

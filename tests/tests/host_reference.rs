@@ -190,26 +190,89 @@ fn driver_matches() {
     }
 }
 
-/// Fixed-point and f64 STE within 2% relative on every benchmark row (quick size).
+/// On every benchmark row (quick size): fixed-point and f64 Laine 2011 STE within 2% relative;
+/// every strategy covers exactly the samples Laine 2011 covers (a bound that culled a covered
+/// sample would lower the count) and tests no more than the bounding-box scan.
 #[test]
 fn bench_rows_fixed_and_f64_ste_within_two_percent() {
     let rows = uvt_host::bench::run_table(
         true,
         &[scenes::Bench::Game, scenes::Bench::Dense],
         &scenes::Row::ALL,
+        false,
+        None,
     );
     assert_eq!(rows.len(), 14);
     for r in &rows {
-        let rel = (r.fixed - r.f64).abs() / r.f64;
+        let laine = r.strat("laine2011").expect("laine2011 column");
+        let rel = (laine.ste() - r.f64).abs() / r.f64;
         assert!(
             r.f64 > 0.0 && rel <= 0.02,
             "{:?} {:?}: fixed {} f64 {} ({:.3}% apart)",
             r.scene,
             r.row,
-            r.fixed,
+            laine.ste(),
             r.f64,
             100.0 * rel
         );
-        assert!(r.oracle >= r.fixed && r.fixed >= r.bbox, "{r:?}");
+        for s in &r.strategies {
+            assert_eq!(
+                s.stats.samples_covered, laine.stats.samples_covered,
+                "{:?} {:?}: {} covers a different number of samples than laine2011",
+                r.scene, r.row, s.name
+            );
+            assert!(
+                s.stats.samples_tested <= s.stats.footprint_samples,
+                "{:?} {:?}: {} tests {} > footprint {}",
+                r.scene,
+                r.row,
+                s.name,
+                s.stats.samples_tested,
+                s.stats.footprint_samples
+            );
+        }
+    }
+}
+
+/// The axis-aligned limit (dense sampling of every tile Laine 2011 keeps) on the quick
+/// 'game both x2' row: it has converged (the two densities agree within 8% relative STE, and the
+/// dense box misses at most 0.5% of the covered pattern samples), it saw exactly the frame's
+/// covered samples, and no axis-aligned strategy (Laine 2011, swept-hull culling) tests fewer
+/// samples than it — which would mean the strategy culled coverage that the dense points found.
+#[test]
+fn axis_aligned_limit_converged_and_below_axis_aligned_strategies() {
+    let rows = uvt_host::bench::run_table(
+        true,
+        &[scenes::Bench::Game],
+        &[scenes::Row::Both2],
+        false,
+        Some(uvt_host::bench::ORACLE_DENSITY),
+    );
+    let r = &rows[0];
+    let l = &r.limit;
+    let laine = r.strat("laine2011").expect("laine2011");
+    println!("{l:?}");
+    assert_eq!(l.covered, laine.stats.samples_covered, "{l:?}");
+    let (s0, s1) = (l.ste(0), l.ste(1));
+    assert!(
+        s1 > 0.0 && (s0 - s1).abs() / s1 <= 0.08,
+        "limit not converged: STE {s0} at {} /px, {s1} at {} /px ({l:?})",
+        l.density[0],
+        l.density[1]
+    );
+    assert!(
+        l.missed[1] * 200 <= l.covered,
+        "dense box misses {} of {} covered samples ({l:?})",
+        l.missed[1],
+        l.covered
+    );
+    for name in ["laine2011", "hull"] {
+        let s = r.strat(name).expect("axis-aligned strategy");
+        assert!(
+            s.stats.samples_tested >= l.tested[1],
+            "{name} tests {} < axis-aligned limit {} ({l:?})",
+            s.stats.samples_tested,
+            l.tested[1]
+        );
     }
 }
