@@ -9,7 +9,8 @@
 //! 1. [`setup`] — once per triangle: class, culling, lens-corner boxes, footprint, time span.
 //! 2. [`bounds`] — per bounds tile: (u, v, t) intervals, behind the [`BoundsStrategy`] trait
 //!    ([`Laine2011`] dual-space bounds; [`BboxScan`] as the baseline).
-//! 3. [`sample`] — the exact 5D sample test with a fill rule, and depth.
+//! 3. [`sample`] — the exact 5D sample test with a fill rule, and depth; [`bounded`] — the
+//!    bounded (hardware-width) sample test of a [`Bounded`] precision.
 //! 4. [`tile`] — the tile framebuffer, resolve and the render loop.
 //!
 //! Number formats are all in [`formats`]; `core/README.md` has the full width table.
@@ -27,6 +28,7 @@
     clippy::cast_possible_wrap
 )]
 
+pub mod bounded;
 pub mod bounds;
 #[cfg(test)]
 mod corners;
@@ -41,11 +43,13 @@ pub mod stats;
 pub mod tile;
 pub mod wide;
 
+pub use bounded::{bounded_eval, bounded_test, BoundedEval, Eps};
 pub use bounds::{BboxScan, BoundsStrategy, Laine2011, UvtBox};
 pub use embedded_graphics_core::pixelcolor::Rgb888;
 pub use error::{Error, Field, SampleField};
 pub use formats::{
-    Coord, DefaultPrecision, Depth, Lens, Prec, Precision, PrecisionBits, SubPixel, Time,
+    Bounded, BoundedPrecision, Coord, DefaultPrecision, Depth, Lens, Prec, Precision,
+    PrecisionBits, SubPixel, Time,
 };
 pub use input::{PixelRect, Sample, SamplePattern, Triangle, Vertex, Viewport};
 pub use interval::Interval;

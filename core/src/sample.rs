@@ -308,7 +308,12 @@ pub fn sample_eval(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> 
     }
 }
 
-/// The sample test for one sample of a visible triangle: the depth on a hit.
+/// The sample test for one sample of a visible triangle: the depth on a hit. A setup of a
+/// [`crate::formats::Bounded`] precision runs the bounded test ([`crate::bounded`]); every other
+/// runs the exact test above.
 pub fn sample_test(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> Option<Hit> {
+    if setup.prec.offset_shift().is_some() {
+        return crate::bounded::bounded_test(setup, pos, s, ops);
+    }
     sample_eval(setup, pos, s, ops).hit
 }

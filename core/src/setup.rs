@@ -15,6 +15,7 @@
 //! moves `a` by `lens·cs` with `cs = c` for x and `cs = −c` for y. Pixel position of a point in
 //! front of the camera: `ξ = (a + w)·E / (2w)`.
 
+use crate::bounded::Eps;
 use crate::formats::{ceil_div, floor_div, DefaultPrecision, PixelCoord, Precision, PrecisionBits};
 use crate::input::{PixelRect, Triangle, Viewport, C, W, X, Y, Z};
 use crate::interval::{solve_le, Interval};
@@ -110,6 +111,7 @@ pub struct Setup {
     pub(crate) viewport: Viewport,
     pub(crate) edges: Option<StaticEdges>,
     pub(crate) prec: PrecisionBits,
+    pub(crate) eps: Eps,
 }
 
 impl Setup {
@@ -144,6 +146,10 @@ impl Setup {
     /// The precision this setup (and its bounds) use.
     pub fn prec(&self) -> PrecisionBits {
         self.prec
+    }
+    /// The conservative epsilon setup and the bounds widened by (zero for the exact test).
+    pub fn eps(&self) -> Eps {
+        self.eps
     }
 }
 
@@ -253,44 +259,73 @@ pub(crate) fn project(a: i64, w: i64, extent: i64, up: bool, bnd: u32) -> PixelC
 }
 
 /// Lens-corner boxes of one axis (Laine §3.1), with the separating-line test per side.
-// Ranges: |a|, |cs|, |w| ≤ 2^29 (checked triangle): a ± |cs| and a + lens·cs are ≤ 2^30; the
-// index i counts the six vertices.
+///
+/// **Conservative epsilon** (bounded sample test, `bounded.rs`): the test decides exactly on a
+/// triangle whose vertices lie within `ε_x` (this axis) of the exact `a(t, u)` and within `ε_w`
+/// of the exact `w(t)`. At a fixed lens point u the exact vertex moves linearly in t, so the
+/// perturbed vertex lies in the convex hull of the endpoints' corners `(a + u·cs ± ε_x, w ± ε_w)`
+/// (a segment plus a box is the hull of its ends plus the box's corners). The projection
+/// `(a + w)·E/(2w)` is increasing in a and linear-fractional, so over that hull (where w > 0)
+/// its minimum is at a corner with `a + u·cs − ε_x`, its maximum at one with `+ ε_x`; each is
+/// affine in u, so the chord argument of `bounds.rs` holds unchanged over the corner set. The
+/// separating-line test runs on the corners too: the left set `(a − |cs| − ε_x, w ± ε_w)`, the
+/// right set `(a + |cs| + ε_x, w ± ε_w)`, exactly as an extra `|c|` of `ε_x` plus a second w.
+/// With ε = 0 (exact test) every corner list has one w, so the result and the op counts are
+/// the exact configuration's, bit for bit.
+// Ranges: |a|, |cs|, |w| ≤ 2^29 (checked triangle), ε_x < 2^24 and ε_w ≤ 1 (`Eps::of` with
+// `OFFSET_SHIFT_MAX`): a ± |cs| ± ε_x and a + lens·cs ± ε_x are < 2^31, w ± ε_w < 2^30, so
+// `project`'s |a + w| < 2^32 keeps its numerator < 2^59 and |q| < 2^58 (w ≥ 1 there); the
+// index i counts at most twelve corner points.
 #[allow(clippy::arithmetic_side_effects)]
-fn axis_boxes(tri: &Triangle, axis: usize, extent: i64, bnd: u32, ops: &mut Ops) -> AxisBoxes {
-    let mut left = [(0i64, 0i64); 6];
-    let mut right = [(0i64, 0i64); 6];
+fn axis_boxes(
+    tri: &Triangle,
+    axis: usize,
+    extent: i64,
+    bnd: u32,
+    eps: &Eps,
+    ops: &mut Ops,
+) -> AxisBoxes {
+    let ex = eps.x.get(axis).copied().unwrap_or(0);
+    let both = [-eps.w, eps.w];
+    let dws: &[i64] = if eps.w == 0 { &[0] } else { &both };
+    let mut left = [(0i64, 0i64); 12];
+    let mut right = [(0i64, 0i64); 12];
     let mut i = 0;
     for ends in tri.v.iter() {
         for p in ends.iter() {
             let (a, cs) = axis_coord(p, axis);
             let w = i64::from(p[W]);
-            if let (Some(l), Some(r)) = (left.get_mut(i), right.get_mut(i)) {
-                *l = (a - cs.abs(), w);
-                *r = (a + cs.abs(), w);
+            for &dw in dws {
+                if let (Some(l), Some(r)) = (left.get_mut(i), right.get_mut(i)) {
+                    *l = (a - cs.abs() - ex, w + dw);
+                    *r = (a + cs.abs() + ex, w + dw);
+                }
+                i += 1;
+                ops.add_setup(2);
             }
-            i += 1;
-            ops.add_setup(2);
         }
     }
-    let unbounded_lo = crosses_camera_plane(&left, -1, ops);
-    let unbounded_hi = crosses_camera_plane(&right, 1, ops);
+    let unbounded_lo = crosses_camera_plane(left.get(..i).unwrap_or(&left), -1, ops);
+    let unbounded_hi = crosses_camera_plane(right.get(..i).unwrap_or(&right), 1, ops);
     let mut lo = [PixelCoord::MAX; 2];
     let mut hi = [PixelCoord::MIN; 2];
     let mut any_front = false;
     for ends in tri.v.iter() {
         for p in ends.iter() {
             let (a, cs) = axis_coord(p, axis);
-            let w = i64::from(p[W]);
-            if w <= 0 {
-                continue;
-            }
-            any_front = true;
-            for (corner, lens) in [-1i64, 1].into_iter().enumerate() {
-                let au = a + lens * cs;
-                ops.add_setup(6);
-                if let (Some(l), Some(h)) = (lo.get_mut(corner), hi.get_mut(corner)) {
-                    *l = (*l).min(project(au, w, extent, false, bnd));
-                    *h = (*h).max(project(au, w, extent, true, bnd));
+            for &dw in dws {
+                let w = i64::from(p[W]) + dw;
+                if w <= 0 {
+                    continue;
+                }
+                any_front = true;
+                for (corner, lens) in [-1i64, 1].into_iter().enumerate() {
+                    let au = a + lens * cs;
+                    ops.add_setup(6);
+                    if let (Some(l), Some(h)) = (lo.get_mut(corner), hi.get_mut(corner)) {
+                        *l = (*l).min(project(au - ex, w, extent, false, bnd));
+                        *h = (*h).max(project(au + ex, w, extent, true, bnd));
+                    }
                 }
             }
         }
@@ -326,14 +361,18 @@ fn axis_range(b: &AxisBoxes, extent: u16, bnd: u32) -> (u16, u16) {
 /// Time span inside the frustum: for each plane w ∓ a ≥ 0 (both axes, widened by |c| for the
 /// lens), the largest vertex distance is convex in t and lies below its chord; the chord's
 /// non-negative part is a conservative span. The camera plane uses max w > 0 the same way.
-// Ranges: every raw field ≤ 2^29 in magnitude: w + sign·x + |c| ≤ 3·2^29 and the differences
-// a − b ≤ 3·2^30, all in i128.
+/// Conservative epsilon (`bounded.rs`): the bounded test's perturbed vertex has
+/// `w' ± a' ≤ w ± a + ε_w + ε_x`, and its hit needs `w' > 0`, i.e. `w + ε_w > 0`: both enter as
+/// constant terms (zero for the exact test, which is then unchanged).
+// Ranges: every raw field ≤ 2^29 in magnitude, ε < 2^24: w + sign·x + |c| + ε < 2^31 and the
+// differences a − b < 2^32, all in i128.
 #[allow(clippy::arithmetic_side_effects)]
-fn frustum_span(tri: &Triangle, ops: &mut Ops) -> Option<Interval> {
+fn frustum_span(tri: &Triangle, eps: &Eps, ops: &mut Ops) -> Option<Interval> {
     let [v0, v1] = &tri.v;
     let mut span = Interval::UNIT;
+    let ew = i128::from(eps.w);
     // camera plane: a hit needs w > 0, so both ends' max w ≤ 0 means never visible.
-    let wmax = |v: &[[i32; 5]; 3]| v.iter().map(|p| i128::from(p[W])).max().unwrap_or(0);
+    let wmax = |v: &[[i32; 5]; 3]| v.iter().map(|p| i128::from(p[W]) + ew).max().unwrap_or(0);
     let (a, b) = (wmax(v0), wmax(v1));
     ops.add_setup(6);
     if a <= 0 && b <= 0 {
@@ -341,12 +380,13 @@ fn frustum_span(tri: &Triangle, ops: &mut Ops) -> Option<Interval> {
     }
     span = span.meet(solve_le(a - b, a)?)?;
     for axis in 0..2 {
+        let e = ew + i128::from(eps.x.get(axis).copied().unwrap_or(0));
         for sign in [-1i128, 1] {
             let dist = |v: &[[i32; 5]; 3]| {
                 v.iter()
                     .map(|p| {
                         let (x, cs) = axis_coord(p, axis);
-                        i128::from(p[W]) + sign * i128::from(x) + i128::from(cs).abs()
+                        i128::from(p[W]) + sign * i128::from(x) + i128::from(cs).abs() + e
                     })
                     .max()
                     .unwrap_or(0)
@@ -406,7 +446,13 @@ impl Setup {
     /// viewport, span = [0, 1]). For verification only: it lets tests and the host ask whether a
     /// triangle that [`setup`] culled really covers no sample.
     pub fn unculled(tri: &Triangle, vp: Viewport) -> Setup {
+        Setup::unculled_with::<DefaultPrecision>(tri, vp)
+    }
+
+    /// [`Setup::unculled`] at precision `P` (its sample test: exact or bounded).
+    pub fn unculled_with<P: Precision>(tri: &Triangle, vp: Viewport) -> Setup {
         let class = classify(tri);
+        let prec = PrecisionBits::of::<P>();
         let full = AxisBoxes { lo: None, hi: None };
         let footprint = PixelRect {
             x0: 0,
@@ -423,7 +469,8 @@ impl Setup {
             tri: *tri,
             viewport: vp,
             edges,
-            prec: PrecisionBits::DEFAULT,
+            prec,
+            eps: Eps::of(prec.offset_shift(), class, vp),
         }
     }
 }
@@ -457,18 +504,20 @@ pub fn setup(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> Outcome {
 pub fn setup_with<P: Precision>(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> Outcome {
     let prec = PrecisionBits::of::<P>();
     let class = classify(tri);
+    let eps = Eps::of(prec.offset_shift(), class, vp);
     ops.add_setup(30);
-    let span = match frustum_span(tri, ops) {
+    let span = match frustum_span(tri, &eps, ops) {
         Some(s) => s.round_out(prec.tuv()),
         None => return Outcome::Culled(Cull::Outside),
     };
-    if degenerate(tri, class, ops) {
+    // A bounded test decides on a perturbed triangle, which need not be degenerate.
+    if eps.is_zero() && degenerate(tri, class, ops) {
         return Outcome::Culled(Cull::Degenerate);
     }
     let (ew, eh) = (vp.w as i64, vp.h as i64);
     let axes = [
-        axis_boxes(tri, 0, ew, prec.bnd(), ops),
-        axis_boxes(tri, 1, eh, prec.bnd(), ops),
+        axis_boxes(tri, 0, ew, prec.bnd(), &eps, ops),
+        axis_boxes(tri, 1, eh, prec.bnd(), &eps, ops),
     ];
     let (x0, x1) = axis_range(&axes[0], vp.w, prec.bnd());
     let (y0, y1) = axis_range(&axes[1], vp.h, prec.bnd());
@@ -489,5 +538,6 @@ pub fn setup_with<P: Precision>(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> 
         viewport: vp,
         edges,
         prec,
+        eps,
     })
 }
