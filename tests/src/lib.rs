@@ -183,7 +183,7 @@ pub fn check_conservative_with<B: BoundsStrategy, P: uvt_core::Precision>(
     bt: u16,
 ) -> Result<u64, String> {
     let mut ops = Default::default();
-    let full = Setup::unculled(t, vp);
+    let full = Setup::unculled_with::<P>(t, vp);
     let out = uvt_core::setup_with::<P>(t, vp, &mut ops);
     let visible = match out {
         Outcome::Visible(s) => Some((s, strat.prepare(&s, &mut ops))),
@@ -240,7 +240,19 @@ pub fn check_conservative_with<B: BoundsStrategy, P: uvt_core::Precision>(
 
 /// Count, for every sample of the viewport, how many of `tris` cover it (no bounds involved).
 pub fn coverage_counts(tris: &[Triangle], vp: Viewport, pat: &SamplePattern<'_>) -> Vec<u8> {
-    let setups: Vec<Setup> = tris.iter().map(|t| Setup::unculled(t, vp)).collect();
+    coverage_counts_with::<uvt_core::DefaultPrecision>(tris, vp, pat)
+}
+
+/// [`coverage_counts`] with `P`'s sample test (exact or bounded).
+pub fn coverage_counts_with<P: uvt_core::Precision>(
+    tris: &[Triangle],
+    vp: Viewport,
+    pat: &SamplePattern<'_>,
+) -> Vec<u8> {
+    let setups: Vec<Setup> = tris
+        .iter()
+        .map(|t| Setup::unculled_with::<P>(t, vp))
+        .collect();
     let mut ops = Default::default();
     let mut out = Vec::new();
     for py in 0..vp.height() {

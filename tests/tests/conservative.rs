@@ -15,6 +15,11 @@ enum Kind {
     Both,
     Crossing,
     Extreme,
+    /// a near-degenerate sliver whose third vertex crosses the long edge during the shutter when
+    /// p[7] > 0 (orientation flip through degeneracy)
+    Sliver,
+    /// one vertex exactly on the camera plane (w = 0) at both ends
+    WZero,
 }
 
 const NP: usize = 48;
@@ -34,6 +39,46 @@ fn make(kind: Kind, p: &[f64; NP]) -> Triangle {
         };
         let v = |o: usize| [e(p[o]), e(p[o + 1]), e(p[o + 2]), e(p[o + 3]), e(p[o + 4])];
         return tri([v(0), v(5), v(10)], [v(15), v(20), v(25)]);
+    }
+    if let Kind::Sliver = kind {
+        let (ax, ay, bx, by) = (1.2 * p[0], 1.2 * p[1], 1.2 * p[2], 1.2 * p[3]);
+        let s = 0.5 + 0.5 * p[4];
+        let (dx, dy) = (bx - ax, by - ay);
+        let len = (dx * dx + dy * dy).sqrt().max(1e-3);
+        let off = 2e-3 * p[5];
+        let flip = if p[7] > 0.0 { -1.0 } else { 1.0 };
+        let coc = if p[9] > 0.0 { 0.2 * p[8] } else { 0.0 };
+        let v = |k: usize, o: f64| {
+            let (nx, ny) = match k {
+                0 => (ax, ay),
+                1 => (bx, by),
+                _ => (ax + s * dx - o * dy / len, ay + s * dy + o * dx / len),
+            };
+            let w = 1.5 + p[10 + k];
+            [nx * w, ny * w, 0.5 * w, w, coc]
+        };
+        return tri(
+            [v(0, off), v(1, off), v(2, off)],
+            [v(0, off), v(1, off), v(2, flip * off)],
+        );
+    }
+    if let Kind::WZero = kind {
+        let v = |k: usize, o: usize| {
+            if k == 0 {
+                return [3.0 * p[o], 3.0 * p[o + 1], 0.0, 0.0, 0.0];
+            }
+            let w = 1.5 + p[o + 2 + k];
+            let (nx, ny) = (1.2 * p[o + 4 + k], 1.2 * p[o + 6 + k]);
+            [
+                nx * w,
+                ny * w,
+                0.5 * w,
+                w,
+                if p[40] > 0.0 { 0.2 * p[41] } else { 0.0 },
+            ]
+        };
+        let o1 = if p[42] > 0.0 { 10 } else { 0 };
+        return tri([v(0, 0), v(1, 0), v(2, 0)], [v(0, o1), v(1, o1), v(2, o1)]);
     }
     if let Kind::Crossing = kind {
         let v = |k: usize, o: usize| {
@@ -122,6 +167,34 @@ fn check_narrow(kind: Kind, p: &[f64; NP], pat_seed: u64) -> Result<(), String> 
     Ok(())
 }
 
+/// The same check at bounded sample-test precisions (`Bounded<…, OFF>`): setup and the bounds
+/// widened by the conservative epsilon must still contain every sample the rounded test covers.
+fn check_bounded(kind: Kind, p: &[f64; NP], pat_seed: u64) -> Result<u64, String> {
+    use uvt_core::Bounded;
+    let t = make(kind, p);
+    let vp = Viewport::new(24, 20).unwrap();
+    let mut rng = Rng(pat_seed);
+    let samples = if pat_seed % 3 == 0 {
+        grid_samples(&mut rng, 2, 8)
+    } else {
+        random_samples(&mut rng, 2, 8)
+    };
+    let pat = SamplePattern::new(2, 8, &samples).unwrap();
+    let mut covered = 0;
+    macro_rules! at {
+        ($p:ty) => {{
+            for bt in [1u16, 4] {
+                covered += check_conservative_with::<_, $p>(&Laine2011, &t, vp, &pat, bt)?;
+            }
+            check_conservative_with::<_, $p>(&BboxScan, &t, vp, &pat, 1)?;
+        }};
+    }
+    at!(uvt_core::BoundedPrecision);
+    at!(Bounded<16, 16, 16, 24>);
+    at!(Bounded<16, 16, 16, 28>);
+    Ok(covered)
+}
+
 fn params() -> impl Strategy<Value = [f64; NP]> {
     proptest::array::uniform32(-1.0f64..=1.0).prop_flat_map(|a| {
         proptest::array::uniform16(-1.0f64..=1.0).prop_map(move |b| {
@@ -161,6 +234,51 @@ kind_test!(conservative_defocused, Kind::Defocus);
 kind_test!(conservative_motion_and_defocus, Kind::Both);
 kind_test!(conservative_camera_plane_crossing, Kind::Crossing);
 kind_test!(conservative_domain_extremes, Kind::Extreme);
+kind_test!(conservative_slivers_and_flips, Kind::Sliver);
+kind_test!(conservative_w_zero_vertex, Kind::WZero);
+
+const ALL_KINDS: [Kind; 8] = [
+    Kind::Static,
+    Kind::Moving,
+    Kind::Defocus,
+    Kind::Both,
+    Kind::Crossing,
+    Kind::Extreme,
+    Kind::Sliver,
+    Kind::WZero,
+];
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: cases(64, 1500), failure_persistence: None, ..ProptestConfig::default() })]
+    #[test]
+    fn conservative_at_bounded_precisions(p in params(), pat_seed in any::<u64>(), k in 0usize..8) {
+        if let Err(msg) = check_bounded(ALL_KINDS[k], &p, pat_seed) {
+            prop_assert!(false, "{}", msg);
+        }
+    }
+}
+
+/// Seeded random sweep of the bounded configurations over every kind; prints the seed on
+/// failure and must exercise coverage.
+#[test]
+fn conservative_bounded_seeded_random() {
+    let seed = seed();
+    let mut rng = Rng(seed ^ 0xb0d);
+    let mut covered = 0;
+    for case in 0..cases(48, 2000) {
+        let kind = ALL_KINDS[case as usize % ALL_KINDS.len()];
+        let mut p = [0.0; NP];
+        p.iter_mut().for_each(|x| *x = rng.range(-1.0, 1.0));
+        match check_bounded(kind, &p, rng.next_u64()) {
+            Ok(n) => covered += n,
+            Err(msg) => panic!("{msg}\n  kind {kind:?}, case {case}, rerun with UVT_SEED={seed}"),
+        }
+    }
+    assert!(
+        covered > 1000,
+        "only {covered} covered samples in the bounded sweep (seed {seed})"
+    );
+}
 
 proptest! {
     #![proptest_config(ProptestConfig { cases: cases(48, 1000), failure_persistence: None, ..ProptestConfig::default() })]
