@@ -37,7 +37,9 @@
 //! A sample position outside the viewport (`xs ≥ 256W` or `ys ≥ 256H`) is never covered: the
 //! range proofs above assume `|2xs − 256W| ≤ 256W`, and a renderer never asks.
 
-use crate::formats::{DEPTH_FAR, DEPTH_FRAC, DEPTH_NEAR, SUBPIXEL_BITS, TUV_FRAC};
+use crate::formats::{
+    DEPTH_FAR, DEPTH_FRAC, DEPTH_NEAR, OFFSET_SHIFT_MAX, OFFSET_SHIFT_MIN, SUBPIXEL_BITS, TUV_FRAC,
+};
 use crate::input::{Sample, Viewport, C, W, X, Y, Z};
 use crate::sample::{Hit, ScreenPos};
 use crate::setup::{Class, Setup};
@@ -206,25 +208,31 @@ pub struct BoundedEval {
     pub hit: Option<Hit>,
 }
 
-/// The bounded sample test with its intermediates; `grid = 2^S`. Counts its arithmetic in
-/// `ops.sample`. `None` for a position outside the viewport (module docs).
+/// The bounded sample test with its intermediates, offsets on the grid `2^shift`. Counts its
+/// arithmetic in `ops.sample`. `None` for a position outside the viewport (module docs) or a
+/// `shift` outside [`OFFSET_SHIFT_MIN`]..=[`OFFSET_SHIFT_MAX`] (the range the proofs cover).
 // Ranges in the module table: |x| ≤ 2^30, |w| ≤ 2^29, 256W ≤ 2^19 and |2xs − 256W| ≤ 256W
-// (checked below), so |A| < 1.5·2^49; |a'| < 2^30; |E'| < 2^61; the rare-path Σ E'·w < 2^92.
+// (checked below), so |A| < 1.5·2^49; |a'| < 2^30 (grid ≥ 2^20); |E'| < 2^61; the rare-path
+// Σ E'·w < 2^92.
 #[allow(clippy::arithmetic_side_effects)]
 pub fn bounded_eval(
     setup: &Setup,
-    grid: i64,
+    shift: u32,
     pos: ScreenPos,
     s: &Sample,
     ops: &mut Ops,
 ) -> Option<BoundedEval> {
+    if !(OFFSET_SHIFT_MIN..=OFFSET_SHIFT_MAX).contains(&shift) {
+        return None;
+    }
+    let grid = 2i64.checked_pow(shift)?;
     let vp = setup.viewport;
     let (sw, sh) = (
         SUBPIXEL_SCALE * i64::from(vp.w),
         SUBPIXEL_SCALE * i64::from(vp.h),
     );
     let (xs, ys) = (i64::from(pos.xs), i64::from(pos.ys));
-    if xs >= sw || ys >= sh || grid < 2 {
+    if xs >= sw || ys >= sh {
         return None;
     }
     let (gx, gy) = (2 * xs - sw, sh - 2 * ys);
@@ -280,12 +288,8 @@ pub fn bounded_eval(
 }
 
 /// The bounded sample test: the depth on a hit (`S` = the setup's offset shift; a setup of the
-/// exact test is evaluated at the finest grid, [`crate::formats::OFFSET_SHIFT_MIN`]).
+/// exact test is evaluated at the finest grid, [`OFFSET_SHIFT_MIN`]).
 pub fn bounded_test(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> Option<Hit> {
-    let shift = setup
-        .prec
-        .offset_shift()
-        .unwrap_or(crate::formats::OFFSET_SHIFT_MIN);
-    let grid = 2i64.checked_pow(shift)?;
-    bounded_eval(setup, grid, pos, s, ops)?.hit
+    let shift = setup.prec.offset_shift().unwrap_or(OFFSET_SHIFT_MIN);
+    bounded_eval(setup, shift, pos, s, ops)?.hit
 }
