@@ -168,19 +168,20 @@ fn agreement<P: Precision>(seed: u64, cases: u32) -> Result<(u64, u64, f64), Str
             rng.range(-0.3, 0.3),
             rng.range(0.8, 1.25),
         );
-        for k in 0..3 {
+        let [e0, e1] = &mut ends;
+        for (a, b) in e0.iter_mut().zip(e1.iter_mut()) {
             let (nx, ny) = (
                 cx + size * rng.range(-1.0, 1.0),
                 cy + size * rng.range(-1.0, 1.0),
             );
             let w = rng.range(1.0, 4.0);
             let c = if defocus { rng.range(-0.05, 0.05) } else { 0.0 };
-            ends[0][k] = [nx * w, ny * w, 0.5 * w, w, c];
-            ends[1][k] = if motion {
+            *a = [nx * w, ny * w, 0.5 * w, w, c];
+            *b = if motion {
                 let w1 = w * mw;
                 [(nx + mx) * w1, (ny + my) * w1, 0.5 * w1, w1, c * 1.1]
             } else {
-                ends[0][k]
+                *a
             };
         }
         let t = tri(ends[0], ends[1]);
