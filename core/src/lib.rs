@@ -54,7 +54,7 @@ pub use formats::{
 pub use input::{PixelRect, Sample, SamplePattern, Triangle, Vertex, Viewport};
 pub use interval::Interval;
 pub use sample::{sample_eval, sample_test, Hit, SampleEval, ScreenPos};
-pub use setup::{setup, setup_with, Class, Cull, Outcome, Setup};
+pub use setup::{setup, setup_scaled, setup_with, Class, Cull, Outcome, Setup};
 pub use stats::{Ops, Stats};
 pub use tile::{resolve_colors, DepthTest, PixelStats, Prim, RenderError, Renderer, TileBuffer};
 pub use wide::Wide;

@@ -502,16 +502,38 @@ pub fn setup(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> Outcome {
 /// Run setup at precision `P`: box coordinates on `P`'s bound grid, the time span rounded
 /// outward to `P`'s t grid.
 pub fn setup_with<P: Precision>(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> Outcome {
+    setup_scaled::<P>(tri, vp, 1, 1, ops)
+}
+
+/// **Measurement only**: [`setup_with`] with the conservative epsilon scaled down to
+/// `floor(ε·num/den)` (`num ≤ den`, else `num = den`; `den = 0` gives ε = 0), so a report can
+/// find the smallest margin with zero violations. Below the analytic ε the bounds are **not**
+/// guaranteed conservative for the bounded test; every value stays inside the range proofs.
+pub fn setup_scaled<P: Precision>(
+    tri: &Triangle,
+    vp: Viewport,
+    num: u32,
+    den: u32,
+    ops: &mut Ops,
+) -> Outcome {
     let prec = PrecisionBits::of::<P>();
     let class = classify(tri);
-    let eps = Eps::of(prec.offset_shift(), class, vp);
+    let full = Eps::of(prec.offset_shift(), class, vp);
+    let scale = |e: i64| {
+        let (n, d) = (i64::from(num.min(den)), i64::from(den));
+        e.checked_mul(n).and_then(|x| x.checked_div(d)).unwrap_or(0)
+    };
+    let eps = Eps {
+        x: full.x.map(scale),
+        w: scale(full.w),
+    };
     ops.add_setup(30);
     let span = match frustum_span(tri, &eps, ops) {
         Some(s) => s.round_out(prec.tuv()),
         None => return Outcome::Culled(Cull::Outside),
     };
     // A bounded test decides on a perturbed triangle, which need not be degenerate.
-    if eps.is_zero() && degenerate(tri, class, ops) {
+    if full.is_zero() && degenerate(tri, class, ops) {
         return Outcome::Culled(Cull::Degenerate);
     }
     let (ew, eh) = (vp.w as i64, vp.h as i64);
