@@ -30,6 +30,14 @@
 //! precision, where every interval is additionally rounded outward to that grid and box
 //! coordinates are floored/ceiled to `P::BOUND_FRAC` bits), and tile extents cover every
 //! sub-pixel offset.
+//!
+//! **Bounded sample test** (a [`crate::formats::Bounded`] precision, `bounded.rs`): that test
+//! decides exactly on a perturbed triangle whose vertices lie within ε_x (x and y, per axis) and
+//! ε_w (w) of the exact ones at the sample's (t, u, v) ([`crate::bounded::Eps`]). Setup widens
+//! the lens-corner boxes, the separating-line test and the frustum span by it (proofs beside
+//! `axis_boxes` and `frustum_span` in `setup.rs`), and [`Laine2011`] the dual-space bias by
+//! `(ε_x + ε_w)·E` (proof at `dual_axis`). The u/v bounds come from the widened boxes, so they
+//! need no term of their own. With the exact test ε = 0 and every bound is unchanged.
 
 use crate::formats::DualDelta;
 use crate::input::{PixelRect, Triangle, W};

@@ -29,6 +29,8 @@
 )]
 
 pub mod bounded;
+#[cfg(test)]
+mod bounded_corners;
 pub mod bounds;
 #[cfg(test)]
 mod corners;
