@@ -2,6 +2,8 @@
 //! RNG, random sample tables, and the brute-force checkers for conservativeness and
 //! watertightness. Failures are reported as strings with the inputs in decimal and raw hex.
 
+pub mod kinds;
+
 use uvt_core::bounds::BoundsStrategy;
 use uvt_core::{
     sample_test, Coord, Lens, Outcome, PixelRect, Sample, SamplePattern, ScreenPos, Setup, Stats,
@@ -182,9 +184,22 @@ pub fn check_conservative_with<B: BoundsStrategy, P: uvt_core::Precision>(
     pat: &SamplePattern<'_>,
     bt: u16,
 ) -> Result<u64, String> {
+    check_conservative_scaled::<B, P>(strat, t, vp, pat, bt, (1, 1))
+}
+
+/// [`check_conservative_with`] with the bounded test's conservative epsilon scaled by
+/// `scale = (num, den)` ≤ 1 (`uvt_core::setup_scaled`; measurement of the smallest margin).
+pub fn check_conservative_scaled<B: BoundsStrategy, P: uvt_core::Precision>(
+    strat: &B,
+    t: &Triangle,
+    vp: Viewport,
+    pat: &SamplePattern<'_>,
+    bt: u16,
+    scale: (u32, u32),
+) -> Result<u64, String> {
     let mut ops = Default::default();
     let full = Setup::unculled_with::<P>(t, vp);
-    let out = uvt_core::setup_with::<P>(t, vp, &mut ops);
+    let out = uvt_core::setup_scaled::<P>(t, vp, scale.0, scale.1, &mut ops);
     let visible = match out {
         Outcome::Visible(s) => Some((s, strat.prepare(&s, &mut ops))),
         Outcome::Culled(_) => None,
