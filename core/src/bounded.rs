@@ -111,7 +111,8 @@ impl Eps {
 #[inline]
 #[allow(clippy::arithmetic_side_effects)]
 fn rnd16(v: i64) -> i64 {
-    (v + TUV_SCALE / 2).div_euclid(TUV_SCALE)
+    // floor((v + 2^15) / 2^16) as an arithmetic right shift by the constant 16 (exact floor).
+    (v + TUV_SCALE / 2).checked_shr(TUV_FRAC).unwrap_or(0)
 }
 
 /// Vertex positions `(x, y, w, z)` at the sample's (t, u, v), each on the raw 2^-16 grid
@@ -144,12 +145,15 @@ fn positions(setup: &Setup, s: &Sample, ops: &mut Ops) -> [[i64; 4]; 3] {
     out
 }
 
-/// `round(v / 2^s)`, to nearest with ties toward +∞, for the offset grid (step 4).
-/// |v| < 1.5·2^49 and 2^s ≤ 2^32 (`OFFSET_SHIFT_MAX`): no overflow, |result| < 2^30 for s ≥ 20.
+/// `round(v / 2^s)`, to nearest with ties toward +∞, for the offset grid (step 4): `half` is
+/// 2^(s−1); the arithmetic right shift by `s` is the floor division by 2^s (a right shift
+/// cannot overflow; `s` ≤ 32 < 64, so `checked_shr` never returns `None`, and if it did the
+/// result would be 0, not a panic). |v| < 1.5·2^49, half ≤ 2^31: the sum cannot overflow;
+/// |result| < 2^30 for s ≥ 20. (A shift rather than a division: no 64-bit divide on the M4.)
 #[inline]
 #[allow(clippy::arithmetic_side_effects)]
-fn rnd_grid(v: i64, grid: i64) -> i64 {
-    (v + grid / 2).div_euclid(grid)
+fn rnd_grid(v: i64, half: i64, s: u32) -> i64 {
+    (v + half).checked_shr(s).unwrap_or(0)
 }
 
 /// Fill-rule decision on `E'_k = 0` from the rounded offsets and w (step 7), for edge k with
@@ -175,21 +179,20 @@ fn fill_rule(ab: &[(i64, i64); 3], w: &[i64; 3], i: usize, j: usize, s: i64) -> 
 fn depth(e: &[i64; 3], wz: &[(i64, i64); 3], sign: i64) -> i32 {
     let big = e.iter().map(|x| x.unsigned_abs()).max().unwrap_or(0);
     let len = u64::BITS - big.leading_zeros();
+    // Floor shift by sh ≤ 30 (|E'| < 2^61): an arithmetic right shift, exact floor, cannot fail.
     let sh = len.saturating_sub(31);
-    let Some(div) = 2i64.checked_pow(sh) else {
-        return DEPTH_FAR;
-    };
     let (mut num, mut den) = (0i64, 0i64);
     for (ek, &(w, z)) in e.iter().zip(wz.iter()) {
-        let ek = ek.div_euclid(div);
+        let ek = ek.checked_shr(sh).unwrap_or(0);
         num += ek * z;
         den += ek * w;
     }
     let (num, den) = (i128::from(num * sign), i128::from(den * sign));
-    if den <= 0 {
+    // den > 0 (checked by floor_div) and the quotient's floor; through a 64-bit divide when the
+    // scaled numerator fits (`floor_div`), else the 128-bit one.
+    let Some(q) = crate::formats::floor_div(num * DEPTH_SCALE, den) else {
         return DEPTH_FAR;
-    }
-    let q = (num * DEPTH_SCALE).div_euclid(den);
+    };
     let clamped = q.clamp(i128::from(DEPTH_NEAR), i128::from(DEPTH_FAR));
     i32::try_from(clamped).unwrap_or(DEPTH_FAR)
 }
@@ -225,7 +228,7 @@ pub fn bounded_eval(
     if !(OFFSET_SHIFT_MIN..=OFFSET_SHIFT_MAX).contains(&shift) {
         return None;
     }
-    let grid = 2i64.checked_pow(shift)?;
+    let half = 2i64.checked_pow(shift.checked_sub(1)?)?;
     let vp = setup.viewport;
     let (sw, sh) = (
         SUBPIXEL_SCALE * i64::from(vp.w),
@@ -239,8 +242,8 @@ pub fn bounded_eval(
     let p = positions(setup, s, ops);
     let ab = p.map(|[x, y, w, _]| {
         (
-            rnd_grid(sw * x - gx * w, grid),
-            rnd_grid(sh * y - gy * w, grid),
+            rnd_grid(sw * x - gx * w, half, shift),
+            rnd_grid(sh * y - gy * w, half, shift),
         )
     });
     let w = p.map(|q| q[2]);
