@@ -305,8 +305,12 @@ fn axis_boxes(
             }
         }
     }
-    let unbounded_lo = crosses_camera_plane(left.get(..i).unwrap_or(&left), -1, ops);
-    let unbounded_hi = crosses_camera_plane(right.get(..i).unwrap_or(&right), 1, ops);
+    // With ε ≠ 0 (bounded test only; the exact path keeps its op counts): a corner set entirely
+    // in front (every w − ε_w > 0) has its hull in w > 0, which cannot meet the camera plane, so
+    // the 12-point pair test is skipped.
+    let all_front = eps.w != 0 && left.get(..i).unwrap_or(&left).iter().all(|p| p.1 > 0);
+    let unbounded_lo = !all_front && crosses_camera_plane(left.get(..i).unwrap_or(&left), -1, ops);
+    let unbounded_hi = !all_front && crosses_camera_plane(right.get(..i).unwrap_or(&right), 1, ops);
     let mut lo = [PixelCoord::MAX; 2];
     let mut hi = [PixelCoord::MIN; 2];
     let mut any_front = false;
