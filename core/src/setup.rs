@@ -272,11 +272,6 @@ pub(crate) fn project(a: i64, w: i64, extent: i64, up: bool, bnd: u32) -> PixelC
 /// right set `(a + |cs| + ε_x, w ± ε_w)`, exactly as an extra `|c|` of `ε_x` plus a second w.
 /// With ε = 0 (exact test) every corner list has one w, so the result and the op counts are
 /// the exact configuration's, bit for bit.
-// Ranges: |a|, |cs|, |w| ≤ 2^29 (checked triangle), ε_x < 2^24 and ε_w ≤ 1 (`Eps::of` with
-// `OFFSET_SHIFT_MAX`): a ± |cs| ± ε_x and a + lens·cs ± ε_x are < 2^31, w ± ε_w < 2^30, so
-// `project`'s |a + w| < 2^32 keeps its numerator < 2^59 and |q| < 2^58 (w ≥ 1 there); the
-// index i counts at most twelve corner points.
-#[allow(clippy::arithmetic_side_effects)]
 fn axis_boxes(
     tri: &Triangle,
     axis: usize,
@@ -286,16 +281,46 @@ fn axis_boxes(
     ops: &mut Ops,
 ) -> AxisBoxes {
     let ex = eps.x.get(axis).copied().unwrap_or(0);
-    let both = [-eps.w, eps.w];
-    let dws: &[i64] = if eps.w == 0 { &[0] } else { &both };
-    let mut left = [(0i64, 0i64); 12];
-    let mut right = [(0i64, 0i64); 12];
+    // Monomorphized per corner count, so the exact path (one w per vertex, six points) compiles
+    // to the same fixed-size loops as before the epsilon existed.
+    if eps.w == 0 {
+        corner_boxes::<1, 6>(tri, axis, extent, bnd, ex, [0], ops)
+    } else {
+        corner_boxes::<2, 12>(
+            tri,
+            axis,
+            extent,
+            bnd,
+            ex,
+            [eps.w.saturating_neg(), eps.w],
+            ops,
+        )
+    }
+}
+
+/// [`axis_boxes`] over `N` w offsets per vertex (`M = 6·N` corner points).
+// Ranges: |a|, |cs|, |w| ≤ 2^29 (checked triangle), ε_x < 2^24 and ε_w ≤ 1 (`Eps::of` with
+// `OFFSET_SHIFT_MAX`): a ± |cs| ± ε_x and a + lens·cs ± ε_x are < 2^31, w ± ε_w < 2^30, so
+// `project`'s |a + w| < 2^32 keeps its numerator < 2^59 and |q| < 2^58 (w ≥ 1 there); the
+// index i counts at most twelve corner points.
+#[allow(clippy::arithmetic_side_effects)]
+fn corner_boxes<const N: usize, const M: usize>(
+    tri: &Triangle,
+    axis: usize,
+    extent: i64,
+    bnd: u32,
+    ex: i64,
+    dws: [i64; N],
+    ops: &mut Ops,
+) -> AxisBoxes {
+    let mut left = [(0i64, 0i64); M];
+    let mut right = [(0i64, 0i64); M];
     let mut i = 0;
     for ends in tri.v.iter() {
         for p in ends.iter() {
             let (a, cs) = axis_coord(p, axis);
             let w = i64::from(p[W]);
-            for &dw in dws {
+            for &dw in dws.iter() {
                 if let (Some(l), Some(r)) = (left.get_mut(i), right.get_mut(i)) {
                     *l = (a - cs.abs() - ex, w + dw);
                     *r = (a + cs.abs() + ex, w + dw);
@@ -305,19 +330,19 @@ fn axis_boxes(
             }
         }
     }
-    // With ε ≠ 0 (bounded test only; the exact path keeps its op counts): a corner set entirely
-    // in front (every w − ε_w > 0) has its hull in w > 0, which cannot meet the camera plane, so
-    // the 12-point pair test is skipped.
-    let all_front = eps.w != 0 && left.get(..i).unwrap_or(&left).iter().all(|p| p.1 > 0);
-    let unbounded_lo = !all_front && crosses_camera_plane(left.get(..i).unwrap_or(&left), -1, ops);
-    let unbounded_hi = !all_front && crosses_camera_plane(right.get(..i).unwrap_or(&right), 1, ops);
+    // With two w corners (bounded test only; the exact path keeps its op counts): a corner set
+    // entirely in front (every w − ε_w > 0) has its hull in w > 0, which cannot meet the camera
+    // plane, so the 12-point pair test is skipped.
+    let all_front = N > 1 && left.iter().all(|p| p.1 > 0);
+    let unbounded_lo = !all_front && crosses_camera_plane(&left, -1, ops);
+    let unbounded_hi = !all_front && crosses_camera_plane(&right, 1, ops);
     let mut lo = [PixelCoord::MAX; 2];
     let mut hi = [PixelCoord::MIN; 2];
     let mut any_front = false;
     for ends in tri.v.iter() {
         for p in ends.iter() {
             let (a, cs) = axis_coord(p, axis);
-            for &dw in dws {
+            for &dw in dws.iter() {
                 let w = i64::from(p[W]) + dw;
                 if w <= 0 {
                     continue;
