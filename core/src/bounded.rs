@@ -57,17 +57,17 @@ const DEPTH_SCALE: i128 = 1 << DEPTH_FRAC;
 /// bound is then bit-identical to the exact configuration's.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Eps {
-    pub(crate) x: [i64; 2],
-    pub(crate) w: i64,
+    pub(crate) x: [i32; 2],
+    pub(crate) w: i32,
 }
 
 impl Eps {
     /// Perturbation bound of x (`[0]`) and y (`[1]`), raw clip units.
-    pub fn x(&self) -> [i64; 2] {
+    pub fn x(&self) -> [i32; 2] {
         self.x
     }
     /// Perturbation bound of w, raw clip units.
-    pub fn w(&self) -> i64 {
+    pub fn w(&self) -> i32 {
         self.w
     }
     /// The epsilon of the bounded test with offset grid `2^shift` for a triangle of `class` in
@@ -92,12 +92,12 @@ impl Eps {
                 .and_then(|p| p.checked_add(k.checked_mul(SUBPIXEL_SCALE)?.checked_mul(e)?));
             let den = 2i64.saturating_mul(SUBPIXEL_SCALE).saturating_mul(e);
             num.and_then(|n| crate::formats::ceil_div(i128::from(n), i128::from(den)))
-                .and_then(|q| i64::try_from(q).ok())
+                .and_then(|q| i32::try_from(q).ok())
                 .unwrap_or(1 << 24)
         };
         Eps {
             x: [axis(vp.w), axis(vp.h)],
-            w: i64::from(class.motion()),
+            w: i32::from(class.motion()),
         }
     }
     /// Whether every term is zero (the exact test).

@@ -267,13 +267,8 @@ impl BoundsStrategy for Laine2011 {
         let ext = [(0usize, setup.viewport.w), (1, setup.viewport.h)];
         let lens = [0usize, 1].map(|a| defocus.then(|| lens_axis(setup, a, ops)));
         let dual = ext.map(|(a, e)| {
-            let eps = setup
-                .eps
-                .x
-                .get(a)
-                .copied()
-                .unwrap_or(0)
-                .saturating_add(setup.eps.w);
+            let ex = setup.eps.x.get(a).copied().unwrap_or(0);
+            let eps = i64::from(ex.saturating_add(setup.eps.w));
             motion.then(|| dual_axis(&setup.tri, &setup.footprint, a, i64::from(e), eps, ops))
         });
         LaineCoeffs { lens, dual }

@@ -280,21 +280,16 @@ fn axis_boxes(
     eps: &Eps,
     ops: &mut Ops,
 ) -> AxisBoxes {
-    let ex = eps.x.get(axis).copied().unwrap_or(0);
+    // ε as i32-derived i64 values (|ε| < 2^24): keeps the projections' operands visibly narrow
+    // to the optimizer, so the exact path (ε = 0) costs what it did before the epsilon existed.
+    let ex = i64::from(eps.x.get(axis).copied().unwrap_or(0));
+    let ew = i64::from(eps.w);
     // Monomorphized per corner count, so the exact path (one w per vertex, six points) compiles
     // to the same fixed-size loops as before the epsilon existed.
-    if eps.w == 0 {
+    if ew == 0 {
         corner_boxes::<1, 6>(tri, axis, extent, bnd, ex, [0], ops)
     } else {
-        corner_boxes::<2, 12>(
-            tri,
-            axis,
-            extent,
-            bnd,
-            ex,
-            [eps.w.saturating_neg(), eps.w],
-            ops,
-        )
+        corner_boxes::<2, 12>(tri, axis, extent, bnd, ex, [ew.saturating_neg(), ew], ops)
     }
 }
 
@@ -548,9 +543,13 @@ pub fn setup_scaled<P: Precision>(
     let prec = PrecisionBits::of::<P>();
     let class = classify(tri);
     let full = Eps::of(prec.offset_shift(), class, vp);
-    let scale = |e: i64| {
+    let scale = |e: i32| {
         let (n, d) = (i64::from(num.min(den)), i64::from(den));
-        e.checked_mul(n).and_then(|x| x.checked_div(d)).unwrap_or(0)
+        i64::from(e)
+            .checked_mul(n)
+            .and_then(|x| x.checked_div(d))
+            .and_then(|x| i32::try_from(x).ok())
+            .unwrap_or(0)
     };
     let eps = Eps {
         x: full.x.map(scale),

@@ -225,7 +225,7 @@ fn run<P: Precision + Sync>() {
                 ste(acc.covered[0], acc.tested[0]),
                 ste(acc.covered[6], acc.tested[6]),
             );
-            let px = |e: i64, ext: u16| e as f64 / 65536.0 * f64::from(ext) / 2.0;
+            let px = |e: i32, ext: u16| f64::from(e) / 65536.0 * f64::from(ext) / 2.0;
             println!(
                 "| {kind:?} {} | {} | {}/{}/{} ({:.4}/{:.4}) | {} ({:.1e}, {:.4}) | {} ({:.1e}, {:.4}) | {} | {:?} | {:.3}% / {:.3}% / {:.3}% | {:.3}% | {:.1} / {:.1} |",
                 row.label(), s.tris.len(),
