@@ -167,3 +167,39 @@ fn epsilon_setup_and_bounds_at_the_domain_corners() {
         assert!(Setup::unculled(&tri, vp).eps().is_zero());
     }
 }
+
+/// The exact path's original box code and the epsilon corner code agree at ε = 0 (one or two
+/// w corners), on the domain corners and on ordinary triangles, for every bound precision.
+#[test]
+fn corner_boxes_at_zero_epsilon_equal_the_exact_boxes() {
+    use crate::setup::{corner_boxes, exact_boxes};
+    let ordinary = Triangle::new(
+        [
+            [-3 * ONE, -ONE, ONE, 2 * ONE, ONE / 8],
+            [ONE, -2 * ONE, ONE, 3 * ONE, -ONE / 4],
+            [0, 2 * ONE, ONE, ONE, 0],
+        ]
+        .map(Vertex::from_bits),
+        [
+            [-ONE, -ONE, ONE, 2 * ONE, ONE / 8],
+            [2 * ONE, -ONE, ONE, -ONE, ONE / 2],
+            [0, 3 * ONE, ONE, ONE, 0],
+        ]
+        .map(Vertex::from_bits),
+    )
+    .unwrap();
+    let mut all = tris().to_vec();
+    all.push(ordinary);
+    for tri in all {
+        for axis in 0..2 {
+            for bnd in [0u32, 8, 16] {
+                let mut ops = Ops::default();
+                let e = exact_boxes(&tri, axis, 960, bnd, &mut ops);
+                let one = corner_boxes::<1, 6>(&tri, axis, 960, bnd, 0, [0], &mut ops);
+                let two = corner_boxes::<2, 12>(&tri, axis, 960, bnd, 0, [0, 0], &mut ops);
+                assert_eq!(e, one, "axis {axis} bnd {bnd} {tri:?}");
+                assert_eq!(e, two, "axis {axis} bnd {bnd} {tri:?}");
+            }
+        }
+    }
+}

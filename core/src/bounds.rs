@@ -187,9 +187,10 @@ fn dual_axis(
     fp: &PixelRect,
     axis: usize,
     extent: i64,
-    eps: i64,
+    eps: i32,
     ops: &mut Ops,
 ) -> DualAxis {
+    let eps = i64::from(eps);
     let xi = if axis == 0 {
         [fp.x0, fp.x1].map(i64::from)
     } else {
@@ -268,7 +269,7 @@ impl BoundsStrategy for Laine2011 {
         let lens = [0usize, 1].map(|a| defocus.then(|| lens_axis(setup, a, ops)));
         let dual = ext.map(|(a, e)| {
             let ex = setup.eps.x.get(a).copied().unwrap_or(0);
-            let eps = i64::from(ex.saturating_add(setup.eps.w));
+            let eps = ex.saturating_add(setup.eps.w);
             motion.then(|| dual_axis(&setup.tri, &setup.footprint, a, i64::from(e), eps, ops))
         });
         LaineCoeffs { lens, dual }

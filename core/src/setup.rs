@@ -270,8 +270,9 @@ pub(crate) fn project(a: i64, w: i64, extent: i64, up: bool, bnd: u32) -> PixelC
 /// affine in u, so the chord argument of `bounds.rs` holds unchanged over the corner set. The
 /// separating-line test runs on the corners too: the left set `(a − |cs| − ε_x, w ± ε_w)`, the
 /// right set `(a + |cs| + ε_x, w ± ε_w)`, exactly as an extra `|c|` of `ε_x` plus a second w.
-/// With ε = 0 (exact test) every corner list has one w, so the result and the op counts are
-/// the exact configuration's, bit for bit.
+/// An exact precision (ε = 0) runs [`exact_boxes`], the code as before the epsilon (chosen on
+/// the type's constant in [`setup_scaled`], so its instantiation and its Cortex-M4F cost stay as
+/// they were); with ε = 0 the corner version here computes the same values.
 fn axis_boxes(
     tri: &Triangle,
     axis: usize,
@@ -280,16 +281,20 @@ fn axis_boxes(
     eps: &Eps,
     ops: &mut Ops,
 ) -> AxisBoxes {
-    // ε as i32-derived i64 values (|ε| < 2^24): keeps the projections' operands visibly narrow
-    // to the optimizer, so the exact path (ε = 0) costs what it did before the epsilon existed.
-    let ex = i64::from(eps.x.get(axis).copied().unwrap_or(0));
-    let ew = i64::from(eps.w);
-    // Monomorphized per corner count, so the exact path (one w per vertex, six points) compiles
-    // to the same fixed-size loops as before the epsilon existed.
-    if ew == 0 {
+    let ex = eps.x.get(axis).copied().unwrap_or(0);
+    // Monomorphized per corner count; the exact test (ε = 0) runs the six-point version.
+    if eps.w == 0 {
         corner_boxes::<1, 6>(tri, axis, extent, bnd, ex, [0], ops)
     } else {
-        corner_boxes::<2, 12>(tri, axis, extent, bnd, ex, [ew.saturating_neg(), ew], ops)
+        corner_boxes::<2, 12>(
+            tri,
+            axis,
+            extent,
+            bnd,
+            ex,
+            [eps.w.saturating_neg(), eps.w],
+            ops,
+        )
     }
 }
 
@@ -299,15 +304,19 @@ fn axis_boxes(
 // `project`'s |a + w| < 2^32 keeps its numerator < 2^59 and |q| < 2^58 (w ≥ 1 there); the
 // index i counts at most twelve corner points.
 #[allow(clippy::arithmetic_side_effects)]
-fn corner_boxes<const N: usize, const M: usize>(
+pub(crate) fn corner_boxes<const N: usize, const M: usize>(
     tri: &Triangle,
     axis: usize,
     extent: i64,
     bnd: u32,
-    ex: i64,
-    dws: [i64; N],
+    ex: i32,
+    dws: [i32; N],
     ops: &mut Ops,
 ) -> AxisBoxes {
+    // ε arrives as i32 (|ε| < 2^24) and is widened here, so the optimizer sees every operand of
+    // the projections as a sign-extended 32-bit value (narrower i128 arithmetic on 32-bit cores).
+    let ex = i64::from(ex);
+    let dws = dws.map(i64::from);
     let mut left = [(0i64, 0i64); M];
     let mut right = [(0i64, 0i64); M];
     let mut i = 0;
@@ -350,6 +359,61 @@ fn corner_boxes<const N: usize, const M: usize>(
                         *l = (*l).min(project(au - ex, w, extent, false, bnd));
                         *h = (*h).max(project(au + ex, w, extent, true, bnd));
                     }
+                }
+            }
+        }
+    }
+    AxisBoxes {
+        lo: (!unbounded_lo && any_front).then_some(lo),
+        hi: (!unbounded_hi && any_front).then_some(hi),
+    }
+}
+
+/// [`axis_boxes`] of an exact precision (ε = 0): the code as before the epsilon existed.
+// Ranges: |a|, |cs|, |w| ≤ 2^29 (checked triangle): a ± |cs| and a + lens·cs are ≤ 2^30; the
+// index i counts the six vertices.
+#[allow(clippy::arithmetic_side_effects)]
+pub(crate) fn exact_boxes(
+    tri: &Triangle,
+    axis: usize,
+    extent: i64,
+    bnd: u32,
+    ops: &mut Ops,
+) -> AxisBoxes {
+    let mut left = [(0i64, 0i64); 6];
+    let mut right = [(0i64, 0i64); 6];
+    let mut i = 0;
+    for ends in tri.v.iter() {
+        for p in ends.iter() {
+            let (a, cs) = axis_coord(p, axis);
+            let w = i64::from(p[W]);
+            if let (Some(l), Some(r)) = (left.get_mut(i), right.get_mut(i)) {
+                *l = (a - cs.abs(), w);
+                *r = (a + cs.abs(), w);
+            }
+            i += 1;
+            ops.add_setup(2);
+        }
+    }
+    let unbounded_lo = crosses_camera_plane(&left, -1, ops);
+    let unbounded_hi = crosses_camera_plane(&right, 1, ops);
+    let mut lo = [PixelCoord::MAX; 2];
+    let mut hi = [PixelCoord::MIN; 2];
+    let mut any_front = false;
+    for ends in tri.v.iter() {
+        for p in ends.iter() {
+            let (a, cs) = axis_coord(p, axis);
+            let w = i64::from(p[W]);
+            if w <= 0 {
+                continue;
+            }
+            any_front = true;
+            for (corner, lens) in [-1i64, 1].into_iter().enumerate() {
+                let au = a + lens * cs;
+                ops.add_setup(6);
+                if let (Some(l), Some(h)) = (lo.get_mut(corner), hi.get_mut(corner)) {
+                    *l = (*l).min(project(au, w, extent, false, bnd));
+                    *h = (*h).max(project(au, w, extent, true, bnd));
                 }
             }
         }
@@ -542,7 +606,14 @@ pub fn setup_scaled<P: Precision>(
 ) -> Outcome {
     let prec = PrecisionBits::of::<P>();
     let class = classify(tri);
-    let full = Eps::of(prec.offset_shift(), class, vp);
+    // Exact precisions decide on the type's constant: their instantiation carries no epsilon
+    // code, so the exact setup compiles (and costs on the Cortex-M4F) as before the epsilon.
+    let exact = P::OFFSET_SHIFT.is_none();
+    let full = if exact {
+        Eps::default()
+    } else {
+        Eps::of(prec.offset_shift(), class, vp)
+    };
     let scale = |e: i32| {
         let (n, d) = (i64::from(num.min(den)), i64::from(den));
         i64::from(e)
@@ -556,19 +627,30 @@ pub fn setup_scaled<P: Precision>(
         w: scale(full.w),
     };
     ops.add_setup(30);
-    let span = match frustum_span(tri, &eps, ops) {
+    let span = match if exact {
+        frustum_span(tri, &Eps::default(), ops)
+    } else {
+        frustum_span(tri, &eps, ops)
+    } {
         Some(s) => s.round_out(prec.tuv()),
         None => return Outcome::Culled(Cull::Outside),
     };
     // A bounded test decides on a perturbed triangle, which need not be degenerate.
-    if full.is_zero() && degenerate(tri, class, ops) {
+    if exact && degenerate(tri, class, ops) {
         return Outcome::Culled(Cull::Degenerate);
     }
     let (ew, eh) = (vp.w as i64, vp.h as i64);
-    let axes = [
-        axis_boxes(tri, 0, ew, prec.bnd(), &eps, ops),
-        axis_boxes(tri, 1, eh, prec.bnd(), &eps, ops),
-    ];
+    let axes = if exact {
+        [
+            exact_boxes(tri, 0, ew, prec.bnd(), ops),
+            exact_boxes(tri, 1, eh, prec.bnd(), ops),
+        ]
+    } else {
+        [
+            axis_boxes(tri, 0, ew, prec.bnd(), &eps, ops),
+            axis_boxes(tri, 1, eh, prec.bnd(), &eps, ops),
+        ]
+    };
     let (x0, x1) = axis_range(&axes[0], vp.w, prec.bnd());
     let (y0, y1) = axis_range(&axes[1], vp.h, prec.bnd());
     let footprint = PixelRect { x0, y0, x1, y1 };
