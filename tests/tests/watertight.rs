@@ -49,7 +49,7 @@ fn check_mesh_counts<P: uvt_core::Precision>(
             let (px, py) = ((pix % 16) as u16, (pix / 16) as u16);
             let smp = pat.pixel(px, py)[s];
             return Err(format!(
-                "sample covered {n} times (expected 1, or odd for a folding grid): {}\n  mesh seed {seed:#x}, motion {motion}, coc {coc:?}, precision {}",
+                "sample covered {n} times (expected 1): {}\n  mesh seed {seed:#x}, motion {motion}, coc {coc:?}, precision {}",
                 dump_sample(px, py, &smp),
                 std::any::type_name::<P>()
             ));
