@@ -254,7 +254,9 @@ pub struct SampleEval {
     pub hit: Option<Hit>,
 }
 
-/// The sample test with its intermediates. Counts its arithmetic in `ops.sample`.
+/// The sample test with its intermediates. Counts its arithmetic in `ops.sample`. Always the
+/// exact test, whatever the setup's precision; a `Bounded` setup's rounded intermediates come
+/// from [`crate::bounded::bounded_eval`].
 pub fn sample_eval(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> SampleEval {
     let d = direction(setup.viewport, pos);
     ops.add_sample(5);
