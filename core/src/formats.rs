@@ -142,7 +142,7 @@ pub const OFFSET_SHIFT_MAX: u32 = 32;
 /// A precision with the **bounded** sample test (`bounded.rs`): `POS`, `TUV`, `BND` as in
 /// [`Prec`], and the sample-relative offsets rounded to a grid of `2^OFF` raw units
 /// (`OFF` ∈ [`OFFSET_SHIFT_MIN`]..=[`OFFSET_SHIFT_MAX`], checked at compile time). Setup and
-/// the bounds widen by the conservative epsilon the rounding needs ([`crate::setup::Eps`]).
+/// the bounds widen by the conservative epsilon the rounding needs ([`crate::bounded::Eps`]).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Bounded<const POS: u32, const TUV: u32, const BND: u32, const OFF: u32>;
 
