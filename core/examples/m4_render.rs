@@ -109,6 +109,19 @@ mod target {
         hprintln!("cost bounds calls={} insn={}", c, i);
         let (c, i) = ticks(&mut cp.SYST, || demo::cost::samples_all(2).unwrap_or(0));
         hprintln!("cost sample calls={} insn={}", c, i);
+        type B = uvt_core::BoundedPrecision;
+        let (c, i) = ticks(&mut cp.SYST, || {
+            demo::cost::setup_all_with::<B>(20).unwrap_or(0)
+        });
+        hprintln!("cost setup_bounded calls={} insn={}", c, i);
+        let (c, i) = ticks(&mut cp.SYST, || {
+            demo::cost::bounds_all_with::<B>(5).unwrap_or(0)
+        });
+        hprintln!("cost bounds_bounded calls={} insn={}", c, i);
+        let (c, i) = ticks(&mut cp.SYST, || {
+            demo::cost::samples_all_with::<B>(2).unwrap_or(0)
+        });
+        hprintln!("cost sample_bounded calls={} insn={}", c, i);
         debug::exit(debug::EXIT_SUCCESS);
         loop {
             cortex_m::asm::wfi();
@@ -143,4 +156,14 @@ fn main() {
     time("setup", &|| demo::cost::setup_all(2000).unwrap_or(0));
     time("bounds", &|| demo::cost::bounds_all(500).unwrap_or(0));
     time("sample", &|| demo::cost::samples_all(200).unwrap_or(0));
+    type B = uvt_core::BoundedPrecision;
+    time("setup_bounded", &|| {
+        demo::cost::setup_all_with::<B>(2000).unwrap_or(0)
+    });
+    time("bounds_bounded", &|| {
+        demo::cost::bounds_all_with::<B>(500).unwrap_or(0)
+    });
+    time("sample_bounded", &|| {
+        demo::cost::samples_all_with::<B>(200).unwrap_or(0)
+    });
 }

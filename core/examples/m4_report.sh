@@ -37,6 +37,7 @@ echo
 echo "| stage | Cortex-M4F instructions per call | Cortex-M3 instructions per call | host ns per call |"
 echo "|---|---|---|---|"
 per() { echo "$1" | awk -v s="$2" '$1=="cost" && $2==s {split($3,a,"="); split($4,b,"="); printf "%.'"$3"'f", b[2]/a[2]}'; }
-for st in setup bounds sample; do
+# *_bounded: the same stages at BoundedPrecision (the bounded sample test, ε-widened setup).
+for st in setup bounds sample setup_bounded bounds_bounded sample_bounded; do
   echo "| $st | $(per "${out[M4F]}" $st 0) | $(per "${out[M3]}" $st 0) | $(per "$host" $st 1) |"
 done

@@ -31,6 +31,14 @@
 //! precision, where every interval is additionally rounded outward to that grid and box
 //! coordinates are floored/ceiled to `P::BOUND_FRAC` bits), and tile extents cover every
 //! sub-pixel offset.
+//!
+//! **Bounded sample test** (a [`crate::formats::Bounded`] precision, `bounded.rs`): that test
+//! decides exactly on a perturbed triangle whose vertices lie within ε_x (x and y, per axis) and
+//! ε_w (w) of the exact ones at the sample's (t, u, v) ([`crate::bounded::Eps`]). Setup widens
+//! the lens-corner boxes, the separating-line test and the frustum span by it (proofs beside
+//! `axis_boxes` and `frustum_span` in `setup.rs`), and [`Laine2011`] the dual-space bias by
+//! `(ε_x + ε_w)·E` (proof at `dual_axis`). The u/v bounds come from the widened boxes, so they
+//! need no term of their own. With the exact test ε = 0 and every bound is unchanged.
 
 use crate::formats::DualDelta;
 use crate::input::{PixelRect, Triangle, W};
@@ -198,11 +206,23 @@ fn lens_axis(setup: &Setup, axis: usize, ops: &mut Ops) -> LensAxis {
     LensAxis { lo, hi }
 }
 
+/// Conservative epsilon (bounded sample test, `bounded.rs`): a vertex perturbed by ≤ ε_x in a
+/// and ≤ ε_w in w moves δ by `δa·E + δw·(E − 2ξ)`, at most `(ε_x + ε_w)·E` for ξ ∈ [0, E] (the
+/// footprint lies in the viewport): a constant added to the lens bias `|c|·E`, so the concavity
+/// and chord arguments above hold unchanged (`eps` = ε_x + ε_w; 0 for the exact test).
 // Ranges (checked triangle and viewport): |a + w| < 2^31, E ≤ 2^11, ξ ≤ 2^11 (footprint inside
-// the viewport), |c| ≤ 2^29: |(a + w)·E| < 2^42, |2·w·ξ| < 2^41, |c|·E < 2^40, so
-// |δ ± |c|·E| < 2^44 in i64.
+// the viewport), |c| ≤ 2^29, eps < 2^25: |(a + w)·E| < 2^42, |2·w·ξ| < 2^41,
+// (|c| + eps)·E < 2^41, so |δ ± (|c| + eps)·E| < 2^44 in i64.
 #[allow(clippy::arithmetic_side_effects)]
-fn dual_axis(tri: &Triangle, fp: &PixelRect, axis: usize, extent: i64, ops: &mut Ops) -> DualAxis {
+fn dual_axis(
+    tri: &Triangle,
+    fp: &PixelRect,
+    axis: usize,
+    extent: i64,
+    eps: i32,
+    ops: &mut Ops,
+) -> DualAxis {
+    let eps = i64::from(eps);
     let xi = if axis == 0 {
         [fp.x0, fp.x1].map(i64::from)
     } else {
@@ -214,7 +234,7 @@ fn dual_axis(tri: &Triangle, fp: &PixelRect, axis: usize, extent: i64, ops: &mut
         for p in ends.iter() {
             let (a, cs) = axis_coord(p, axis);
             let w = i64::from(p[W]);
-            let bias = cs.abs() * extent;
+            let bias = (cs.abs() + eps) * extent;
             for ((l, h), x) in lo_t.iter_mut().zip(hi_t.iter_mut()).zip(xi.iter()) {
                 let delta = (a + w) * extent - 2 * w * x;
                 *l = (*l).min(delta - bias);
@@ -281,7 +301,9 @@ impl BoundsStrategy for Laine2011 {
         let ext = [(0usize, setup.viewport.w), (1, setup.viewport.h)];
         let lens = [0usize, 1].map(|a| defocus.then(|| lens_axis(setup, a, ops)));
         let dual = ext.map(|(a, e)| {
-            motion.then(|| dual_axis(&setup.tri, &setup.footprint, a, i64::from(e), ops))
+            let ex = setup.eps.x.get(a).copied().unwrap_or(0);
+            let eps = ex.saturating_add(setup.eps.w);
+            motion.then(|| dual_axis(&setup.tri, &setup.footprint, a, i64::from(e), eps, ops))
         });
         LaineCoeffs { lens, dual }
     }

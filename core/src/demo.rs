@@ -14,7 +14,7 @@ use crate::error::Error;
 use crate::formats::{Coord, Lens, SubPixel, Time};
 use crate::input::{Sample, SamplePattern, Triangle, Vertex, Viewport};
 use crate::sample::{sample_test, ScreenPos};
-use crate::setup::{setup, Outcome};
+use crate::setup::Outcome;
 use crate::stats::{Ops, Stats};
 use crate::tile::{Prim, Renderer};
 
@@ -258,6 +258,12 @@ pub mod cost {
 
     /// Setup (plus the Laine coefficient preparation) of every triangle, `reps` times.
     pub fn setup_all(reps: u32) -> Result<u64, Error> {
+        setup_all_with::<crate::formats::DefaultPrecision>(reps)
+    }
+
+    /// [`setup_all`] at precision `P` (e.g. the bounded test's ε-widened setup).
+    pub fn setup_all_with<P: crate::formats::Precision>(reps: u32) -> Result<u64, Error> {
+        let setup = crate::setup::setup_with::<P>;
         let prims = prims()?;
         let vp = viewport()?;
         let mut ops = Ops::default();
@@ -275,6 +281,12 @@ pub mod cost {
 
     /// Bounds of every 2×2 tile of every visible triangle's footprint, `reps` times.
     pub fn bounds_all(reps: u32) -> Result<u64, Error> {
+        bounds_all_with::<crate::formats::DefaultPrecision>(reps)
+    }
+
+    /// [`bounds_all`] at precision `P`.
+    pub fn bounds_all_with<P: crate::formats::Precision>(reps: u32) -> Result<u64, Error> {
+        let setup = crate::setup::setup_with::<P>;
         let prims = prims()?;
         let vp = viewport()?;
         let mut ops = Ops::default();
@@ -296,6 +308,12 @@ pub mod cost {
 
     /// Sample tests of every sample of a 8×8 pixel window for every visible triangle.
     pub fn samples_all(reps: u32) -> Result<u64, Error> {
+        samples_all_with::<crate::formats::DefaultPrecision>(reps)
+    }
+
+    /// [`samples_all`] at precision `P` (a `Bounded` one runs the bounded sample test).
+    pub fn samples_all_with<P: crate::formats::Precision>(reps: u32) -> Result<u64, Error> {
+        let setup = crate::setup::setup_with::<P>;
         let prims = prims()?;
         let vp = viewport()?;
         let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLES)?;

@@ -97,12 +97,20 @@ pub trait Precision: sealed::Sealed + Copy + Default + core::fmt::Debug + 'stati
     const TUV_FRAC: u32;
     /// fraction bits of the bounds' pixel coordinates (0..=16)
     const BOUND_FRAC: u32;
+    /// The sample test's datapath: `None` = the exact test (`sample.rs`); `Some(s)` = the
+    /// bounded test (`bounded.rs`) whose sample-relative offsets are rounded to a grid of `2^s`
+    /// (s ∈ [`OFFSET_SHIFT_MIN`]..=[`OFFSET_SHIFT_MAX`]).
+    const OFFSET_SHIFT: Option<u32> = None;
 }
 
 mod sealed {
     /// Private supertrait of [`super::Precision`]: only this crate can implement it.
     pub trait Sealed {}
     impl<const POS: u32, const TUV: u32, const BND: u32> Sealed for super::Prec<POS, TUV, BND> {}
+    impl<const POS: u32, const TUV: u32, const BND: u32, const OFF: u32> Sealed
+        for super::Bounded<POS, TUV, BND, OFF>
+    {
+    }
 }
 
 /// The precision with `POS`, `TUV` and `BND` fraction bits (checked at compile time).
@@ -124,6 +132,39 @@ impl<const POS: u32, const TUV: u32, const BND: u32> Precision for Prec<POS, TUV
     };
 }
 
+/// Smallest offset-grid shift of the bounded sample test: with it every rounded offset has
+/// |a'| ≤ 2^30 (see `bounded.rs`), so every multiplier operand is ≤ 32 bits.
+pub const OFFSET_SHIFT_MIN: u32 = 20;
+/// Largest offset-grid shift of the bounded sample test (offsets of ≥ 19 bits with sign; keeps
+/// the conservative epsilon < 2^24 raw, inside the bounds' range proofs).
+pub const OFFSET_SHIFT_MAX: u32 = 32;
+
+/// A precision with the **bounded** sample test (`bounded.rs`): `POS`, `TUV`, `BND` as in
+/// [`Prec`], and the sample-relative offsets rounded to a grid of `2^OFF` raw units
+/// (`OFF` ∈ [`OFFSET_SHIFT_MIN`]..=[`OFFSET_SHIFT_MAX`], checked at compile time). Setup and
+/// the bounds widen by the conservative epsilon the rounding needs ([`crate::bounded::Eps`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Bounded<const POS: u32, const TUV: u32, const BND: u32, const OFF: u32>;
+
+impl<const POS: u32, const TUV: u32, const BND: u32, const OFF: u32> Precision
+    for Bounded<POS, TUV, BND, OFF>
+{
+    const POS_FRAC: u32 = <Prec<POS, TUV, BND> as Precision>::POS_FRAC;
+    const TUV_FRAC: u32 = <Prec<POS, TUV, BND> as Precision>::TUV_FRAC;
+    const BOUND_FRAC: u32 = <Prec<POS, TUV, BND> as Precision>::BOUND_FRAC;
+    const OFFSET_SHIFT: Option<u32> = {
+        assert!(
+            OFF >= OFFSET_SHIFT_MIN && OFF <= OFFSET_SHIFT_MAX,
+            "OFF must be OFFSET_SHIFT_MIN..=OFFSET_SHIFT_MAX"
+        );
+        Some(OFF)
+    };
+}
+
+/// The hardware-plausible bounded candidate: 16 fraction bits everywhere, offsets on a `2^20`
+/// grid (i32 multiplier operands, i64 products). Not the default yet.
+pub type BoundedPrecision = Bounded<16, 16, 16, 20>;
+
 /// The documented default: 16 fraction bits everywhere.
 pub type DefaultPrecision = Prec<16, 16, 16>;
 
@@ -134,6 +175,7 @@ pub struct PrecisionBits {
     pos: u32,
     tuv: u32,
     bnd: u32,
+    off: Option<u32>,
 }
 
 impl PrecisionBits {
@@ -149,12 +191,18 @@ impl PrecisionBits {
     pub const fn bnd(&self) -> u32 {
         self.bnd
     }
+    /// The offset-grid shift of the bounded sample test ([`OFFSET_SHIFT_MIN`]..=
+    /// [`OFFSET_SHIFT_MAX`]), `None` for the exact test.
+    pub const fn offset_shift(&self) -> Option<u32> {
+        self.off
+    }
     /// The bits of `P`.
     pub const fn of<P: Precision>() -> PrecisionBits {
         PrecisionBits {
             pos: P::POS_FRAC,
             tuv: P::TUV_FRAC,
             bnd: P::BOUND_FRAC,
+            off: P::OFFSET_SHIFT,
         }
     }
     /// The default's.

@@ -10,7 +10,8 @@
 //! 2. [`bounds`] — per bounds tile: (u, v, t) intervals, behind the [`BoundsStrategy`] trait
 //!    ([`Laine2011`] dual-space bounds; [`BboxScan`] as the baseline; tighter, composable
 //!    strategies in [`strategies`]).
-//! 3. [`sample`] — the exact 5D sample test with a fill rule, and depth.
+//! 3. [`sample`] — the exact 5D sample test with a fill rule, and depth; [`bounded`] — the
+//!    bounded (hardware-width) sample test of a [`Bounded`] precision.
 //! 4. [`tile`] — the tile framebuffer, resolve and the render loop.
 //!
 //! Number formats are all in [`formats`]; `core/README.md` has the full width table.
@@ -28,6 +29,9 @@
     clippy::cast_possible_wrap
 )]
 
+pub mod bounded;
+#[cfg(test)]
+mod bounded_corners;
 pub mod bounds;
 #[cfg(test)]
 mod corners;
@@ -43,16 +47,18 @@ pub mod strategies;
 pub mod tile;
 pub mod wide;
 
+pub use bounded::{bounded_eval, bounded_test, BoundedEval, Eps};
 pub use bounds::{BboxScan, BoundsStrategy, Laine2011, TileBounds, UvtBox};
 pub use embedded_graphics_core::pixelcolor::Rgb888;
 pub use error::{Error, Field, SampleField};
 pub use formats::{
-    Coord, DefaultPrecision, Depth, Lens, Prec, Precision, PrecisionBits, SubPixel, Time,
+    Bounded, BoundedPrecision, Coord, DefaultPrecision, Depth, Lens, Prec, Precision,
+    PrecisionBits, SubPixel, Time,
 };
 pub use input::{PixelRect, Sample, SamplePattern, Triangle, Vertex, Viewport};
 pub use interval::Interval;
 pub use sample::{sample_eval, sample_test, Hit, SampleEval, ScreenPos};
-pub use setup::{setup, setup_with, Class, Cull, Outcome, Setup};
+pub use setup::{setup, setup_scaled, setup_with, Class, Cull, Outcome, Setup};
 pub use stats::{Ops, Stats};
 pub use tile::{resolve_colors, DepthTest, PixelStats, Prim, RenderError, Renderer, TileBuffer};
 pub use wide::Wide;

@@ -254,7 +254,9 @@ pub struct SampleEval {
     pub hit: Option<Hit>,
 }
 
-/// The sample test with its intermediates. Counts its arithmetic in `ops.sample`.
+/// The sample test with its intermediates. Counts its arithmetic in `ops.sample`. Always the
+/// exact test, whatever the setup's precision; a `Bounded` setup's rounded intermediates come
+/// from [`crate::bounded::bounded_eval`].
 pub fn sample_eval(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> SampleEval {
     let d = direction(setup.viewport, pos);
     ops.add_sample(5);
@@ -308,7 +310,12 @@ pub fn sample_eval(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> 
     }
 }
 
-/// The sample test for one sample of a visible triangle: the depth on a hit.
+/// The sample test for one sample of a visible triangle: the depth on a hit. A setup of a
+/// [`crate::formats::Bounded`] precision runs the bounded test ([`crate::bounded`]); every other
+/// runs the exact test above.
 pub fn sample_test(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> Option<Hit> {
+    if setup.prec.offset_shift().is_some() {
+        return crate::bounded::bounded_test(setup, pos, s, ops);
+    }
     sample_eval(setup, pos, s, ops).hit
 }

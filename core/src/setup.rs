@@ -15,6 +15,7 @@
 //! moves `a` by `lens·cs` with `cs = c` for x and `cs = −c` for y. Pixel position of a point in
 //! front of the camera: `ξ = (a + w)·E / (2w)`.
 
+use crate::bounded::Eps;
 use crate::formats::{ceil_div, floor_div, DefaultPrecision, PixelCoord, Precision, PrecisionBits};
 use crate::input::{PixelRect, Triangle, Viewport, C, W, X, Y, Z};
 use crate::interval::{solve_le, Interval};
@@ -110,6 +111,7 @@ pub struct Setup {
     pub(crate) viewport: Viewport,
     pub(crate) edges: Option<StaticEdges>,
     pub(crate) prec: PrecisionBits,
+    pub(crate) eps: Eps,
 }
 
 impl Setup {
@@ -144,6 +146,10 @@ impl Setup {
     /// The precision this setup (and its bounds) use.
     pub fn prec(&self) -> PrecisionBits {
         self.prec
+    }
+    /// The conservative epsilon setup and the bounds widened by (zero for the exact test).
+    pub fn eps(&self) -> Eps {
+        self.eps
     }
 }
 
@@ -253,10 +259,127 @@ pub(crate) fn project(a: i64, w: i64, extent: i64, up: bool, bnd: u32) -> PixelC
 }
 
 /// Lens-corner boxes of one axis (Laine §3.1), with the separating-line test per side.
+///
+/// **Conservative epsilon** (bounded sample test, `bounded.rs`): the test decides exactly on a
+/// triangle whose vertices lie within `ε_x` (this axis) of the exact `a(t, u)` and within `ε_w`
+/// of the exact `w(t)`. At a fixed lens point u the exact vertex moves linearly in t, so the
+/// perturbed vertex lies in the convex hull of the endpoints' corners `(a + u·cs ± ε_x, w ± ε_w)`
+/// (a segment plus a box is the hull of its ends plus the box's corners). The projection
+/// `(a + w)·E/(2w)` is increasing in a and linear-fractional, so over that hull (where w > 0)
+/// its minimum is at a corner with `a + u·cs − ε_x`, its maximum at one with `+ ε_x`; each is
+/// affine in u, so the chord argument of `bounds.rs` holds unchanged over the corner set. The
+/// separating-line test runs on the corners too: the left set `(a − |cs| − ε_x, w ± ε_w)`, the
+/// right set `(a + |cs| + ε_x, w ± ε_w)`, exactly as an extra `|c|` of `ε_x` plus a second w.
+/// An exact precision (ε = 0) runs [`exact_boxes`], the code as before the epsilon (chosen on
+/// the type's constant in [`setup_scaled`], so its instantiation and its Cortex-M4F cost stay as
+/// they were); with ε = 0 the corner version here computes the same values.
+fn axis_boxes(
+    tri: &Triangle,
+    axis: usize,
+    extent: i64,
+    bnd: u32,
+    eps: &Eps,
+    ops: &mut Ops,
+) -> AxisBoxes {
+    let ex = eps.x.get(axis).copied().unwrap_or(0);
+    // Monomorphized per corner count; the exact test (ε = 0) runs the six-point version.
+    if eps.w == 0 {
+        corner_boxes::<1, 6>(tri, axis, extent, bnd, ex, [0], ops)
+    } else {
+        corner_boxes::<2, 12>(
+            tri,
+            axis,
+            extent,
+            bnd,
+            ex,
+            [eps.w.saturating_neg(), eps.w],
+            ops,
+        )
+    }
+}
+
+/// [`axis_boxes`] over `N` w offsets per vertex (`M = 6·N` corner points).
+// Ranges: |a|, |cs|, |w| ≤ 2^29 (checked triangle), ε_x < 2^24 and ε_w ≤ 1 (`Eps::of` with
+// `OFFSET_SHIFT_MAX`): a ± |cs| ± ε_x and a + lens·cs ± ε_x are < 2^31, w ± ε_w < 2^30, so
+// `project`'s |a + w| < 2^32 keeps its numerator < 2^59 and |q| < 2^58 (w ≥ 1 there); the
+// index i counts at most twelve corner points.
+#[allow(clippy::arithmetic_side_effects)]
+pub(crate) fn corner_boxes<const N: usize, const M: usize>(
+    tri: &Triangle,
+    axis: usize,
+    extent: i64,
+    bnd: u32,
+    ex: i32,
+    dws: [i32; N],
+    ops: &mut Ops,
+) -> AxisBoxes {
+    // ε arrives as i32 (|ε| < 2^24) and is widened here, so the optimizer sees every operand of
+    // the projections as a sign-extended 32-bit value (narrower i128 arithmetic on 32-bit cores).
+    let ex = i64::from(ex);
+    let dws = dws.map(i64::from);
+    let mut left = [(0i64, 0i64); M];
+    let mut right = [(0i64, 0i64); M];
+    let mut i = 0;
+    for ends in tri.v.iter() {
+        for p in ends.iter() {
+            let (a, cs) = axis_coord(p, axis);
+            let w = i64::from(p[W]);
+            for &dw in dws.iter() {
+                if let (Some(l), Some(r)) = (left.get_mut(i), right.get_mut(i)) {
+                    *l = (a - cs.abs() - ex, w + dw);
+                    *r = (a + cs.abs() + ex, w + dw);
+                }
+                i += 1;
+                ops.add_setup(2);
+            }
+        }
+    }
+    // With two w corners (bounded test only; the exact path keeps its op counts): a corner set
+    // entirely in front (every w − ε_w > 0) has its hull in w > 0, which cannot meet the camera
+    // plane, so the 12-point pair test is skipped.
+    let all_front = N > 1 && left.iter().all(|p| p.1 > 0);
+    let unbounded_lo = !all_front && crosses_camera_plane(&left, -1, ops);
+    let unbounded_hi = !all_front && crosses_camera_plane(&right, 1, ops);
+    let mut lo = [PixelCoord::MAX; 2];
+    let mut hi = [PixelCoord::MIN; 2];
+    let mut any_front = false;
+    for ends in tri.v.iter() {
+        for p in ends.iter() {
+            let (a, cs) = axis_coord(p, axis);
+            for &dw in dws.iter() {
+                let w = i64::from(p[W]) + dw;
+                if w <= 0 {
+                    continue;
+                }
+                any_front = true;
+                for (corner, lens) in [-1i64, 1].into_iter().enumerate() {
+                    let au = a + lens * cs;
+                    ops.add_setup(6);
+                    if let (Some(l), Some(h)) = (lo.get_mut(corner), hi.get_mut(corner)) {
+                        *l = (*l).min(project(au - ex, w, extent, false, bnd));
+                        *h = (*h).max(project(au + ex, w, extent, true, bnd));
+                    }
+                }
+            }
+        }
+    }
+    AxisBoxes {
+        lo: (!unbounded_lo && any_front).then_some(lo),
+        hi: (!unbounded_hi && any_front).then_some(hi),
+    }
+}
+
+/// [`axis_boxes`] of an exact precision (ε = 0): the code as before the epsilon existed.
 // Ranges: |a|, |cs|, |w| ≤ 2^29 (checked triangle): a ± |cs| and a + lens·cs are ≤ 2^30; the
 // index i counts the six vertices.
 #[allow(clippy::arithmetic_side_effects)]
-fn axis_boxes(tri: &Triangle, axis: usize, extent: i64, bnd: u32, ops: &mut Ops) -> AxisBoxes {
+pub(crate) fn exact_boxes(
+    tri: &Triangle,
+    axis: usize,
+    extent: i64,
+    bnd: u32,
+    ops: &mut Ops,
+) -> AxisBoxes {
     let mut left = [(0i64, 0i64); 6];
     let mut right = [(0i64, 0i64); 6];
     let mut i = 0;
@@ -326,14 +449,18 @@ fn axis_range(b: &AxisBoxes, extent: u16, bnd: u32) -> (u16, u16) {
 /// Time span inside the frustum: for each plane w ∓ a ≥ 0 (both axes, widened by |c| for the
 /// lens), the largest vertex distance is convex in t and lies below its chord; the chord's
 /// non-negative part is a conservative span. The camera plane uses max w > 0 the same way.
-// Ranges: every raw field ≤ 2^29 in magnitude: w + sign·x + |c| ≤ 3·2^29 and the differences
-// a − b ≤ 3·2^30, all in i128.
+/// Conservative epsilon (`bounded.rs`): the bounded test's perturbed vertex has
+/// `w' ± a' ≤ w ± a + ε_w + ε_x`, and its hit needs `w' > 0`, i.e. `w + ε_w > 0`: both enter as
+/// constant terms (zero for the exact test, which is then unchanged).
+// Ranges: every raw field ≤ 2^29 in magnitude, ε < 2^24: w + sign·x + |c| + ε < 2^31 and the
+// differences a − b < 2^32, all in i128.
 #[allow(clippy::arithmetic_side_effects)]
-fn frustum_span(tri: &Triangle, ops: &mut Ops) -> Option<Interval> {
+fn frustum_span(tri: &Triangle, eps: &Eps, ops: &mut Ops) -> Option<Interval> {
     let [v0, v1] = &tri.v;
     let mut span = Interval::UNIT;
+    let ew = i128::from(eps.w);
     // camera plane: a hit needs w > 0, so both ends' max w ≤ 0 means never visible.
-    let wmax = |v: &[[i32; 5]; 3]| v.iter().map(|p| i128::from(p[W])).max().unwrap_or(0);
+    let wmax = |v: &[[i32; 5]; 3]| v.iter().map(|p| i128::from(p[W]) + ew).max().unwrap_or(0);
     let (a, b) = (wmax(v0), wmax(v1));
     ops.add_setup(6);
     if a <= 0 && b <= 0 {
@@ -341,12 +468,13 @@ fn frustum_span(tri: &Triangle, ops: &mut Ops) -> Option<Interval> {
     }
     span = span.meet(solve_le(a - b, a)?)?;
     for axis in 0..2 {
+        let e = ew + i128::from(eps.x.get(axis).copied().unwrap_or(0));
         for sign in [-1i128, 1] {
             let dist = |v: &[[i32; 5]; 3]| {
                 v.iter()
                     .map(|p| {
                         let (x, cs) = axis_coord(p, axis);
-                        i128::from(p[W]) + sign * i128::from(x) + i128::from(cs).abs()
+                        i128::from(p[W]) + sign * i128::from(x) + i128::from(cs).abs() + e
                     })
                     .max()
                     .unwrap_or(0)
@@ -406,7 +534,13 @@ impl Setup {
     /// viewport, span = [0, 1]). For verification only: it lets tests and the host ask whether a
     /// triangle that [`setup`] culled really covers no sample.
     pub fn unculled(tri: &Triangle, vp: Viewport) -> Setup {
+        Setup::unculled_with::<DefaultPrecision>(tri, vp)
+    }
+
+    /// [`Setup::unculled`] at precision `P` (its sample test: exact or bounded).
+    pub fn unculled_with<P: Precision>(tri: &Triangle, vp: Viewport) -> Setup {
         let class = classify(tri);
+        let prec = PrecisionBits::of::<P>();
         let full = AxisBoxes { lo: None, hi: None };
         let footprint = PixelRect {
             x0: 0,
@@ -423,7 +557,8 @@ impl Setup {
             tri: *tri,
             viewport: vp,
             edges,
-            prec: PrecisionBits::DEFAULT,
+            prec,
+            eps: Eps::of(prec.offset_shift(), class, vp),
         }
     }
 }
@@ -455,21 +590,67 @@ pub fn setup(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> Outcome {
 /// Run setup at precision `P`: box coordinates on `P`'s bound grid, the time span rounded
 /// outward to `P`'s t grid.
 pub fn setup_with<P: Precision>(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> Outcome {
+    setup_scaled::<P>(tri, vp, 1, 1, ops)
+}
+
+/// **Measurement only**: [`setup_with`] with the conservative epsilon scaled down to
+/// `floor(ε·num/den)` (`num ≤ den`, else `num = den`; `den = 0` gives ε = 0), so a report can
+/// find the smallest margin with zero violations. Below the analytic ε the bounds are **not**
+/// guaranteed conservative for the bounded test; every value stays inside the range proofs.
+pub fn setup_scaled<P: Precision>(
+    tri: &Triangle,
+    vp: Viewport,
+    num: u32,
+    den: u32,
+    ops: &mut Ops,
+) -> Outcome {
     let prec = PrecisionBits::of::<P>();
     let class = classify(tri);
+    // Exact precisions decide on the type's constant: their instantiation carries no epsilon
+    // code, so the exact setup compiles (and costs on the Cortex-M4F) as before the epsilon.
+    let exact = P::OFFSET_SHIFT.is_none();
+    let full = if exact {
+        Eps::default()
+    } else {
+        Eps::of(prec.offset_shift(), class, vp)
+    };
+    let scale = |e: i32| {
+        let (n, d) = (i64::from(num.min(den)), i64::from(den));
+        i64::from(e)
+            .checked_mul(n)
+            .and_then(|x| x.checked_div(d))
+            .and_then(|x| i32::try_from(x).ok())
+            .unwrap_or(0)
+    };
+    let eps = Eps {
+        x: full.x.map(scale),
+        w: scale(full.w),
+    };
     ops.add_setup(30);
-    let span = match frustum_span(tri, ops) {
+    let span = match if exact {
+        frustum_span(tri, &Eps::default(), ops)
+    } else {
+        frustum_span(tri, &eps, ops)
+    } {
         Some(s) => s.round_out(prec.tuv()),
         None => return Outcome::Culled(Cull::Outside),
     };
-    if degenerate(tri, class, ops) {
+    // A bounded test decides on a perturbed triangle, which need not be degenerate.
+    if exact && degenerate(tri, class, ops) {
         return Outcome::Culled(Cull::Degenerate);
     }
     let (ew, eh) = (vp.w as i64, vp.h as i64);
-    let axes = [
-        axis_boxes(tri, 0, ew, prec.bnd(), ops),
-        axis_boxes(tri, 1, eh, prec.bnd(), ops),
-    ];
+    let axes = if exact {
+        [
+            exact_boxes(tri, 0, ew, prec.bnd(), ops),
+            exact_boxes(tri, 1, eh, prec.bnd(), ops),
+        ]
+    } else {
+        [
+            axis_boxes(tri, 0, ew, prec.bnd(), &eps, ops),
+            axis_boxes(tri, 1, eh, prec.bnd(), &eps, ops),
+        ]
+    };
     let (x0, x1) = axis_range(&axes[0], vp.w, prec.bnd());
     let (y0, y1) = axis_range(&axes[1], vp.h, prec.bnd());
     let footprint = PixelRect { x0, y0, x1, y1 };
@@ -489,5 +670,6 @@ pub fn setup_with<P: Precision>(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> 
         viewport: vp,
         edges,
         prec,
+        eps,
     })
 }

@@ -2,6 +2,8 @@
 //! RNG, random sample tables, and the brute-force checkers for conservativeness and
 //! watertightness. Failures are reported as strings with the inputs in decimal and raw hex.
 
+pub mod kinds;
+
 use uvt_core::bounds::{BoundsStrategy, TileBounds};
 use uvt_core::{
     sample_test, Coord, Lens, Outcome, PixelRect, Sample, SamplePattern, ScreenPos, Setup, Stats,
@@ -182,9 +184,22 @@ pub fn check_conservative_with<B: BoundsStrategy, P: uvt_core::Precision>(
     pat: &SamplePattern<'_>,
     bt: u16,
 ) -> Result<u64, String> {
+    check_conservative_scaled::<B, P>(strat, t, vp, pat, bt, (1, 1))
+}
+
+/// [`check_conservative_with`] with the bounded test's conservative epsilon scaled by
+/// `scale = (num, den)` ≤ 1 (`uvt_core::setup_scaled`; measurement of the smallest margin).
+pub fn check_conservative_scaled<B: BoundsStrategy, P: uvt_core::Precision>(
+    strat: &B,
+    t: &Triangle,
+    vp: Viewport,
+    pat: &SamplePattern<'_>,
+    bt: u16,
+    scale: (u32, u32),
+) -> Result<u64, String> {
     let mut ops = Default::default();
-    let full = Setup::unculled(t, vp);
-    let out = uvt_core::setup_with::<P>(t, vp, &mut ops);
+    let full = Setup::unculled_with::<P>(t, vp);
+    let out = uvt_core::setup_scaled::<P>(t, vp, scale.0, scale.1, &mut ops);
     let visible = match out {
         Outcome::Visible(s) => Some((s, strat.prepare(&s, &mut ops))),
         Outcome::Culled(_) => None,
@@ -243,7 +258,19 @@ pub fn check_conservative_with<B: BoundsStrategy, P: uvt_core::Precision>(
 
 /// Count, for every sample of the viewport, how many of `tris` cover it (no bounds involved).
 pub fn coverage_counts(tris: &[Triangle], vp: Viewport, pat: &SamplePattern<'_>) -> Vec<u8> {
-    let setups: Vec<Setup> = tris.iter().map(|t| Setup::unculled(t, vp)).collect();
+    coverage_counts_with::<uvt_core::DefaultPrecision>(tris, vp, pat)
+}
+
+/// [`coverage_counts`] with `P`'s sample test (exact or bounded).
+pub fn coverage_counts_with<P: uvt_core::Precision>(
+    tris: &[Triangle],
+    vp: Viewport,
+    pat: &SamplePattern<'_>,
+) -> Vec<u8> {
+    let setups: Vec<Setup> = tris
+        .iter()
+        .map(|t| Setup::unculled_with::<P>(t, vp))
+        .collect();
     let mut ops = Default::default();
     let mut out = Vec::new();
     for py in 0..vp.height() {

@@ -131,7 +131,9 @@ impl BoundsStrategy for Hyper {
     }
     fn prepare(&self, setup: &Setup, ops: &mut Ops) -> HyperCoeffs {
         let laine = Laine2011.prepare(setup, ops);
-        let axes = (setup.class == Class::MotionDefocus).then(|| {
+        let axes = // Built from the exact vertices: a setup with a rounding epsilon (bounded precision) keeps
+        // Laine's box alone, which carries the epsilon (conservative, no gain).
+        (setup.class == Class::MotionDefocus && setup.eps.is_zero()).then(|| {
             let fp = setup.footprint;
             let vp = setup.viewport;
             // 6 vertex ends × 2 lens corners × 2 footprint ends × 9 ops, per axis.

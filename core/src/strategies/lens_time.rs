@@ -153,7 +153,9 @@ impl<const R: usize> BoundsStrategy for LensTime<R> {
 
     fn prepare(&self, setup: &Setup, ops: &mut Ops) -> Self::Coeffs {
         let laine = Laine2011.prepare(setup, ops);
-        let slabs = (setup.class == Class::MotionDefocus).then(|| {
+        let slabs = // Built from the exact vertices: a setup with a rounding epsilon (bounded precision) keeps
+        // Laine's box alone, which carries the epsilon (conservative, no gain).
+        (setup.class == Class::MotionDefocus && setup.eps.is_zero()).then(|| {
             let fp = setup.footprint;
             let xi = [
                 [i64::from(fp.x0), i64::from(fp.x1)],
