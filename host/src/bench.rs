@@ -255,11 +255,21 @@ fn name_of(r: &BenchRow) -> String {
 /// per strategy, and (when swept) STE per bounds-tile size.
 pub fn table_md(rows: &[BenchRow]) -> String {
     let [d0, d1] = rows.first().map_or(ORACLE_DENSITY, |r| r.limit.density);
-    let mut s = format!("STE (%), bounds tile 1×1\n\n| Scene | Bbox scan | Laine 2011 | hull | lens-t | hyper | hull+lens-t | best | Laine f64 | axis-aligned limit {d0}/px | limit {d1}/px | covered samples outside the dense box {d0} / {d1} | avg area px |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    // `--no-limit`: the limit was not computed, so its columns are left out (not shown as 0).
+    let with_limit = rows.iter().any(|r| r.limit.density != [0, 0]);
+    let limit_head = if with_limit {
+        format!(" axis-aligned limit {d0}/px | limit {d1}/px | covered samples outside the dense box {d0} / {d1} |")
+    } else {
+        String::new()
+    };
+    let mut s = format!(
+        "STE (%), bounds tile 1×1\n\n| Scene | Bbox scan | Laine 2011 | hull | lens-t | hyper | hull+lens-t | best | Laine f64 |{limit_head} avg area px |\n|---|---|---|---|---|---|---|---|---|{}---|\n",
+        if with_limit { "---|---|---|" } else { "" }
+    );
     let ste = |r: &BenchRow, n: &str| r.strat(n).map_or(0.0, |x| 100.0 * x.ste());
     for r in rows {
         s += &format!(
-            "| {} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.3}% / {:.3}% | {:.2} |\n",
+            "| {} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} |{} {:.2} |\n",
             name_of(r),
             100.0 * r.bbox,
             ste(r, "laine2011"),
@@ -269,10 +279,17 @@ pub fn table_md(rows: &[BenchRow]) -> String {
             ste(r, "hull+lens-t"),
             ste(r, "best"),
             100.0 * r.f64,
-            100.0 * r.limit.ste(0),
-            100.0 * r.limit.ste(1),
-            100.0 * per(r.limit.missed[0], r.limit.covered),
-            100.0 * per(r.limit.missed[1], r.limit.covered),
+            if with_limit {
+                format!(
+                    " {:.2} | {:.2} | {:.3}% / {:.3}% |",
+                    100.0 * r.limit.ste(0),
+                    100.0 * r.limit.ste(1),
+                    100.0 * per(r.limit.missed[0], r.limit.covered),
+                    100.0 * per(r.limit.missed[1], r.limit.covered)
+                )
+            } else {
+                String::new()
+            },
             r.avg_area_px
         );
     }
@@ -280,8 +297,12 @@ pub fn table_md(rows: &[BenchRow]) -> String {
     for n in STRATEGIES {
         s += &format!(" {n} |");
     }
-    s += " limit ms (dense sampling) |\n|---|";
-    s += &"---|".repeat(STRATEGIES.len() + 1);
+    s += if with_limit {
+        " limit ms (dense sampling) |\n|---|"
+    } else {
+        "\n|---|"
+    };
+    s += &"---|".repeat(STRATEGIES.len() + usize::from(with_limit));
     s += "\n";
     for r in rows {
         s += &format!("| {} |", name_of(r));
@@ -295,7 +316,11 @@ pub fn table_md(rows: &[BenchRow]) -> String {
                 x.ms
             );
         }
-        s += &format!(" {:.0} |\n", r.limit_ms);
+        s += &if with_limit {
+            format!(" {:.0} |\n", r.limit_ms)
+        } else {
+            "\n".to_string()
+        };
     }
     if rows.iter().any(|r| !r.tile_sweep.is_empty()) {
         s += "\nSTE (%) by bounds-tile size 1 / 2 / 4 / 8\n\n| Scene |";

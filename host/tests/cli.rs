@@ -594,6 +594,23 @@ fn bench_ste_prints_row_progress() {
 }
 
 #[test]
+fn bench_ste_without_the_limit_leaves_its_columns_out() {
+    let args = ["bench-ste", "--quick", "--scene", "game", "--row", "static"];
+    let o = uvt(&[&args[..], &["--no-limit"]].concat());
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    // Not computed is not 0: no limit column, no "0/px" header, no zero-filled cells.
+    assert!(out.contains("| GAME |"), "{out}");
+    assert!(
+        !out.contains("limit") && !out.contains("0/px") && !out.contains("dense box"),
+        "{out}"
+    );
+    let header = out.lines().find(|l| l.starts_with("| Scene | Bbox")).unwrap();
+    let row = out.lines().find(|l| l.starts_with("| GAME |")).unwrap();
+    assert_eq!(header.matches('|').count(), row.matches('|').count(), "{out}");
+}
+
+#[test]
 fn file_errors_name_their_path() {
     let o = uvt(&["stress", "nosuchdir"]);
     let e = String::from_utf8_lossy(&o.stderr);
