@@ -605,9 +605,16 @@ fn bench_ste_without_the_limit_leaves_its_columns_out() {
         !out.contains("limit") && !out.contains("0/px") && !out.contains("dense box"),
         "{out}"
     );
-    let header = out.lines().find(|l| l.starts_with("| Scene | Bbox")).unwrap();
+    let header = out
+        .lines()
+        .find(|l| l.starts_with("| Scene | Bbox"))
+        .unwrap();
     let row = out.lines().find(|l| l.starts_with("| GAME |")).unwrap();
-    assert_eq!(header.matches('|').count(), row.matches('|').count(), "{out}");
+    assert_eq!(
+        header.matches('|').count(),
+        row.matches('|').count(),
+        "{out}"
+    );
 }
 
 #[test]
