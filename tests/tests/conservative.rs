@@ -157,25 +157,41 @@ proptest! {
     }
 }
 
-/// Seeded random sweep of the bounded configurations over every kind; prints the seed on
-/// failure and must exercise coverage.
-#[test]
-fn conservative_bounded_seeded_random() {
+/// Seeded random sweep of `check` over `kinds` (cycled), `n` cases from `UVT_SEED ^ salt`;
+/// prints the seed on failure and must exercise coverage, or it proves nothing.
+fn seeded_sweep(
+    what: &str,
+    salt: u64,
+    n: u32,
+    kinds: &[Kind],
+    check: impl Fn(Kind, &[f64; NP], u64) -> Result<u64, String>,
+) {
     let seed = seed();
-    let mut rng = Rng(seed ^ 0xb0d);
+    let mut rng = Rng(seed ^ salt);
     let mut covered = 0;
-    for case in 0..cases(48, 2000) {
-        let kind = ALL_KINDS[case as usize % ALL_KINDS.len()];
+    for (case, kind) in (0..n).zip(kinds.iter().cycle()) {
         let mut p = [0.0; NP];
         p.iter_mut().for_each(|x| *x = rng.range(-1.0, 1.0));
-        match check_bounded(kind, &p, rng.next_u64()) {
-            Ok(n) => covered += n,
+        match check(*kind, &p, rng.next_u64()) {
+            Ok(c) => covered += c,
             Err(msg) => panic!("{msg}\n  kind {kind:?}, case {case}, rerun with UVT_SEED={seed}"),
         }
     }
     assert!(
         covered > 1000,
-        "only {covered} covered samples in the bounded sweep (seed {seed})"
+        "only {covered} covered samples in the {what} (seed {seed})"
+    );
+}
+
+/// Seeded random sweep of the bounded configurations over every kind.
+#[test]
+fn conservative_bounded_seeded_random() {
+    seeded_sweep(
+        "bounded sweep",
+        0xb0d,
+        cases(48, 2000),
+        &ALL_KINDS,
+        check_bounded,
     );
 }
 
@@ -190,32 +206,9 @@ proptest! {
     }
 }
 
-/// Seeded random sweep over all kinds; prints the seed on failure.
+/// Seeded random sweep over the six original kinds; prints the seed on failure.
 #[test]
 fn conservative_seeded_random() {
-    let seed = seed();
-    let mut rng = Rng(seed);
-    let kinds = [
-        Kind::Static,
-        Kind::Moving,
-        Kind::Defocus,
-        Kind::Both,
-        Kind::Crossing,
-        Kind::Extreme,
-    ];
-    let mut covered = 0;
-    for case in 0..cases(60, 3000) {
-        let kind = kinds[case as usize % kinds.len()];
-        let mut p = [0.0; NP];
-        p.iter_mut().for_each(|x| *x = rng.range(-1.0, 1.0));
-        match check_all(kind, &p, rng.next_u64()) {
-            Ok(n) => covered += n,
-            Err(msg) => panic!("{msg}\n  kind {kind:?}, case {case}, rerun with UVT_SEED={seed}"),
-        }
-    }
-    // The sweep must exercise coverage, or it proves nothing.
-    assert!(
-        covered > 1000,
-        "only {covered} covered samples in the sweep (seed {seed})"
-    );
+    let kinds = &ALL_KINDS[..6];
+    seeded_sweep("sweep", 0, cases(60, 3000), kinds, check_all);
 }
