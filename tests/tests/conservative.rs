@@ -61,8 +61,11 @@ fn check_narrow(kind: Kind, p: &[f64; NP], pat_seed: u64) -> Result<(), String> 
     Ok(())
 }
 
-/// The same check at bounded sample-test precisions (`Bounded<…, OFF>`): setup and the bounds
-/// widened by the conservative epsilon must still contain every sample the rounded test covers.
+/// The same check at bounded sample-test precisions (`Bounded<…, OFF>`), the rounded test as the
+/// truth: setup and every strategy, widened by the conservative epsilon, must still admit every
+/// sample the rounded test covers — at the candidate default (OFF = 20, ε ≈ 10 raw) and at coarse
+/// grids (OFF = 24, 28: ε up to 26216 raw, 0.4 clip units on this 24×20 viewport), where a
+/// strategy that dropped its epsilon term fails.
 fn check_bounded(kind: Kind, p: &[f64; NP], pat_seed: u64) -> Result<u64, String> {
     use uvt_core::Bounded;
     let t = make(kind, p);
@@ -79,12 +82,16 @@ fn check_bounded(kind: Kind, p: &[f64; NP], pat_seed: u64) -> Result<u64, String
         ($p:ty) => {{
             for bt in [1u16, 4] {
                 covered += check_conservative_with::<_, $p>(&Laine2011, &t, vp, &pat, bt)?;
-                // The tighter strategies do not carry the epsilon yet: they must fall back to
-                // Laine's box at a bounded precision, never cull what the rounded test covers.
+                // Every tighter strategy carries the epsilon itself (hull faces widened by the
+                // projected perturbation, slab and surface values by (ε_x + ε_w)·E).
+                check_conservative_with::<_, $p>(&hull(), &t, vp, &pat, bt)?;
+                check_conservative_with::<_, $p>(&LensTime::<8>, &t, vp, &pat, bt)?;
+                check_conservative_with::<_, $p>(&Hyper, &t, vp, &pat, bt)?;
                 check_conservative_with::<_, $p>(&best(), &t, vp, &pat, bt)?;
                 check_conservative_with::<_, $p>(&hull_lens(), &t, vp, &pat, bt)?;
-                check_conservative_with::<_, $p>(&LensTime::<8>, &t, vp, &pat, bt)?;
             }
+            check_conservative_with::<_, $p>(&LensTime::<1>, &t, vp, &pat, 2)?;
+            check_conservative_with::<_, $p>(&best(), &t, vp, &pat, 8)?;
             check_conservative_with::<_, $p>(&BboxScan, &t, vp, &pat, 1)?;
         }};
     }

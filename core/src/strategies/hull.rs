@@ -23,6 +23,35 @@
 //! a and b. If that maximum is < 0 for one face, no sample of the tile can be covered at any
 //! (t, u, v): the tile is culled. Every product is exact (ranges below) or checked; an overflow
 //! (outside the documented domain) keeps the tile.
+//!
+//! **Conservative epsilon** (a [`crate::formats::Bounded`] precision, `bounded.rs`): that test
+//! covers d exactly when the exact test covers it on a perturbed triangle `P'_k = P_k + δ_k`,
+//! with `P_k` the exact vertex at the sample's (t, u, v) and `|δx| ≤ ε_x`, `|δy| ≤ ε_y`,
+//! `|δw| ≤ ε_w` ([`crate::bounded::Eps`]). Coverage there still means `det' ≠ 0` and every
+//! `E'_k·det' ≥ 0` (`bounded_eval`: the common sign of the E' when every w > 0, else the sign of
+//! det'), so `d = Σ b_k·P'_k` with `b_k ≥ 0`. The faces stay those of the exact cone K; each face
+//! is widened by a constant (no new face, no extra per-tile work):
+//! - Let `w_min` be the least w of the hull points. If `w_min − ε_w > 0`, every `P_k` (in H) has
+//!   `w ≥ w_min` and every `P'_k` has `w' ≥ w_min − ε_w > 0`. Project: a point with w > 0 sits at
+//!   sample position `s(p) = (128W·(1 + x/w), 128H·(1 − y/w))` (1/256 px), where
+//!   `d(s(p)) = p·256WH/w`, so for the face's affine `F(xs, ys) = n·d(xs, ys)`:
+//!   `F(s(p)) = (256WH/w)·n·p`, ≥ 0 for every p ∈ H.
+//! - From `d = Σ b_k·P'_k` and `d_w = 256WH = Σ b_k·w'_k` with every `w'_k > 0`, the weights
+//!   `λ_k = b_k·w'_k/d_w` are ≥ 0 and sum to 1, and `s(d) = Σ λ_k·s(P'_k)`: the sample position
+//!   is a convex combination of the projected perturbed vertices. F is affine, so
+//!   `F(s(d)) ≥ min_k F(s(P'_k))`.
+//! - `x'/w' − x/w = (δx·w − x·δw)/(w·w')`, so `|x'/w' − x/w| ≤ (ε_x + |x/w|·ε_w)/(w_min − ε_w)`;
+//!   `|x/w|` over H (w > 0) is largest at a hull point (x/w is linear-fractional), bounded by
+//!   `R_x = max ceil(|x_p|/w_p)` over the points. So the projection moves by at most
+//!   `ρ_x = ceil(128W·(ε_x + R_x·ε_w)/(w_min − ε_w))` in xs and `ρ_y` (H, ε_y, R_y) in ys, and
+//!   `F(s(P'_k)) ≥ F(s(P_k)) − |a|·ρ_x − |b|·ρ_y ≥ −(|a|·ρ_x + |b|·ρ_y)`.
+//!
+//!   Hence every covered sample has `F + |a|·ρ_x + |b|·ρ_y ≥ 0`: setup adds that constant to each
+//!   face's c (the support of the box [−ρ_x, ρ_x] × [−ρ_y, ρ_y] in the face's direction: the
+//!   face of the hull's projection grown by the box), and the tile test is unchanged.
+//! - If `w_min − ε_w ≤ 0` (a hull point on or behind the camera plane, or within ε_w of it) the
+//!   perturbed cone is not derived: no faces, nothing culled (conservative; the inner strategy
+//!   keeps its own ε-carrying bounds). With ε = 0 (the exact test) the faces are untouched.
 #![warn(
     clippy::arithmetic_side_effects,
     clippy::indexing_slicing,
@@ -65,10 +94,83 @@ pub struct HullCoeffs {
 }
 
 impl HullCoeffs {
+    /// No faces: nothing is culled.
+    pub const EMPTY: HullCoeffs = HullCoeffs {
+        faces: [HullFace { a: 0, b: 0, c: 0 }; MAX_FACES],
+        len: 0,
+    };
+
     /// The faces found in setup.
     pub fn faces(&self) -> &[HullFace] {
         self.faces.get(..self.len).unwrap_or(&[])
     }
+
+    /// Every face's c raised by `|a|·ρx + |b|·ρy` (module docs, conservative epsilon); a face
+    /// whose widened c overflows is dropped (dropping a face only culls less). 4 ops per face.
+    pub fn widened(&self, rho: [i128; 2], ops: &mut Ops) -> HullCoeffs {
+        let mut out = HullCoeffs::EMPTY;
+        for f in self.faces() {
+            ops.setup = ops.setup.saturating_add(4);
+            let c =
+                f.a.checked_abs()
+                    .and_then(|a| a.checked_mul(rho[0]))
+                    .and_then(|m| {
+                        let n = f.b.checked_abs()?.checked_mul(rho[1])?;
+                        f.c.checked_add(m)?.checked_add(n)
+                    });
+            let (Some(c), Some(slot)) = (c, out.faces.get_mut(out.len)) else {
+                continue;
+            };
+            *slot = HullFace { c, ..*f };
+            out.len = out.len.saturating_add(1);
+        }
+        out
+    }
+}
+
+/// The projected perturbation `[ρx, ρy]` (1/256 px) of the bounded test's vertices (module docs,
+/// conservative epsilon): `ceil(128·E·(ε + R·ε_w)/(w_min − ε_w))` per axis, with `R` the largest
+/// `ceil(|coordinate|/w)` over the hull points. `None` when some hull point has `w ≤ ε_w` (the
+/// bound is not derived there) or on overflow (outside the domain); then no face may be kept.
+/// Ranges: |x ± c| ≤ 2^30, 1 ≤ w ≤ 2^29, ε < 2^24, ε_w ≤ 1, E ≤ 2^11: R ≤ 2^30,
+/// 128·E·(ε + R·ε_w) < 2^49; all in checked i128.
+pub fn eps_margin(
+    pts: &[[i64; 3]],
+    eps: &crate::bounded::Eps,
+    vp: Viewport,
+    ops: &mut Ops,
+) -> Option<[i128; 2]> {
+    let ew = i128::from(eps.w());
+    let mut wmin: Option<i128> = None;
+    let mut r = [0i128; 2];
+    for p in pts {
+        ops.setup = ops.setup.saturating_add(6);
+        let w = i128::from(*p.get(2)?);
+        if w <= ew {
+            return None;
+        }
+        wmin = Some(wmin.map_or(w, |m| m.min(w)));
+        for (ri, &x) in r.iter_mut().zip(p.iter()) {
+            let q = crate::formats::ceil_div(i128::from(x).checked_abs()?, w)?;
+            *ri = (*ri).max(q);
+        }
+    }
+    let den = wmin?.checked_sub(ew)?;
+    let ext = [vp.width(), vp.height()];
+    let mut rho = [0i128; 2];
+    for ((out, (&e, &ri)), &ex) in rho
+        .iter_mut()
+        .zip(ext.iter().zip(r.iter()))
+        .zip(eps.x().iter())
+    {
+        ops.setup = ops.setup.saturating_add(5);
+        let num = ri
+            .checked_mul(ew)?
+            .checked_add(i128::from(ex))?
+            .checked_mul(128i128.checked_mul(i128::from(e))?)?;
+        *out = crate::formats::ceil_div(num, den)?;
+    }
+    Some(rho)
 }
 
 /// The (at most 24) homogeneous points (x, y, w) whose cone contains every vertex at every
@@ -254,15 +356,17 @@ impl<S: BoundsStrategy> BoundsStrategy for HullCull<S> {
     }
     fn prepare(&self, setup: &Setup, ops: &mut Ops) -> Self::Coeffs {
         let (pts, n) = swept_points(&setup.tri, setup.class);
-        // The cone is that of the exact vertices; a bounded precision's sample test covers the
-        // perturbed triangle (`Setup::eps`), which this cone does not yet include: no faces then,
-        // so nothing is culled and the tile is the inner strategy's (conservative, no gain).
-        let pts = if setup.eps.is_zero() {
-            pts.get(..n).unwrap_or(&[])
+        let pts = pts.get(..n).unwrap_or(&[]);
+        let hull = if setup.eps.is_zero() {
+            hull_faces(pts, setup.viewport, ops)
         } else {
-            &[]
+            // The bounded test covers a perturbed triangle (module docs): the exact cone's faces
+            // grown by the projected perturbation, or none where that is not derived.
+            match eps_margin(pts, &setup.eps, setup.viewport, ops) {
+                Some(rho) => hull_faces(pts, setup.viewport, ops).widened(rho, ops),
+                None => HullCoeffs::EMPTY,
+            }
         };
-        let hull = hull_faces(pts, setup.viewport, ops);
         (hull, self.inner.prepare(setup, ops))
     }
     fn tile(

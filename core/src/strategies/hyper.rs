@@ -17,6 +17,17 @@
 //! U ≥ 0. Scaled by 2^33 with the sample's raw t (16 bits) and σ = u + 2^16 (17 bits), L is
 //! `c0 + c1·σ + c2·t + c3·t·σ` with integer coefficients: exact, no rounding at all (the sample's
 //! raw values are used directly). Ranges at each function; overflow (outside the domain) admits.
+//!
+//! **Conservative epsilon** (a [`crate::formats::Bounded`] precision, `bounded.rs`): that test
+//! decides exactly on a triangle whose vertices lie within ε_x (this axis) and ε_w of the exact
+//! ones at the sample's (t, u, v) ([`crate::bounded::Eps`]), and covers d only if
+//! `min_k f'_k ≤ 0 ≤ max_k f'_k` for its perturbed values f' (d = Σ b_k·P'_k, b_k ≥ 0 not all 0,
+//! and d's own dual value is 0). A perturbation δa, δw moves `f_k` by `δa·E + δw·(E − 2ξ)`, at
+//! most `(ε_x + ε_w)·E` for ξ ∈ [0, E] (the footprint lies in the viewport), so
+//! `min_k f'_k ≥ g − (ε_x + ε_w)·E ≥ L − (ε_x + ε_w)·E`. Setup lowers every lower corner value
+//! and raises every upper one by that constant (Laine's term, `bounds.rs`, `dual_axis`); the
+//! bilinear interpolation of corner values lowered by a constant is L lowered by it, so the
+//! argument above holds unchanged. With ε = 0 the values are unchanged.
 #![warn(
     clippy::arithmetic_side_effects,
     clippy::indexing_slicing,
@@ -63,9 +74,12 @@ pub struct HyperTile {
     s: Option<[[Surface; 2]; 2]>,
 }
 
-/// Corner values of one axis. |a + w| < 2^31, |cs| ≤ 2^29, E, ξ ≤ 2^11: |f| < 2^44.
+/// Corner values of one axis, widened by the conservative epsilon `eps = ε_x + ε_w` (module
+/// docs). |a + w| < 2^31, |cs| ≤ 2^29, E, ξ ≤ 2^11: |f| < 2^44; eps < 2^25: |eps·E| < 2^36, so
+/// every widened value is < 2^45.
 #[allow(clippy::arithmetic_side_effects)]
-fn hyper_axis(tri: &Triangle, xi: [i64; 2], axis: usize, e: i64) -> HyperAxis {
+fn hyper_axis(tri: &Triangle, xi: [i64; 2], axis: usize, e: i64, eps: i64) -> HyperAxis {
+    let pert = eps * e;
     let mut lo = [[[i64::MAX; 2]; 2]; 2];
     let mut hi = [[[i64::MIN; 2]; 2]; 2];
     for ((ends, lo_t), hi_t) in tri.v.iter().zip(lo.iter_mut()).zip(hi.iter_mut()) {
@@ -75,8 +89,8 @@ fn hyper_axis(tri: &Triangle, xi: [i64; 2], axis: usize, e: i64) -> HyperAxis {
             for ((lo_l, hi_l), lens) in lo_t.iter_mut().zip(hi_t.iter_mut()).zip([-1i64, 1]) {
                 for ((l, h), x) in lo_l.iter_mut().zip(hi_l.iter_mut()).zip(xi.iter()) {
                     let f = (a + lens * cs + w) * e - 2 * w * x;
-                    *l = (*l).min(f);
-                    *h = (*h).max(f);
+                    *l = (*l).min(f - pert);
+                    *h = (*h).max(f + pert);
                 }
             }
         }
@@ -114,7 +128,7 @@ impl Surface {
 #[allow(clippy::arithmetic_side_effects)]
 fn tile_surfaces(d: &HyperAxis, x0: i64, x1: i64) -> Option<[Surface; 2]> {
     let [xa, xb] = d.xi;
-    // |v| < 2^44, 0 ≤ xb − x, x − xa ≤ 2^11: each product < 2^55, sums < 2^56.
+    // |v| < 2^45, 0 ≤ xb − x, x − xa with (xb − x) + (x − xa) = xb − xa ≤ 2^11: |line| < 2^56.
     let line = |v: &[i64; 2], x: i64| {
         i128::from(v[0]) * i128::from(xb - x) + i128::from(v[1]) * i128::from(x - xa)
     };
@@ -131,11 +145,14 @@ impl BoundsStrategy for Hyper {
     }
     fn prepare(&self, setup: &Setup, ops: &mut Ops) -> HyperCoeffs {
         let laine = Laine2011.prepare(setup, ops);
-        let axes = // Built from the exact vertices: a setup with a rounding epsilon (bounded precision) keeps
-        // Laine's box alone, which carries the epsilon (conservative, no gain).
-        (setup.class == Class::MotionDefocus && setup.eps.is_zero()).then(|| {
+        let axes = (setup.class == Class::MotionDefocus).then(|| {
             let fp = setup.footprint;
             let vp = setup.viewport;
+            // The conservative epsilon per axis, ε_x + ε_w (0 for the exact test).
+            let eps = |axis: usize| {
+                let ex = setup.eps.x.get(axis).copied().unwrap_or(0);
+                i64::from(ex.saturating_add(setup.eps.w))
+            };
             // 6 vertex ends × 2 lens corners × 2 footprint ends × 9 ops, per axis.
             ops.setup = ops.setup.saturating_add(2 * 216);
             [
@@ -144,12 +161,14 @@ impl BoundsStrategy for Hyper {
                     [i64::from(fp.x0), i64::from(fp.x1)],
                     0,
                     i64::from(vp.width()),
+                    eps(0),
                 ),
                 hyper_axis(
                     &setup.tri,
                     [i64::from(fp.y0), i64::from(fp.y1)],
                     1,
                     i64::from(vp.height()),
+                    eps(1),
                 ),
             ]
         });

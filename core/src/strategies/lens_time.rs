@@ -17,6 +17,16 @@
 //! a sample on a slab boundary lies in both closed slabs, so either slab's interval is valid.
 //! The tile's box is Laine's box, narrowed to the slabs with a non-empty interval and to the
 //! union of their t intervals; a tile with no non-empty slab on an axis is culled.
+//!
+//! **Conservative epsilon** (a [`crate::formats::Bounded`] precision, `bounded.rs`): that test
+//! decides exactly on a triangle whose vertices lie within ε_x (this axis) and ε_w of the exact
+//! ones at the sample's (t, u, v) ([`crate::bounded::Eps`]). A vertex perturbed by δa, δw moves
+//! its dual value by `δa·E + δw·(E − 2ξ)`, at most `(ε_x + ε_w)·E` for ξ ∈ [0, E] (the footprint
+//! lies in the viewport), i.e. `R·(ε_x + ε_w)·E` scaled by R: the lower per-slab bound is lowered
+//! and the upper raised by that constant, exactly Laine's term (`bounds.rs`, `dual_axis`). A
+//! constant keeps the concavity and chord arguments above, and coverage of the perturbed triangle
+//! still needs `min_k δ'_k ≤ 0 ≤ max_k δ'_k` (it covers d = Σ b_k·P'_k with b_k ≥ 0, not all 0,
+//! and the dual value of d at its own pixel is 0). With ε = 0 the values are unchanged.
 #![warn(
     clippy::arithmetic_side_effects,
     clippy::indexing_slicing,
@@ -108,9 +118,19 @@ impl<const R: usize> LensTime<R> {
 }
 
 /// Per-slab dual values of one axis: like Laine's `dual_axis`, scaled by R, with the bias of
-/// lens range `R·u ∈ [k, k + 2]`.
+/// lens range `R·u ∈ [k, k + 2]` and the conservative epsilon `eps = ε_x + ε_w` (module docs).
 #[allow(clippy::arithmetic_side_effects)]
-fn slab_axis(tri: &Triangle, xi: [i64; 2], axis: usize, e: i64, r: i64, k: i64) -> DualAxis {
+fn slab_axis(
+    tri: &Triangle,
+    xi: [i64; 2],
+    axis: usize,
+    e: i64,
+    r: i64,
+    k: i64,
+    eps: i64,
+) -> DualAxis {
+    // r ≤ 8, eps < 2^25, E ≤ 2^11: |pert| < 2^39.
+    let pert = r * eps * e;
     let mut lo = [[i64::MAX; 2]; 2];
     let mut hi = [[i64::MIN; 2]; 2];
     for ((ends, lo_t), hi_t) in tri.v.iter().zip(lo.iter_mut()).zip(hi.iter_mut()) {
@@ -118,12 +138,12 @@ fn slab_axis(tri: &Triangle, xi: [i64; 2], axis: usize, e: i64, r: i64, k: i64) 
             let (a, cs) = axis_coord(p, axis);
             let w = i64::from(*p.get(W).unwrap_or(&0));
             // |a + w| < 2^31, E, ξ ≤ 2^11, r ≤ 8, |k|, |k + 2| ≤ 8, |cs| ≤ 2^29:
-            // |base| < 2^46, |bias| ≤ 2^43: every value < 2^47.
+            // |base| < 2^46, |bias| ≤ 2^43, |pert| < 2^39: every value < 2^47.
             let (b1, b2) = (k * cs * e, (k + 2) * cs * e);
             for ((l, h), x) in lo_t.iter_mut().zip(hi_t.iter_mut()).zip(xi.iter()) {
                 let base = r * ((a + w) * e - 2 * w * x);
-                *l = (*l).min(base + b1.min(b2));
-                *h = (*h).max(base + b1.max(b2));
+                *l = (*l).min(base + b1.min(b2) - pert);
+                *h = (*h).max(base + b1.max(b2) + pert);
             }
         }
     }
@@ -153,9 +173,7 @@ impl<const R: usize> BoundsStrategy for LensTime<R> {
 
     fn prepare(&self, setup: &Setup, ops: &mut Ops) -> Self::Coeffs {
         let laine = Laine2011.prepare(setup, ops);
-        let slabs = // Built from the exact vertices: a setup with a rounding epsilon (bounded precision) keeps
-        // Laine's box alone, which carries the epsilon (conservative, no gain).
-        (setup.class == Class::MotionDefocus && setup.eps.is_zero()).then(|| {
+        let slabs = (setup.class == Class::MotionDefocus).then(|| {
             let fp = setup.footprint;
             let xi = [
                 [i64::from(fp.x0), i64::from(fp.x1)],
@@ -173,7 +191,12 @@ impl<const R: usize> BoundsStrategy for LensTime<R> {
             [0usize, 1].map(|axis| {
                 let (x, e) = (xi.get(axis).copied(), ext.get(axis).copied());
                 let (x, e) = (x.unwrap_or([0, 0]), e.unwrap_or(0));
-                core::array::from_fn(|j| slab_axis(&setup.tri, x, axis, e, r, Self::slab_lo(j)))
+                // The conservative epsilon of this axis, ε_x + ε_w (0 for the exact test).
+                let ex = setup.eps.x.get(axis).copied().unwrap_or(0);
+                let eps = i64::from(ex.saturating_add(setup.eps.w));
+                core::array::from_fn(|j| {
+                    slab_axis(&setup.tri, x, axis, e, r, Self::slab_lo(j), eps)
+                })
             })
         });
         LensTimeCoeffs { laine, slabs }
