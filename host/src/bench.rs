@@ -4,12 +4,16 @@
 //! the combined best = hull + surfaces), the f64 reference and the
 //! axis-aligned limit ([`crate::oracle`]) at two densities — plus the cost of each strategy
 //! (ops per tile, per-sample predicate ops, wall time without the oracle) and a second table over
-//! bounds-tile sizes 1, 2, 4, 8.
+//! bounds-tile sizes 1, 2, 4, 8. The core runs at one precision per table (`--precision`, one of
+//! [`PRECISIONS`]; default: the core's default precision): the scene rounded to its position
+//! grid, the pattern to its t/u/v grid; a `bounded-…` precision runs the bounded sample test with
+//! every strategy widened by its conservative epsilon. The f64 reference and the axis-aligned
+//! limit stay on the exact inputs and the exact core.
 
 use serde::Serialize;
 use uvt_core::bounds::BoundsStrategy;
 use uvt_core::strategies::{best, hull, hull_lens, Hyper, LensTime, BEST_SLABS};
-use uvt_core::{Laine2011, Triangle, Viewport};
+use uvt_core::{Bounded, Laine2011, Prec, Precision, Triangle, Viewport};
 
 use crate::frame::{run, Fixed, FrameStats, Reference, RunOpts};
 use crate::oracle::{axis_aligned_limit, Limit};
@@ -25,6 +29,72 @@ pub const STRATEGIES: [&str; 6] = [
     "hull+lens-t",
     "best",
 ];
+
+/// The configurations `--precision` accepts (the session's names: `exact-P-T-B` is
+/// `Prec<P, T, B>`, `bounded-P-T-B-O` is `Bounded<P, T, B, O>`), plus `default`.
+pub const PRECISIONS: [&str; 7] = [
+    "exact-16-16-16",
+    "bounded-16-16-16-20",
+    "bounded-16-16-16-22",
+    "bounded-16-16-16-24",
+    "bounded-12-12-12-24",
+    "bounded-12-12-12-26",
+    "bounded-8-8-8-28",
+];
+
+/// The configuration name of precision `P` (`exact-P-T-B` or `bounded-P-T-B-O`).
+pub fn precision_name<P: Precision>() -> String {
+    let (p, t, b) = (P::POS_FRAC, P::TUV_FRAC, P::BOUND_FRAC);
+    match P::OFFSET_SHIFT {
+        None => format!("exact-{p}-{t}-{b}"),
+        Some(o) => format!("bounded-{p}-{t}-{b}-{o}"),
+    }
+}
+
+/// Calls `$body` with the type alias `$P` bound to the precision named `$name` (one of
+/// [`PRECISIONS`] or "default"); an unknown name is an error listing the valid ones.
+macro_rules! with_precision {
+    ($name:expr, $P:ident, $body:expr) => {{
+        match $name {
+            "default" => {
+                type $P = uvt_core::DefaultPrecision;
+                Ok($body)
+            }
+            "exact-16-16-16" => {
+                type $P = Prec<16, 16, 16>;
+                Ok($body)
+            }
+            "bounded-16-16-16-20" => {
+                type $P = Bounded<16, 16, 16, 20>;
+                Ok($body)
+            }
+            "bounded-16-16-16-22" => {
+                type $P = Bounded<16, 16, 16, 22>;
+                Ok($body)
+            }
+            "bounded-16-16-16-24" => {
+                type $P = Bounded<16, 16, 16, 24>;
+                Ok($body)
+            }
+            "bounded-12-12-12-24" => {
+                type $P = Bounded<12, 12, 12, 24>;
+                Ok($body)
+            }
+            "bounded-12-12-12-26" => {
+                type $P = Bounded<12, 12, 12, 26>;
+                Ok($body)
+            }
+            "bounded-8-8-8-28" => {
+                type $P = Bounded<8, 8, 8, 28>;
+                Ok($body)
+            }
+            other => Err(anyhow::anyhow!(
+                "--precision: unknown configuration {other:?} (default, {})",
+                PRECISIONS.join(", ")
+            )),
+        }
+    }};
+}
 
 /// Dense points per pixel of the axis-aligned limit (low, high).
 pub const ORACLE_DENSITY: [u32; 2] = [64, 256];
@@ -97,7 +167,18 @@ pub fn run_strategy_image(
     pattern: &Pattern,
     o: &RunOpts<'_>,
 ) -> Option<(StratResult, Vec<[u8; 3]>)> {
-    fn go<B: BoundsStrategy + Sync>(
+    run_strategy_at::<uvt_core::DefaultPrecision>(name, vp, tris, pattern, o)
+}
+
+/// [`run_strategy_image`] at precision `P` (`tris` and `pattern` on `P`'s grids).
+pub fn run_strategy_at<P: Precision + Sync>(
+    name: &str,
+    vp: Viewport,
+    tris: &[Triangle],
+    pattern: &Pattern,
+    o: &RunOpts<'_>,
+) -> Option<(StratResult, Vec<[u8; 3]>)> {
+    fn go<B: BoundsStrategy + Sync, P: Precision + Sync>(
         s: B,
         vp: Viewport,
         tris: &[Triangle],
@@ -108,7 +189,14 @@ pub fn run_strategy_image(
         B::Coeffs: Send + Sync,
     {
         let name = s.name();
-        let f = run(&Fixed::new(s, vp, tris, pattern), pattern, o);
+        let fixed = Fixed::<_, P> {
+            prec: std::marker::PhantomData,
+            strat: s,
+            vp,
+            tris,
+            pattern,
+        };
+        let f = run(&fixed, pattern, o);
         let r = StratResult {
             name,
             tile: o.tile,
@@ -118,16 +206,16 @@ pub fn run_strategy_image(
         (r, f.image)
     }
     Some(match name {
-        "bbox" => go(uvt_core::BboxScan, vp, tris, pattern, o),
-        "laine2011" => go(Laine2011, vp, tris, pattern, o),
-        "hull" => go(hull(), vp, tris, pattern, o),
-        "lens-t" => go(LensTime::<BEST_SLABS>, vp, tris, pattern, o),
-        "lens-t1" => go(LensTime::<1>, vp, tris, pattern, o),
-        "lens-t2" => go(LensTime::<2>, vp, tris, pattern, o),
-        "lens-t8" => go(LensTime::<8>, vp, tris, pattern, o),
-        "best" => go(best(), vp, tris, pattern, o),
-        "hyper" => go(Hyper, vp, tris, pattern, o),
-        "hull+lens-t" => go(hull_lens(), vp, tris, pattern, o),
+        "bbox" => go::<_, P>(uvt_core::BboxScan, vp, tris, pattern, o),
+        "laine2011" => go::<_, P>(Laine2011, vp, tris, pattern, o),
+        "hull" => go::<_, P>(hull(), vp, tris, pattern, o),
+        "lens-t" => go::<_, P>(LensTime::<BEST_SLABS>, vp, tris, pattern, o),
+        "lens-t1" => go::<_, P>(LensTime::<1>, vp, tris, pattern, o),
+        "lens-t2" => go::<_, P>(LensTime::<2>, vp, tris, pattern, o),
+        "lens-t8" => go::<_, P>(LensTime::<8>, vp, tris, pattern, o),
+        "best" => go::<_, P>(best(), vp, tris, pattern, o),
+        "hyper" => go::<_, P>(Hyper, vp, tris, pattern, o),
+        "hull+lens-t" => go::<_, P>(hull_lens(), vp, tris, pattern, o),
         _ => return None,
     })
 }
@@ -135,6 +223,8 @@ pub fn run_strategy_image(
 /// One row of the table.
 #[derive(Clone, Debug, Serialize)]
 pub struct BenchRow {
+    /// the core's configuration (one of [`PRECISIONS`])
+    pub precision: String,
     /// scene
     pub scene: Bench,
     /// row
@@ -164,9 +254,32 @@ impl BenchRow {
     }
 }
 
-/// Run the benchmark table; `sweep` adds the bounds-tile sweep 1, 2, 4, 8; `density` (dense
-/// points per pixel, low and high) adds the axis-aligned limit.
+/// Run the benchmark table at the default precision; `sweep` adds the bounds-tile sweep 1, 2, 4,
+/// 8; `density` (dense points per pixel, low and high) adds the axis-aligned limit.
 pub fn run_table(
+    quick: bool,
+    scenes: &[Bench],
+    rows: &[Row],
+    sweep: bool,
+    density: Option<[u32; 2]>,
+) -> Vec<BenchRow> {
+    rows_at::<uvt_core::DefaultPrecision>(quick, scenes, rows, sweep, density)
+}
+
+/// [`run_table`] with the core at the precision named `precision` (one of [`PRECISIONS`] or
+/// "default"); an unknown name is an error naming the valid ones.
+pub fn run_table_at(
+    precision: &str,
+    quick: bool,
+    scenes: &[Bench],
+    rows: &[Row],
+    sweep: bool,
+    density: Option<[u32; 2]>,
+) -> anyhow::Result<Vec<BenchRow>> {
+    with_precision!(precision, P, rows_at::<P>(quick, scenes, rows, sweep, density))
+}
+
+fn rows_at<P: Precision + Sync>(
     quick: bool,
     scenes: &[Bench],
     rows: &[Row],
@@ -186,6 +299,13 @@ pub fn run_table(
             let s = bench(kind, row, quick);
             let pattern = Pattern::new(s.pattern, s.spp, s.seed);
             let core = s.core_tris().expect("built-in scene converts");
+            // The core's inputs on P's grids (the same values at 16 fraction bits).
+            let core_p: Vec<Triangle> = s
+                .tris
+                .iter()
+                .map(|t| t.to_core_with::<P>().expect("built-in scene converts"))
+                .collect();
+            let pattern_p = pattern.with_tuv(P::TUV_FRAC);
             let vp = s.core_viewport();
             let colors = s.colors();
             let o = RunOpts::for_scene(&s, &colors);
@@ -193,7 +313,8 @@ pub fn run_table(
                 STRATEGIES
                     .iter()
                     .filter_map(|n| {
-                        run_strategy(n, vp, &core, &pattern, &RunOpts { tile, ..o.clone() })
+                        let o = RunOpts { tile, ..o.clone() };
+                        run_strategy_at::<P>(n, vp, &core_p, &pattern_p, &o).map(|r| r.0)
                     })
                     .collect()
             };
@@ -223,6 +344,7 @@ pub fn run_table(
             let st = &strategies[0].stats;
             let visible: u64 = st.by_class.iter().sum();
             out.push(BenchRow {
+                precision: precision_name::<P>(),
                 scene: kind,
                 row,
                 triangles: s.tris.len(),
@@ -262,8 +384,9 @@ pub fn table_md(rows: &[BenchRow]) -> String {
     } else {
         String::new()
     };
+    let prec = rows.first().map_or(String::new(), |r| r.precision.clone());
     let mut s = format!(
-        "STE (%), bounds tile 1×1\n\n| Scene | Bbox scan | Laine 2011 | hull | lens-t | hyper | hull+lens-t | best | Laine f64 |{limit_head} avg area px |\n|---|---|---|---|---|---|---|---|---|{}---|\n",
+        "Core precision {prec}\n\nSTE (%), bounds tile 1×1\n\n| Scene | Bbox scan | Laine 2011 | hull | lens-t | hyper | hull+lens-t | best | Laine f64 |{limit_head} avg area px |\n|---|---|---|---|---|---|---|---|---|{}---|\n",
         if with_limit { "---|---|---|" } else { "" }
     );
     let ste = |r: &BenchRow, n: &str| r.strat(n).map_or(0.0, |x| 100.0 * x.ste());

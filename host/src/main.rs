@@ -77,6 +77,11 @@ enum Cmd {
         /// skip the axis-aligned limit (its dense sampling takes most of the run)
         #[arg(long)]
         no_limit: bool,
+        /// the core's configuration: default, exact-16-16-16, bounded-16-16-16-20,
+        /// bounded-16-16-16-22, bounded-16-16-16-24, bounded-12-12-12-24, bounded-12-12-12-26,
+        /// bounded-8-8-8-28 (the f64 reference and the axis-aligned limit stay exact)
+        #[arg(long, default_value = "default")]
+        precision: String,
     },
     /// Image error against run time: every bounds strategy at 1..64 spp against a 256-spp f64
     /// reference; writes converge.md, converge.json, converge.svg.
@@ -305,6 +310,7 @@ fn run(cli: Cli) -> Result<()> {
             row,
             tile_sweep,
             no_limit,
+            precision,
         } => {
             let kinds: Vec<scenes::Bench> = match scene.as_deref() {
                 None => vec![scenes::Bench::Game, scenes::Bench::Dense],
@@ -319,13 +325,14 @@ fn run(cli: Cli) -> Result<()> {
                     .find(|x| x.label().replace(" x", "") == r)
                     .ok_or_else(|| anyhow!("--row: unknown row {r:?} (static, motion, motion2, defocus, defocus2, both, both2)"))?],
             };
-            let rows = bench::run_table(
+            let rows = bench::run_table_at(
+                &precision,
                 quick,
                 &kinds,
                 &rows_sel,
                 tile_sweep,
                 (!no_limit).then_some(bench::ORACLE_DENSITY),
-            );
+            )?;
             say(&bench::table_md(&rows))?;
             if let Some(p) = json {
                 write_atomic(&p, (serde_json::to_string_pretty(&rows)? + "\n").as_bytes())?;
