@@ -276,7 +276,11 @@ pub fn run_table_at(
     sweep: bool,
     density: Option<[u32; 2]>,
 ) -> anyhow::Result<Vec<BenchRow>> {
-    with_precision!(precision, P, rows_at::<P>(quick, scenes, rows, sweep, density))
+    with_precision!(
+        precision,
+        P,
+        rows_at::<P>(quick, scenes, rows, sweep, density)
+    )
 }
 
 fn rows_at<P: Precision + Sync>(

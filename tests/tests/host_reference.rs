@@ -276,3 +276,69 @@ fn axis_aligned_limit_converged_and_below_axis_aligned_strategies() {
         );
     }
 }
+
+/// On the static and "both ×2" benchmark rows of both scenes (quick size) at the bounded
+/// default-to-be (`bounded-16-16-16-20`, the rounded sample test as the truth): every strategy,
+/// widened by its conservative epsilon,
+/// covers exactly the samples the bounding-box scan covers at that precision (a bound that culled
+/// a covered sample would lower the count), and its hull/slab/surface gain survives the epsilon
+/// (each tests fewer samples than Laine 2011 on the rows where it did at the exact precision).
+#[test]
+fn bench_rows_every_strategy_conservative_at_the_bounded_precision() {
+    use uvt_core::BoundedPrecision;
+    let rows = uvt_host::bench::run_table_at(
+        "bounded-16-16-16-20",
+        true,
+        &[scenes::Bench::Game, scenes::Bench::Dense],
+        &[scenes::Row::Static, scenes::Row::Both2],
+        false,
+        None,
+    )
+    .expect("a configuration of PRECISIONS");
+    assert_eq!(rows.len(), 4);
+    for r in &rows {
+        assert_eq!(r.precision, "bounded-16-16-16-20");
+        let s = scenes::bench(r.scene, r.row, true);
+        let pattern = Pattern::new(s.pattern, s.spp, s.seed);
+        let core = s.core_tris().expect("built-in scene converts");
+        let colors = s.colors();
+        let o = RunOpts {
+            tile: 1,
+            ..RunOpts::for_scene(&s, &colors)
+        };
+        let bbox = uvt_host::bench::run_strategy_at::<BoundedPrecision>(
+            "bbox",
+            s.core_viewport(),
+            &core,
+            &pattern,
+            &o,
+        )
+        .expect("bbox strategy")
+        .0;
+        assert!(bbox.stats.samples_covered > 0, "{:?} {:?}", r.scene, r.row);
+        let laine = r.strat("laine2011").expect("laine2011 column");
+        for st in &r.strategies {
+            assert_eq!(
+                st.stats.samples_covered, bbox.stats.samples_covered,
+                "{:?} {:?}: {} covers {} samples at bounded-16-16-16-20, the bbox scan {}",
+                r.scene, r.row, st.name, st.stats.samples_covered, bbox.stats.samples_covered
+            );
+        }
+        // The gain is kept: hull culling on every row, slabs and surfaces on the "both" rows.
+        let mut gains = vec!["hull", "best", "hull+lens-t"];
+        if matches!(r.row, scenes::Row::Both | scenes::Row::Both2) {
+            gains.extend(["lens-t", "hyper"]);
+        }
+        for name in gains {
+            let st = r.strat(name).expect("strategy column");
+            assert!(
+                st.stats.samples_tested < laine.stats.samples_tested,
+                "{:?} {:?}: {name} tests {} samples, Laine 2011 {} (the epsilon took the gain)",
+                r.scene,
+                r.row,
+                st.stats.samples_tested,
+                laine.stats.samples_tested
+            );
+        }
+    }
+}

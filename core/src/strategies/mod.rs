@@ -13,6 +13,9 @@ pub mod hull;
 pub mod hyper;
 pub mod lens_time;
 
+#[cfg(test)]
+mod eps_corners;
+
 use crate::bounds::Laine2011;
 pub use hull::HullCull;
 pub use hyper::Hyper;
