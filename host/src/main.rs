@@ -102,6 +102,13 @@ enum Cmd {
         #[arg(long)]
         replot: Option<PathBuf>,
     },
+    /// Print the derived bit-width table (Markdown) of a configuration; without --config the
+    /// width section of core/README.md (exact-16-16-16 and bounded-16-16-16-20).
+    Widths {
+        /// configuration name: exact-P-T-B or bounded-P-T-B-O (e.g. bounded-16-16-16-20)
+        #[arg(long)]
+        config: Option<String>,
+    },
     /// Stiff and extreme cases: STE, error against f64 and conservativeness per scene file.
     Stress {
         /// folder of scene files
@@ -381,6 +388,21 @@ fn run(cli: Cli) -> Result<()> {
             )?;
             uvt_host::precision::plot_svg(&rows, &out.join("precision.svg"))
                 .with_context(|| format!("writing {}", out.join("precision.svg").display()))?;
+            say(&md)?;
+        }
+        Cmd::Widths { config } => {
+            let mut md = String::new();
+            match config {
+                Some(name) => {
+                    let cfg = uvt_core::widths::Config::parse(&name).ok_or_else(|| {
+                        anyhow!(
+                            "--config {name:?}: not a configuration (exact-P-T-B or bounded-P-T-B-O, P and T in 2..=16, B in 0..=16, O in 20..=32)"
+                        )
+                    })?;
+                    uvt_core::widths::write_markdown(&mut md, &cfg)?;
+                }
+                None => uvt_core::widths::write_readme(&mut md)?,
+            }
             say(&md)?;
         }
         Cmd::Stress { dir } => {
