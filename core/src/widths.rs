@@ -60,7 +60,9 @@ impl Mag {
         if self.m == 0 {
             return 0;
         }
-        u128::BITS.saturating_sub(self.m.leading_zeros()).saturating_add(self.e)
+        u128::BITS
+            .saturating_sub(self.m.leading_zeros())
+            .saturating_add(self.e)
     }
     /// Signed width (two's complement, sign included) of a register holding `[−self, self]`.
     pub const fn bits(self) -> u32 {
@@ -82,7 +84,10 @@ impl Mag {
         match self.m.checked_mul(o.m) {
             Some(m) => Mag { m, e }.norm(),
             // Rounded up to a power of two (only for ≥ 128-bit mantissa products).
-            None => Mag::pow2(e.saturating_add(self.mag_bits().saturating_sub(self.e)).saturating_add(o.mag_bits().saturating_sub(o.e))),
+            None => Mag::pow2(
+                e.saturating_add(self.mag_bits().saturating_sub(self.e))
+                    .saturating_add(o.mag_bits().saturating_sub(o.e)),
+            ),
         }
     }
     /// Sum (exact while the aligned mantissas fit `u128`, else rounded up).
@@ -384,12 +389,26 @@ pub fn table(cfg: &Config) -> Table {
     // ---- setup ----
     let a_c = c.add(c).add(ex);
     let w_e = c.add(ew);
-    t.push(r("setup", "corner `a ± \\|c\\| ± ε_x`", a_c, "i64", "exact", [None, None]));
-    t.push(r("setup", "corner `w ± ε_w`", w_e, "i64", "exact", [None, None]));
+    t.push(r(
+        "setup",
+        "corner `a ± \\|c\\| ± ε_x`",
+        a_c,
+        "i64",
+        "exact",
+        [None, None],
+    ));
+    t.push(r(
+        "setup",
+        "corner `w ± ε_w`",
+        w_e,
+        "i64",
+        "exact",
+        [None, None],
+    ));
     let n_pts = 6 * w_corners;
     let pairs = n_pts * (n_pts - 1) / 2 * 2 * 2; // per side, two sides, two axes
-    // Worst case (no early exit): per pair the cross product takes two a×w, the dot product
-    // one a×a and one w×w.
+                                                 // Worst case (no early exit): per pair the cross product takes two a×w, the dot product
+                                                 // one a×a and one w×w.
     t.push(r(
         "setup",
         "separating-line cross `a_i·w_j − w_i·a_j`",
@@ -405,8 +424,16 @@ pub fn table(cfg: &Config) -> Table {
         "i128",
         "exact",
         two(
-            Mul { a: a_c.bits(), b: a_c.bits(), count: pairs },
-            Mul { a: w_e.bits(), b: w_e.bits(), count: pairs },
+            Mul {
+                a: a_c.bits(),
+                b: a_c.bits(),
+                count: pairs,
+            },
+            Mul {
+                a: w_e.bits(),
+                b: w_e.bits(),
+                count: pairs,
+            },
         ),
     ));
     let aw = c.add(c).add(ex).add(c).add(ew);
@@ -428,7 +455,14 @@ pub fn table(cfg: &Config) -> Table {
         [None, None],
     ));
     let dist = c.add(c).add(c).add(ex).add(ew);
-    t.push(r("setup", "frustum distance `w ± a + \\|c\\| + ε`", dist, "i128", "exact", [None, None]));
+    t.push(r(
+        "setup",
+        "frustum distance `w ± a + \\|c\\| + ε`",
+        dist,
+        "i128",
+        "exact",
+        [None, None],
+    ));
     t.push(r(
         "setup",
         "frustum solve numerator `n·2^16` (0 ≤ n < d ≤ 2·dist)",
@@ -469,7 +503,14 @@ pub fn table(cfg: &Config) -> Table {
 
     // ---- bounds, per triangle (Laine2011::prepare) ----
     let slope = num.shr_floor(1).times(2);
-    t.push(r("bounds/tri", "lens slope `d = m⁺ − m⁻`", slope, "i64", "exact", [None, None]));
+    t.push(r(
+        "bounds/tri",
+        "lens slope `d = m⁺ − m⁻`",
+        slope,
+        "i64",
+        "exact",
+        [None, None],
+    ));
     let recip = Mag::pow2(RECIP_SHIFT);
     t.push(r(
         "bounds/tri",
@@ -479,7 +520,11 @@ pub fn table(cfg: &Config) -> Table {
         "ceil / floor; divide",
         [None, None],
     ));
-    let delta = c.times(2).mul(e).add(c.times(2).mul(e)).add(c.add(ex).add(ew).mul(e));
+    let delta = c
+        .times(2)
+        .mul(e)
+        .add(c.times(2).mul(e))
+        .add(c.add(ex).add(ew).mul(e));
     t.push(r(
         "bounds/tri",
         "dual δ = `(a+w)·E − 2wξ ∓ (\\|c\\| + ε_x + ε_w)·E`",
@@ -525,7 +570,14 @@ pub fn table(cfg: &Config) -> Table {
         None => {
             let d = sub.mul(e).mul(e);
             let gx = sub.mul(e); // |2xs − 256W| ≤ 256W
-            t.push(r("sample", "direction `d`", d, "i64", "exact", mul(gx.bits(), ew13, 3)));
+            t.push(r(
+                "sample",
+                "direction `d`",
+                d,
+                "i64",
+                "exact",
+                mul(gx.bits(), ew13, 3),
+            ));
             t.push(r(
                 "sample",
                 "lerp `q·2^16 + T·(r − q)`",
@@ -544,11 +596,32 @@ pub fn table(cfg: &Config) -> Table {
                 mul(t_op, lerp.bits(), 6),
             ));
             let n = p.mul(p).times(2);
-            t.push(r("sample", "edge normal `n = P×P`", n, "i128", "exact", mul(p.bits(), p.bits(), 18)));
+            t.push(r(
+                "sample",
+                "edge normal `n = P×P`",
+                n,
+                "i128",
+                "exact",
+                mul(p.bits(), p.bits(), 18),
+            ));
             let ev = n.mul(d).times(3);
-            t.push(r("sample", "edge value `E = n·d`", ev, "`Wide` (192)", "exact", mul(n.bits(), d.bits(), 9)));
+            t.push(r(
+                "sample",
+                "edge value `E = n·d`",
+                ev,
+                "`Wide` (192)",
+                "exact",
+                mul(n.bits(), d.bits(), 9),
+            ));
             let det = p.mul(n).times(3);
-            t.push(r("sample", "`det = P0·n0`", det, "`Wide` (192)", "exact", mul(p.bits(), n.bits(), 3)));
+            t.push(r(
+                "sample",
+                "`det = P0·n0`",
+                det,
+                "`Wide` (192)",
+                "exact",
+                mul(p.bits(), n.bits(), 3),
+            ));
             let es = Mag::int((1u128 << DEPTH_EDGE_BITS).saturating_sub(1));
             let dn = es.mul(p).times(3);
             t.push(r(
@@ -578,7 +651,14 @@ pub fn table(cfg: &Config) -> Table {
                 mul(t_op, opw(dq, 16u32.saturating_sub(cfg.pos)), 15),
             ));
             let ft = lerp.add(Mag::pow2(TUV_FRAC - 1)).shr_floor(TUV_FRAC);
-            t.push(r("sample", "1 lerped `f_t = rnd16(…)`", ft, "i64", "nearest, ties up", [None, None]));
+            t.push(r(
+                "sample",
+                "1 lerped `f_t = rnd16(…)`",
+                ft,
+                "i64",
+                "nearest, ties up",
+                [None, None],
+            ));
             t.push(r(
                 "sample",
                 "2 lens product `U·c_t`",
@@ -587,8 +667,20 @@ pub fn table(cfg: &Config) -> Table {
                 "exact",
                 mul(t_op, ft.bits(), 6),
             ));
-            let x = ft.add(one().mul(ft).add(Mag::pow2(TUV_FRAC - 1)).shr_floor(TUV_FRAC));
-            t.push(r("sample", "2 `x = x_t + rnd16(U·c_t)`", x, "i64", "nearest, ties up", [None, None]));
+            let x = ft.add(
+                one()
+                    .mul(ft)
+                    .add(Mag::pow2(TUV_FRAC - 1))
+                    .shr_floor(TUV_FRAC),
+            );
+            t.push(r(
+                "sample",
+                "2 `x = x_t + rnd16(U·c_t)`",
+                x,
+                "i64",
+                "nearest, ties up",
+                [None, None],
+            ));
             let sw = sub.mul(e);
             let aa = sw.mul(x).add(sw.mul(ft));
             t.push(r(
@@ -600,9 +692,23 @@ pub fn table(cfg: &Config) -> Table {
                 mul(sw.bits(), x.bits(), 12),
             ));
             let half = Mag::pow2(s.saturating_sub(1));
-            t.push(r("sample", "4 `A + 2^(S−1)`", aa.add(half), "i64", "exact", [None, None]));
+            t.push(r(
+                "sample",
+                "4 `A + 2^(S−1)`",
+                aa.add(half),
+                "i64",
+                "exact",
+                [None, None],
+            ));
             let ap = aa.add(half).shr_floor(s);
-            t.push(r("sample", "4 rounded offset `a' = rnd_S(A)`", ap, "i64", "nearest, ties up", [None, None]));
+            t.push(r(
+                "sample",
+                "4 rounded offset `a' = rnd_S(A)`",
+                ap,
+                "i64",
+                "nearest, ties up",
+                [None, None],
+            ));
             let ep = ap.mul(ap).times(2);
             t.push(r(
                 "sample",
@@ -670,10 +776,21 @@ pub fn write_markdown<W: fmt::Write>(out: &mut W, cfg: &Config) -> fmt::Result {
         SUBPIXEL_BITS
     )?;
     writeln!(out)?;
-    writeln!(out, "| stage | signal | bound on \\|raw\\| | bits | Rust type | multiplier (count) | note |")?;
+    writeln!(
+        out,
+        "| stage | signal | bound on \\|raw\\| | bits | Rust type | multiplier (count) | note |"
+    )?;
     writeln!(out, "|---|---|---|---|---|---|---|")?;
     for r in table(cfg).rows() {
-        write!(out, "| {} | {} | {} | {} | {} | ", r.stage, r.signal, r.bound, r.bits(), r.ty)?;
+        write!(
+            out,
+            "| {} | {} | {} | {} | {} | ",
+            r.stage,
+            r.signal,
+            r.bound,
+            r.bits(),
+            r.ty
+        )?;
         let mut any = false;
         for m in r.mul.iter().flatten() {
             let sep = if any { ", " } else { "" };
@@ -690,7 +807,10 @@ pub fn write_markdown<W: fmt::Write>(out: &mut W, cfg: &Config) -> fmt::Result {
 
 /// The per-class widths of the exact sample test as Markdown.
 pub fn write_class_markdown<W: fmt::Write>(out: &mut W) -> fmt::Result {
-    writeln!(out, "| class | P frac bits | \\|P\\| | P bits | n bits | E bits | det bits |")?;
+    writeln!(
+        out,
+        "| class | P frac bits | \\|P\\| | P bits | n bits | E bits | det bits |"
+    )?;
     writeln!(out, "|---|---|---|---|---|---|---|")?;
     let e = ext();
     let d = Mag::pow2(SUBPIXEL_BITS).mul(e).mul(e);
@@ -722,7 +842,10 @@ pub fn write_readme<W: fmt::Write>(out: &mut W) -> fmt::Result {
         write_markdown(out, cfg)?;
         writeln!(out)?;
     }
-    writeln!(out, "The exact sample test per class (the table above is class both):")?;
+    writeln!(
+        out,
+        "The exact sample test per class (the table above is class both):"
+    )?;
     writeln!(out)?;
     write_class_markdown(out)
 }
@@ -740,10 +863,14 @@ mod tests {
     #[test]
     fn readme_table_is_generated() {
         let readme = include_str!("../README.md");
-        let begin = readme.find("<!-- widths:begin").expect("begin marker in core/README.md");
+        let begin = readme
+            .find("<!-- widths:begin")
+            .expect("begin marker in core/README.md");
         let body = &readme[begin..];
         let body = &body[body.find('\n').unwrap() + 1..];
-        let end = body.find("<!-- widths:end -->").expect("end marker in core/README.md");
+        let end = body
+            .find("<!-- widths:end -->")
+            .expect("end marker in core/README.md");
         let want = generated();
         assert_eq!(
             body[..end].trim_end(),
@@ -760,7 +887,11 @@ mod tests {
         assert_eq!(Mag::int(3).mul(Mag::pow2(155)).bits(), 158);
         assert_eq!(Mag::int(0).bits(), 1);
         assert_eq!(Mag::int(5).add(Mag::int(3)), Mag::pow2(3));
-        assert_eq!(Mag::pow2(200).add(Mag::int(1)), Mag::pow2(202), "rounded up (both < 2^201)");
+        assert_eq!(
+            Mag::pow2(200).add(Mag::int(1)),
+            Mag::pow2(202),
+            "rounded up (both < 2^201)"
+        );
         assert_eq!(Mag::int(7).shr_floor(1), Mag::int(3));
         assert_eq!(Mag::pow2(40).shr_floor(8), Mag::pow2(32));
         assert_eq!(Mag::int(6).max(Mag::int(5)), Mag::int(6));
