@@ -10,6 +10,7 @@ pub mod bench;
 pub mod budget;
 pub mod compare;
 pub mod converge;
+pub mod cost;
 pub mod frame;
 pub mod heatmap;
 pub mod json;

@@ -109,6 +109,13 @@ enum Cmd {
         #[arg(long)]
         config: Option<String>,
     },
+    /// The hardware multiplier cost model (from the width table): totals per sweep
+    /// configuration and stage, or every multiplier of one configuration.
+    Cost {
+        /// configuration name (exact-P-T-B or bounded-P-T-B-O); omitted: the sweep's totals
+        #[arg(long)]
+        config: Option<String>,
+    },
     /// Stiff and extreme cases: STE, error against f64 and conservativeness per scene file.
     Stress {
         /// folder of scene files
@@ -394,17 +401,20 @@ fn run(cli: Cli) -> Result<()> {
             let mut md = String::new();
             match config {
                 Some(name) => {
-                    let cfg = uvt_core::widths::Config::parse(&name).ok_or_else(|| {
-                        anyhow!(
-                            "--config {name:?}: not a configuration (exact-P-T-B or bounded-P-T-B-O, P and T in 2..=16, B in 0..=16, O in 20..=32)"
-                        )
-                    })?;
+                    let cfg = parse_config(&name)?;
                     uvt_core::widths::write_markdown(&mut md, &cfg)?;
                 }
                 None => uvt_core::widths::write_readme(&mut md)?,
             }
             say(&md)?;
         }
+        Cmd::Cost { config } => match config {
+            Some(name) => {
+                let cfg = parse_config(&name)?;
+                say(&uvt_host::cost::cost_md(&cfg))?;
+            }
+            None => say(&uvt_host::cost::summary_md())?,
+        },
         Cmd::Stress { dir } => {
             let scenes = uvt_host::precision::stress_scenes(&dir)?;
             let rows: Vec<_> = scenes
@@ -473,5 +483,14 @@ fn write_atomic(path: &std::path::Path, bytes: &[u8]) -> Result<()> {
     std::fs::rename(&tmp, path).map_err(|e| {
         let _ = std::fs::remove_file(&tmp);
         anyhow!("cannot write {}: {e}", path.display())
+    })
+}
+
+/// A configuration name of `--config`, or an error naming it.
+fn parse_config(name: &str) -> anyhow::Result<uvt_core::widths::Config> {
+    uvt_core::widths::Config::parse(name).ok_or_else(|| {
+        anyhow!(
+            "--config {name:?}: not a configuration (exact-P-T-B or bounded-P-T-B-O; P and T in 2..=16, B in 0..=16, O in 20..=32)"
+        )
     })
 }
