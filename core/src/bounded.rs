@@ -14,20 +14,26 @@
 //! | 4 grid | `a' = rnd_S(A)`, `b' = rnd_S(B)` | nearest, ties up, 2^(S−1) | result \|a'\| < 2^(50−S) ≤ 2^30 (i32) |
 //! | 5 edges | `E'_k = a'_{k+1}·b'_{k+2} − a'_{k+2}·b'_{k+1}` | none | 32 × 32 → i64, \|E'\| < 2^61 |
 //! | 6 orientation | all `w_k > 0`: the common sign of the `E'_k`, no product; else `sign(Σ E'_k·w_k)` | none | **rare path** 64 × 32 → i128, \|Σ\| < 2^92 |
-//! | 7 fill rule (`E'_k = 0`) | `nx = b'_{k+1}w_{k+2} − w_{k+1}b'_{k+2}`, `ny = w_{k+1}a'_{k+2} − a'_{k+1}w_{k+2}` | none | 32 × 32 → i64 |
-//! | 8 depth | `E'' = floor(E'/2^sh)` with \|E''\| < 2^31, `num = Σ E''·z`, `den = Σ E''·w` | floor | 32 × 30 → i64 sums < 2^62; quotient `floor(num·2^24/den)`: an 87-by-63-bit divide (i128) |
+//! | 7 fill rule (`E'_k = 0`) | tie key `κ = cmp((b', a', w)_{k+1}, (b', a', w)_{k+2})` (lexicographic, −1/0/1); the sample is inside edge k iff `s·κ > 0` | none | comparators only, no multiplier |
+//! | 8 depth | `E'' = floor(E'/2^sh)` with \|E''\| < 2^24 (`sh` = bit length of max\|E'\| − 24, ≥ 0), `num = Σ E''·z`, `den = Σ E''·w` | floor | 25 × 30 → i64 sums < 2^55; quotient `floor(num·2^24/den)` saturated to the depth range: a 79-by-56-bit divide (i128) |
 //!
 //! `w` and `z` here are the step-1 values (exact for static and defocus-only triangles).
 //!
 //! **What the test decides.** With `x' = (a'·2^S + (2xs − 256W)·w)/(256W)` and `y'` likewise,
 //! `E'` and `det' = Σ E'_k·w_k` are positive multiples of the exact test's `E_k` and `det` for
 //! the triangle `P'_k = (x'_k, y'_k, w_k)` (the translation by the sample and the common scale
-//! cancel: note §1), and `(nx, ny)` are positive multiples of the first two components of
-//! `P'_{k+1} × P'_{k+2}`, so coverage and fill rule are **exactly** the exact test's on `P'`.
-//! Hence:
+//! cancel: note §1), so off the edges (every `E'_k ≠ 0`) coverage is **exactly** the exact
+//! test's on `P'`. A sample exactly on a rounded edge (`E'_k = 0`) is decided by a tie key that
+//! needs no multiplier (step 7) instead of `sample.rs`'s edge-normal rule, which would cost four
+//! 32 × 30-bit products per edge in hardware for a case that decides only samples at distance 0
+//! from an edge. Hence:
 //! - **Watertight by construction.** Every rounding is a function of the vertex's own data and
 //!   the sample, so a vertex shared by two triangles has the same `P'`; shared edges get exact
-//!   negatives and the fill rule splits ties as in `sample.rs`.
+//!   negatives. The tie key is antisymmetric, `κ(i, j) = −κ(j, i)`, so on a shared edge seen as
+//!   `(i, j)` by one triangle and `(j, i)` by its neighbour of the same orientation `s`, exactly
+//!   one of `s·κ(i, j) > 0` and `s·κ(j, i) > 0` holds — the sample goes to exactly one of them.
+//!   `κ = 0` only when the two vertices coincide as `(a', b', w)`; then every `E'` of the
+//!   triangle is 0 at this sample, `det' = 0`, and the sample is covered by neither.
 //! - **Perturbation bound** ([`Eps`]). `|x' − x| ≤ k/2 + 2^(S−1)/(256W)` raw, where `x` is the exact
 //!   position at (t, u) and `k` counts the half-LSB roundings on the way (lerp of x; lerp of c,
 //!   times \|U\| ≤ 1; the lens product): k = 0 static, 1 motion, 1 defocus, 3 both. Same for y
@@ -156,31 +162,32 @@ fn rnd_grid(v: i64, half: i64, s: u32) -> i64 {
     (v + half).checked_shr(s).unwrap_or(0)
 }
 
-/// Fill-rule decision on `E'_k = 0` from the rounded offsets and w (step 7), for edge k with
-/// vertices `i = k+1`, `j = k+2`.
-// |a'|, |b'| < 2^30, |w| ≤ 2^29: each product < 2^59, the difference < 2^60.
+/// Fill-rule decision on `E'_k = 0` (step 7), for edge k with vertices `i = k+1`, `j = k+2`:
+/// inside iff `s·κ > 0` with the antisymmetric tie key `κ = cmp((b'_i, a'_i, w_i), (b'_j, a'_j,
+/// w_j))` (lexicographic). Comparators only; see the module docs for why it is watertight.
 #[inline]
-#[allow(clippy::arithmetic_side_effects)]
 fn fill_rule(ab: &[(i64, i64); 3], w: &[i64; 3], i: usize, j: usize, s: i64) -> bool {
     let (Some(&(ai, bi)), Some(&(aj, bj)), Some(&wi), Some(&wj)) =
         (ab.get(i), ab.get(j), w.get(i), w.get(j))
     else {
         return false;
     };
-    let nx = s * (bi * wj - wi * bj);
-    let ny = s * (wi * aj - ai * wj);
-    nx > 0 || (nx == 0 && ny > 0)
+    match (bi, ai, wi).cmp(&(bj, aj, wj)) {
+        core::cmp::Ordering::Greater => s > 0,
+        core::cmp::Ordering::Less => s < 0,
+        core::cmp::Ordering::Equal => false,
+    }
 }
 
 /// Depth z/w from the rounded edge values (step 8; rounding as in `sample.rs`: floor).
-// After the shift |e''| < 2^31, |w|, |z| ≤ 2^29: products < 2^60, sums of three < 2^62 (i64);
-// num·2^24 < 2^86 and den > 0 at the division (i128).
+// After the shift |e''| < 2^24, |w|, |z| ≤ 2^29: products < 2^53, sums of three < 2^55 (i64);
+// num·2^24 < 2^79 and den > 0 at the division (i128).
 #[allow(clippy::arithmetic_side_effects)]
 fn depth(e: &[i64; 3], wz: &[(i64, i64); 3], sign: i64) -> i32 {
     let big = e.iter().map(|x| x.unsigned_abs()).max().unwrap_or(0);
     let len = u64::BITS - big.leading_zeros();
-    // Floor shift by sh ≤ 30 (|E'| < 2^61): an arithmetic right shift, exact floor, cannot fail.
-    let sh = len.saturating_sub(31);
+    // Floor shift by sh ≤ 37 (|E'| < 2^61): an arithmetic right shift, exact floor, cannot fail.
+    let sh = len.saturating_sub(24);
     let (mut num, mut den) = (0i64, 0i64);
     for (ek, &(w, z)) in e.iter().zip(wz.iter()) {
         let ek = ek.checked_shr(sh).unwrap_or(0);
