@@ -24,8 +24,8 @@ use crate::input::Viewport;
 use crate::setup::Class;
 
 /// Significant bits (magnitude) the bounded test keeps of each edge value for the depth
-/// interpolation: `|E''| < 2^31` (`bounded.rs`, step 8).
-pub const BOUNDED_DEPTH_EDGE_BITS: u32 = 31;
+/// interpolation: `|E''| < 2^24` (`bounded.rs`, step 8).
+pub const BOUNDED_DEPTH_EDGE_BITS: u32 = 24;
 
 /// A non-negative magnitude bound `m·2^e` (exact; `m` odd or zero after normalisation).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -726,19 +726,11 @@ pub fn table(cfg: &Config) -> Table {
                 "exact",
                 mul(ep.bits(), ft.bits(), 3),
             ));
-            t.push(r(
-                "sample",
-                "7 fill rule `b'·w − w·b'`",
-                ap.mul(ft).times(2),
-                "i64",
-                "exact",
-                mul(ap.bits(), ft.bits(), 12),
-            ));
             let es = Mag::int((1u128 << BOUNDED_DEPTH_EDGE_BITS).saturating_sub(1));
             let dn = es.mul(ft).times(3);
             t.push(r(
                 "sample",
-                "8 depth `Σ E''·z`, `Σ E''·w` (\\|E''\\| < 2^31)",
+                "8 depth `Σ E''·z`, `Σ E''·w` (\\|E''\\| < 2^24)",
                 dn,
                 "i64",
                 "floor",
