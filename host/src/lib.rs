@@ -18,6 +18,7 @@ pub mod mesh;
 pub mod oracle;
 pub mod pattern;
 pub mod precision;
+pub mod precision_cost;
 pub mod reference;
 pub mod render;
 pub mod report;

@@ -101,6 +101,17 @@ enum Cmd {
         /// do not sweep: redraw the table and plot from a precision.json
         #[arg(long)]
         replot: Option<PathBuf>,
+        /// shrink the benchmark scenes by this factor beyond the quick size (default: 2 with
+        /// --quick, 1 without; a larger factor gives a tiny run)
+        #[arg(long)]
+        shrink: Option<u16>,
+        /// Cortex-M4F instruction counts per configuration (`bash core/examples/m4_report.sh
+        /// --sweep` writes it); its columns show "–" when the file does not exist
+        #[arg(long, default_value = "host/report/m4.json")]
+        m4: PathBuf,
+        /// synthesis results (vectors/rtl's synthesis script writes it); optional
+        #[arg(long, default_value = "host/report/synth.json")]
+        synth: PathBuf,
     },
     /// Print the derived bit-width table (Markdown) of a configuration; without --config the
     /// width section of core/README.md (exact-16-16-16 and bounded-16-16-16-20).
@@ -360,22 +371,35 @@ fn run(cli: Cli) -> Result<()> {
                 say(&format!("wrote {}\n", f.display()))?;
             }
         }
-        Cmd::Precision { quick, out, replot } => {
+        Cmd::Precision {
+            quick,
+            out,
+            replot,
+            shrink,
+            m4,
+            synth,
+        } => {
+            if shrink == Some(0) {
+                bail!("--shrink must be at least 1");
+            }
             let sw = if quick {
                 uvt_host::precision::Sweep {
+                    configs: uvt_host::precision::CONFIGS.to_vec(),
                     scenes: vec![scenes::Bench::Game, scenes::Bench::Dense],
                     rows: vec![scenes::Row::Static, scenes::Row::Both],
-                    tiles: vec![1, 2, 4, 8],
-                    shrink: 2,
+                    tiles: vec![1, 4],
+                    shrink: shrink.unwrap_or(2),
                 }
             } else {
                 uvt_host::precision::Sweep {
+                    configs: uvt_host::precision::CONFIGS.to_vec(),
                     scenes: vec![scenes::Bench::Game, scenes::Bench::Dense],
                     rows: scenes::Row::ALL.to_vec(),
                     tiles: vec![1, 2, 4, 8],
-                    shrink: 1,
+                    shrink: shrink.unwrap_or(1),
                 }
             };
+            let costs = uvt_host::precision_cost::Costs::load(&m4, &synth)?;
             render::check_out_dir(&out)?;
             let rows: Vec<uvt_host::precision::PrecRow> = match replot {
                 Some(p) => serde_json::from_str(
@@ -385,7 +409,7 @@ fn run(cli: Cli) -> Result<()> {
                 .map_err(|e| anyhow!("{}: not a precision.json: {e}", p.display()))?,
                 None => uvt_host::precision::sweep(&sw),
             };
-            let md = uvt_host::precision::table_md(&rows);
+            let md = uvt_host::precision::table_md(&rows, &costs);
             std::fs::create_dir_all(&out)
                 .with_context(|| format!("cannot create {}", out.display()))?;
             write_atomic(&out.join("precision.md"), md.as_bytes())?;
@@ -393,7 +417,7 @@ fn run(cli: Cli) -> Result<()> {
                 &out.join("precision.json"),
                 (serde_json::to_string_pretty(&rows)? + "\n").as_bytes(),
             )?;
-            uvt_host::precision::plot_svg(&rows, &out.join("precision.svg"))
+            uvt_host::precision_cost::plot_svg(&rows, &costs, &out.join("precision.svg"))
                 .with_context(|| format!("writing {}", out.join("precision.svg").display()))?;
             say(&md)?;
         }
