@@ -64,7 +64,9 @@ pub fn d_q_px(off: Option<u32>, w: u16, h: u16) -> f64 {
 #[derive(Clone, Debug, Default, Serialize, serde::Deserialize)]
 #[serde(default)]
 pub struct PrecRow {
-    /// configuration name (`exact-16-16-16`, `bounded-16-16-16-20`, …)
+    /// configuration name (`exact-16-16-16`, `bounded-16-16-16-20`, …); an old report's
+    /// `[POS, TUV, BND]` reads as `exact-POS-TUV-BND` (the exact test in the wide containers)
+    #[serde(deserialize_with = "config_name")]
     pub config: String,
     /// bounds-tile size
     pub tile: u8,
@@ -120,6 +122,20 @@ pub struct PrecRow {
     depth_n: u64,
     #[serde(skip)]
     counts: [u64; 5],
+}
+
+/// A configuration name, or an old report's `[POS, TUV, BND]` as `exact-POS-TUV-BND`.
+fn config_name<'de, D: serde::Deserializer<'de>>(d: D) -> Result<String, D::Error> {
+    use serde::Deserialize;
+    match serde_json::Value::deserialize(d)? {
+        serde_json::Value::String(s) => Ok(s),
+        serde_json::Value::Array(a) if a.len() == 3 && a.iter().all(|x| x.is_u64()) => {
+            Ok(format!("exact-{}-{}-{}", a[0], a[1], a[2]))
+        }
+        v => Err(serde::de::Error::custom(format!(
+            "config: expected a name or [POS, TUV, BND], found {v}"
+        ))),
+    }
 }
 
 /// Which configurations, scenes and rows a sweep covers.
