@@ -9,8 +9,84 @@
 //! tick is 40 instructions (checked on every run by the calibration line): the cost lines report
 //! instructions per stage call. It also paints the stack and reports its peak use. On the host the
 //! same program prints the same checksum and counters, and the cost in nanoseconds.
+//!
+//! **Per configuration.** `UVT_M4_PREC` at build time (`option_env!`) names one configuration of
+//! the precision sweep (`exact-16-16-16`, `bounded-16-16-16-20`, …, `bounded-8-8-8-28`; default:
+//! the core's `DefaultPrecision`); the program then also prints `prec NAME` and the cost lines
+//! `setup_sel`, `bounds_sel`, `sample_sel` of that configuration (one instantiation per build;
+//! an unknown name fails the build). `m4_report.sh --sweep` builds and runs every one.
 #![cfg_attr(target_os = "none", no_std)]
 #![cfg_attr(target_os = "none", no_main)]
+
+/// The precision sweep's configurations (names of `uvt precision`), in `SEL` order.
+const NAMES: [&str; 7] = [
+    "exact-16-16-16",
+    "bounded-16-16-16-20",
+    "bounded-16-16-16-22",
+    "bounded-16-16-16-24",
+    "bounded-12-12-12-24",
+    "bounded-12-12-12-26",
+    "bounded-8-8-8-28",
+];
+
+/// The default configuration's name: the core's `DefaultPrecision` (exact or the bounded
+/// candidate).
+const DEFAULT: &str = match <uvt_core::DefaultPrecision as uvt_core::Precision>::OFFSET_SHIFT {
+    None => NAMES[0],
+    Some(_) => NAMES[1],
+};
+
+/// The configuration chosen at build time.
+const PREC: &str = match option_env!("UVT_M4_PREC") {
+    Some(s) => s,
+    None => DEFAULT,
+};
+
+const fn same(a: &str, b: &str) -> bool {
+    let (a, b) = (a.as_bytes(), b.as_bytes());
+    if a.len() != b.len() {
+        return false;
+    }
+    let mut i = 0;
+    while i < a.len() {
+        if a[i] != b[i] {
+            return false;
+        }
+        i += 1;
+    }
+    true
+}
+
+/// Index of `PREC` in `NAMES`; an unknown name is a build error.
+const SEL: usize = {
+    let mut i = 0;
+    while i < NAMES.len() && !same(NAMES[i], PREC) {
+        i += 1;
+    }
+    assert!(
+        i < NAMES.len(),
+        "UVT_M4_PREC must name a configuration of the sweep"
+    );
+    i
+};
+
+/// `f::<P>(reps)` for the selected configuration (a constant match: one instantiation kept).
+macro_rules! with_sel {
+    ($f:ident, $reps:expr) => {{
+        use uvt_core::demo::cost::$f as f;
+        use uvt_core::{Bounded, Prec};
+        match crate::SEL {
+            0 => f::<Prec<16, 16, 16>>($reps),
+            1 => f::<Bounded<16, 16, 16, 20>>($reps),
+            2 => f::<Bounded<16, 16, 16, 22>>($reps),
+            3 => f::<Bounded<16, 16, 16, 24>>($reps),
+            4 => f::<Bounded<12, 12, 12, 24>>($reps),
+            5 => f::<Bounded<12, 12, 12, 26>>($reps),
+            _ => f::<Bounded<8, 8, 8, 28>>($reps),
+        }
+        .unwrap_or(0)
+    }};
+}
 
 /// Print the checksum and counters lines (identical format on target and host).
 macro_rules! report {
@@ -103,25 +179,37 @@ mod target {
         }
         hprintln!("stack_peak_bytes {}", peak());
         hprintln!("calibration delay(4000000) insn={}", cal);
-        let (c, i) = ticks(&mut cp.SYST, || demo::cost::setup_all(20).unwrap_or(0));
-        hprintln!("cost setup calls={} insn={}", c, i);
-        let (c, i) = ticks(&mut cp.SYST, || demo::cost::bounds_all(5).unwrap_or(0));
-        hprintln!("cost bounds calls={} insn={}", c, i);
-        let (c, i) = ticks(&mut cp.SYST, || demo::cost::samples_all(2).unwrap_or(0));
-        hprintln!("cost sample calls={} insn={}", c, i);
-        type B = uvt_core::BoundedPrecision;
-        let (c, i) = ticks(&mut cp.SYST, || {
-            demo::cost::setup_all_with::<B>(20).unwrap_or(0)
-        });
-        hprintln!("cost setup_bounded calls={} insn={}", c, i);
-        let (c, i) = ticks(&mut cp.SYST, || {
-            demo::cost::bounds_all_with::<B>(5).unwrap_or(0)
-        });
-        hprintln!("cost bounds_bounded calls={} insn={}", c, i);
-        let (c, i) = ticks(&mut cp.SYST, || {
-            demo::cost::samples_all_with::<B>(2).unwrap_or(0)
-        });
-        hprintln!("cost sample_bounded calls={} insn={}", c, i);
+        // The fixed measurements (the README's table) only in the default build: a build for
+        // one configuration measures that configuration alone, so every configuration's figures
+        // come from the same code shape (more instantiations change the inlining and the count).
+        if option_env!("UVT_M4_PREC").is_none() {
+            let (c, i) = ticks(&mut cp.SYST, || demo::cost::setup_all(20).unwrap_or(0));
+            hprintln!("cost setup calls={} insn={}", c, i);
+            let (c, i) = ticks(&mut cp.SYST, || demo::cost::bounds_all(5).unwrap_or(0));
+            hprintln!("cost bounds calls={} insn={}", c, i);
+            let (c, i) = ticks(&mut cp.SYST, || demo::cost::samples_all(2).unwrap_or(0));
+            hprintln!("cost sample calls={} insn={}", c, i);
+            type B = uvt_core::BoundedPrecision;
+            let (c, i) = ticks(&mut cp.SYST, || {
+                demo::cost::setup_all_with::<B>(20).unwrap_or(0)
+            });
+            hprintln!("cost setup_bounded calls={} insn={}", c, i);
+            let (c, i) = ticks(&mut cp.SYST, || {
+                demo::cost::bounds_all_with::<B>(5).unwrap_or(0)
+            });
+            hprintln!("cost bounds_bounded calls={} insn={}", c, i);
+            let (c, i) = ticks(&mut cp.SYST, || {
+                demo::cost::samples_all_with::<B>(2).unwrap_or(0)
+            });
+            hprintln!("cost sample_bounded calls={} insn={}", c, i);
+        }
+        hprintln!("prec {}", crate::PREC);
+        let (c, i) = ticks(&mut cp.SYST, || with_sel!(setup_all_with, 20));
+        hprintln!("cost setup_sel calls={} insn={}", c, i);
+        let (c, i) = ticks(&mut cp.SYST, || with_sel!(bounds_all_with, 5));
+        hprintln!("cost bounds_sel calls={} insn={}", c, i);
+        let (c, i) = ticks(&mut cp.SYST, || with_sel!(samples_all_with, 2));
+        hprintln!("cost sample_sel calls={} insn={}", c, i);
         debug::exit(debug::EXIT_SUCCESS);
         loop {
             cortex_m::asm::wfi();
@@ -153,17 +241,23 @@ fn main() {
         let calls = f();
         println!("cost {name} calls={calls} ns={}", t.elapsed().as_nanos());
     };
-    time("setup", &|| demo::cost::setup_all(2000).unwrap_or(0));
-    time("bounds", &|| demo::cost::bounds_all(500).unwrap_or(0));
-    time("sample", &|| demo::cost::samples_all(200).unwrap_or(0));
-    type B = uvt_core::BoundedPrecision;
-    time("setup_bounded", &|| {
-        demo::cost::setup_all_with::<B>(2000).unwrap_or(0)
-    });
-    time("bounds_bounded", &|| {
-        demo::cost::bounds_all_with::<B>(500).unwrap_or(0)
-    });
-    time("sample_bounded", &|| {
-        demo::cost::samples_all_with::<B>(200).unwrap_or(0)
-    });
+    if option_env!("UVT_M4_PREC").is_none() {
+        time("setup", &|| demo::cost::setup_all(2000).unwrap_or(0));
+        time("bounds", &|| demo::cost::bounds_all(500).unwrap_or(0));
+        time("sample", &|| demo::cost::samples_all(200).unwrap_or(0));
+        type B = uvt_core::BoundedPrecision;
+        time("setup_bounded", &|| {
+            demo::cost::setup_all_with::<B>(2000).unwrap_or(0)
+        });
+        time("bounds_bounded", &|| {
+            demo::cost::bounds_all_with::<B>(500).unwrap_or(0)
+        });
+        time("sample_bounded", &|| {
+            demo::cost::samples_all_with::<B>(200).unwrap_or(0)
+        });
+    }
+    println!("prec {PREC}");
+    time("setup_sel", &|| with_sel!(setup_all_with, 2000));
+    time("bounds_sel", &|| with_sel!(bounds_all_with, 500));
+    time("sample_sel", &|| with_sel!(samples_all_with, 200));
 }

@@ -4,9 +4,49 @@
 # mps2-an385) — beside the same stages on the host. Prints Markdown tables (the README's Cortex-M
 # section). Needs: rustup targets thumbv7em-none-eabihf and thumbv7m-none-eabi, qemu-system-arm,
 # readelf (binutils). Honours CARGO_TARGET_DIR.
+#
+# `m4_report.sh --sweep [OUT.json]` instead builds m4_render once per configuration of the
+# precision sweep (UVT_M4_PREC=NAME), runs each on the Cortex-M4F under QEMU and on the host, and
+# writes instructions (and host ns) per setup / tile bounds / sample test to OUT.json (default
+# host/report/m4.json), which `uvt precision` reads.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 tdir=${CARGO_TARGET_DIR:-target}
+if [[ "${1:-}" == "--sweep" ]]; then
+  json=${2:-host/report/m4.json}
+  names=(exact-16-16-16 bounded-16-16-16-20 bounded-16-16-16-22 bounded-16-16-16-24
+         bounded-12-12-12-24 bounded-12-12-12-26 bounded-8-8-8-28)
+  per() { echo "$1" | awk -v s="$2" '$1=="cost" && $2==s {split($3,a,"="); split($4,b,"="); printf "%.'"$3"'f", b[2]/a[2]}'; }
+  rows=()
+  for n in "${names[@]}"; do
+    echo "m4_report --sweep: $n" >&2
+    UVT_M4_PREC=$n cargo build -q --release -p uvt-core --example m4_render --target thumbv7em-none-eabihf
+    m4=$(timeout 120 qemu-system-arm -machine mps2-an386 -cpu cortex-m4 -nographic -monitor none \
+        -semihosting-config enable=on,target=native -icount shift=0 \
+        -kernel "$tdir/thumbv7em-none-eabihf/release/examples/m4_render")
+    host=$(UVT_M4_PREC=$n cargo run -q --release -p uvt-core --example m4_render)
+    got=$(echo "$m4" | awk '$1 == "prec" {print $2}')
+    [[ "$got" == "$n" ]] || { echo "m4_render built for '$got', expected '$n'" >&2; exit 1; }
+    cal=$(echo "$m4" | awk -F= '/^calibration/ {print $2}')
+    rows+=("    {\"name\": \"$n\", \"setup\": $(per "$m4" setup_sel 0), \"bounds\": $(per "$m4" bounds_sel 0), \"sample\": $(per "$m4" sample_sel 0), \"host_ns\": [$(per "$host" setup_sel 1), $(per "$host" bounds_sel 1), $(per "$host" sample_sel 1)], \"calibration\": $cal}")
+  done
+  tmp=$(mktemp "$json.XXXX")
+  {
+    echo "{"
+    echo "  \"command\": \"bash core/examples/m4_report.sh --sweep\","
+    echo "  \"target\": \"Cortex-M4F (thumbv7em-none-eabihf, QEMU mps2-an386, -icount shift=0; instructions per call on the demo scene; calibration 8000002 expected)\","
+    echo "  \"configs\": ["
+    for i in "${!rows[@]}"; do
+      sep=","; [[ $i -eq $((${#rows[@]} - 1)) ]] && sep=""
+      echo "${rows[$i]}$sep"
+    done
+    echo "  ]"
+    echo "}"
+  } > "$tmp"
+  mv "$tmp" "$json"
+  cat "$json"
+  exit 0
+fi
 # profile: name target machine cpu
 profiles=("M4F thumbv7em-none-eabihf mps2-an386 cortex-m4" "M3 thumbv7m-none-eabi mps2-an385 cortex-m3")
 host=$(cargo run -q --release -p uvt-core --example m4_render)

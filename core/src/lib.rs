@@ -46,6 +46,9 @@ pub mod stats;
 pub mod strategies;
 pub mod tile;
 pub mod wide;
+#[cfg(test)]
+mod width_corners;
+pub mod widths;
 
 pub use bounded::{bounded_eval, bounded_test, BoundedEval, Eps};
 pub use bounds::{BboxScan, BoundsStrategy, Laine2011, TileBounds, UvtBox};

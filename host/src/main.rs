@@ -106,6 +106,31 @@ enum Cmd {
         /// do not sweep: redraw the table and plot from a precision.json
         #[arg(long)]
         replot: Option<PathBuf>,
+        /// shrink the benchmark scenes by this factor beyond the quick size (default: 2 with
+        /// --quick, 1 without; a larger factor gives a tiny run)
+        #[arg(long)]
+        shrink: Option<u16>,
+        /// Cortex-M4F instruction counts per configuration (`bash core/examples/m4_report.sh
+        /// --sweep` writes it); its columns show "–" when the file does not exist
+        #[arg(long, default_value = "host/report/m4.json")]
+        m4: PathBuf,
+        /// synthesis results (vectors/rtl's synthesis script writes it); optional
+        #[arg(long, default_value = "host/report/synth.json")]
+        synth: PathBuf,
+    },
+    /// Print the derived bit-width table (Markdown) of a configuration; without --config the
+    /// width section of core/README.md (exact-16-16-16 and bounded-16-16-16-20).
+    Widths {
+        /// configuration name: exact-P-T-B or bounded-P-T-B-O (e.g. bounded-16-16-16-20)
+        #[arg(long)]
+        config: Option<String>,
+    },
+    /// The hardware multiplier cost model (from the width table): totals per sweep
+    /// configuration and stage, or every multiplier of one configuration.
+    Cost {
+        /// configuration name (exact-P-T-B or bounded-P-T-B-O); omitted: the sweep's totals
+        #[arg(long)]
+        config: Option<String>,
     },
     /// Stiff and extreme cases: STE, error against f64 and conservativeness per scene file.
     Stress {
@@ -353,22 +378,35 @@ fn run(cli: Cli) -> Result<()> {
                 say(&format!("wrote {}\n", f.display()))?;
             }
         }
-        Cmd::Precision { quick, out, replot } => {
+        Cmd::Precision {
+            quick,
+            out,
+            replot,
+            shrink,
+            m4,
+            synth,
+        } => {
+            if shrink == Some(0) {
+                bail!("--shrink must be at least 1");
+            }
             let sw = if quick {
                 uvt_host::precision::Sweep {
+                    configs: uvt_host::precision::CONFIGS.to_vec(),
                     scenes: vec![scenes::Bench::Game, scenes::Bench::Dense],
                     rows: vec![scenes::Row::Static, scenes::Row::Both],
-                    tiles: vec![1, 2, 4, 8],
-                    shrink: 2,
+                    tiles: vec![1, 4],
+                    shrink: shrink.unwrap_or(2),
                 }
             } else {
                 uvt_host::precision::Sweep {
+                    configs: uvt_host::precision::CONFIGS.to_vec(),
                     scenes: vec![scenes::Bench::Game, scenes::Bench::Dense],
                     rows: scenes::Row::ALL.to_vec(),
                     tiles: vec![1, 2, 4, 8],
-                    shrink: 1,
+                    shrink: shrink.unwrap_or(1),
                 }
             };
+            let costs = uvt_host::precision_cost::Costs::load(&m4, &synth)?;
             render::check_out_dir(&out)?;
             let rows: Vec<uvt_host::precision::PrecRow> = match replot {
                 Some(p) => serde_json::from_str(
@@ -378,7 +416,7 @@ fn run(cli: Cli) -> Result<()> {
                 .map_err(|e| anyhow!("{}: not a precision.json: {e}", p.display()))?,
                 None => uvt_host::precision::sweep(&sw),
             };
-            let md = uvt_host::precision::table_md(&rows);
+            let md = uvt_host::precision::table_md(&rows, &costs);
             std::fs::create_dir_all(&out)
                 .with_context(|| format!("cannot create {}", out.display()))?;
             write_atomic(&out.join("precision.md"), md.as_bytes())?;
@@ -386,10 +424,28 @@ fn run(cli: Cli) -> Result<()> {
                 &out.join("precision.json"),
                 (serde_json::to_string_pretty(&rows)? + "\n").as_bytes(),
             )?;
-            uvt_host::precision::plot_svg(&rows, &out.join("precision.svg"))
+            uvt_host::precision_cost::plot_svg(&rows, &costs, &out.join("precision.svg"))
                 .with_context(|| format!("writing {}", out.join("precision.svg").display()))?;
             say(&md)?;
         }
+        Cmd::Widths { config } => {
+            let mut md = String::new();
+            match config {
+                Some(name) => {
+                    let cfg = parse_config(&name)?;
+                    uvt_core::widths::write_markdown(&mut md, &cfg)?;
+                }
+                None => uvt_core::widths::write_readme(&mut md)?,
+            }
+            say(&md)?;
+        }
+        Cmd::Cost { config } => match config {
+            Some(name) => {
+                let cfg = parse_config(&name)?;
+                say(&uvt_host::cost::cost_md(&cfg))?;
+            }
+            None => say(&uvt_host::cost::summary_md())?,
+        },
         Cmd::Stress { dir } => {
             let scenes = uvt_host::precision::stress_scenes(&dir)?;
             let rows: Vec<_> = scenes
@@ -458,5 +514,14 @@ fn write_atomic(path: &std::path::Path, bytes: &[u8]) -> Result<()> {
     std::fs::rename(&tmp, path).map_err(|e| {
         let _ = std::fs::remove_file(&tmp);
         anyhow!("cannot write {}: {e}", path.display())
+    })
+}
+
+/// A configuration name of `--config`, or an error naming it.
+fn parse_config(name: &str) -> anyhow::Result<uvt_core::widths::Config> {
+    uvt_core::widths::Config::parse(name).ok_or_else(|| {
+        anyhow!(
+            "--config {name:?}: not a configuration (exact-P-T-B or bounded-P-T-B-O; P and T in 2..=16, B in 0..=16, O in 20..=32)"
+        )
     })
 }

@@ -2,9 +2,22 @@
 //! operation counts, decision errors, bound slack, STE loss, depth error, conservativeness, and
 //! the conservative epsilon — over the benchmark scenes and every bounds-tile size.
 //!
-//! Per configuration `Prec<POS, TUV, BND>` the scene's exact f64 triangles are rounded to the
-//! position grid, the pattern's t/u/v to the t/u/v grid (sub-pixel stays 8 bits), and the core
-//! runs at that precision. The reference always runs on the exact values.
+//! Per configuration of [`CONFIGS`] (`exact-P-T-B` = `Prec<P, T, B>`, the exact sample test;
+//! `bounded-P-T-B-O` = `Bounded<P, T, B, O>`, the hardware-width test of `core/src/bounded.rs`)
+//! the scene's exact f64 triangles are rounded to the position grid, the pattern's t/u/v to the
+//! t/u/v grid (sub-pixel stays 8 bits), and the core runs at that precision. The reference always
+//! runs on the exact values.
+//!
+//! **d_q** (the documented distance within which a decision may differ because of the bounded
+//! datapath's rounding): the bounded test is exact on vertices perturbed by at most
+//! `k/2 + 2^(O−1)/(256·E)` raw in x (E = W) and y (E = H) and `1/2` raw in w (`bounded.rs`,
+//! class both: k = 3). A vertex in view (|x/w| ≤ 1) at depth w therefore moves on screen by at
+//! most `(k/2 + 1/2 + 2^(O−1)/(256·E))·E/(2^17·w)` px = `(2E + 2^(O−9))/(2^17·w)` px; d_q is its
+//! maximum over the two axes at w = 1 (0 for the exact test). It covers the datapath's rounding
+//! only: the inputs' rounding to the position and t/u/v grids adds its own (bounded per sample
+//! by `compare.rs`'s rigorous check, which here includes the perturbation as an extra position
+//! rounding). *beyond d_q* counts differing decisions of triangles with every w ≥ 1 that lie
+//! farther than d_q (at the scene's viewport) from an edge.
 
 use std::time::Duration;
 
@@ -12,7 +25,8 @@ use rayon::prelude::*;
 use serde::Serialize;
 use uvt_core::bounds::BoundsStrategy;
 use uvt_core::{
-    sample_eval, Laine2011, Ops, Outcome, PixelRect, Prec, Precision, ScreenPos, Setup, Triangle,
+    sample_test, Bounded, Laine2011, Ops, Outcome, PixelRect, Prec, Precision, ScreenPos, Setup,
+    Triangle,
 };
 
 use crate::compare::{check_sample, Rounding};
@@ -22,15 +36,38 @@ use crate::reference;
 use crate::scene::Scene;
 use crate::scenes::{bench, Bench, Row};
 
-/// The swept configurations (position, t/u/v, bound fraction bits), narrow to the default.
-pub const CONFIGS: [(u32, u32, u32); 4] = [(6, 6, 2), (8, 8, 4), (12, 12, 8), (16, 16, 16)];
+/// The swept configurations (session names, `crate::cost::SWEEP`): exact, then bounded from the
+/// default candidate down to the narrowest.
+pub const CONFIGS: [&str; 7] = crate::cost::SWEEP;
+
+/// Run `one::<P>` for configuration `ci` of [`CONFIGS`].
+fn one_at(ci: usize, s: &Scene, accs: &mut [PrecRow]) {
+    match ci {
+        0 => one::<Prec<16, 16, 16>>(s, accs),
+        1 => one::<Bounded<16, 16, 16, 20>>(s, accs),
+        2 => one::<Bounded<16, 16, 16, 22>>(s, accs),
+        3 => one::<Bounded<16, 16, 16, 24>>(s, accs),
+        4 => one::<Bounded<12, 12, 12, 24>>(s, accs),
+        5 => one::<Bounded<12, 12, 12, 26>>(s, accs),
+        _ => one::<Bounded<8, 8, 8, 28>>(s, accs),
+    }
+}
+
+/// The documented d_q (module docs) of offset shift `off` on a `w`×`h` viewport, px at w = 1.
+pub fn d_q_px(off: Option<u32>, w: u16, h: u16) -> f64 {
+    let Some(o) = off else { return 0.0 };
+    let at = |e: f64| (2.0 * e + 2f64.powi(o as i32 - 9)) / 131072.0;
+    at(w as f64).max(at(h as f64))
+}
 
 /// Errors and costs of one configuration at one bounds-tile size, summed over the scenes.
 #[derive(Clone, Debug, Default, Serialize, serde::Deserialize)]
 #[serde(default)]
 pub struct PrecRow {
-    /// fraction bits (position, t/u/v, bounds)
-    pub config: (u32, u32, u32),
+    /// configuration name (`exact-16-16-16`, `bounded-16-16-16-20`, …); an old report's
+    /// `[POS, TUV, BND]` reads as `exact-POS-TUV-BND` (the exact test in the wide containers)
+    #[serde(deserialize_with = "config_name")]
+    pub config: String,
     /// bounds-tile size
     pub tile: u8,
     /// median over frames of (core wall time / reference wall time) in the same run
@@ -67,6 +104,13 @@ pub struct PrecRow {
     /// samples the core covers outside the reference's footprint or in a tile the reference
     /// skips (no finite t/u/v margin covers these)
     pub eps_outside: u64,
+    /// the analytic conservative epsilon (class both, largest over the scenes' viewports): ε_x,
+    /// ε_y, ε_w raw clip units
+    pub eps_raw: [u32; 3],
+    /// documented d_q (px at w = 1) at the scenes' viewports (largest) and at 960×540
+    pub d_q: [f64; 2],
+    /// differing decisions of triangles with every w ≥ 1 farther than d_q from an edge
+    pub beyond_dq: u64,
     /// covered samples whose framebuffer slot was still empty and that were not written
     /// (counted by [`lost_samples`], independently of the core's counters; must be 0)
     pub lost: u64,
@@ -80,8 +124,24 @@ pub struct PrecRow {
     counts: [u64; 5],
 }
 
-/// Which scenes and rows a sweep covers.
+/// A configuration name, or an old report's `[POS, TUV, BND]` as `exact-POS-TUV-BND`.
+fn config_name<'de, D: serde::Deserializer<'de>>(d: D) -> Result<String, D::Error> {
+    use serde::Deserialize;
+    match serde_json::Value::deserialize(d)? {
+        serde_json::Value::String(s) => Ok(s),
+        serde_json::Value::Array(a) if a.len() == 3 && a.iter().all(|x| x.is_u64()) => {
+            Ok(format!("exact-{}-{}-{}", a[0], a[1], a[2]))
+        }
+        v => Err(serde::de::Error::custom(format!(
+            "config: expected a name or [POS, TUV, BND], found {v}"
+        ))),
+    }
+}
+
+/// Which configurations, scenes and rows a sweep covers.
 pub struct Sweep {
+    /// configurations (names of [`CONFIGS`]; others are skipped)
+    pub configs: Vec<&'static str>,
     /// scenes
     pub scenes: Vec<Bench>,
     /// rows
@@ -116,12 +176,18 @@ fn shrink(mut s: Scene, f: u16) -> Scene {
 /// Run the sweep.
 pub fn sweep(sw: &Sweep) -> Vec<PrecRow> {
     let mut rows: Vec<PrecRow> = Vec::new();
-    for (ci, &cfg) in CONFIGS.iter().enumerate() {
+    let chosen: Vec<(usize, &str)> = CONFIGS
+        .iter()
+        .enumerate()
+        .filter(|(_, c)| sw.configs.contains(c))
+        .map(|(i, c)| (i, *c))
+        .collect();
+    for (n, &(ci, cfg)) in chosen.iter().enumerate() {
         let mut accs: Vec<PrecRow> = sw
             .tiles
             .iter()
             .map(|&tile| PrecRow {
-                config: cfg,
+                config: cfg.to_string(),
                 tile,
                 ..Default::default()
             })
@@ -131,21 +197,13 @@ pub fn sweep(sw: &Sweep) -> Vec<PrecRow> {
                 // Progress as plain lines on stderr (readable in logs, not only on a terminal).
                 let per = sw.scenes.len() * sw.rows.len();
                 eprintln!(
-                    "precision: row {} of {}: {}/{}/{} {kind:?} {}",
-                    ci * per + k * sw.rows.len() + r + 1,
-                    CONFIGS.len() * per,
-                    cfg.0,
-                    cfg.1,
-                    cfg.2,
+                    "precision: row {} of {}: {cfg} {kind:?} {}",
+                    n * per + k * sw.rows.len() + r + 1,
+                    chosen.len() * per,
                     row.label()
                 );
                 let s = shrink(bench(kind, row, true), sw.shrink);
-                match ci {
-                    0 => one::<Prec<6, 6, 2>>(&s, &mut accs),
-                    1 => one::<Prec<8, 8, 4>>(&s, &mut accs),
-                    2 => one::<Prec<12, 12, 8>>(&s, &mut accs),
-                    _ => one::<Prec<16, 16, 16>>(&s, &mut accs),
-                }
+                one_at(ci, &s, &mut accs);
             }
         }
         for a in accs.iter_mut() {
@@ -181,7 +239,16 @@ fn one<P: Precision + Sync>(s: &Scene, accs: &mut [PrecRow]) {
         .collect();
     let vp = s.core_viewport();
     let colors = s.colors();
+    let eps = uvt_core::Eps::of(P::OFFSET_SHIFT, uvt_core::Class::MotionDefocus, vp);
+    let e3 = [eps.x()[0], eps.x()[1], eps.w()].map(i32::unsigned_abs);
     for acc in accs.iter_mut() {
+        for (a, e) in acc.eps_raw.iter_mut().zip(e3) {
+            *a = (*a).max(e);
+        }
+        acc.d_q = [
+            acc.d_q[0].max(d_q_px(P::OFFSET_SHIFT, s.viewport.0, s.viewport.1)),
+            d_q_px(P::OFFSET_SHIFT, 960, 540),
+        ];
         let o = RunOpts {
             tile: acc.tile,
             ..RunOpts::for_scene(s, &colors)
@@ -259,8 +326,15 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, accs
             ) else {
                 return a;
             };
-            let full = Setup::unculled(ct, vp);
-            let rounding = Rounding::at(P::POS_FRAC, P::TUV_FRAC);
+            let full = Setup::unculled_with::<P>(ct, vp);
+            // The bounded test decides exactly on vertices perturbed by ε (module docs): an
+            // extra position rounding of ε_max in the rigorous check (it enters x, y and w).
+            let eps = uvt_core::Eps::of(P::OFFSET_SHIFT, uvt_core::Class::MotionDefocus, vp);
+            let mut rounding = Rounding::at(P::POS_FRAC, P::TUV_FRAC);
+            let [ex, ey] = eps.x();
+            rounding.pos += f64::from(ex.max(ey).max(eps.w())) / 65536.0;
+            let d_q = d_q_px(P::OFFSET_SHIFT, v.0, v.1);
+            let front = st.t0.iter().chain(st.t1.iter()).all(|q| q[3] >= 1.0);
             let cell_of = |px: u16, py: u16, fp: PixelRect, bt: u16| {
                 PixelRect {
                     x0: px - px % bt,
@@ -304,7 +378,7 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, accs
                     for si in 0..pat.spp as usize {
                         let idx = pat.index(px, py, si);
                         let (q, e) = (&pat.quant[idx], &pat.exact[idx]);
-                        let hf = sample_eval(&full, ScreenPos::of(px, py, q), q, &mut ops).hit;
+                        let hf = sample_test(&full, ScreenPos::of(px, py, q), q, &mut ops);
                         let (x, y) = (px as f64 + e[0], py as f64 + e[1]);
                         let hr = reference::sample::sample_test(st, v, x, y, e[2], e[3], e[4]);
                         // Tile-independent measures go into row 0 and are copied when merging.
@@ -314,6 +388,7 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, accs
                             let d =
                                 reference::sample::edge_distance_px(st, v, x, y, e[2], e[3], e[4]);
                             a[0].max_differ_px = a[0].max_differ_px.max(d);
+                            a[0].beyond_dq += u64::from(front && d > d_q);
                             let c = check_sample(st, v, x, y, e[2], e[3], e[4], &rounding);
                             a[0].max_ratio = a[0].max_ratio.max(c.ratio);
                             a[0].beyond_bound += u64::from(c.ratio > 1.0);
@@ -367,6 +442,7 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, accs
             acc.beyond_bound += cov.beyond_bound;
             acc.max_ratio = acc.max_ratio.max(cov.max_ratio);
             acc.behind += cov.behind;
+            acc.beyond_dq += cov.beyond_dq;
             acc.depth_lsb[0] = acc.depth_lsb[0].max(cov.depth_lsb[0]);
             acc.depth_lsb[1] += cov.depth_lsb[1];
             acc.depth_n += cov.depth_n;
@@ -382,27 +458,39 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, accs
     }
 }
 
-/// Markdown table of a sweep.
-pub fn table_md(rows: &[PrecRow]) -> String {
+/// Markdown table of a sweep, with the costs of each configuration (`crate::precision_cost`).
+pub fn table_md(rows: &[PrecRow], costs: &crate::precision_cost::Costs) -> String {
     let mut s = String::from(
-        "| pos/tuv/bnd bits | tile | time ÷ f64 | ops setup/tile/sample | decisions ≠ f64 (rate, max px) | beyond bound (max ratio) | slack t/u/v mean (max) | STE core / f64 | depth err LSB max (mean) | violations | ε t/u/v measured | outside exact bounds | core margin | analytic ε (sample part) |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| configuration | tile | decisions ≠ f64 (rate, max px) | d_q px (scene / 960×540) | beyond d_q (w ≥ 1) | beyond bound (max ratio) | violations | ε x/y/w raw | STE core / f64 | STE loss vs exact | depth err LSB max (mean) | time ÷ f64 | host ns setup/tile/sample | M4F insn setup/tile/sample | sample test DSP48E1 / MULT18X18D (model) | sample test Σ bit-products | synthesized |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     for r in rows {
+        let exact = rows
+            .iter()
+            .find(|x| x.config == CONFIGS[0] && x.tile == r.tile);
+        let loss = exact
+            .map(|x| {
+                format!(
+                    "{:.2}%",
+                    100.0 * (x.ste[0] - r.ste[0]) / x.ste[0].max(1e-12)
+                )
+            })
+            .unwrap_or_else(|| "–".into());
+        let c = costs.of(&r.config);
         s += &format!(
-            "| {}/{}/{} | {} | {:.2} | {:.0}/{:.0}/{:.0} | {} ({:.1e}, {:.3}) | {} ({:.2}) | {:.4}/{:.4}/{:.4} ({:.4}/{:.4}/{:.4}) | {:.2}% / {:.2}% | {:.0} ({:.1}) | {} | {:.1e}/{:.1e}/{:.1e} | {} | 2^-{} | 2^-{} |\n",
-            r.config.0, r.config.1, r.config.2, r.tile, r.time_ratio_median, r.ops[0], r.ops[1], r.ops[2],
-            r.differ, r.differ as f64 / r.compared.max(1) as f64, r.max_differ_px, r.beyond_bound, r.max_ratio,
-            r.slack_mean[0], r.slack_mean[1], r.slack_mean[2], r.slack_max[0], r.slack_max[1], r.slack_max[2],
-            100.0 * r.ste[0], 100.0 * r.ste[1], r.depth_lsb[0], r.depth_lsb[1], r.violations,
-            r.eps_measured[0], r.eps_measured[1], r.eps_measured[2], r.eps_outside, r.config.1, r.config.1 + 1
+            "| {} | {} | {} ({:.1e}, {:.4}) | {:.4} / {:.4} | {} | {} ({:.2}) | {} | {}/{}/{} | {:.2}% / {:.2}% | {loss} | {:.0} ({:.1}) | {:.2} | {} | {} | {} | {} | {} |\n",
+            r.config, r.tile, r.differ, r.differ as f64 / r.compared.max(1) as f64, r.max_differ_px,
+            r.d_q[0], r.d_q[1], r.beyond_dq, r.beyond_bound, r.max_ratio, r.violations,
+            r.eps_raw[0], r.eps_raw[1], r.eps_raw[2], 100.0 * r.ste[0], 100.0 * r.ste[1],
+            r.depth_lsb[0], r.depth_lsb[1], r.time_ratio_median,
+            c.host_ns, c.m4, c.dsp, c.bit_products, c.synth
         );
     }
+    s += &costs.notes();
     s
 }
 
-/// One point per configuration (bounds tile 1): x = median time relative to f64, y = rate of
-/// decisions differing from f64. Returns the indices on the Pareto front (no other point is
-/// both faster and more accurate).
+/// Indices of the Pareto front of `points` (x = cost, y = error; lower is better in both): no
+/// other point is at most as costly and at most as wrong, and better in one.
 pub fn pareto(points: &[(f64, f64)]) -> Vec<usize> {
     (0..points.len())
         .filter(|&i| {
@@ -416,74 +504,10 @@ pub fn pareto(points: &[(f64, f64)]) -> Vec<usize> {
         .collect()
 }
 
-/// SVG plot of error against run time, Pareto front marked.
-pub fn plot_svg(rows: &[PrecRow], path: &std::path::Path) -> anyhow::Result<()> {
-    use plotters::prelude::*;
-    let pts: Vec<((u32, u32, u32), f64, f64)> = rows
-        .iter()
-        .filter(|r| r.tile == 1)
-        .map(|r| {
-            (
-                r.config,
-                r.time_ratio_median,
-                (r.differ as f64 / r.compared.max(1) as f64).max(1e-9),
-            )
-        })
-        .collect();
-    let front = pareto(&pts.iter().map(|p| (p.1, p.2)).collect::<Vec<_>>());
-    let xmax = pts.iter().map(|p| p.1).fold(0.0, f64::max) * 1.2 + 0.1;
-    let (ymin, ymax) = pts
-        .iter()
-        .fold((f64::MAX, 0.0f64), |(a, b), p| (a.min(p.2), b.max(p.2)));
-    let root = SVGBackend::new(path, (720, 480)).into_drawing_area();
-    root.fill(&WHITE).map_err(|e| anyhow::anyhow!("{e}"))?;
-    let mut chart = ChartBuilder::on(&root)
-        .caption(
-            "uvt precision: error against run time (bounds tile 1)",
-            ("sans-serif", 18),
-        )
-        .margin(16)
-        .x_label_area_size(40)
-        .y_label_area_size(70)
-        .build_cartesian_2d(0.0..xmax, (ymin / 2.0..ymax * 2.0).log_scale())
-        .map_err(|e| anyhow::anyhow!("{e}"))?;
-    chart
-        .configure_mesh()
-        .x_desc("median wall time per frame / f64 reference")
-        .y_desc("sample decisions differing from f64 (rate)")
-        .y_label_formatter(&|y| format!("{y:.0e}"))
-        .draw()
-        .map_err(|e| anyhow::anyhow!("{e}"))?;
-    let mut fp: Vec<(f64, f64)> = front.iter().map(|&i| (pts[i].1, pts[i].2)).collect();
-    fp.sort_by(|a, b| a.0.total_cmp(&b.0));
-    chart
-        .draw_series(LineSeries::new(fp, &RED))
-        .map_err(|e| anyhow::anyhow!("{e}"))?
-        .label("Pareto front");
-    chart
-        .draw_series(pts.iter().enumerate().map(|(i, p)| {
-            let style = if front.contains(&i) {
-                RED.filled()
-            } else {
-                BLUE.filled()
-            };
-            EmptyElement::at((p.1, p.2))
-                + Circle::new((0, 0), 5, style)
-                + Text::new(
-                    format!("{}/{}/{}", p.0 .0, p.0 .1, p.0 .2),
-                    if i % 2 == 0 { (8, -16) } else { (-64, 6) },
-                    ("sans-serif", 13),
-                )
-        }))
-        .map_err(|e| anyhow::anyhow!("{e}"))?;
-    root.present().map_err(|e| anyhow::anyhow!("{e}"))?;
-    Ok(())
-}
-
 /// One stress case at the default precision: STE, decisions against f64, conservativeness.
 pub fn stress_row(scene: &Scene) -> PrecRow {
     let mut acc = [PrecRow {
-        config: (16, 16, 16),
+        config: CONFIGS[0].to_string(),
         tile: scene.tile,
         ..Default::default()
     }];

@@ -52,18 +52,22 @@ impl Strategy {
     }
 }
 
-/// Precisions `uvt render --precision` accepts, as `POS/TUV/BND` fraction bits (the
-/// configurations of [`crate::precision::CONFIGS`]).
+/// The exact-test precisions `uvt render --precision` accepts (`POS/TUV/BND` fraction bits).
+pub const RENDER_PRECISIONS: [(u32, u32, u32); 4] =
+    [(6, 6, 2), (8, 8, 4), (12, 12, 8), (16, 16, 16)];
+
+/// Precisions `uvt render --precision` accepts, as `POS/TUV/BND` fraction bits
+/// ([`RENDER_PRECISIONS`]).
 pub fn precision_from_name(name: &str) -> Result<(u32, u32, u32)> {
     let show = |c: &(u32, u32, u32)| format!("{}/{}/{}", c.0, c.1, c.2);
-    crate::precision::CONFIGS
+    RENDER_PRECISIONS
         .iter()
         .find(|c| show(c) == name)
         .copied()
         .ok_or_else(|| {
             anyhow!(
                 "unknown precision {name:?} (accepted: {})",
-                crate::precision::CONFIGS
+                RENDER_PRECISIONS
                     .iter()
                     .map(show)
                     .collect::<Vec<_>>()

@@ -8,26 +8,36 @@ use uvt_host::scenes::{Bench, Row};
 
 #[test]
 fn sweep_is_conservative_and_converges_to_the_default() {
+    let configs = vec![CONFIGS[0], CONFIGS[1], CONFIGS[6]];
     let rows = sweep(&Sweep {
+        configs: configs.clone(),
         scenes: vec![Bench::Game, Bench::Dense],
         rows: vec![Row::Both],
         tiles: vec![1, 2, 4, 8],
         shrink: 4,
     });
-    assert_eq!(rows.len(), CONFIGS.len() * 4);
+    assert_eq!(rows.len(), configs.len() * 4);
     for r in &rows {
         assert_eq!(r.violations, 0, "{r:?}");
         assert_eq!(r.beyond_bound, 0, "{r:?}");
         assert!(r.compared > 10_000, "{r:?}");
     }
     let rate = |r: &uvt_host::precision::PrecRow| r.differ as f64 / r.compared as f64;
-    let at = |cfg: (u32, u32, u32), tile: u8| {
+    let at = |cfg: &str, tile: u8| {
         rows.iter()
             .find(|r| r.config == cfg && r.tile == tile)
             .unwrap()
     };
     for tile in [1u8, 2, 4, 8] {
-        let (narrow, def) = (at(CONFIGS[0], tile), at(CONFIGS[3], tile));
+        let (narrow, def) = (at(CONFIGS[6], tile), at(CONFIGS[0], tile));
+        // The bounded default candidate: every differing decision of geometry at w ≥ 1 lies
+        // within its documented d_q of an edge.
+        let bounded = at(CONFIGS[1], tile);
+        assert_eq!(bounded.beyond_dq, 0, "{bounded:?}");
+        assert!(
+            bounded.max_differ_px > 0.0 && bounded.d_q[0] > 0.0,
+            "{bounded:?}"
+        );
         assert!(
             rate(narrow) > rate(def),
             "narrow precision should err more: {} vs {}",
