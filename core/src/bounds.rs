@@ -248,21 +248,19 @@ fn dual_axis(
 
 /// t interval of one axis for a tile [x0, x1] ⊆ [ξa, ξb].
 // Ranges: |δ| < 2^44; ξa, ξb, x0, x1 are pixel indices < 2^16 (u16), so |ξb − x|, |x − ξa| < 2^17
-// and each line value (scaled by D = ξb − ξa) is < 2·2^44·2^17 = 2^62; the differences handed to
-// `solve_le` are < 2^63. All far inside i128.
+// and each line value (scaled by D = ξb − ξa) is < 2·2^44·2^17 = 2^62 in i64 (for a tile inside
+// the footprint, as the renderer asks, < 2^44·2^16 = 2^60); the differences handed to
+// `solve_le` are < 2^63, still i64. `tests::dual_t_at_the_domain_corners` drives the extremes.
 #[allow(clippy::arithmetic_side_effects)]
-fn dual_t(d: &DualAxis, x0: i64, x1: i64, ops: &mut Ops) -> Option<Interval> {
-    let [xa, xb] = d.xi.map(i128::from);
-    let line = |v: &[DualDelta; 2], x: i64| {
-        let x = i128::from(x);
-        i128::from(v[0]) * (xb - x) + i128::from(v[1]) * (x - xa)
-    };
+pub(crate) fn dual_t(d: &DualAxis, x0: i64, x1: i64, ops: &mut Ops) -> Option<Interval> {
+    let [xa, xb] = d.xi;
+    let line = |v: &[DualDelta; 2], x: i64| v[0] * (xb - x) + v[1] * (x - xa);
     let [lo0, lo1] = d.lo.map(|v| line(&v, x0).min(line(&v, x1)));
     let [hi0, hi1] = d.hi.map(|v| line(&v, x0).max(line(&v, x1)));
     ops.add_bounds(24);
     // (1−t)·lo0 + t·lo1 ≤ 0  and  (1−t)·hi0 + t·hi1 ≥ 0.
-    let a = solve_le(lo1 - lo0, -lo0)?;
-    let b = solve_le(hi0 - hi1, hi0)?;
+    let a = solve_le(i128::from(lo1 - lo0), i128::from(-lo0))?;
+    let b = solve_le(i128::from(hi0 - hi1), i128::from(hi0))?;
     ops.add_bounds(8);
     a.meet(b)
 }

@@ -101,10 +101,40 @@ fn clamp_raw(x: i128) -> i32 {
     i32::try_from(x.clamp(0, i128::from(TUV_ONE))).unwrap_or(TUV_ONE)
 }
 
+/// `floor(n·2^k / d)` and whether the division leaves a remainder, for `0 ≤ n < d ≤ 2^63`
+/// and `k ≤ 16`, by restoring long division (k steps of shift, compare, subtract; no divide
+/// instruction, no 128-bit arithmetic).
+///
+/// Invariant: the partial remainder r satisfies 0 ≤ r < d before each step, so 2r < 2d ≤ 2^64
+/// fits u64; after the step r < d again. The quotient gains one bit per step: q < 2^k ≤ 2^16.
+/// Exact: after the loop, n·2^k = q·d + r with 0 ≤ r < d. Callers guarantee `n < d` and `k ≤ 16`
+/// (checked: anything else returns `None`). `tests::frac_div_matches_i128` checks it against
+/// the i128 quotient at the range's corners and on seeded random operands.
+// Ranges in the doc comment above: r < d ≤ 2^63 so 2r < 2^64; q < 2^16 so 2q + 1 < 2^17.
+#[allow(clippy::arithmetic_side_effects)]
+pub(crate) fn frac_div(n: u64, d: u64, k: u32) -> Option<(u64, bool)> {
+    if n >= d || d > 1 << 63 || k > TUV_FRAC {
+        return None;
+    }
+    let (mut q, mut r) = (0u64, n);
+    for _ in 0..k {
+        r *= 2;
+        q *= 2;
+        if r >= d {
+            r -= d;
+            q += 1;
+        }
+    }
+    Some((q, r != 0))
+}
+
 /// `{ s ∈ [0,1] : s·d ≤ n }` by exact division, ends rounded outward; `None` if empty.
 ///
 /// Cases: d > 0 gives s ≤ n/d (ceil), d < 0 gives s ≥ (−n)/(−d) (floor), d = 0 gives all or
-/// nothing. If `n·2^16` would overflow (|n| ≥ 2^111, far outside the documented ranges) the
+/// nothing. The quotient, once 0 ≤ n < d, is `ceil(n·2^16/d)` (or the floor): through one
+/// 64-bit divide when `n·2^16` fits i64, else through [`frac_div`] (exact, 16 shift-subtract
+/// steps) when d ≤ 2^63, else through an i128 divide; all three give the same exact quotient.
+/// If `n·2^16` would overflow i128 (|n| ≥ 2^111, far outside the documented ranges) the
 /// answer is the whole unit interval or, where the sign already decides, empty: conservative.
 pub fn solve_le(d: i128, n: i128) -> Option<Interval> {
     let full = Some(Interval::UNIT);
@@ -115,7 +145,7 @@ pub fn solve_le(d: i128, n: i128) -> Option<Interval> {
         if n >= d {
             return full;
         }
-        match n.checked_mul(1 << TUV_FRAC).and_then(|m| ceil_div(m, d)) {
+        match frac_quotient(n, d, true) {
             Some(hi) => Some(Interval {
                 lo: 0,
                 hi: clamp_raw(hi),
@@ -130,7 +160,7 @@ pub fn solve_le(d: i128, n: i128) -> Option<Interval> {
         if b > a {
             return None;
         }
-        match b.checked_mul(1 << TUV_FRAC).and_then(|m| floor_div(m, a)) {
+        match frac_quotient(b, a, false) {
             Some(lo) => Some(Interval {
                 lo: clamp_raw(lo),
                 hi: TUV_ONE,
@@ -141,6 +171,28 @@ pub fn solve_le(d: i128, n: i128) -> Option<Interval> {
         full
     } else {
         None
+    }
+}
+
+/// `ceil(n·2^16/d)` (`up`) or the floor, for `0 ≤ n ≤ d`, `d > 0` (the callers in
+/// [`solve_le`]); `None` only outside i128.
+// q < 2^16 from `frac_div`: q + 1 far inside i128.
+#[allow(clippy::arithmetic_side_effects)]
+fn frac_quotient(n: i128, d: i128, up: bool) -> Option<i128> {
+    let m = n.checked_mul(1 << TUV_FRAC)?;
+    if i64::try_from(m).is_ok() {
+        // One 64-bit divide (`floor_div`'s fast path: both operands fit i64).
+        return if up { ceil_div(m, d) } else { floor_div(m, d) };
+    }
+    if let (Ok(n64), Ok(d64)) = (u64::try_from(n), u64::try_from(d)) {
+        if let Some((q, rem)) = frac_div(n64, d64, TUV_FRAC) {
+            return Some(i128::from(q) + i128::from(up && rem));
+        }
+    }
+    if up {
+        ceil_div(m, d)
+    } else {
+        floor_div(m, d)
     }
 }
 
@@ -171,15 +223,41 @@ impl RecipConstraint {
         self.r_dn
     }
 
-    /// Precompute the reciprocals of `d` (setup, once per triangle).
+    /// Precompute the reciprocals of `d` (setup, once per triangle), exactly
+    /// `floor(2^K/|d|)` and `ceil(2^K/|d|)` without a 128-bit divide: with `a = |d| ≥ 2`,
+    /// `2^64 = q0·a + r0` (one 64-bit divide of `2^64 − 1`, corrected by one step), so
+    /// `2^80 = 2^16·q0·a + 2^16·r0` and `floor(2^80/a) = 2^16·q0 + floor(r0·2^16/a)`, the last
+    /// term by [`frac_div`] (r0 < a); the ceiling adds 1 when anything remains. `a = 1` gives
+    /// 2^80 for both; `d = 0` gives 0 for both (never used: `solve` decides d = 0 by sign).
+    /// `tests::recip_matches_i128` compares with the i128 division at the range's corners.
+    // Ranges: a ≤ 2^63 (|i64|); q0 = floor((2^64 − 1)/a) ≤ 2^63 so q0·a ≤ 2^64 − 1 and
+    // m = 2^64 − 1 − q0·a ∈ [0, a − 1]: r0 = m + 1 ∈ [1, a] ≤ 2^63 (r0 = a means a | 2^64, then
+    // q0 + 1 ≤ 2^63 and r0 = 0); 2^16·q0 < 2^80 and the fraction < 2^16: far inside i128.
+    #[allow(clippy::arithmetic_side_effects)]
     pub fn new(d: i64) -> RecipConstraint {
-        const K: i128 = 1i128 << crate::formats::RECIP_SHIFT;
-        let k = K;
-        // |d| ≤ 2^63 as i128: abs exact.
-        let a = i128::from(d).saturating_abs();
-        let (r_up, r_dn) = match (ceil_div(k, a), floor_div(k, a)) {
-            (Some(u), Some(l)) => (u, l),
-            _ => (0, 0),
+        const _: () = assert!(crate::formats::RECIP_SHIFT == 64 + TUV_FRAC);
+        let a = d.unsigned_abs();
+        let (r_up, r_dn) = match a {
+            0 => (0, 0),
+            1 => (
+                1i128 << crate::formats::RECIP_SHIFT,
+                1i128 << crate::formats::RECIP_SHIFT,
+            ),
+            _ => {
+                let mut q0 = u64::MAX / a;
+                let mut r0 = u64::MAX - q0 * a + 1;
+                if r0 == a {
+                    q0 += 1;
+                    r0 = 0;
+                }
+                match frac_div(r0, a, TUV_FRAC) {
+                    Some((f, rem)) => {
+                        let dn = i128::from(q0) * i128::from(TUV_ONE) + i128::from(f);
+                        (dn + i128::from(rem), dn)
+                    }
+                    None => (0, 0),
+                }
+            }
         };
         RecipConstraint { d, r_up, r_dn }
     }
@@ -194,8 +272,12 @@ impl RecipConstraint {
     /// The products are `checked_mul` anyway; should one fail, the interval falls back to the
     /// whole unit range (conservative: nothing is culled).
     pub fn solve(&self, n: i64) -> Option<Interval> {
-        // 2^(K − 16) = 2^64 as a constant (no run-time shift).
-        const SH: i128 = 1i128 << (crate::formats::RECIP_SHIFT - TUV_FRAC);
+        // 2^(K − 16) = 2^64 as a constant (no run-time shift). The products are ≥ 0 here, so
+        // the floor of p/2^64 is the arithmetic right shift by 64 (a right shift loses no high
+        // bits) and the ceiling is that of p + 2^64 − 1: the same quotients as a division,
+        // without the 128-bit divide.
+        const SH_BITS: u32 = crate::formats::RECIP_SHIFT - TUV_FRAC;
+        const SH: i128 = 1i128 << SH_BITS;
         let (d, n) = (i128::from(self.d), i128::from(n));
         if d > 0 {
             if n < 0 {
@@ -206,7 +288,8 @@ impl RecipConstraint {
             }
             let hi = n
                 .checked_mul(self.r_up)
-                .and_then(|p| ceil_div(p, SH))
+                .and_then(|p| p.checked_add(SH - 1))
+                .and_then(|p| p.checked_shr(SH_BITS))
                 .unwrap_or(i128::from(TUV_ONE));
             Some(Interval {
                 lo: 0,
@@ -223,7 +306,7 @@ impl RecipConstraint {
             }
             let lo = b
                 .checked_mul(self.r_dn)
-                .and_then(|p| floor_div(p, SH))
+                .and_then(|p| p.checked_shr(SH_BITS))
                 .unwrap_or(0);
             Some(Interval {
                 lo: clamp_raw(lo),
@@ -238,6 +321,14 @@ impl RecipConstraint {
 }
 
 #[cfg(test)]
+// Test code: reference computations in plain i128 on values ≤ 2^100; an overflow panics, which
+// is the failure signal of a test.
+#[allow(
+    clippy::arithmetic_side_effects,
+    clippy::cast_possible_truncation,
+    clippy::cast_sign_loss,
+    clippy::cast_possible_wrap
+)]
 mod tests {
     use super::*;
 
@@ -283,6 +374,145 @@ mod tests {
                     }
                     _ => panic!("emptiness differs d={d} n={n}"),
                 }
+            }
+        }
+    }
+
+    /// The old reciprocal: one i128 division each way.
+    fn recip_i128(d: i64) -> (i128, i128) {
+        let k = 1i128 << crate::formats::RECIP_SHIFT;
+        let a = i128::from(d).abs();
+        if a == 0 {
+            return (0, 0);
+        }
+        (-(-k).div_euclid(a), k.div_euclid(a))
+    }
+
+    #[test]
+    fn recip_matches_i128() {
+        let seed = crate::testrng::seed();
+        let mut rng = crate::testrng::Rng(seed ^ 0x7ec1);
+        let mut ds: Vec<i64> = vec![0, 1, -1, 2, 3, 7, 1 << 32, (1 << 32) + 1, (1 << 59) - 1];
+        for e in 0..64 {
+            let p = 1i64.checked_shl(e).unwrap_or(i64::MAX);
+            ds.extend([
+                p,
+                p.saturating_sub(1),
+                p.saturating_add(1),
+                p.saturating_neg(),
+            ]);
+        }
+        ds.extend([i64::MAX, i64::MIN, i64::MIN + 1]);
+        for _ in 0..crate::testrng::cases(20_000, 2_000_000) {
+            ds.push(rng.signed(1 << 59));
+        }
+        for d in ds {
+            let c = RecipConstraint::new(d);
+            let (up, dn) = recip_i128(d);
+            assert!(
+                c.r_up == up && c.r_dn == dn,
+                "d={d} ({d:#x}): r_up {} ({:#x}) want {up} ({up:#x}), r_dn {} ({:#x}) want {dn} ({dn:#x}); UVT_SEED={seed}",
+                c.r_up, c.r_up, c.r_dn, c.r_dn
+            );
+        }
+    }
+
+    #[test]
+    fn frac_div_matches_i128() {
+        let seed = crate::testrng::seed();
+        let mut rng = crate::testrng::Rng(seed ^ 0xf7ac);
+        let mut cases = vec![
+            (0u64, 1u64),
+            (1, 2),
+            (1 << 62, 1 << 63),
+            ((1 << 63) - 1, 1 << 63),
+            (2, 3),
+        ];
+        for _ in 0..crate::testrng::cases(20_000, 2_000_000) {
+            let d = rng.signed(1 << 62).unsigned_abs().max(1) * 2;
+            let n = rng.next_u64() % d;
+            cases.push((n, d));
+        }
+        for (n, d) in cases {
+            for k in [0u32, 1, 15, 16] {
+                let m = u128::from(n) << k;
+                let want = (m / u128::from(d), m % u128::from(d) != 0);
+                let got = frac_div(n, d, k);
+                assert_eq!(
+                    got.map(|(q, r)| (u128::from(q), r)),
+                    Some(want),
+                    "n={n} ({n:#x}) d={d} ({d:#x}) k={k}; UVT_SEED={seed}"
+                );
+            }
+        }
+        // Outside its contract it refuses instead of answering.
+        assert_eq!(frac_div(5, 5, 16), None);
+        assert_eq!(frac_div(1, (1 << 63) + 1, 16), None);
+        assert_eq!(frac_div(1, 2, 17), None);
+    }
+
+    #[test]
+    fn solve_le_matches_i128_division() {
+        // The three quotient paths (64-bit divide, shift-subtract, i128 divide) against the
+        // i128 division, at the ends of each path's range and on seeded random operands.
+        let seed = crate::testrng::seed();
+        let mut rng = crate::testrng::Rng(seed ^ 0x501e);
+        let want = |d: i128, n: i128| -> Option<Interval> {
+            let one = i128::from(TUV_ONE);
+            let clamp = |x: i128| x.clamp(0, one) as i32;
+            if d > 0 {
+                (n >= 0).then(|| Interval {
+                    lo: 0,
+                    hi: clamp(-(-(n * one)).div_euclid(d)),
+                })
+            } else if d < 0 {
+                (-n <= -d).then(|| Interval {
+                    lo: clamp((-n * one).div_euclid(-d)),
+                    hi: TUV_ONE,
+                })
+            } else {
+                (n >= 0).then_some(Interval::UNIT)
+            }
+        };
+        let mut cases: Vec<(i128, i128)> = Vec::new();
+        for d in [
+            1i128,
+            3,
+            (1 << 47) - 1,
+            1 << 47,
+            (1 << 47) + 1,
+            (1 << 63) - 1,
+            1 << 63,
+            (1 << 63) + 1,
+            1 << 90,
+        ] {
+            for n in [0, 1, d / 3, d / 2, d - 1, d] {
+                cases.extend([(d, n), (-d, -n)]);
+            }
+        }
+        for _ in 0..crate::testrng::cases(20_000, 2_000_000) {
+            let d = i128::from(rng.signed(1 << 62)) * 2 + 1;
+            let n = i128::from(rng.next_u64() >> 1) % d.abs();
+            cases.extend([(d, n.copysign_like(d)), (d, -n), (d, n)]);
+        }
+        for (d, n) in cases {
+            assert_eq!(
+                solve_le(d, n),
+                want(d, n),
+                "d={d} ({d:#x}) n={n} ({n:#x}); UVT_SEED={seed}"
+            );
+        }
+    }
+
+    trait CopySign {
+        fn copysign_like(self, o: Self) -> Self;
+    }
+    impl CopySign for i128 {
+        fn copysign_like(self, o: i128) -> i128 {
+            if o < 0 {
+                -self
+            } else {
+                self
             }
         }
     }

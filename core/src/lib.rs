@@ -37,6 +37,8 @@ pub mod bounds;
 mod corners;
 pub mod demo;
 pub mod error;
+#[cfg(test)]
+mod fast_corners;
 pub mod formats;
 pub mod input;
 pub mod interval;
@@ -44,6 +46,8 @@ pub mod sample;
 pub mod setup;
 pub mod stats;
 pub mod strategies;
+#[cfg(test)]
+mod testrng;
 pub mod tile;
 pub mod wide;
 

@@ -230,6 +230,62 @@ pub fn crosses_camera_plane(pts: &[(i64, i64)], dir: i64, ops: &mut Ops) -> bool
     false
 }
 
+/// The predicate of [`crosses_camera_plane`] with `dir = ±1` (`positive`: +1) on 32-bit
+/// points, in one pass (setup's separating-line test; the pairwise function stays as the
+/// reference the tests compare with).
+///
+/// Proof. Flip a to σ·a so the half-line is R = {(s, 0) : s ≥ 0}. The hull H of the points
+/// meets the line w = 0 in the hull of (i) the points with w = 0 and (ii) for every pair p
+/// (w_p < 0), q (w_q > 0) the point where segment pq crosses w = 0, at
+/// `a_pq = (w_q·a_p − w_p·a_q)/(w_q − w_p)` (a convex combination with w = 0 of points on both
+/// sides is a convex combination of such crossings and of points on the line). That hull is a
+/// segment of the line, so H meets R iff one of (i), (ii) has a ≥ 0. For (ii), dividing
+/// `w_q·a_p + |w_p|·a_q ≥ 0` by `|w_p|·w_q > 0`: `a_p/|w_p| + a_q/w_q ≥ 0`, which some pair
+/// meets iff the pair of the largest `a_p/|w_p|` and the largest `a_q/w_q` does. So one pass
+/// keeps those two (compared by cross-multiplication) and tests them once. Without points on
+/// both sides only (i) remains.
+///
+/// Ranges: |a| < 2^31, |w| < 2^31 (setup's corners: |a| < 2^31, |w| ≤ 2^29 + 1): every
+/// product < 2^62, the final sum < 2^63, exact in i64; the negations of i32 values in i64
+/// are exact. `tests::hull_meets_ray_matches_pairwise` compares it with the pairwise function.
+#[allow(clippy::arithmetic_side_effects)] // ranges in the doc comment above
+pub(crate) fn hull_meets_ray(pts: &[(i32, i32)], positive: bool, ops: &mut Ops) -> bool {
+    // (σ·a, |w|) of the best point below (w < 0) and above (w > 0) the line.
+    let mut below: Option<(i64, i64)> = None;
+    let mut above: Option<(i64, i64)> = None;
+    for &(a, w) in pts {
+        let a = if positive {
+            i64::from(a)
+        } else {
+            -i64::from(a)
+        };
+        let w = i64::from(w);
+        ops.add_setup(2);
+        if w == 0 {
+            if a >= 0 {
+                return true;
+            }
+            continue;
+        }
+        let (slot, m) = if w < 0 {
+            (&mut below, -w)
+        } else {
+            (&mut above, w)
+        };
+        ops.add_setup(3);
+        if slot.map_or(true, |(ba, bm)| a * bm > ba * m) {
+            *slot = Some((a, m));
+        }
+    }
+    match (below, above) {
+        (Some((ap, mp)), Some((aq, mq))) => {
+            ops.add_setup(3);
+            ap * mq + aq * mp >= 0
+        }
+        _ => false,
+    }
+}
+
 /// Largest |box coordinate| setup produces (raw, 2^-bnd px): |num| < 2^58 in [`project`].
 const BOX_LIMIT: PixelCoord = 1 << 58;
 
@@ -270,9 +326,9 @@ pub(crate) fn project(a: i64, w: i64, extent: i64, up: bool, bnd: u32) -> PixelC
 /// affine in u, so the chord argument of `bounds.rs` holds unchanged over the corner set. The
 /// separating-line test runs on the corners too: the left set `(a − |cs| − ε_x, w ± ε_w)`, the
 /// right set `(a + |cs| + ε_x, w ± ε_w)`, exactly as an extra `|c|` of `ε_x` plus a second w.
-/// An exact precision (ε = 0) runs [`exact_boxes`], the code as before the epsilon (chosen on
-/// the type's constant in [`setup_scaled`], so its instantiation and its Cortex-M4F cost stay as
-/// they were); with ε = 0 the corner version here computes the same values.
+/// An exact precision (ε = 0) runs [`exact_boxes`] (chosen on the type's constant in
+/// [`setup_scaled`]): the six-point instantiation of the same code, whose values with ε = 0 are
+/// those of the exact boxes.
 fn axis_boxes(
     tri: &Triangle,
     axis: usize,
@@ -298,11 +354,41 @@ fn axis_boxes(
     }
 }
 
+/// Axis coordinate `a` (x, or −y) and lens coefficient `cs` of raw vertex `p` as `i32`: a
+/// checked triangle has |x|, |y|, |c| ≤ 2^29, so the negations are exact.
+#[inline]
+fn axis_coord32(p: &[i32; 5], axis: usize) -> (i32, i32) {
+    if axis == 0 {
+        (p[X], p[C])
+    } else {
+        (p[Y].saturating_neg(), p[C].saturating_neg())
+    }
+}
+
+/// Whether the ratio `a/w` is below `b.0/b.1` (both w > 0): `a·w_b < a_b·w`, exact in i64
+/// for |a| < 2^31, 0 < w < 2^31 (products < 2^62).
+#[inline]
+#[allow(clippy::arithmetic_side_effects)] // ranges in the doc comment above
+fn ratio_below(a: i32, w: i32, b: (i32, i32)) -> bool {
+    i64::from(a) * i64::from(b.1) < i64::from(b.0) * i64::from(w)
+}
+
 /// [`axis_boxes`] over `N` w offsets per vertex (`M = 6·N` corner points).
-// Ranges: |a|, |cs|, |w| ≤ 2^29 (checked triangle), ε_x < 2^24 and ε_w ≤ 1 (`Eps::of` with
-// `OFFSET_SHIFT_MAX`): a ± |cs| ± ε_x and a + lens·cs ± ε_x are < 2^31, w ± ε_w < 2^30, so
-// `project`'s |a + w| < 2^32 keeps its numerator < 2^59 and |q| < 2^58 (w ≥ 1 there); the
-// index i counts at most twelve corner points.
+///
+/// **One division per box side.** The projection `(a + w)·E·2^bnd/(2w) = (a/w + 1)·E·2^bnd/2`
+/// is non-decreasing in the ratio `a/w` (w > 0), and so are its floor and ceiling. Hence the
+/// minimum over the front corners of the floored projections is the floored projection of the
+/// corner with the smallest `a/w`, and the maximum of the ceiled ones that of the largest:
+/// the corners are compared by cross-multiplication (`a_i·w_j` against `a_j·w_i`, i64), and
+/// each of the four box values of the axis (lens −1/+1, min/max) costs one [`project`] — the
+/// same values as projecting every corner (equal ratios project to equal values), with 4
+/// divisions instead of 4·M. `tests::boxes_match_per_corner_projection` checks them against
+/// the per-corner computation.
+// Ranges: |a|, |cs|, |w| ≤ 2^29 (checked triangle), ε_x ≤ 2^24 and ε_w ≤ 1 (`Eps::of` with
+// `OFFSET_SHIFT_MAX`): a ± |cs| ± ε_x and a + lens·cs ± ε_x are < 2^30 + 2^25 < 2^31 (i32),
+// w ± ε_w ≤ 2^29 + 1 (i32), so [`ratio_below`]'s products are < 2^61 and `project`'s
+// |a + w| < 2^32 keeps its numerator < 2^59 and |q| < 2^58 (w ≥ 1 there); the index i counts
+// at most twelve corner points.
 #[allow(clippy::arithmetic_side_effects)]
 pub(crate) fn corner_boxes<const N: usize, const M: usize>(
     tri: &Triangle,
@@ -313,66 +399,63 @@ pub(crate) fn corner_boxes<const N: usize, const M: usize>(
     dws: [i32; N],
     ops: &mut Ops,
 ) -> AxisBoxes {
-    // ε arrives as i32 (|ε| < 2^24) and is widened here, so the optimizer sees every operand of
-    // the projections as a sign-extended 32-bit value (narrower i128 arithmetic on 32-bit cores).
-    let ex = i64::from(ex);
-    let dws = dws.map(i64::from);
-    let mut left = [(0i64, 0i64); M];
-    let mut right = [(0i64, 0i64); M];
+    let mut left = [(0i32, 0i32); M];
+    let mut right = [(0i32, 0i32); M];
     let mut i = 0;
     for ends in tri.v.iter() {
         for p in ends.iter() {
-            let (a, cs) = axis_coord(p, axis);
-            let w = i64::from(p[W]);
+            let (a, cs) = axis_coord32(p, axis);
             for &dw in dws.iter() {
                 if let (Some(l), Some(r)) = (left.get_mut(i), right.get_mut(i)) {
-                    *l = (a - cs.abs() - ex, w + dw);
-                    *r = (a + cs.abs() + ex, w + dw);
+                    *l = (a - cs.abs() - ex, p[W] + dw);
+                    *r = (a + cs.abs() + ex, p[W] + dw);
                 }
                 i += 1;
                 ops.add_setup(2);
             }
         }
     }
-    // With two w corners (bounded test only; the exact path keeps its op counts): a corner set
-    // entirely in front (every w − ε_w > 0) has its hull in w > 0, which cannot meet the camera
-    // plane, so the 12-point pair test is skipped.
-    let all_front = N > 1 && left.iter().all(|p| p.1 > 0);
-    let unbounded_lo = !all_front && crosses_camera_plane(&left, -1, ops);
-    let unbounded_hi = !all_front && crosses_camera_plane(&right, 1, ops);
-    let mut lo = [PixelCoord::MAX; 2];
-    let mut hi = [PixelCoord::MIN; 2];
-    let mut any_front = false;
+    let unbounded_lo = hull_meets_ray(&left, false, ops);
+    let unbounded_hi = hull_meets_ray(&right, true, ops);
+    // Per lens corner: the front corner point with the smallest (a − ε_x)/w and the one with
+    // the largest (a + ε_x)/w.
+    let mut lo: [Option<(i32, i32)>; 2] = [None; 2];
+    let mut hi: [Option<(i32, i32)>; 2] = [None; 2];
     for ends in tri.v.iter() {
         for p in ends.iter() {
-            let (a, cs) = axis_coord(p, axis);
+            let (a, cs) = axis_coord32(p, axis);
             for &dw in dws.iter() {
-                let w = i64::from(p[W]) + dw;
+                let w = p[W] + dw;
                 if w <= 0 {
                     continue;
                 }
-                any_front = true;
-                for (corner, lens) in [-1i64, 1].into_iter().enumerate() {
+                for ((l, h), lens) in lo.iter_mut().zip(hi.iter_mut()).zip([-1i32, 1]) {
                     let au = a + lens * cs;
                     ops.add_setup(6);
-                    if let (Some(l), Some(h)) = (lo.get_mut(corner), hi.get_mut(corner)) {
-                        *l = (*l).min(project(au - ex, w, extent, false, bnd));
-                        *h = (*h).max(project(au + ex, w, extent, true, bnd));
+                    let (al, ah) = (au - ex, au + ex);
+                    if l.map_or(true, |b| ratio_below(al, w, b)) {
+                        *l = Some((al, w));
+                    }
+                    if h.map_or(true, |b| ratio_below(b.0, b.1, (ah, w))) {
+                        *h = Some((ah, w));
                     }
                 }
             }
         }
     }
+    let proj = |c: [Option<(i32, i32)>; 2], up: bool| match c {
+        [Some(c0), Some(c1)] => {
+            Some([c0, c1].map(|(a, w)| project(i64::from(a), i64::from(w), extent, up, bnd)))
+        }
+        _ => None,
+    };
     AxisBoxes {
-        lo: (!unbounded_lo && any_front).then_some(lo),
-        hi: (!unbounded_hi && any_front).then_some(hi),
+        lo: proj(lo, false).filter(|_| !unbounded_lo),
+        hi: proj(hi, true).filter(|_| !unbounded_hi),
     }
 }
 
-/// [`axis_boxes`] of an exact precision (ε = 0): the code as before the epsilon existed.
-// Ranges: |a|, |cs|, |w| ≤ 2^29 (checked triangle): a ± |cs| and a + lens·cs are ≤ 2^30; the
-// index i counts the six vertices.
-#[allow(clippy::arithmetic_side_effects)]
+/// [`axis_boxes`] of an exact precision (ε = 0): the six-point instantiation.
 pub(crate) fn exact_boxes(
     tri: &Triangle,
     axis: usize,
@@ -380,48 +463,7 @@ pub(crate) fn exact_boxes(
     bnd: u32,
     ops: &mut Ops,
 ) -> AxisBoxes {
-    let mut left = [(0i64, 0i64); 6];
-    let mut right = [(0i64, 0i64); 6];
-    let mut i = 0;
-    for ends in tri.v.iter() {
-        for p in ends.iter() {
-            let (a, cs) = axis_coord(p, axis);
-            let w = i64::from(p[W]);
-            if let (Some(l), Some(r)) = (left.get_mut(i), right.get_mut(i)) {
-                *l = (a - cs.abs(), w);
-                *r = (a + cs.abs(), w);
-            }
-            i += 1;
-            ops.add_setup(2);
-        }
-    }
-    let unbounded_lo = crosses_camera_plane(&left, -1, ops);
-    let unbounded_hi = crosses_camera_plane(&right, 1, ops);
-    let mut lo = [PixelCoord::MAX; 2];
-    let mut hi = [PixelCoord::MIN; 2];
-    let mut any_front = false;
-    for ends in tri.v.iter() {
-        for p in ends.iter() {
-            let (a, cs) = axis_coord(p, axis);
-            let w = i64::from(p[W]);
-            if w <= 0 {
-                continue;
-            }
-            any_front = true;
-            for (corner, lens) in [-1i64, 1].into_iter().enumerate() {
-                let au = a + lens * cs;
-                ops.add_setup(6);
-                if let (Some(l), Some(h)) = (lo.get_mut(corner), hi.get_mut(corner)) {
-                    *l = (*l).min(project(au, w, extent, false, bnd));
-                    *h = (*h).max(project(au, w, extent, true, bnd));
-                }
-            }
-        }
-    }
-    AxisBoxes {
-        lo: (!unbounded_lo && any_front).then_some(lo),
-        hi: (!unbounded_hi && any_front).then_some(hi),
-    }
+    corner_boxes::<1, 6>(tri, axis, extent, bnd, 0, [0], ops)
 }
 
 /// Footprint columns (or rows) `[p0, p1)` of one axis from its boxes, clamped to `[0, E]`.
@@ -452,36 +494,36 @@ fn axis_range(b: &AxisBoxes, extent: u16, bnd: u32) -> (u16, u16) {
 /// Conservative epsilon (`bounded.rs`): the bounded test's perturbed vertex has
 /// `w' ± a' ≤ w ± a + ε_w + ε_x`, and its hit needs `w' > 0`, i.e. `w + ε_w > 0`: both enter as
 /// constant terms (zero for the exact test, which is then unchanged).
-// Ranges: every raw field ≤ 2^29 in magnitude, ε < 2^24: w + sign·x + |c| + ε < 2^31 and the
-// differences a − b < 2^32, all in i128.
+// Ranges: every raw field ≤ 2^29 in magnitude, ε ≤ 2^24: w + sign·x + |c| + ε < 2^31 and the
+// differences a − b < 2^32, all in i64.
 #[allow(clippy::arithmetic_side_effects)]
 fn frustum_span(tri: &Triangle, eps: &Eps, ops: &mut Ops) -> Option<Interval> {
     let [v0, v1] = &tri.v;
     let mut span = Interval::UNIT;
-    let ew = i128::from(eps.w);
+    let ew = i64::from(eps.w);
     // camera plane: a hit needs w > 0, so both ends' max w ≤ 0 means never visible.
-    let wmax = |v: &[[i32; 5]; 3]| v.iter().map(|p| i128::from(p[W]) + ew).max().unwrap_or(0);
+    let wmax = |v: &[[i32; 5]; 3]| v.iter().map(|p| i64::from(p[W]) + ew).max().unwrap_or(0);
     let (a, b) = (wmax(v0), wmax(v1));
     ops.add_setup(6);
     if a <= 0 && b <= 0 {
         return None;
     }
-    span = span.meet(solve_le(a - b, a)?)?;
+    span = span.meet(solve_le(i128::from(a - b), i128::from(a))?)?;
     for axis in 0..2 {
-        let e = ew + i128::from(eps.x.get(axis).copied().unwrap_or(0));
-        for sign in [-1i128, 1] {
+        let e = ew + i64::from(eps.x.get(axis).copied().unwrap_or(0));
+        for sign in [-1i64, 1] {
             let dist = |v: &[[i32; 5]; 3]| {
                 v.iter()
                     .map(|p| {
                         let (x, cs) = axis_coord(p, axis);
-                        i128::from(p[W]) + sign * i128::from(x) + i128::from(cs).abs() + e
+                        i64::from(p[W]) + sign * x + cs.abs() + e
                     })
                     .max()
                     .unwrap_or(0)
             };
             let (a, b) = (dist(v0), dist(v1));
             ops.add_setup(14);
-            span = span.meet(solve_le(a - b, a)?)?;
+            span = span.meet(solve_le(i128::from(a - b), i128::from(a))?)?;
         }
     }
     Some(span)
