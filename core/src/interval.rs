@@ -102,19 +102,55 @@ fn clamp_raw(x: i128) -> i32 {
 }
 
 /// `floor(n·2^k / d)` and whether the division leaves a remainder, for `0 ≤ n < d ≤ 2^63`
-/// and `k ≤ 16`, by restoring long division (k steps of shift, compare, subtract; no divide
-/// instruction, no 128-bit arithmetic).
+/// and `k ≤ 16` (checked: anything else returns `None`). Exact, without a 64-bit divide and
+/// without 128-bit arithmetic; the quotient q = floor(N/d), N = n·2^k, is < 2^k ≤ 2^16.
 ///
-/// Invariant: the partial remainder r satisfies 0 ≤ r < d before each step, so 2r < 2d ≤ 2^64
-/// fits u64; after the step r < d again. The quotient gains one bit per step: q < 2^k ≤ 2^16.
-/// Exact: after the loop, n·2^k = q·d + r with 0 ≤ r < d. Callers guarantee `n < d` and `k ≤ 16`
-/// (checked: anything else returns `None`). `tests::frac_div_matches_i128` checks it against
-/// the i128 quotient at the range's corners and on seeded random operands.
-// Ranges in the doc comment above: r < d ≤ 2^63 so 2r < 2^64; q < 2^16 so 2q + 1 < 2^17.
+/// - `d < 2^16`: N < d·2^16 < 2^32, one 32-bit divide (the Cortex-M's `UDIV`).
+/// - `2^16 ≤ d < 2^62`: with L = bit length of d and s = L − 16 ≥ 1, the estimate
+///   `q1 = floor(N1/d1)` from `N1 = floor(N/2^s) < 2^(k+16) ≤ 2^32` and
+///   `d1 = floor(d/2^s) + 1 ∈ (2^15, 2^16]` (one 32-bit divide) satisfies `q − 3 < q1 ≤ q`:
+///   q1 ≤ (N/2^s)/(d/2^s) = q', and with x = d/2^s ≥ 2^15,
+///   `N1/d1 ≥ (q'·x − 1)/(x + 1) = q' − (q' + 1)/(x + 1) > q' − 2` (q' < 2^16), so
+///   q1 > q' − 3. The remainder `N − q1·d` is therefore in [0, 3d) ⊂ [0, 2^64): formed with
+///   wrapping 64-bit operations it is exact (both sides agree modulo 2^64 and the true value
+///   lies in range), and at most three subtractions of d finish the quotient.
+/// - `2^62 ≤ d ≤ 2^63`: restoring long division, k steps of shift, compare, subtract (the
+///   partial remainder stays < d, so 2r < 2^64).
+///
+/// `tests::frac_div_matches_i128` checks every branch against the i128 quotient at its ends and
+/// on seeded random operands.
+// Ranges: in the doc comment above (n < d; N1 < 2^32; d1 ≤ 2^16; q1·d and N taken modulo 2^64
+// on purpose, by `wrapping_mul`/`wrapping_sub`, with the exact result proven in range; q < 2^16
+// so q + 1 and 2q + 1 never overflow).
 #[allow(clippy::arithmetic_side_effects)]
 pub(crate) fn frac_div(n: u64, d: u64, k: u32) -> Option<(u64, bool)> {
     if n >= d || d > 1 << 63 || k > TUV_FRAC {
         return None;
+    }
+    let scale = 2u64.checked_pow(k)?; // k ≤ 16
+    if d < 1 << 16 {
+        // n < d < 2^16 and scale ≤ 2^16: N < 2^32.
+        let (nn, dd) = (u32::try_from(n * scale).ok()?, u32::try_from(d).ok()?);
+        let q = nn / dd;
+        return Some((u64::from(q), nn - q * dd != 0));
+    }
+    if d < 1 << 62 {
+        let s = (u64::BITS - d.leading_zeros()) - 16; // L − 16 ∈ [1, 46]
+                                                      // N1 = floor(n·2^k / 2^s) < 2^(L+k−s) = 2^(k+16) ≤ 2^32 (n < 2^L).
+        let n1 = if s >= k {
+            n.checked_shr(s - k)?
+        } else {
+            n.checked_mul(2u64.checked_pow(k - s)?)? // k − s ≤ 15; n·2^(k−s) < 2^32
+        };
+        let d1 = d.checked_shr(s)? + 1; // ≤ 2^16
+        let (n1, d1) = (u32::try_from(n1).ok()?, u32::try_from(d1).ok()?);
+        let mut q = u64::from(n1 / d1);
+        let mut r = (n.wrapping_mul(scale)).wrapping_sub(q.wrapping_mul(d));
+        while r >= d {
+            r -= d;
+            q += 1;
+        }
+        return Some((q, r != 0));
     }
     let (mut q, mut r) = (0u64, n);
     for _ in 0..k {
@@ -131,12 +167,14 @@ pub(crate) fn frac_div(n: u64, d: u64, k: u32) -> Option<(u64, bool)> {
 /// `{ s ∈ [0,1] : s·d ≤ n }` by exact division, ends rounded outward; `None` if empty.
 ///
 /// Cases: d > 0 gives s ≤ n/d (ceil), d < 0 gives s ≥ (−n)/(−d) (floor), d = 0 gives all or
-/// nothing. The quotient, once 0 ≤ n < d, is `ceil(n·2^16/d)` (or the floor): through one
-/// 64-bit divide when `n·2^16` fits i64, else through [`frac_div`] (exact, 16 shift-subtract
-/// steps) when d ≤ 2^63, else through an i128 divide; all three give the same exact quotient.
-/// If `n·2^16` would overflow i128 (|n| ≥ 2^111, far outside the documented ranges) the
-/// answer is the whole unit interval or, where the sign already decides, empty: conservative.
+/// nothing. Operands that fit i64 (every caller's documented range) go through [`solve_le64`];
+/// beyond, the quotient is an i128 division, and if `n·2^16` would overflow i128 (|n| ≥ 2^111)
+/// the answer is the whole unit interval or, where the sign already decides, empty:
+/// conservative.
 pub fn solve_le(d: i128, n: i128) -> Option<Interval> {
+    if let (Ok(d), Ok(n)) = (i64::try_from(d), i64::try_from(n)) {
+        return solve_le64(d, n);
+    }
     let full = Some(Interval::UNIT);
     if d > 0 {
         if n < 0 {
@@ -145,7 +183,7 @@ pub fn solve_le(d: i128, n: i128) -> Option<Interval> {
         if n >= d {
             return full;
         }
-        match frac_quotient(n, d, true) {
+        match n.checked_mul(1 << TUV_FRAC).and_then(|m| ceil_div(m, d)) {
             Some(hi) => Some(Interval {
                 lo: 0,
                 hi: clamp_raw(hi),
@@ -160,7 +198,7 @@ pub fn solve_le(d: i128, n: i128) -> Option<Interval> {
         if b > a {
             return None;
         }
-        match frac_quotient(b, a, false) {
+        match b.checked_mul(1 << TUV_FRAC).and_then(|m| floor_div(m, a)) {
             Some(lo) => Some(Interval {
                 lo: clamp_raw(lo),
                 hi: TUV_ONE,
@@ -174,25 +212,54 @@ pub fn solve_le(d: i128, n: i128) -> Option<Interval> {
     }
 }
 
-/// `ceil(n·2^16/d)` (`up`) or the floor, for `0 ≤ n ≤ d`, `d > 0` (the callers in
-/// [`solve_le`]); `None` only outside i128.
-// q < 2^16 from `frac_div`: q + 1 far inside i128.
+/// [`solve_le`] on i64 operands, the same interval: the quotient `ceil(n·2^16/d)` (or the floor
+/// of `|n|·2^16/|d|`) by [`frac_div`] on the magnitudes (`unsigned_abs` is exact for every
+/// i64), so no 64-bit or 128-bit divide runs. `tests::solve_le_matches_i128_division` checks
+/// it against the i128 division.
+// q + 1 ≤ 2^16 + 1 (q < 2^16 from `frac_div`).
 #[allow(clippy::arithmetic_side_effects)]
-fn frac_quotient(n: i128, d: i128, up: bool) -> Option<i128> {
-    let m = n.checked_mul(1 << TUV_FRAC)?;
-    if i64::try_from(m).is_ok() {
-        // One 64-bit divide (`floor_div`'s fast path: both operands fit i64).
-        return if up { ceil_div(m, d) } else { floor_div(m, d) };
-    }
-    if let (Ok(n64), Ok(d64)) = (u64::try_from(n), u64::try_from(d)) {
-        if let Some((q, rem)) = frac_div(n64, d64, TUV_FRAC) {
-            return Some(i128::from(q) + i128::from(up && rem));
+pub fn solve_le64(d: i64, n: i64) -> Option<Interval> {
+    let full = Some(Interval::UNIT);
+    if d > 0 {
+        if n < 0 {
+            return None;
         }
-    }
-    if up {
-        ceil_div(m, d)
+        if n >= d {
+            return full;
+        }
+        // 0 ≤ n < d: frac_div's contract holds, so `None` (conservative) cannot happen.
+        match frac_div(n.unsigned_abs(), d.unsigned_abs(), TUV_FRAC) {
+            Some((q, rem)) => Some(Interval {
+                lo: 0,
+                hi: clamp_raw(i128::from(q + u64::from(rem))),
+            }),
+            None => full,
+        }
+    } else if d < 0 {
+        if n >= 0 {
+            return full;
+        }
+        let (a, b) = (d.unsigned_abs(), n.unsigned_abs());
+        if b > a {
+            return None;
+        }
+        if b == a {
+            return Some(Interval {
+                lo: TUV_ONE,
+                hi: TUV_ONE,
+            });
+        }
+        match frac_div(b, a, TUV_FRAC) {
+            Some((q, _)) => Some(Interval {
+                lo: clamp_raw(i128::from(q)),
+                hi: TUV_ONE,
+            }),
+            None => full,
+        }
+    } else if n >= 0 {
+        full
     } else {
-        floor_div(m, d)
+        None
     }
 }
 
@@ -272,13 +339,7 @@ impl RecipConstraint {
     /// The products are `checked_mul` anyway; should one fail, the interval falls back to the
     /// whole unit range (conservative: nothing is culled).
     pub fn solve(&self, n: i64) -> Option<Interval> {
-        // 2^(K − 16) = 2^64 as a constant (no run-time shift). The products are ≥ 0 here, so
-        // the floor of p/2^64 is the arithmetic right shift by 64 (a right shift loses no high
-        // bits) and the ceiling is that of p + 2^64 − 1: the same quotients as a division,
-        // without the 128-bit divide.
-        const SH_BITS: u32 = crate::formats::RECIP_SHIFT - TUV_FRAC;
-        const SH: i128 = 1i128 << SH_BITS;
-        let (d, n) = (i128::from(self.d), i128::from(n));
+        let d = self.d;
         if d > 0 {
             if n < 0 {
                 return None;
@@ -286,28 +347,21 @@ impl RecipConstraint {
             if n >= d {
                 return Some(Interval::UNIT);
             }
-            let hi = n
-                .checked_mul(self.r_up)
-                .and_then(|p| p.checked_add(SH - 1))
-                .and_then(|p| p.checked_shr(SH_BITS))
-                .unwrap_or(i128::from(TUV_ONE));
+            let hi = mul_shr64(n.unsigned_abs(), self.r_up, true).unwrap_or(i128::from(TUV_ONE));
             Some(Interval {
                 lo: 0,
                 hi: clamp_raw(hi),
             })
         } else if d < 0 {
-            // |d|, |n| ≤ 2^63 as i128: negation exact.
-            let (a, b) = (d.checked_neg()?, n.checked_neg()?);
-            if b <= 0 {
+            if n >= 0 {
                 return Some(Interval::UNIT);
             }
+            // The magnitudes (`unsigned_abs` is exact for every i64).
+            let (a, b) = (d.unsigned_abs(), n.unsigned_abs());
             if b > a {
                 return None;
             }
-            let lo = b
-                .checked_mul(self.r_dn)
-                .and_then(|p| p.checked_shr(SH_BITS))
-                .unwrap_or(0);
+            let lo = mul_shr64(b, self.r_dn, false).unwrap_or(0);
             Some(Interval {
                 lo: clamp_raw(lo),
                 hi: TUV_ONE,
@@ -318,6 +372,29 @@ impl RecipConstraint {
             None
         }
     }
+}
+
+/// `ceil(n·r/2^64)` (`up`) or the floor, for `n ≤ 2^63` and `0 ≤ r < 2^81` (a
+/// reciprocal): `r = r_hi·2^64 + r_lo` with `r_hi < 2^17`, so
+/// `n·r/2^64 = n·r_hi + n·r_lo/2^64`, and the second term's floor is the high half of the
+/// 64 × 64 → 128-bit product `n·r_lo` (the low half decides the ceiling). The same quotient as
+/// an i128 product and divide, with one widening multiply and no 128 × 128 one. `None` if an
+/// operand is outside that range or the sum leaves i128 (never for [`RecipConstraint::solve`]:
+/// n < |d| makes `n·r/2^64 < 2^16 + 1`).
+// Ranges: n·r_lo < 2^128 in u128 (both < 2^64); its high half < 2^64; n·r_hi is a checked
+// u64 product; the final sums are checked.
+#[allow(clippy::arithmetic_side_effects)]
+fn mul_shr64(n: u64, r: i128, up: bool) -> Option<i128> {
+    const _: () = assert!(crate::formats::RECIP_SHIFT - TUV_FRAC == 64);
+    let r = u128::try_from(r).ok()?;
+    let r_hi = u64::try_from(r.checked_shr(64)?).ok()?;
+    let r_lo = u64::try_from(r & u128::from(u64::MAX)).ok()?;
+    let p = u128::from(n) * u128::from(r_lo);
+    let p_hi = u64::try_from(p.checked_shr(64)?).ok()?;
+    let p_lo_nonzero = p & u128::from(u64::MAX) != 0;
+    let q = n.checked_mul(r_hi)?.checked_add(p_hi)?;
+    let q = q.checked_add(u64::from(up && p_lo_nonzero))?;
+    Some(i128::from(q))
 }
 
 #[cfg(test)]
@@ -413,6 +490,84 @@ mod tests {
                 c.r_up == up && c.r_dn == dn,
                 "d={d} ({d:#x}): r_up {} ({:#x}) want {up} ({up:#x}), r_dn {} ({:#x}) want {dn} ({dn:#x}); UVT_SEED={seed}",
                 c.r_up, c.r_up, c.r_dn, c.r_dn
+            );
+        }
+    }
+
+    #[test]
+    fn recip_solve_matches_i128_product() {
+        // The split product against the i128 product and divide by 2^64 it replaced.
+        let seed = crate::testrng::seed();
+        let mut rng = crate::testrng::Rng(seed ^ 0x5017);
+        let mut pairs: Vec<(i64, i64)> = Vec::new();
+        for d in [
+            1i64,
+            -1,
+            2,
+            3,
+            (1 << 40) + 7,
+            (1 << 59) - 1,
+            -(1 << 59),
+            i64::MAX,
+            i64::MIN,
+        ] {
+            for n in [
+                0i64,
+                1,
+                -1,
+                d / 3,
+                d / 2,
+                d.saturating_sub(1),
+                d,
+                d.saturating_neg(),
+            ] {
+                pairs.push((d, n));
+            }
+        }
+        for _ in 0..crate::testrng::cases(50_000, 2_000_000) {
+            let d = rng.signed(1 << 62);
+            let n = match rng.next_u64() % 3 {
+                0 => rng.signed(1 << 62),
+                1 => d / 2 + rng.signed(4),
+                _ => rng.signed(d.unsigned_abs().min(1 << 62) as i64),
+            };
+            pairs.push((d, n));
+        }
+        let sh = 1i128 << 64;
+        for (d, n) in pairs {
+            let c = RecipConstraint::new(d);
+            let (d128, n128) = (i128::from(d), i128::from(n));
+            let want = if d > 0 {
+                if n < 0 {
+                    None
+                } else if n >= d {
+                    Some(Interval::UNIT)
+                } else {
+                    let hi = -(-(n128 * c.r_up)).div_euclid(sh);
+                    Some(Interval {
+                        lo: 0,
+                        hi: clamp_raw(hi),
+                    })
+                }
+            } else if d < 0 {
+                let (a, b) = (-d128, -n128);
+                if b <= 0 {
+                    Some(Interval::UNIT)
+                } else if b > a {
+                    None
+                } else {
+                    Some(Interval {
+                        lo: clamp_raw((b * c.r_dn).div_euclid(sh)),
+                        hi: TUV_ONE,
+                    })
+                }
+            } else {
+                (n >= 0).then_some(Interval::UNIT)
+            };
+            assert_eq!(
+                c.solve(n),
+                want,
+                "d={d} ({d:#x}) n={n} ({n:#x}); UVT_SEED={seed}"
             );
         }
     }
