@@ -16,7 +16,7 @@
 //! front of the camera: `ξ = (a + w)·E / (2w)`.
 
 use crate::bounded::Eps;
-use crate::formats::{ceil_div, floor_div, DefaultPrecision, PixelCoord, Precision, PrecisionBits};
+use crate::formats::{DefaultPrecision, PixelCoord, Precision, PrecisionBits};
 use crate::input::{PixelRect, Triangle, Viewport, C, W, X, Y, Z};
 use crate::interval::{solve_le, Interval};
 use crate::stats::Ops;
@@ -292,26 +292,33 @@ const BOX_LIMIT: PixelCoord = 1 << 58;
 /// Pixel position `(a + w)·E·2^bnd / (2w)` of a front point (w > 0), floored or ceiled to the
 /// bound grid of `bnd` fraction bits.
 ///
-/// Ranges: |a + w| < 2^31 (|a| ≤ 2^30 with the lens term, |w| ≤ 2^29), E ≤ 2^11, bnd ≤ 16
-/// (`PrecisionBits`): the numerator is < 2^58, formed in i128 by multiplications (the 2^bnd
-/// factor is `2^bnd` by `pow`, not a shift, so overflow checks see it). The caller passes
-/// w > 0, so the division exists and |q| ≤ |num| < 2^58 fits i64. Should either fail, the result
-/// is the outward limit (−2^58 for a minimum, 2^58 for a maximum): conservative.
-/// `tests::projection_at_the_domain_corners` checks the extremes against an independent
-/// computation.
+/// Ranges: |a + w| < 2^32 (|a| < 2^31 with the lens term and ε, |w| ≤ 2^29 + 1), E ≤ 2^11,
+/// bnd ≤ 16 (`PrecisionBits`): the numerator is < 2^59, formed in i64 by checked
+/// multiplications (the 2^bnd factor is `2^bnd` by `pow`, not a shift), and one 64-bit
+/// division by 2w ≥ 2 (`checked_div_euclid`; the ceiling as the negated floor of −num, exact
+/// since |num| < 2^59) gives |q| < 2^58. Should anything fail (w ≤ 0 is the caller's duty and
+/// is checked), the result is the outward limit (−2^58 for a minimum, 2^58 for a maximum):
+/// conservative. `tests::projection_at_the_domain_corners` checks the extremes against an
+/// independent computation.
 #[inline]
-#[allow(clippy::arithmetic_side_effects)] // ranges in the doc comment above
 pub(crate) fn project(a: i64, w: i64, extent: i64, up: bool, bnd: u32) -> PixelCoord {
-    let num = (i128::from(a) + i128::from(w)) * i128::from(extent) * 2i128.pow(bnd);
-    let den = 2 * i128::from(w);
-    let q = if up {
-        ceil_div(num, den)
-    } else {
-        floor_div(num, den)
-    };
     let limit = if up { BOX_LIMIT } else { -BOX_LIMIT };
-    q.and_then(|q| PixelCoord::try_from(q).ok())
-        .unwrap_or(limit)
+    if w <= 0 {
+        return limit;
+    }
+    let num = a
+        .checked_add(w)
+        .and_then(|s| s.checked_mul(extent))
+        .and_then(|s| s.checked_mul(2i64.checked_pow(bnd)?));
+    let q = match (num, w.checked_mul(2)) {
+        (Some(num), Some(den)) if up => num
+            .checked_neg()
+            .and_then(|m| m.checked_div_euclid(den))
+            .and_then(i64::checked_neg),
+        (Some(num), Some(den)) => num.checked_div_euclid(den),
+        _ => None,
+    };
+    q.unwrap_or(limit)
 }
 
 /// Lens-corner boxes of one axis (Laine §3.1), with the separating-line test per side.
@@ -415,8 +422,11 @@ pub(crate) fn corner_boxes<const N: usize, const M: usize>(
             }
         }
     }
-    let unbounded_lo = hull_meets_ray(&left, false, ops);
-    let unbounded_hi = hull_meets_ray(&right, true, ops);
+    // A corner set entirely in front (every w > 0; both sets share their w) has its hull in
+    // w > 0, which cannot meet the camera plane: the test only runs when some w ≤ 0.
+    let all_front = left.iter().all(|p| p.1 > 0);
+    let unbounded_lo = !all_front && hull_meets_ray(&left, false, ops);
+    let unbounded_hi = !all_front && hull_meets_ray(&right, true, ops);
     // Per lens corner: the front corner point with the smallest (a − ε_x)/w and the one with
     // the largest (a + ε_x)/w.
     let mut lo: [Option<(i32, i32)>; 2] = [None; 2];
