@@ -306,16 +306,32 @@ impl BoundsStrategy for Laine2011 {
     }
 
     fn prepare(&self, setup: &Setup, ops: &mut Ops) -> LaineCoeffs {
-        let defocus = setup.class.defocus();
-        let motion = setup.class.motion();
-        let ext = [(0usize, setup.viewport.w), (1, setup.viewport.h)];
-        let lens = [0usize, 1].map(|a| defocus.then(|| lens_axis(setup, a, ops)));
-        let dual = ext.map(|(a, e)| {
-            let ex = setup.eps.x.get(a).copied().unwrap_or(0);
-            let eps = ex.saturating_add(setup.eps.w);
-            motion.then(|| dual_axis(&setup.tri, &setup.footprint, a, i64::from(e), eps, ops))
-        });
-        LaineCoeffs { lens, dual }
+        // Filled in place (no array `map` of the ~100-byte axis values: each would be copied).
+        let mut c = LaineCoeffs {
+            lens: [None; 2],
+            dual: [None; 2],
+        };
+        if setup.class.defocus() {
+            for (a, slot) in c.lens.iter_mut().enumerate() {
+                *slot = Some(lens_axis(setup, a, ops));
+            }
+        }
+        if setup.class.motion() {
+            let ext = [setup.viewport.w, setup.viewport.h];
+            for ((a, slot), e) in c.dual.iter_mut().enumerate().zip(ext) {
+                let ex = setup.eps.x.get(a).copied().unwrap_or(0);
+                let eps = ex.saturating_add(setup.eps.w);
+                *slot = Some(dual_axis(
+                    &setup.tri,
+                    &setup.footprint,
+                    a,
+                    i64::from(e),
+                    eps,
+                    ops,
+                ));
+            }
+        }
+        c
     }
 
     fn tile(

@@ -229,3 +229,65 @@ fn dual_t_at_the_domain_corners() {
         }
     }
 }
+
+#[test]
+fn projection_and_pixel_floor_at_the_widest_corners() {
+    // The bounded corners reach |a| < 2^30 + 2^25 and w = 2^29 + 1; E = 2048, bnd 0..=16: the
+    // i64 projection against the i128 quotient, and the pixel floor (a right shift) against
+    // the floor division.
+    let amax = (1i64 << 31) - 1;
+    for a in [
+        -amax,
+        -(1 << 30) - (1 << 25),
+        -1,
+        0,
+        1,
+        (1 << 30) + (1 << 25),
+        amax,
+    ] {
+        for w in [1i64, 2, 3, (1 << 29) + 1] {
+            for bnd in [0u32, 1, 8, 15, 16] {
+                for up in [false, true] {
+                    let got = project(a, w, 2048, up, bnd);
+                    let num = (i128::from(a) + i128::from(w)) * 2048 * 2i128.pow(bnd);
+                    let den = 2 * i128::from(w);
+                    let want = if up {
+                        -(-num).div_euclid(den)
+                    } else {
+                        num.div_euclid(den)
+                    };
+                    assert_eq!(
+                        i128::from(got),
+                        want,
+                        "a={a} w={w} bnd={bnd} up={up}: {got} ({got:#x}), i128 {want} ({want:#x})"
+                    );
+                }
+            }
+        }
+    }
+    // w ≤ 0 is refused with the outward limit, not a panic.
+    assert_eq!(project(5, 0, 2048, false, 16), -(1 << 58));
+    assert_eq!(project(5, -3, 2048, true, 16), 1 << 58);
+    for x in [
+        -(1i64 << 58),
+        -(1 << 58) + 1,
+        -65537,
+        -65536,
+        -1,
+        0,
+        1,
+        65535,
+        65536,
+        (1 << 58) - 1,
+        1 << 58,
+    ] {
+        for bnd in 0..=16u32 {
+            let want = x.div_euclid(1 << bnd);
+            assert_eq!(
+                crate::setup::floor_px(x, bnd),
+                want,
+                "x={x} ({x:#x}) bnd={bnd}"
+            );
+        }
+    }
+}

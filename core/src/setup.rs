@@ -478,9 +478,10 @@ pub(crate) fn exact_boxes(
 
 /// Footprint columns (or rows) `[p0, p1)` of one axis from its boxes, clamped to `[0, E]`.
 /// A sample at ξ is in column floor(ξ); ξ ≤ max means columns up to floor(max) are needed.
-/// Pixel index floor(X / 2^bnd) by an exact floor division (bnd ≤ 16; no shift needed).
-fn floor_px(x: PixelCoord, bnd: u32) -> PixelCoord {
-    x.div_euclid(2i64.pow(bnd))
+/// Pixel index floor(X / 2^bnd): an arithmetic right shift by bnd ≤ 16 (`PrecisionBits`), which
+/// is the exact floor division by 2^bnd and loses no high bits (no divide instruction).
+pub(crate) fn floor_px(x: PixelCoord, bnd: u32) -> PixelCoord {
+    x.checked_shr(bnd).unwrap_or(if x < 0 { -1 } else { 0 })
 }
 
 fn axis_range(b: &AxisBoxes, extent: u16, bnd: u32) -> (u16, u16) {
