@@ -18,7 +18,7 @@
 use crate::bounded::Eps;
 use crate::formats::{DefaultPrecision, PixelCoord, Precision, PrecisionBits};
 use crate::input::{PixelRect, Triangle, Viewport, C, W, X, Y, Z};
-use crate::interval::{solve_le, Interval};
+use crate::interval::{solve_le64, Interval};
 use crate::stats::Ops;
 
 /// Which effects a triangle has; the class decides which work is skipped.
@@ -194,6 +194,7 @@ pub fn classify(tri: &Triangle) -> Class {
 }
 
 /// Does the convex hull of `pts` (points (a, w)) meet the half-line {(s·dir, 0) : s ≥ 0}?
+/// (Pairwise, for any i64 points: the reference of setup's one-pass `hull_meets_ray`.)
 ///
 /// In 2D a direction lies in the cone of a point set iff it lies in the cone of one point or of
 /// two points less than π apart (Carathéodory), and the hull meets the camera point iff a point is
@@ -247,7 +248,8 @@ pub fn crosses_camera_plane(pts: &[(i64, i64)], dir: i64, ops: &mut Ops) -> bool
 ///
 /// Ranges: |a| < 2^31, |w| < 2^31 (setup's corners: |a| < 2^31, |w| ≤ 2^29 + 1): every
 /// product < 2^62, the final sum < 2^63, exact in i64; the negations of i32 values in i64
-/// are exact. `tests::hull_meets_ray_matches_pairwise` compares it with the pairwise function.
+/// are exact. `fast_corners::hull_meets_ray_matches_pairwise` compares it with the pairwise
+/// function.
 #[allow(clippy::arithmetic_side_effects)] // ranges in the doc comment above
 pub(crate) fn hull_meets_ray(pts: &[(i32, i32)], positive: bool, ops: &mut Ops) -> bool {
     // (σ·a, |w|) of the best point below (w < 0) and above (w > 0) the line.
@@ -298,8 +300,8 @@ const BOX_LIMIT: PixelCoord = 1 << 58;
 /// division by 2w ≥ 2 (`checked_div_euclid`; the ceiling as the negated floor of −num, exact
 /// since |num| < 2^59) gives |q| < 2^58. Should anything fail (w ≤ 0 is the caller's duty and
 /// is checked), the result is the outward limit (−2^58 for a minimum, 2^58 for a maximum):
-/// conservative. `tests::projection_at_the_domain_corners` checks the extremes against an
-/// independent computation.
+/// conservative. `corners::projection_at_the_domain_corners` and `fast_corners::
+/// projection_and_pixel_floor_at_the_widest_corners` check the extremes against i128.
 #[inline]
 pub(crate) fn project(a: i64, w: i64, extent: i64, up: bool, bnd: u32) -> PixelCoord {
     let limit = if up { BOX_LIMIT } else { -BOX_LIMIT };
@@ -389,8 +391,8 @@ fn ratio_below(a: i32, w: i32, b: (i32, i32)) -> bool {
 /// the corners are compared by cross-multiplication (`a_i·w_j` against `a_j·w_i`, i64), and
 /// each of the four box values of the axis (lens −1/+1, min/max) costs one [`project`] — the
 /// same values as projecting every corner (equal ratios project to equal values), with 4
-/// divisions instead of 4·M. `tests::boxes_match_per_corner_projection` checks them against
-/// the per-corner computation.
+/// divisions instead of 4·M. `fast_corners::boxes_match_per_corner_projection` checks them
+/// against the per-corner computation.
 // Ranges: |a|, |cs|, |w| ≤ 2^29 (checked triangle), ε_x ≤ 2^24 and ε_w ≤ 1 (`Eps::of` with
 // `OFFSET_SHIFT_MAX`): a ± |cs| ± ε_x and a + lens·cs ± ε_x are < 2^30 + 2^25 < 2^31 (i32),
 // w ± ε_w ≤ 2^29 + 1 (i32), so [`ratio_below`]'s products are < 2^61 and `project`'s
@@ -519,7 +521,7 @@ fn frustum_span(tri: &Triangle, eps: &Eps, ops: &mut Ops) -> Option<Interval> {
     if a <= 0 && b <= 0 {
         return None;
     }
-    span = span.meet(solve_le(i128::from(a - b), i128::from(a))?)?;
+    span = span.meet(solve_le64(a - b, a)?)?;
     for axis in 0..2 {
         let e = ew + i64::from(eps.x.get(axis).copied().unwrap_or(0));
         for sign in [-1i64, 1] {
@@ -534,7 +536,7 @@ fn frustum_span(tri: &Triangle, eps: &Eps, ops: &mut Ops) -> Option<Interval> {
             };
             let (a, b) = (dist(v0), dist(v1));
             ops.add_setup(14);
-            span = span.meet(solve_le(i128::from(a - b), i128::from(a))?)?;
+            span = span.meet(solve_le64(a - b, a)?)?;
         }
     }
     Some(span)
