@@ -117,8 +117,8 @@ fn clamp_raw(x: i128) -> i32 {
 /// - `2^62 ≤ d ≤ 2^63`: restoring long division, k steps of shift, compare, subtract (the
 ///   partial remainder stays < d, so 2r < 2^64).
 ///
-/// `tests::frac_div_matches_i128` checks every branch against the i128 quotient at its ends and
-/// on seeded random operands.
+/// `interval_corners::frac_div_matches_i128` checks every branch against the i128 quotient at
+/// its ends and on seeded random operands.
 // Ranges: in the doc comment above (n < d; N1 < 2^32; d1 ≤ 2^16; q1·d and N taken modulo 2^64
 // on purpose, by `wrapping_mul`/`wrapping_sub`, with the exact result proven in range; q < 2^16
 // so q + 1 and 2q + 1 never overflow).
@@ -135,8 +135,8 @@ pub(crate) fn frac_div(n: u64, d: u64, k: u32) -> Option<(u64, bool)> {
         return Some((u64::from(q), nn - q * dd != 0));
     }
     if d < 1 << 62 {
-        let s = (u64::BITS - d.leading_zeros()) - 16; // L − 16 ∈ [1, 46]
-                                                      // N1 = floor(n·2^k / 2^s) < 2^(L+k−s) = 2^(k+16) ≤ 2^32 (n < 2^L).
+        // s = L − 16 ∈ [1, 46]; N1 = floor(n·2^k / 2^s) < 2^(L+k−s) = 2^(k+16) ≤ 2^32 (n < 2^L).
+        let s = (u64::BITS - d.leading_zeros()) - 16;
         let n1 = if s >= k {
             n.checked_shr(s - k)?
         } else {
@@ -214,8 +214,8 @@ pub fn solve_le(d: i128, n: i128) -> Option<Interval> {
 
 /// [`solve_le`] on i64 operands, the same interval: the quotient `ceil(n·2^16/d)` (or the floor
 /// of `|n|·2^16/|d|`) by [`frac_div`] on the magnitudes (`unsigned_abs` is exact for every
-/// i64), so no 64-bit or 128-bit divide runs. `tests::solve_le_matches_i128_division` checks
-/// it against the i128 division.
+/// i64), so no 64-bit or 128-bit divide runs.
+/// `interval_corners::solve_le_matches_i128_division` checks it against the i128 division.
 // q + 1 ≤ 2^16 + 1 (q < 2^16 from `frac_div`).
 #[allow(clippy::arithmetic_side_effects)]
 pub fn solve_le64(d: i64, n: i64) -> Option<Interval> {
@@ -296,7 +296,8 @@ impl RecipConstraint {
     /// `2^80 = 2^16·q0·a + 2^16·r0` and `floor(2^80/a) = 2^16·q0 + floor(r0·2^16/a)`, the last
     /// term by [`frac_div`] (r0 < a); the ceiling adds 1 when anything remains. `a = 1` gives
     /// 2^80 for both; `d = 0` gives 0 for both (never used: `solve` decides d = 0 by sign).
-    /// `tests::recip_matches_i128` compares with the i128 division at the range's corners.
+    /// `interval_corners::recip_matches_i128` compares with the i128 division at the range's
+    /// corners.
     // Ranges: a ≤ 2^63 (|i64|); q0 = floor((2^64 − 1)/a) ≤ 2^63 so q0·a ≤ 2^64 − 1 and
     // m = 2^64 − 1 − q0·a ∈ [0, a − 1]: r0 = m + 1 ∈ [1, a] ≤ 2^63 (r0 = a means a | 2^64, then
     // q0 + 1 ≤ 2^63 and r0 = 0); 2^16·q0 < 2^80 and the fraction < 2^16: far inside i128.
@@ -380,7 +381,8 @@ impl RecipConstraint {
 /// 64 × 64 → 128-bit product `n·r_lo` (the low half decides the ceiling). The same quotient as
 /// an i128 product and divide, with one widening multiply and no 128 × 128 one. `None` if an
 /// operand is outside that range or the sum leaves i128 (never for [`RecipConstraint::solve`]:
-/// n < |d| makes `n·r/2^64 < 2^16 + 1`).
+/// n < |d| makes `n·r/2^64 < 2^16 + 1`). `interval_corners::recip_solve_matches_i128_product`
+/// compares [`RecipConstraint::solve`] with the i128 product and divide.
 // Ranges: n·r_lo < 2^128 in u128 (both < 2^64); its high half < 2^64; n·r_hi is a checked
 // u64 product; the final sums are checked.
 #[allow(clippy::arithmetic_side_effects)]
@@ -398,14 +400,6 @@ fn mul_shr64(n: u64, r: i128, up: bool) -> Option<i128> {
 }
 
 #[cfg(test)]
-// Test code: reference computations in plain i128 on values ≤ 2^100; an overflow panics, which
-// is the failure signal of a test.
-#[allow(
-    clippy::arithmetic_side_effects,
-    clippy::cast_possible_truncation,
-    clippy::cast_sign_loss,
-    clippy::cast_possible_wrap
-)]
 mod tests {
     use super::*;
 
@@ -451,223 +445,6 @@ mod tests {
                     }
                     _ => panic!("emptiness differs d={d} n={n}"),
                 }
-            }
-        }
-    }
-
-    /// The old reciprocal: one i128 division each way.
-    fn recip_i128(d: i64) -> (i128, i128) {
-        let k = 1i128 << crate::formats::RECIP_SHIFT;
-        let a = i128::from(d).abs();
-        if a == 0 {
-            return (0, 0);
-        }
-        (-(-k).div_euclid(a), k.div_euclid(a))
-    }
-
-    #[test]
-    fn recip_matches_i128() {
-        let seed = crate::testrng::seed();
-        let mut rng = crate::testrng::Rng(seed ^ 0x7ec1);
-        let mut ds: Vec<i64> = vec![0, 1, -1, 2, 3, 7, 1 << 32, (1 << 32) + 1, (1 << 59) - 1];
-        for e in 0..64 {
-            let p = 1i64.checked_shl(e).unwrap_or(i64::MAX);
-            ds.extend([
-                p,
-                p.saturating_sub(1),
-                p.saturating_add(1),
-                p.saturating_neg(),
-            ]);
-        }
-        ds.extend([i64::MAX, i64::MIN, i64::MIN + 1]);
-        for _ in 0..crate::testrng::cases(20_000, 2_000_000) {
-            ds.push(rng.signed(1 << 59));
-        }
-        for d in ds {
-            let c = RecipConstraint::new(d);
-            let (up, dn) = recip_i128(d);
-            assert!(
-                c.r_up == up && c.r_dn == dn,
-                "d={d} ({d:#x}): r_up {} ({:#x}) want {up} ({up:#x}), r_dn {} ({:#x}) want {dn} ({dn:#x}); UVT_SEED={seed}",
-                c.r_up, c.r_up, c.r_dn, c.r_dn
-            );
-        }
-    }
-
-    #[test]
-    fn recip_solve_matches_i128_product() {
-        // The split product against the i128 product and divide by 2^64 it replaced.
-        let seed = crate::testrng::seed();
-        let mut rng = crate::testrng::Rng(seed ^ 0x5017);
-        let mut pairs: Vec<(i64, i64)> = Vec::new();
-        for d in [
-            1i64,
-            -1,
-            2,
-            3,
-            (1 << 40) + 7,
-            (1 << 59) - 1,
-            -(1 << 59),
-            i64::MAX,
-            i64::MIN,
-        ] {
-            for n in [
-                0i64,
-                1,
-                -1,
-                d / 3,
-                d / 2,
-                d.saturating_sub(1),
-                d,
-                d.saturating_neg(),
-            ] {
-                pairs.push((d, n));
-            }
-        }
-        for _ in 0..crate::testrng::cases(50_000, 2_000_000) {
-            let d = rng.signed(1 << 62);
-            let n = match rng.next_u64() % 3 {
-                0 => rng.signed(1 << 62),
-                1 => d / 2 + rng.signed(4),
-                _ => rng.signed(d.unsigned_abs().min(1 << 62) as i64),
-            };
-            pairs.push((d, n));
-        }
-        let sh = 1i128 << 64;
-        for (d, n) in pairs {
-            let c = RecipConstraint::new(d);
-            let (d128, n128) = (i128::from(d), i128::from(n));
-            let want = if d > 0 {
-                if n < 0 {
-                    None
-                } else if n >= d {
-                    Some(Interval::UNIT)
-                } else {
-                    let hi = -(-(n128 * c.r_up)).div_euclid(sh);
-                    Some(Interval {
-                        lo: 0,
-                        hi: clamp_raw(hi),
-                    })
-                }
-            } else if d < 0 {
-                let (a, b) = (-d128, -n128);
-                if b <= 0 {
-                    Some(Interval::UNIT)
-                } else if b > a {
-                    None
-                } else {
-                    Some(Interval {
-                        lo: clamp_raw((b * c.r_dn).div_euclid(sh)),
-                        hi: TUV_ONE,
-                    })
-                }
-            } else {
-                (n >= 0).then_some(Interval::UNIT)
-            };
-            assert_eq!(
-                c.solve(n),
-                want,
-                "d={d} ({d:#x}) n={n} ({n:#x}); UVT_SEED={seed}"
-            );
-        }
-    }
-
-    #[test]
-    fn frac_div_matches_i128() {
-        let seed = crate::testrng::seed();
-        let mut rng = crate::testrng::Rng(seed ^ 0xf7ac);
-        let mut cases = vec![
-            (0u64, 1u64),
-            (1, 2),
-            (1 << 62, 1 << 63),
-            ((1 << 63) - 1, 1 << 63),
-            (2, 3),
-        ];
-        for _ in 0..crate::testrng::cases(20_000, 2_000_000) {
-            let d = rng.signed(1 << 62).unsigned_abs().max(1) * 2;
-            let n = rng.next_u64() % d;
-            cases.push((n, d));
-        }
-        for (n, d) in cases {
-            for k in [0u32, 1, 15, 16] {
-                let m = u128::from(n) << k;
-                let want = (m / u128::from(d), m % u128::from(d) != 0);
-                let got = frac_div(n, d, k);
-                assert_eq!(
-                    got.map(|(q, r)| (u128::from(q), r)),
-                    Some(want),
-                    "n={n} ({n:#x}) d={d} ({d:#x}) k={k}; UVT_SEED={seed}"
-                );
-            }
-        }
-        // Outside its contract it refuses instead of answering.
-        assert_eq!(frac_div(5, 5, 16), None);
-        assert_eq!(frac_div(1, (1 << 63) + 1, 16), None);
-        assert_eq!(frac_div(1, 2, 17), None);
-    }
-
-    #[test]
-    fn solve_le_matches_i128_division() {
-        // The three quotient paths (64-bit divide, shift-subtract, i128 divide) against the
-        // i128 division, at the ends of each path's range and on seeded random operands.
-        let seed = crate::testrng::seed();
-        let mut rng = crate::testrng::Rng(seed ^ 0x501e);
-        let want = |d: i128, n: i128| -> Option<Interval> {
-            let one = i128::from(TUV_ONE);
-            let clamp = |x: i128| x.clamp(0, one) as i32;
-            if d > 0 {
-                (n >= 0).then(|| Interval {
-                    lo: 0,
-                    hi: clamp(-(-(n * one)).div_euclid(d)),
-                })
-            } else if d < 0 {
-                (-n <= -d).then(|| Interval {
-                    lo: clamp((-n * one).div_euclid(-d)),
-                    hi: TUV_ONE,
-                })
-            } else {
-                (n >= 0).then_some(Interval::UNIT)
-            }
-        };
-        let mut cases: Vec<(i128, i128)> = Vec::new();
-        for d in [
-            1i128,
-            3,
-            (1 << 47) - 1,
-            1 << 47,
-            (1 << 47) + 1,
-            (1 << 63) - 1,
-            1 << 63,
-            (1 << 63) + 1,
-            1 << 90,
-        ] {
-            for n in [0, 1, d / 3, d / 2, d - 1, d] {
-                cases.extend([(d, n), (-d, -n)]);
-            }
-        }
-        for _ in 0..crate::testrng::cases(20_000, 2_000_000) {
-            let d = i128::from(rng.signed(1 << 62)) * 2 + 1;
-            let n = i128::from(rng.next_u64() >> 1) % d.abs();
-            cases.extend([(d, n.copysign_like(d)), (d, -n), (d, n)]);
-        }
-        for (d, n) in cases {
-            assert_eq!(
-                solve_le(d, n),
-                want(d, n),
-                "d={d} ({d:#x}) n={n} ({n:#x}); UVT_SEED={seed}"
-            );
-        }
-    }
-
-    trait CopySign {
-        fn copysign_like(self, o: Self) -> Self;
-    }
-    impl CopySign for i128 {
-        fn copysign_like(self, o: i128) -> i128 {
-            if o < 0 {
-                -self
-            } else {
-                self
             }
         }
     }

@@ -42,6 +42,8 @@ mod fast_corners;
 pub mod formats;
 pub mod input;
 pub mod interval;
+#[cfg(test)]
+mod interval_corners;
 pub mod sample;
 pub mod setup;
 pub mod stats;
