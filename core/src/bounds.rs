@@ -42,7 +42,7 @@
 
 use crate::formats::DualDelta;
 use crate::input::{PixelRect, Triangle, W};
-use crate::interval::{solve_le, Interval, RecipConstraint};
+use crate::interval::{solve_le64, Interval, RecipConstraint};
 use crate::setup::{axis_coord, Setup};
 use crate::stats::Ops;
 
@@ -247,22 +247,32 @@ fn dual_axis(
 }
 
 /// t interval of one axis for a tile [x0, x1] ⊆ [ξa, ξb].
-// Ranges: |δ| < 2^44; ξa, ξb, x0, x1 are pixel indices < 2^16 (u16), so |ξb − x|, |x − ξa| < 2^17
-// and each line value (scaled by D = ξb − ξa) is < 2·2^44·2^17 = 2^62; the differences handed to
-// `solve_le` are < 2^63. All far inside i128.
+///
+/// Each bounding line `v0·(ξb − x) + v1·(x − ξa)` is evaluated as `v0·D + (v1 − v0)·(x − ξa)`
+/// (D = ξb − ξa; the same integer), and of its values at the tile's two ends the smaller (the
+/// larger, for δmax) is the one at the end the slope's sign picks: one evaluation per line
+/// instead of two, the same values.
+// Ranges: |δ| < 2^44 (so |v1 − v0| < 2^45); ξa, ξb, x0, x1 are pixel indices < 2^16 (u16), so
+// |D|, |x − ξa| < 2^16: |v0·D| < 2^60, |(v1 − v0)·(x − ξa)| < 2^61, each line value < 2^62 in
+// i64, and the differences handed to `solve_le64` are < 2^63. `fast_corners::
+// dual_t_at_the_domain_corners` drives the extremes against an i128 computation.
 #[allow(clippy::arithmetic_side_effects)]
-fn dual_t(d: &DualAxis, x0: i64, x1: i64, ops: &mut Ops) -> Option<Interval> {
-    let [xa, xb] = d.xi.map(i128::from);
-    let line = |v: &[DualDelta; 2], x: i64| {
-        let x = i128::from(x);
-        i128::from(v[0]) * (xb - x) + i128::from(v[1]) * (x - xa)
+pub(crate) fn dual_t(d: &DualAxis, x0: i64, x1: i64, ops: &mut Ops) -> Option<Interval> {
+    let [xa, xb] = d.xi;
+    let (xl, xh) = (x0.min(x1), x0.max(x1));
+    let span = xb - xa;
+    // The line's minimum (`low`) or maximum over x ∈ {xl, xh}.
+    let line = |v: &[DualDelta; 2], low: bool| {
+        let slope = v[1] - v[0];
+        let x = if (slope >= 0) == low { xl } else { xh };
+        v[0] * span + slope * (x - xa)
     };
-    let [lo0, lo1] = d.lo.map(|v| line(&v, x0).min(line(&v, x1)));
-    let [hi0, hi1] = d.hi.map(|v| line(&v, x0).max(line(&v, x1)));
+    let [lo0, lo1] = d.lo.map(|v| line(&v, true));
+    let [hi0, hi1] = d.hi.map(|v| line(&v, false));
     ops.add_bounds(24);
     // (1−t)·lo0 + t·lo1 ≤ 0  and  (1−t)·hi0 + t·hi1 ≥ 0.
-    let a = solve_le(lo1 - lo0, -lo0)?;
-    let b = solve_le(hi0 - hi1, hi0)?;
+    let a = solve_le64(lo1 - lo0, -lo0)?;
+    let b = solve_le64(hi0 - hi1, hi0)?;
     ops.add_bounds(8);
     a.meet(b)
 }
@@ -296,16 +306,32 @@ impl BoundsStrategy for Laine2011 {
     }
 
     fn prepare(&self, setup: &Setup, ops: &mut Ops) -> LaineCoeffs {
-        let defocus = setup.class.defocus();
-        let motion = setup.class.motion();
-        let ext = [(0usize, setup.viewport.w), (1, setup.viewport.h)];
-        let lens = [0usize, 1].map(|a| defocus.then(|| lens_axis(setup, a, ops)));
-        let dual = ext.map(|(a, e)| {
-            let ex = setup.eps.x.get(a).copied().unwrap_or(0);
-            let eps = ex.saturating_add(setup.eps.w);
-            motion.then(|| dual_axis(&setup.tri, &setup.footprint, a, i64::from(e), eps, ops))
-        });
-        LaineCoeffs { lens, dual }
+        // Filled in place (no array `map` of the ~100-byte axis values: each would be copied).
+        let mut c = LaineCoeffs {
+            lens: [None; 2],
+            dual: [None; 2],
+        };
+        if setup.class.defocus() {
+            for (a, slot) in c.lens.iter_mut().enumerate() {
+                *slot = Some(lens_axis(setup, a, ops));
+            }
+        }
+        if setup.class.motion() {
+            let ext = [setup.viewport.w, setup.viewport.h];
+            for ((a, slot), e) in c.dual.iter_mut().enumerate().zip(ext) {
+                let ex = setup.eps.x.get(a).copied().unwrap_or(0);
+                let eps = ex.saturating_add(setup.eps.w);
+                *slot = Some(dual_axis(
+                    &setup.tri,
+                    &setup.footprint,
+                    a,
+                    i64::from(e),
+                    eps,
+                    ops,
+                ));
+            }
+        }
+        c
     }
 
     fn tile(

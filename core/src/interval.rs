@@ -101,12 +101,80 @@ fn clamp_raw(x: i128) -> i32 {
     i32::try_from(x.clamp(0, i128::from(TUV_ONE))).unwrap_or(TUV_ONE)
 }
 
+/// `floor(n·2^k / d)` and whether the division leaves a remainder, for `0 ≤ n < d ≤ 2^63`
+/// and `k ≤ 16` (checked: anything else returns `None`). Exact, without a 64-bit divide and
+/// without 128-bit arithmetic; the quotient q = floor(N/d), N = n·2^k, is < 2^k ≤ 2^16.
+///
+/// - `d < 2^16`: N < d·2^16 < 2^32, one 32-bit divide (the Cortex-M's `UDIV`).
+/// - `2^16 ≤ d < 2^62`: with L = bit length of d and s = L − 16 ≥ 1, the estimate
+///   `q1 = floor(N1/d1)` from `N1 = floor(N/2^s) < 2^(k+16) ≤ 2^32` and
+///   `d1 = floor(d/2^s) + 1 ∈ (2^15, 2^16]` (one 32-bit divide) satisfies `q − 3 < q1 ≤ q`:
+///   q1 ≤ (N/2^s)/(d/2^s) = q', and with x = d/2^s ≥ 2^15,
+///   `N1/d1 ≥ (q'·x − 1)/(x + 1) = q' − (q' + 1)/(x + 1) > q' − 2` (q' < 2^16), so
+///   q1 > q' − 3. The remainder `N − q1·d` is therefore in [0, 3d) ⊂ [0, 2^64): formed with
+///   wrapping 64-bit operations it is exact (both sides agree modulo 2^64 and the true value
+///   lies in range), and at most three subtractions of d finish the quotient.
+/// - `2^62 ≤ d ≤ 2^63`: restoring long division, k steps of shift, compare, subtract (the
+///   partial remainder stays < d, so 2r < 2^64).
+///
+/// `interval_corners::frac_div_matches_i128` checks every branch against the i128 quotient at
+/// its ends and on seeded random operands.
+// Ranges: in the doc comment above (n < d; N1 < 2^32; d1 ≤ 2^16; q1·d and N taken modulo 2^64
+// on purpose, by `wrapping_mul`/`wrapping_sub`, with the exact result proven in range; q < 2^16
+// so q + 1 and 2q + 1 never overflow).
+#[allow(clippy::arithmetic_side_effects)]
+pub(crate) fn frac_div(n: u64, d: u64, k: u32) -> Option<(u64, bool)> {
+    if n >= d || d > 1 << 63 || k > TUV_FRAC {
+        return None;
+    }
+    let scale = 2u64.checked_pow(k)?; // k ≤ 16
+    if d < 1 << 16 {
+        // n < d < 2^16 and scale ≤ 2^16: N < 2^32.
+        let (nn, dd) = (u32::try_from(n * scale).ok()?, u32::try_from(d).ok()?);
+        let q = nn / dd;
+        return Some((u64::from(q), nn - q * dd != 0));
+    }
+    if d < 1 << 62 {
+        // s = L − 16 ∈ [1, 46]; N1 = floor(n·2^k / 2^s) < 2^(L+k−s) = 2^(k+16) ≤ 2^32 (n < 2^L).
+        let s = (u64::BITS - d.leading_zeros()) - 16;
+        let n1 = if s >= k {
+            n.checked_shr(s - k)?
+        } else {
+            n.checked_mul(2u64.checked_pow(k - s)?)? // k − s ≤ 15; n·2^(k−s) < 2^32
+        };
+        let d1 = d.checked_shr(s)? + 1; // ≤ 2^16
+        let (n1, d1) = (u32::try_from(n1).ok()?, u32::try_from(d1).ok()?);
+        let mut q = u64::from(n1 / d1);
+        let mut r = (n.wrapping_mul(scale)).wrapping_sub(q.wrapping_mul(d));
+        while r >= d {
+            r -= d;
+            q += 1;
+        }
+        return Some((q, r != 0));
+    }
+    let (mut q, mut r) = (0u64, n);
+    for _ in 0..k {
+        r *= 2;
+        q *= 2;
+        if r >= d {
+            r -= d;
+            q += 1;
+        }
+    }
+    Some((q, r != 0))
+}
+
 /// `{ s ∈ [0,1] : s·d ≤ n }` by exact division, ends rounded outward; `None` if empty.
 ///
 /// Cases: d > 0 gives s ≤ n/d (ceil), d < 0 gives s ≥ (−n)/(−d) (floor), d = 0 gives all or
-/// nothing. If `n·2^16` would overflow (|n| ≥ 2^111, far outside the documented ranges) the
-/// answer is the whole unit interval or, where the sign already decides, empty: conservative.
+/// nothing. Operands that fit i64 (every caller's documented range) go through [`solve_le64`];
+/// beyond, the quotient is an i128 division, and if `n·2^16` would overflow i128 (|n| ≥ 2^111)
+/// the answer is the whole unit interval or, where the sign already decides, empty:
+/// conservative.
 pub fn solve_le(d: i128, n: i128) -> Option<Interval> {
+    if let (Ok(d), Ok(n)) = (i64::try_from(d), i64::try_from(n)) {
+        return solve_le64(d, n);
+    }
     let full = Some(Interval::UNIT);
     if d > 0 {
         if n < 0 {
@@ -133,6 +201,57 @@ pub fn solve_le(d: i128, n: i128) -> Option<Interval> {
         match b.checked_mul(1 << TUV_FRAC).and_then(|m| floor_div(m, a)) {
             Some(lo) => Some(Interval {
                 lo: clamp_raw(lo),
+                hi: TUV_ONE,
+            }),
+            None => full,
+        }
+    } else if n >= 0 {
+        full
+    } else {
+        None
+    }
+}
+
+/// [`solve_le`] on i64 operands, the same interval: the quotient `ceil(n·2^16/d)` (or the floor
+/// of `|n|·2^16/|d|`) by [`frac_div`] on the magnitudes (`unsigned_abs` is exact for every
+/// i64), so no 64-bit or 128-bit divide runs.
+/// `interval_corners::solve_le_matches_i128_division` checks it against the i128 division.
+// q + 1 ≤ 2^16 + 1 (q < 2^16 from `frac_div`).
+#[allow(clippy::arithmetic_side_effects)]
+pub fn solve_le64(d: i64, n: i64) -> Option<Interval> {
+    let full = Some(Interval::UNIT);
+    if d > 0 {
+        if n < 0 {
+            return None;
+        }
+        if n >= d {
+            return full;
+        }
+        // 0 ≤ n < d: frac_div's contract holds, so `None` (conservative) cannot happen.
+        match frac_div(n.unsigned_abs(), d.unsigned_abs(), TUV_FRAC) {
+            Some((q, rem)) => Some(Interval {
+                lo: 0,
+                hi: clamp_raw(i128::from(q + u64::from(rem))),
+            }),
+            None => full,
+        }
+    } else if d < 0 {
+        if n >= 0 {
+            return full;
+        }
+        let (a, b) = (d.unsigned_abs(), n.unsigned_abs());
+        if b > a {
+            return None;
+        }
+        if b == a {
+            return Some(Interval {
+                lo: TUV_ONE,
+                hi: TUV_ONE,
+            });
+        }
+        match frac_div(b, a, TUV_FRAC) {
+            Some((q, _)) => Some(Interval {
+                lo: clamp_raw(i128::from(q)),
                 hi: TUV_ONE,
             }),
             None => full,
@@ -171,15 +290,42 @@ impl RecipConstraint {
         self.r_dn
     }
 
-    /// Precompute the reciprocals of `d` (setup, once per triangle).
+    /// Precompute the reciprocals of `d` (setup, once per triangle), exactly
+    /// `floor(2^K/|d|)` and `ceil(2^K/|d|)` without a 128-bit divide: with `a = |d| ≥ 2`,
+    /// `2^64 = q0·a + r0` (one 64-bit divide of `2^64 − 1`, corrected by one step), so
+    /// `2^80 = 2^16·q0·a + 2^16·r0` and `floor(2^80/a) = 2^16·q0 + floor(r0·2^16/a)`, the last
+    /// term by [`frac_div`] (r0 < a); the ceiling adds 1 when anything remains. `a = 1` gives
+    /// 2^80 for both; `d = 0` gives 0 for both (never used: `solve` decides d = 0 by sign).
+    /// `interval_corners::recip_matches_i128` compares with the i128 division at the range's
+    /// corners.
+    // Ranges: a ≤ 2^63 (|i64|); q0 = floor((2^64 − 1)/a) ≤ 2^63 so q0·a ≤ 2^64 − 1 and
+    // m = 2^64 − 1 − q0·a ∈ [0, a − 1]: r0 = m + 1 ∈ [1, a] ≤ 2^63 (r0 = a means a | 2^64, then
+    // q0 + 1 ≤ 2^63 and r0 = 0); 2^16·q0 < 2^80 and the fraction < 2^16: far inside i128.
+    #[allow(clippy::arithmetic_side_effects)]
     pub fn new(d: i64) -> RecipConstraint {
-        const K: i128 = 1i128 << crate::formats::RECIP_SHIFT;
-        let k = K;
-        // |d| ≤ 2^63 as i128: abs exact.
-        let a = i128::from(d).saturating_abs();
-        let (r_up, r_dn) = match (ceil_div(k, a), floor_div(k, a)) {
-            (Some(u), Some(l)) => (u, l),
-            _ => (0, 0),
+        const _: () = assert!(crate::formats::RECIP_SHIFT == 64 + TUV_FRAC);
+        let a = d.unsigned_abs();
+        let (r_up, r_dn) = match a {
+            0 => (0, 0),
+            1 => (
+                1i128 << crate::formats::RECIP_SHIFT,
+                1i128 << crate::formats::RECIP_SHIFT,
+            ),
+            _ => {
+                let mut q0 = u64::MAX / a;
+                let mut r0 = u64::MAX - q0 * a + 1;
+                if r0 == a {
+                    q0 += 1;
+                    r0 = 0;
+                }
+                match frac_div(r0, a, TUV_FRAC) {
+                    Some((f, rem)) => {
+                        let dn = i128::from(q0) * i128::from(TUV_ONE) + i128::from(f);
+                        (dn + i128::from(rem), dn)
+                    }
+                    None => (0, 0),
+                }
+            }
         };
         RecipConstraint { d, r_up, r_dn }
     }
@@ -194,9 +340,7 @@ impl RecipConstraint {
     /// The products are `checked_mul` anyway; should one fail, the interval falls back to the
     /// whole unit range (conservative: nothing is culled).
     pub fn solve(&self, n: i64) -> Option<Interval> {
-        // 2^(K − 16) = 2^64 as a constant (no run-time shift).
-        const SH: i128 = 1i128 << (crate::formats::RECIP_SHIFT - TUV_FRAC);
-        let (d, n) = (i128::from(self.d), i128::from(n));
+        let d = self.d;
         if d > 0 {
             if n < 0 {
                 return None;
@@ -204,27 +348,21 @@ impl RecipConstraint {
             if n >= d {
                 return Some(Interval::UNIT);
             }
-            let hi = n
-                .checked_mul(self.r_up)
-                .and_then(|p| ceil_div(p, SH))
-                .unwrap_or(i128::from(TUV_ONE));
+            let hi = mul_shr64(n.unsigned_abs(), self.r_up, true).unwrap_or(i128::from(TUV_ONE));
             Some(Interval {
                 lo: 0,
                 hi: clamp_raw(hi),
             })
         } else if d < 0 {
-            // |d|, |n| ≤ 2^63 as i128: negation exact.
-            let (a, b) = (d.checked_neg()?, n.checked_neg()?);
-            if b <= 0 {
+            if n >= 0 {
                 return Some(Interval::UNIT);
             }
+            // The magnitudes (`unsigned_abs` is exact for every i64).
+            let (a, b) = (d.unsigned_abs(), n.unsigned_abs());
             if b > a {
                 return None;
             }
-            let lo = b
-                .checked_mul(self.r_dn)
-                .and_then(|p| floor_div(p, SH))
-                .unwrap_or(0);
+            let lo = mul_shr64(b, self.r_dn, false).unwrap_or(0);
             Some(Interval {
                 lo: clamp_raw(lo),
                 hi: TUV_ONE,
@@ -235,6 +373,30 @@ impl RecipConstraint {
             None
         }
     }
+}
+
+/// `ceil(n·r/2^64)` (`up`) or the floor, for `n ≤ 2^63` and `0 ≤ r < 2^81` (a
+/// reciprocal): `r = r_hi·2^64 + r_lo` with `r_hi < 2^17`, so
+/// `n·r/2^64 = n·r_hi + n·r_lo/2^64`, and the second term's floor is the high half of the
+/// 64 × 64 → 128-bit product `n·r_lo` (the low half decides the ceiling). The same quotient as
+/// an i128 product and divide, with one widening multiply and no 128 × 128 one. `None` if an
+/// operand is outside that range or the sum leaves i128 (never for [`RecipConstraint::solve`]:
+/// n < |d| makes `n·r/2^64 < 2^16 + 1`). `interval_corners::recip_solve_matches_i128_product`
+/// compares [`RecipConstraint::solve`] with the i128 product and divide.
+// Ranges: n·r_lo < 2^128 in u128 (both < 2^64); its high half < 2^64; n·r_hi is a checked
+// u64 product; the final sums are checked.
+#[allow(clippy::arithmetic_side_effects)]
+fn mul_shr64(n: u64, r: i128, up: bool) -> Option<i128> {
+    const _: () = assert!(crate::formats::RECIP_SHIFT - TUV_FRAC == 64);
+    let r = u128::try_from(r).ok()?;
+    let r_hi = u64::try_from(r.checked_shr(64)?).ok()?;
+    let r_lo = u64::try_from(r & u128::from(u64::MAX)).ok()?;
+    let p = u128::from(n) * u128::from(r_lo);
+    let p_hi = u64::try_from(p.checked_shr(64)?).ok()?;
+    let p_lo_nonzero = p & u128::from(u64::MAX) != 0;
+    let q = n.checked_mul(r_hi)?.checked_add(p_hi)?;
+    let q = q.checked_add(u64::from(up && p_lo_nonzero))?;
+    Some(i128::from(q))
 }
 
 #[cfg(test)]

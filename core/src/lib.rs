@@ -37,13 +37,19 @@ pub mod bounds;
 mod corners;
 pub mod demo;
 pub mod error;
+#[cfg(test)]
+mod fast_corners;
 pub mod formats;
 pub mod input;
 pub mod interval;
+#[cfg(test)]
+mod interval_corners;
 pub mod sample;
 pub mod setup;
 pub mod stats;
 pub mod strategies;
+#[cfg(test)]
+mod testrng;
 pub mod tile;
 pub mod wide;
 #[cfg(test)]

@@ -16,9 +16,9 @@
 //! front of the camera: `ξ = (a + w)·E / (2w)`.
 
 use crate::bounded::Eps;
-use crate::formats::{ceil_div, floor_div, DefaultPrecision, PixelCoord, Precision, PrecisionBits};
+use crate::formats::{DefaultPrecision, PixelCoord, Precision, PrecisionBits};
 use crate::input::{PixelRect, Triangle, Viewport, C, W, X, Y, Z};
-use crate::interval::{solve_le, Interval};
+use crate::interval::{solve_le64, Interval};
 use crate::stats::Ops;
 
 /// Which effects a triangle has; the class decides which work is skipped.
@@ -194,6 +194,7 @@ pub fn classify(tri: &Triangle) -> Class {
 }
 
 /// Does the convex hull of `pts` (points (a, w)) meet the half-line {(s·dir, 0) : s ≥ 0}?
+/// (Pairwise, for any i64 points: the reference of setup's one-pass `hull_meets_ray`.)
 ///
 /// In 2D a direction lies in the cone of a point set iff it lies in the cone of one point or of
 /// two points less than π apart (Carathéodory), and the hull meets the camera point iff a point is
@@ -230,32 +231,96 @@ pub fn crosses_camera_plane(pts: &[(i64, i64)], dir: i64, ops: &mut Ops) -> bool
     false
 }
 
+/// The predicate of [`crosses_camera_plane`] with `dir = ±1` (`positive`: +1) on 32-bit
+/// points, in one pass (setup's separating-line test; the pairwise function stays as the
+/// reference the tests compare with).
+///
+/// Proof. Flip a to σ·a so the half-line is R = {(s, 0) : s ≥ 0}. The hull H of the points
+/// meets the line w = 0 in the hull of (i) the points with w = 0 and (ii) for every pair p
+/// (w_p < 0), q (w_q > 0) the point where segment pq crosses w = 0, at
+/// `a_pq = (w_q·a_p − w_p·a_q)/(w_q − w_p)` (a convex combination with w = 0 of points on both
+/// sides is a convex combination of such crossings and of points on the line). That hull is a
+/// segment of the line, so H meets R iff one of (i), (ii) has a ≥ 0. For (ii), dividing
+/// `w_q·a_p + |w_p|·a_q ≥ 0` by `|w_p|·w_q > 0`: `a_p/|w_p| + a_q/w_q ≥ 0`, which some pair
+/// meets iff the pair of the largest `a_p/|w_p|` and the largest `a_q/w_q` does. So one pass
+/// keeps those two (compared by cross-multiplication) and tests them once. Without points on
+/// both sides only (i) remains.
+///
+/// Ranges: |a| < 2^31, |w| < 2^31 (setup's corners: |a| < 2^31, |w| ≤ 2^29 + 1): every
+/// product < 2^62, the final sum < 2^63, exact in i64; the negations of i32 values in i64
+/// are exact. `fast_corners::hull_meets_ray_matches_pairwise` compares it with the pairwise
+/// function.
+#[allow(clippy::arithmetic_side_effects)] // ranges in the doc comment above
+pub(crate) fn hull_meets_ray(pts: &[(i32, i32)], positive: bool, ops: &mut Ops) -> bool {
+    // (σ·a, |w|) of the best point below (w < 0) and above (w > 0) the line.
+    let mut below: Option<(i64, i64)> = None;
+    let mut above: Option<(i64, i64)> = None;
+    for &(a, w) in pts {
+        let a = if positive {
+            i64::from(a)
+        } else {
+            -i64::from(a)
+        };
+        let w = i64::from(w);
+        ops.add_setup(2);
+        if w == 0 {
+            if a >= 0 {
+                return true;
+            }
+            continue;
+        }
+        let (slot, m) = if w < 0 {
+            (&mut below, -w)
+        } else {
+            (&mut above, w)
+        };
+        ops.add_setup(3);
+        if slot.map_or(true, |(ba, bm)| a * bm > ba * m) {
+            *slot = Some((a, m));
+        }
+    }
+    match (below, above) {
+        (Some((ap, mp)), Some((aq, mq))) => {
+            ops.add_setup(3);
+            ap * mq + aq * mp >= 0
+        }
+        _ => false,
+    }
+}
+
 /// Largest |box coordinate| setup produces (raw, 2^-bnd px): |num| < 2^58 in [`project`].
 const BOX_LIMIT: PixelCoord = 1 << 58;
 
 /// Pixel position `(a + w)·E·2^bnd / (2w)` of a front point (w > 0), floored or ceiled to the
 /// bound grid of `bnd` fraction bits.
 ///
-/// Ranges: |a + w| < 2^31 (|a| ≤ 2^30 with the lens term, |w| ≤ 2^29), E ≤ 2^11, bnd ≤ 16
-/// (`PrecisionBits`): the numerator is < 2^58, formed in i128 by multiplications (the 2^bnd
-/// factor is `2^bnd` by `pow`, not a shift, so overflow checks see it). The caller passes
-/// w > 0, so the division exists and |q| ≤ |num| < 2^58 fits i64. Should either fail, the result
-/// is the outward limit (−2^58 for a minimum, 2^58 for a maximum): conservative.
-/// `tests::projection_at_the_domain_corners` checks the extremes against an independent
-/// computation.
+/// Ranges: |a + w| < 2^32 (|a| < 2^31 with the lens term and ε, |w| ≤ 2^29 + 1), E ≤ 2^11,
+/// bnd ≤ 16 (`PrecisionBits`): the numerator is < 2^59, formed in i64 by checked
+/// multiplications (the 2^bnd factor is `2^bnd` by `pow`, not a shift), and one 64-bit
+/// division by 2w ≥ 2 (`checked_div_euclid`; the ceiling as the negated floor of −num, exact
+/// since |num| < 2^59) gives |q| < 2^58. Should anything fail (w ≤ 0 is the caller's duty and
+/// is checked), the result is the outward limit (−2^58 for a minimum, 2^58 for a maximum):
+/// conservative. `corners::projection_at_the_domain_corners` and `fast_corners::
+/// projection_and_pixel_floor_at_the_widest_corners` check the extremes against i128.
 #[inline]
-#[allow(clippy::arithmetic_side_effects)] // ranges in the doc comment above
 pub(crate) fn project(a: i64, w: i64, extent: i64, up: bool, bnd: u32) -> PixelCoord {
-    let num = (i128::from(a) + i128::from(w)) * i128::from(extent) * 2i128.pow(bnd);
-    let den = 2 * i128::from(w);
-    let q = if up {
-        ceil_div(num, den)
-    } else {
-        floor_div(num, den)
-    };
     let limit = if up { BOX_LIMIT } else { -BOX_LIMIT };
-    q.and_then(|q| PixelCoord::try_from(q).ok())
-        .unwrap_or(limit)
+    if w <= 0 {
+        return limit;
+    }
+    let num = a
+        .checked_add(w)
+        .and_then(|s| s.checked_mul(extent))
+        .and_then(|s| s.checked_mul(2i64.checked_pow(bnd)?));
+    let q = match (num, w.checked_mul(2)) {
+        (Some(num), Some(den)) if up => num
+            .checked_neg()
+            .and_then(|m| m.checked_div_euclid(den))
+            .and_then(i64::checked_neg),
+        (Some(num), Some(den)) => num.checked_div_euclid(den),
+        _ => None,
+    };
+    q.unwrap_or(limit)
 }
 
 /// Lens-corner boxes of one axis (Laine §3.1), with the separating-line test per side.
@@ -270,9 +335,9 @@ pub(crate) fn project(a: i64, w: i64, extent: i64, up: bool, bnd: u32) -> PixelC
 /// affine in u, so the chord argument of `bounds.rs` holds unchanged over the corner set. The
 /// separating-line test runs on the corners too: the left set `(a − |cs| − ε_x, w ± ε_w)`, the
 /// right set `(a + |cs| + ε_x, w ± ε_w)`, exactly as an extra `|c|` of `ε_x` plus a second w.
-/// An exact precision (ε = 0) runs [`exact_boxes`], the code as before the epsilon (chosen on
-/// the type's constant in [`setup_scaled`], so its instantiation and its Cortex-M4F cost stay as
-/// they were); with ε = 0 the corner version here computes the same values.
+/// An exact precision (ε = 0) runs [`exact_boxes`] (chosen on the type's constant in
+/// [`setup_scaled`]): the six-point instantiation of the same code, whose values with ε = 0 are
+/// those of the exact boxes.
 fn axis_boxes(
     tri: &Triangle,
     axis: usize,
@@ -298,11 +363,41 @@ fn axis_boxes(
     }
 }
 
+/// Axis coordinate `a` (x, or −y) and lens coefficient `cs` of raw vertex `p` as `i32`: a
+/// checked triangle has |x|, |y|, |c| ≤ 2^29, so the negations are exact.
+#[inline]
+fn axis_coord32(p: &[i32; 5], axis: usize) -> (i32, i32) {
+    if axis == 0 {
+        (p[X], p[C])
+    } else {
+        (p[Y].saturating_neg(), p[C].saturating_neg())
+    }
+}
+
+/// Whether the ratio `a/w` is below `b.0/b.1` (both w > 0): `a·w_b < a_b·w`, exact in i64
+/// for |a| < 2^31, 0 < w < 2^31 (products < 2^62).
+#[inline]
+#[allow(clippy::arithmetic_side_effects)] // ranges in the doc comment above
+fn ratio_below(a: i32, w: i32, b: (i32, i32)) -> bool {
+    i64::from(a) * i64::from(b.1) < i64::from(b.0) * i64::from(w)
+}
+
 /// [`axis_boxes`] over `N` w offsets per vertex (`M = 6·N` corner points).
-// Ranges: |a|, |cs|, |w| ≤ 2^29 (checked triangle), ε_x < 2^24 and ε_w ≤ 1 (`Eps::of` with
-// `OFFSET_SHIFT_MAX`): a ± |cs| ± ε_x and a + lens·cs ± ε_x are < 2^31, w ± ε_w < 2^30, so
-// `project`'s |a + w| < 2^32 keeps its numerator < 2^59 and |q| < 2^58 (w ≥ 1 there); the
-// index i counts at most twelve corner points.
+///
+/// **One division per box side.** The projection `(a + w)·E·2^bnd/(2w) = (a/w + 1)·E·2^bnd/2`
+/// is non-decreasing in the ratio `a/w` (w > 0), and so are its floor and ceiling. Hence the
+/// minimum over the front corners of the floored projections is the floored projection of the
+/// corner with the smallest `a/w`, and the maximum of the ceiled ones that of the largest:
+/// the corners are compared by cross-multiplication (`a_i·w_j` against `a_j·w_i`, i64), and
+/// each of the four box values of the axis (lens −1/+1, min/max) costs one [`project`] — the
+/// same values as projecting every corner (equal ratios project to equal values), with 4
+/// divisions instead of 4·M. `fast_corners::boxes_match_per_corner_projection` checks them
+/// against the per-corner computation.
+// Ranges: |a|, |cs|, |w| ≤ 2^29 (checked triangle), ε_x ≤ 2^24 and ε_w ≤ 1 (`Eps::of` with
+// `OFFSET_SHIFT_MAX`): a ± |cs| ± ε_x and a + lens·cs ± ε_x are < 2^30 + 2^25 < 2^31 (i32),
+// w ± ε_w ≤ 2^29 + 1 (i32), so [`ratio_below`]'s products are < 2^61 and `project`'s
+// |a + w| < 2^32 keeps its numerator < 2^59 and |q| < 2^58 (w ≥ 1 there); the index i counts
+// at most twelve corner points.
 #[allow(clippy::arithmetic_side_effects)]
 pub(crate) fn corner_boxes<const N: usize, const M: usize>(
     tri: &Triangle,
@@ -313,66 +408,66 @@ pub(crate) fn corner_boxes<const N: usize, const M: usize>(
     dws: [i32; N],
     ops: &mut Ops,
 ) -> AxisBoxes {
-    // ε arrives as i32 (|ε| < 2^24) and is widened here, so the optimizer sees every operand of
-    // the projections as a sign-extended 32-bit value (narrower i128 arithmetic on 32-bit cores).
-    let ex = i64::from(ex);
-    let dws = dws.map(i64::from);
-    let mut left = [(0i64, 0i64); M];
-    let mut right = [(0i64, 0i64); M];
+    let mut left = [(0i32, 0i32); M];
+    let mut right = [(0i32, 0i32); M];
     let mut i = 0;
     for ends in tri.v.iter() {
         for p in ends.iter() {
-            let (a, cs) = axis_coord(p, axis);
-            let w = i64::from(p[W]);
+            let (a, cs) = axis_coord32(p, axis);
             for &dw in dws.iter() {
                 if let (Some(l), Some(r)) = (left.get_mut(i), right.get_mut(i)) {
-                    *l = (a - cs.abs() - ex, w + dw);
-                    *r = (a + cs.abs() + ex, w + dw);
+                    *l = (a - cs.abs() - ex, p[W] + dw);
+                    *r = (a + cs.abs() + ex, p[W] + dw);
                 }
                 i += 1;
                 ops.add_setup(2);
             }
         }
     }
-    // With two w corners (bounded test only; the exact path keeps its op counts): a corner set
-    // entirely in front (every w − ε_w > 0) has its hull in w > 0, which cannot meet the camera
-    // plane, so the 12-point pair test is skipped.
-    let all_front = N > 1 && left.iter().all(|p| p.1 > 0);
-    let unbounded_lo = !all_front && crosses_camera_plane(&left, -1, ops);
-    let unbounded_hi = !all_front && crosses_camera_plane(&right, 1, ops);
-    let mut lo = [PixelCoord::MAX; 2];
-    let mut hi = [PixelCoord::MIN; 2];
-    let mut any_front = false;
+    // A corner set entirely in front (every w > 0; both sets share their w) has its hull in
+    // w > 0, which cannot meet the camera plane: the test only runs when some w ≤ 0.
+    let all_front = left.iter().all(|p| p.1 > 0);
+    let unbounded_lo = !all_front && hull_meets_ray(&left, false, ops);
+    let unbounded_hi = !all_front && hull_meets_ray(&right, true, ops);
+    // Per lens corner: the front corner point with the smallest (a − ε_x)/w and the one with
+    // the largest (a + ε_x)/w.
+    let mut lo: [Option<(i32, i32)>; 2] = [None; 2];
+    let mut hi: [Option<(i32, i32)>; 2] = [None; 2];
     for ends in tri.v.iter() {
         for p in ends.iter() {
-            let (a, cs) = axis_coord(p, axis);
+            let (a, cs) = axis_coord32(p, axis);
             for &dw in dws.iter() {
-                let w = i64::from(p[W]) + dw;
+                let w = p[W] + dw;
                 if w <= 0 {
                     continue;
                 }
-                any_front = true;
-                for (corner, lens) in [-1i64, 1].into_iter().enumerate() {
+                for ((l, h), lens) in lo.iter_mut().zip(hi.iter_mut()).zip([-1i32, 1]) {
                     let au = a + lens * cs;
                     ops.add_setup(6);
-                    if let (Some(l), Some(h)) = (lo.get_mut(corner), hi.get_mut(corner)) {
-                        *l = (*l).min(project(au - ex, w, extent, false, bnd));
-                        *h = (*h).max(project(au + ex, w, extent, true, bnd));
+                    let (al, ah) = (au - ex, au + ex);
+                    if l.map_or(true, |b| ratio_below(al, w, b)) {
+                        *l = Some((al, w));
+                    }
+                    if h.map_or(true, |b| ratio_below(b.0, b.1, (ah, w))) {
+                        *h = Some((ah, w));
                     }
                 }
             }
         }
     }
+    let proj = |c: [Option<(i32, i32)>; 2], up: bool| match c {
+        [Some(c0), Some(c1)] => {
+            Some([c0, c1].map(|(a, w)| project(i64::from(a), i64::from(w), extent, up, bnd)))
+        }
+        _ => None,
+    };
     AxisBoxes {
-        lo: (!unbounded_lo && any_front).then_some(lo),
-        hi: (!unbounded_hi && any_front).then_some(hi),
+        lo: proj(lo, false).filter(|_| !unbounded_lo),
+        hi: proj(hi, true).filter(|_| !unbounded_hi),
     }
 }
 
-/// [`axis_boxes`] of an exact precision (ε = 0): the code as before the epsilon existed.
-// Ranges: |a|, |cs|, |w| ≤ 2^29 (checked triangle): a ± |cs| and a + lens·cs are ≤ 2^30; the
-// index i counts the six vertices.
-#[allow(clippy::arithmetic_side_effects)]
+/// [`axis_boxes`] of an exact precision (ε = 0): the six-point instantiation.
 pub(crate) fn exact_boxes(
     tri: &Triangle,
     axis: usize,
@@ -380,55 +475,15 @@ pub(crate) fn exact_boxes(
     bnd: u32,
     ops: &mut Ops,
 ) -> AxisBoxes {
-    let mut left = [(0i64, 0i64); 6];
-    let mut right = [(0i64, 0i64); 6];
-    let mut i = 0;
-    for ends in tri.v.iter() {
-        for p in ends.iter() {
-            let (a, cs) = axis_coord(p, axis);
-            let w = i64::from(p[W]);
-            if let (Some(l), Some(r)) = (left.get_mut(i), right.get_mut(i)) {
-                *l = (a - cs.abs(), w);
-                *r = (a + cs.abs(), w);
-            }
-            i += 1;
-            ops.add_setup(2);
-        }
-    }
-    let unbounded_lo = crosses_camera_plane(&left, -1, ops);
-    let unbounded_hi = crosses_camera_plane(&right, 1, ops);
-    let mut lo = [PixelCoord::MAX; 2];
-    let mut hi = [PixelCoord::MIN; 2];
-    let mut any_front = false;
-    for ends in tri.v.iter() {
-        for p in ends.iter() {
-            let (a, cs) = axis_coord(p, axis);
-            let w = i64::from(p[W]);
-            if w <= 0 {
-                continue;
-            }
-            any_front = true;
-            for (corner, lens) in [-1i64, 1].into_iter().enumerate() {
-                let au = a + lens * cs;
-                ops.add_setup(6);
-                if let (Some(l), Some(h)) = (lo.get_mut(corner), hi.get_mut(corner)) {
-                    *l = (*l).min(project(au, w, extent, false, bnd));
-                    *h = (*h).max(project(au, w, extent, true, bnd));
-                }
-            }
-        }
-    }
-    AxisBoxes {
-        lo: (!unbounded_lo && any_front).then_some(lo),
-        hi: (!unbounded_hi && any_front).then_some(hi),
-    }
+    corner_boxes::<1, 6>(tri, axis, extent, bnd, 0, [0], ops)
 }
 
 /// Footprint columns (or rows) `[p0, p1)` of one axis from its boxes, clamped to `[0, E]`.
 /// A sample at ξ is in column floor(ξ); ξ ≤ max means columns up to floor(max) are needed.
-/// Pixel index floor(X / 2^bnd) by an exact floor division (bnd ≤ 16; no shift needed).
-fn floor_px(x: PixelCoord, bnd: u32) -> PixelCoord {
-    x.div_euclid(2i64.pow(bnd))
+/// Pixel index floor(X / 2^bnd): an arithmetic right shift by bnd ≤ 16 (`PrecisionBits`), which
+/// is the exact floor division by 2^bnd and loses no high bits (no divide instruction).
+pub(crate) fn floor_px(x: PixelCoord, bnd: u32) -> PixelCoord {
+    x.checked_shr(bnd).unwrap_or(if x < 0 { -1 } else { 0 })
 }
 
 fn axis_range(b: &AxisBoxes, extent: u16, bnd: u32) -> (u16, u16) {
@@ -452,36 +507,36 @@ fn axis_range(b: &AxisBoxes, extent: u16, bnd: u32) -> (u16, u16) {
 /// Conservative epsilon (`bounded.rs`): the bounded test's perturbed vertex has
 /// `w' ± a' ≤ w ± a + ε_w + ε_x`, and its hit needs `w' > 0`, i.e. `w + ε_w > 0`: both enter as
 /// constant terms (zero for the exact test, which is then unchanged).
-// Ranges: every raw field ≤ 2^29 in magnitude, ε < 2^24: w + sign·x + |c| + ε < 2^31 and the
-// differences a − b < 2^32, all in i128.
+// Ranges: every raw field ≤ 2^29 in magnitude, ε ≤ 2^24: w + sign·x + |c| + ε < 2^31 and the
+// differences a − b < 2^32, all in i64.
 #[allow(clippy::arithmetic_side_effects)]
 fn frustum_span(tri: &Triangle, eps: &Eps, ops: &mut Ops) -> Option<Interval> {
     let [v0, v1] = &tri.v;
     let mut span = Interval::UNIT;
-    let ew = i128::from(eps.w);
+    let ew = i64::from(eps.w);
     // camera plane: a hit needs w > 0, so both ends' max w ≤ 0 means never visible.
-    let wmax = |v: &[[i32; 5]; 3]| v.iter().map(|p| i128::from(p[W]) + ew).max().unwrap_or(0);
+    let wmax = |v: &[[i32; 5]; 3]| v.iter().map(|p| i64::from(p[W]) + ew).max().unwrap_or(0);
     let (a, b) = (wmax(v0), wmax(v1));
     ops.add_setup(6);
     if a <= 0 && b <= 0 {
         return None;
     }
-    span = span.meet(solve_le(a - b, a)?)?;
+    span = span.meet(solve_le64(a - b, a)?)?;
     for axis in 0..2 {
-        let e = ew + i128::from(eps.x.get(axis).copied().unwrap_or(0));
-        for sign in [-1i128, 1] {
+        let e = ew + i64::from(eps.x.get(axis).copied().unwrap_or(0));
+        for sign in [-1i64, 1] {
             let dist = |v: &[[i32; 5]; 3]| {
                 v.iter()
                     .map(|p| {
                         let (x, cs) = axis_coord(p, axis);
-                        i128::from(p[W]) + sign * i128::from(x) + i128::from(cs).abs() + e
+                        i64::from(p[W]) + sign * x + cs.abs() + e
                     })
                     .max()
                     .unwrap_or(0)
             };
             let (a, b) = (dist(v0), dist(v1));
             ops.add_setup(14);
-            span = span.meet(solve_le(a - b, a)?)?;
+            span = span.meet(solve_le64(a - b, a)?)?;
         }
     }
     Some(span)
