@@ -313,6 +313,14 @@ pub mod cost {
 
     /// [`samples_all`] at precision `P` (a `Bounded` one runs the bounded sample test).
     pub fn samples_all_with<P: crate::formats::Precision>(reps: u32) -> Result<u64, Error> {
+        samples_class_with::<P>(reps, None)
+    }
+
+    /// [`samples_all_with`] restricted to the visible triangles of one class (`None`: all).
+    pub fn samples_class_with<P: crate::formats::Precision>(
+        reps: u32,
+        class: Option<crate::setup::Class>,
+    ) -> Result<u64, Error> {
         let setup = crate::setup::setup_with::<P>;
         let prims = prims()?;
         let vp = viewport()?;
@@ -323,6 +331,9 @@ pub mod cost {
             let Outcome::Visible(s) = setup(&p.tri, vp, &mut ops) else {
                 continue;
             };
+            if class.is_some_and(|c| c != s.class()) {
+                continue;
+            }
             for _ in 0..reps {
                 for py in 12..20u16 {
                     for px in 12..20u16 {

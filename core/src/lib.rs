@@ -32,6 +32,8 @@
 pub mod bounded;
 #[cfg(test)]
 mod bounded_corners;
+#[cfg(test)]
+mod bounded_frozen;
 pub mod bounds;
 #[cfg(test)]
 mod corners;
