@@ -159,10 +159,12 @@ fn lens(l: i32, c: i32) -> i32 {
 /// Result |a'| < 2^(50−S) ≤ 2^30.
 #[inline(always)]
 #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
-fn offset(e: i32, p: i32, ng: i32, w: i32, c: &Ctx) -> i32 {
-    let acc = i64::from(e) * i64::from(p) + i64::from(ng) * i64::from(w) + c.half;
+fn offset<const G20: bool>(e: i32, p: i32, ng: i32, w: i32, c: &Ctx) -> i32 {
+    // `G20`: the grid 2^20 (`half` = 2^19, `fine` = 0) with its constants folded in.
+    let (half, fine) = if G20 { (1 << 19, 0) } else { (c.half, c.fine) };
+    let acc = i64::from(e) * i64::from(p) + i64::from(ng) * i64::from(w) + half;
     // `fine` ≤ 12 < 32 (Ctx): the i32 shift cannot overflow.
-    ((acc >> OFFSET_SHIFT_MIN) as i32) >> c.fine
+    ((acc >> OFFSET_SHIFT_MIN) as i32) >> fine
 }
 
 /// One vertex at the sample: `(a', b', w, z)` with z left at its t = 0 value (the depth needs
@@ -170,7 +172,7 @@ fn offset(e: i32, p: i32, ng: i32, w: i32, c: &Ctx) -> i32 {
 /// rounded lerp and the lens offset at compile time (no per-vertex class branch).
 #[inline(always)]
 #[allow(clippy::arithmetic_side_effects)]
-fn vertex<const MOTION: bool, const DEFOCUS: bool>(
+fn vertex<const MOTION: bool, const DEFOCUS: bool, const G20: bool>(
     q: &[i32; 5],
     r: &[i32; 5],
     c: &Ctx,
@@ -191,8 +193,8 @@ fn vertex<const MOTION: bool, const DEFOCUS: bool>(
         y += lens(c.v, coc);
     }
     (
-        offset(c.sw, x, c.ngx, w, c),
-        offset(c.sh, y, c.ngy, w, c),
+        offset::<G20>(c.sw, x, c.ngx, w, c),
+        offset::<G20>(c.sh, y, c.ngy, w, c),
         w,
     )
 }
@@ -390,7 +392,7 @@ fn decide_slow(e: &[i64; 3], p: &[(i32, i32, i32); 3], n: &mut u64) -> (i64, boo
 // rare-path Σ E'·w < 2^92 (i128).
 #[inline(always)]
 #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_wrap)]
-fn eval_class<const MOTION: bool, const DEFOCUS: bool>(
+fn eval_class<const MOTION: bool, const DEFOCUS: bool, const G20: bool>(
     setup: &Setup,
     c: &Ctx,
     ops: &mut Ops,
@@ -399,9 +401,9 @@ fn eval_class<const MOTION: bool, const DEFOCUS: bool>(
     let [q0, q1, q2] = v0;
     let [r0, r1, r2] = v1;
     let p = [
-        vertex::<MOTION, DEFOCUS>(q0, r0, c),
-        vertex::<MOTION, DEFOCUS>(q1, r1, c),
-        vertex::<MOTION, DEFOCUS>(q2, r2, c),
+        vertex::<MOTION, DEFOCUS, G20>(q0, r0, c),
+        vertex::<MOTION, DEFOCUS, G20>(q1, r1, c),
+        vertex::<MOTION, DEFOCUS, G20>(q2, r2, c),
     ];
     let [(a0, b0, w0), (a1, b1, w1), (a2, b2, w2)] = p;
     let m = |x: i32, y: i32| i64::from(x) * i64::from(y);
@@ -484,11 +486,16 @@ pub fn bounded_eval(
         half: (1i64 << 31) >> (OFFSET_SHIFT_MAX - shift),
         fine: shift - OFFSET_SHIFT_MIN,
     };
-    Some(match setup.class {
-        Class::Static => eval_class::<false, false>(setup, &c, ops),
-        Class::Motion => eval_class::<true, false>(setup, &c, ops),
-        Class::Defocus => eval_class::<false, true>(setup, &c, ops),
-        Class::MotionDefocus => eval_class::<true, true>(setup, &c, ops),
+    // The default grid 2^20 gets its own copy with the rounding constants folded in.
+    Some(match (setup.class, shift == OFFSET_SHIFT_MIN) {
+        (Class::Static, true) => eval_class::<false, false, true>(setup, &c, ops),
+        (Class::Motion, true) => eval_class::<true, false, true>(setup, &c, ops),
+        (Class::Defocus, true) => eval_class::<false, true, true>(setup, &c, ops),
+        (Class::MotionDefocus, true) => eval_class::<true, true, true>(setup, &c, ops),
+        (Class::Static, false) => eval_class::<false, false, false>(setup, &c, ops),
+        (Class::Motion, false) => eval_class::<true, false, false>(setup, &c, ops),
+        (Class::Defocus, false) => eval_class::<false, true, false>(setup, &c, ops),
+        (Class::MotionDefocus, false) => eval_class::<true, true, false>(setup, &c, ops),
     })
 }
 
