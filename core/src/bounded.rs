@@ -358,7 +358,7 @@ const fn class_ops(motion: bool, defocus: bool) -> u64 {
 #[cold]
 #[inline(never)]
 #[allow(clippy::arithmetic_side_effects)]
-fn decide_slow(e: &[i64; 3], p: &[(i32, i32, i32); 3], n: &mut u64) -> (i64, bool) {
+fn decide_slow(e: [i64; 3], p: [(i32, i32, i32); 3], n: &mut u64) -> (i64, bool) {
     let sign = if p.iter().all(|&(_, _, w)| w > 0) {
         *n += 3;
         let pos = e.iter().any(|&x| x > 0);
@@ -376,7 +376,7 @@ fn decide_slow(e: &[i64; 3], p: &[(i32, i32, i32); 3], n: &mut u64) -> (i64, boo
     let covered = sign != 0
         && e.iter().enumerate().all(|(k, &ek)| {
             if ek == 0 {
-                fill_rule(p, (k + 1) % 3, (k + 2) % 3, sign)
+                fill_rule(&p, (k + 1) % 3, (k + 2) % 3, sign)
             } else {
                 (ek > 0) == (sign > 0)
             }
@@ -427,7 +427,7 @@ fn eval_class<const MOTION: bool, const DEFOCUS: bool, const G20: bool>(
             (0, false)
         }
     } else {
-        decide_slow(&e, &p, &mut n)
+        decide_slow(e, p, &mut n)
     };
     let hit = covered.then(|| {
         n += 12;

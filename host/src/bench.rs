@@ -77,6 +77,42 @@ fn per(a: u64, b: u64) -> f64 {
     }
 }
 
+/// The core's sample-test configuration of a benchmark run (session names
+/// `exact-16-16-16` = `Prec<16, 16, 16>`, `bounded-16-16-16-20` = [`uvt_core::BoundedPrecision`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub enum CoreConfig {
+    /// the exact sample test, `Prec<16, 16, 16>`
+    Exact,
+    /// the bounded (hardware-width) sample test, `Bounded<16, 16, 16, 20>`
+    Bounded,
+}
+
+impl CoreConfig {
+    /// The configuration of `uvt_core::DefaultPrecision`.
+    pub fn default_core() -> CoreConfig {
+        if <uvt_core::DefaultPrecision as uvt_core::Precision>::OFFSET_SHIFT.is_some() {
+            CoreConfig::Bounded
+        } else {
+            CoreConfig::Exact
+        }
+    }
+    /// Its session name.
+    pub fn name(self) -> &'static str {
+        match self {
+            CoreConfig::Exact => "exact-16-16-16",
+            CoreConfig::Bounded => "bounded-16-16-16-20",
+        }
+    }
+    /// Parse `exact`, `bounded` or a session name.
+    pub fn parse(s: &str) -> Option<CoreConfig> {
+        match s {
+            "exact" | "exact-16-16-16" => Some(CoreConfig::Exact),
+            "bounded" | "bounded-16-16-16-20" => Some(CoreConfig::Bounded),
+            _ => None,
+        }
+    }
+}
+
 /// Run strategy `name` over a frame: one of [`STRATEGIES`], "bbox", or "lens-t1", "lens-t2",
 /// "lens-t8" (lens-slab time bounds with 1, 2, 8 slabs; "lens-t" has [`BEST_SLABS`]).
 pub fn run_strategy(
@@ -97,7 +133,36 @@ pub fn run_strategy_image(
     pattern: &Pattern,
     o: &RunOpts<'_>,
 ) -> Option<(StratResult, Vec<[u8; 3]>)> {
-    fn go<B: BoundsStrategy + Sync>(
+    run_strategy_image_at(CoreConfig::default_core(), name, vp, tris, pattern, o)
+}
+
+/// [`run_strategy_image`] with the core at configuration `cfg`.
+pub fn run_strategy_image_at(
+    cfg: CoreConfig,
+    name: &str,
+    vp: Viewport,
+    tris: &[Triangle],
+    pattern: &Pattern,
+    o: &RunOpts<'_>,
+) -> Option<(StratResult, Vec<[u8; 3]>)> {
+    match cfg {
+        CoreConfig::Exact => {
+            run_strategy_prec::<uvt_core::Prec<16, 16, 16>>(name, vp, tris, pattern, o)
+        }
+        CoreConfig::Bounded => {
+            run_strategy_prec::<uvt_core::BoundedPrecision>(name, vp, tris, pattern, o)
+        }
+    }
+}
+
+fn run_strategy_prec<P: uvt_core::Precision + Sync>(
+    name: &str,
+    vp: Viewport,
+    tris: &[Triangle],
+    pattern: &Pattern,
+    o: &RunOpts<'_>,
+) -> Option<(StratResult, Vec<[u8; 3]>)> {
+    fn go<B: BoundsStrategy + Sync, P: uvt_core::Precision + Sync>(
         s: B,
         vp: Viewport,
         tris: &[Triangle],
@@ -108,7 +173,14 @@ pub fn run_strategy_image(
         B::Coeffs: Send + Sync,
     {
         let name = s.name();
-        let f = run(&Fixed::new(s, vp, tris, pattern), pattern, o);
+        let fixed = Fixed::<B, P> {
+            prec: std::marker::PhantomData,
+            strat: s,
+            vp,
+            tris,
+            pattern,
+        };
+        let f = run(&fixed, pattern, o);
         let r = StratResult {
             name,
             tile: o.tile,
@@ -118,16 +190,16 @@ pub fn run_strategy_image(
         (r, f.image)
     }
     Some(match name {
-        "bbox" => go(uvt_core::BboxScan, vp, tris, pattern, o),
-        "laine2011" => go(Laine2011, vp, tris, pattern, o),
-        "hull" => go(hull(), vp, tris, pattern, o),
-        "lens-t" => go(LensTime::<BEST_SLABS>, vp, tris, pattern, o),
-        "lens-t1" => go(LensTime::<1>, vp, tris, pattern, o),
-        "lens-t2" => go(LensTime::<2>, vp, tris, pattern, o),
-        "lens-t8" => go(LensTime::<8>, vp, tris, pattern, o),
-        "best" => go(best(), vp, tris, pattern, o),
-        "hyper" => go(Hyper, vp, tris, pattern, o),
-        "hull+lens-t" => go(hull_lens(), vp, tris, pattern, o),
+        "bbox" => go::<_, P>(uvt_core::BboxScan, vp, tris, pattern, o),
+        "laine2011" => go::<_, P>(Laine2011, vp, tris, pattern, o),
+        "hull" => go::<_, P>(hull(), vp, tris, pattern, o),
+        "lens-t" => go::<_, P>(LensTime::<BEST_SLABS>, vp, tris, pattern, o),
+        "lens-t1" => go::<_, P>(LensTime::<1>, vp, tris, pattern, o),
+        "lens-t2" => go::<_, P>(LensTime::<2>, vp, tris, pattern, o),
+        "lens-t8" => go::<_, P>(LensTime::<8>, vp, tris, pattern, o),
+        "best" => go::<_, P>(best(), vp, tris, pattern, o),
+        "hyper" => go::<_, P>(Hyper, vp, tris, pattern, o),
+        "hull+lens-t" => go::<_, P>(hull_lens(), vp, tris, pattern, o),
         _ => return None,
     })
 }
@@ -149,6 +221,10 @@ pub struct BenchRow {
     pub strategies: Vec<StratResult>,
     /// STE of the f64 reference (Laine 2011 in f64)
     pub f64: f64,
+    /// wall ms of the f64 reference's frame (same frame driver, no oracle)
+    pub f64_ms: f64,
+    /// the core's configuration
+    pub core: CoreConfig,
     /// the axis-aligned limit at bounds tile 1 (all zero when not requested)
     pub limit: Limit,
     /// wall ms of the limit's dense sampling (not part of any strategy's time)
@@ -164,9 +240,28 @@ impl BenchRow {
     }
 }
 
-/// Run the benchmark table; `sweep` adds the bounds-tile sweep 1, 2, 4, 8; `density` (dense
-/// points per pixel, low and high) adds the axis-aligned limit.
+/// Run the benchmark table with the default core; `sweep` adds the bounds-tile sweep 1, 2, 4,
+/// 8; `density` (dense points per pixel, low and high) adds the axis-aligned limit.
 pub fn run_table(
+    quick: bool,
+    scenes: &[Bench],
+    rows: &[Row],
+    sweep: bool,
+    density: Option<[u32; 2]>,
+) -> Vec<BenchRow> {
+    run_table_at(
+        CoreConfig::default_core(),
+        quick,
+        scenes,
+        rows,
+        sweep,
+        density,
+    )
+}
+
+/// [`run_table`] with the core at configuration `cfg`.
+pub fn run_table_at(
+    cfg: CoreConfig,
     quick: bool,
     scenes: &[Bench],
     rows: &[Row],
@@ -193,7 +288,8 @@ pub fn run_table(
                 STRATEGIES
                     .iter()
                     .filter_map(|n| {
-                        run_strategy(n, vp, &core, &pattern, &RunOpts { tile, ..o.clone() })
+                        let o = RunOpts { tile, ..o.clone() };
+                        run_strategy_image_at(cfg, n, vp, &core, &pattern, &o).map(|r| r.0)
                     })
                     .collect()
             };
@@ -230,6 +326,8 @@ pub fn run_table(
                 bbox: st.ste_bbox(),
                 strategies,
                 f64: r.stats.ste(),
+                f64_ms: r.time.as_secs_f64() * 1e3,
+                core: cfg,
                 limit,
                 limit_ms,
                 tile_sweep,
@@ -293,16 +391,20 @@ pub fn table_md(rows: &[BenchRow]) -> String {
             r.avg_area_px
         );
     }
-    s += "\nCost per strategy (bounds tile 1×1): setup ops per triangle / ops per tile / predicate ops per tested sample / all tile + predicate + sample-test ops per covered sample / core wall ms (no oracle)\n\n| Scene |";
+    s += &format!(
+        "\nCost per strategy (bounds tile 1×1, core {}): setup ops per triangle / ops per tile / predicate ops per tested sample / all tile + predicate + sample-test ops per covered sample / core wall ms (no oracle); Laine f64 ms = the f64 reference's frame\n\n| Scene |",
+        rows.first().map_or("-", |r| r.core.name())
+    );
     for n in STRATEGIES {
         s += &format!(" {n} |");
     }
+    s += " Laine f64 ms |";
     s += if with_limit {
         " limit ms (dense sampling) |\n|---|"
     } else {
         "\n|---|"
     };
-    s += &"---|".repeat(STRATEGIES.len() + usize::from(with_limit));
+    s += &"---|".repeat(STRATEGIES.len() + 1 + usize::from(with_limit));
     s += "\n";
     for r in rows {
         s += &format!("| {} |", name_of(r));
@@ -316,6 +418,7 @@ pub fn table_md(rows: &[BenchRow]) -> String {
                 x.ms
             );
         }
+        s += &format!(" {:.0} |", r.f64_ms);
         s += &if with_limit {
             format!(" {:.0} |\n", r.limit_ms)
         } else {

@@ -77,6 +77,10 @@ enum Cmd {
         /// skip the axis-aligned limit (its dense sampling takes most of the run)
         #[arg(long)]
         no_limit: bool,
+        /// the core's sample test: exact (exact-16-16-16) or bounded (bounded-16-16-16-20);
+        /// default: the core's default configuration
+        #[arg(long)]
+        precision: Option<String>,
     },
     /// Image error against run time: every bounds strategy at 1..64 spp against a 256-spp f64
     /// reference; writes converge.md, converge.json, converge.svg.
@@ -305,7 +309,14 @@ fn run(cli: Cli) -> Result<()> {
             row,
             tile_sweep,
             no_limit,
+            precision,
         } => {
+            let cfg = match precision.as_deref() {
+                None => bench::CoreConfig::default_core(),
+                Some(p) => bench::CoreConfig::parse(p).ok_or_else(|| {
+                    anyhow!("--precision: unknown configuration {p:?} (exact, bounded, exact-16-16-16, bounded-16-16-16-20)")
+                })?,
+            };
             let kinds: Vec<scenes::Bench> = match scene.as_deref() {
                 None => vec![scenes::Bench::Game, scenes::Bench::Dense],
                 Some("game") => vec![scenes::Bench::Game],
@@ -319,7 +330,8 @@ fn run(cli: Cli) -> Result<()> {
                     .find(|x| x.label().replace(" x", "") == r)
                     .ok_or_else(|| anyhow!("--row: unknown row {r:?} (static, motion, motion2, defocus, defocus2, both, both2)"))?],
             };
-            let rows = bench::run_table(
+            let rows = bench::run_table_at(
+                cfg,
                 quick,
                 &kinds,
                 &rows_sel,
