@@ -256,9 +256,10 @@ pub mod cost {
     use super::*;
     use core::hint::black_box;
 
-    /// Setup (plus the Laine coefficient preparation) of every triangle, `reps` times.
+    /// Setup (plus the Laine coefficient preparation) of every triangle, `reps` times, at the
+    /// exact configuration ([`crate::formats::Exact`]; `_with` for any other).
     pub fn setup_all(reps: u32) -> Result<u64, Error> {
-        setup_all_with::<crate::formats::DefaultPrecision>(reps)
+        setup_all_with::<crate::formats::Exact>(reps)
     }
 
     /// [`setup_all`] at precision `P` (e.g. the bounded test's ε-widened setup).
@@ -279,9 +280,10 @@ pub mod cost {
         Ok(calls)
     }
 
-    /// Bounds of every 2×2 tile of every visible triangle's footprint, `reps` times.
+    /// Bounds of every 2×2 tile of every visible triangle's footprint, `reps` times (exact
+    /// configuration).
     pub fn bounds_all(reps: u32) -> Result<u64, Error> {
-        bounds_all_with::<crate::formats::DefaultPrecision>(reps)
+        bounds_all_with::<crate::formats::Exact>(reps)
     }
 
     /// [`bounds_all`] at precision `P`.
@@ -313,9 +315,9 @@ pub mod cost {
     pub const SAMPLE_PASSES: u32 = 16;
 
     /// Sample tests of every sample of a 8×8 pixel window for every visible triangle,
-    /// `reps × SAMPLE_PASSES` times.
+    /// `reps × SAMPLE_PASSES` times (exact configuration).
     pub fn samples_all(reps: u32) -> Result<u64, Error> {
-        samples_all_with::<crate::formats::DefaultPrecision>(reps)
+        samples_all_with::<crate::formats::Exact>(reps)
     }
 
     /// [`samples_all`] at precision `P` (a `Bounded` one runs the bounded sample test).

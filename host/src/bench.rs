@@ -173,13 +173,7 @@ fn run_strategy_prec<P: uvt_core::Precision + Sync>(
         B::Coeffs: Send + Sync,
     {
         let name = s.name();
-        let fixed = Fixed::<B, P> {
-            prec: std::marker::PhantomData,
-            strat: s,
-            vp,
-            tris,
-            pattern,
-        };
+        let fixed = Fixed::<B, P>::new_at(s, vp, tris, pattern);
         let f = run(&fixed, pattern, o);
         let r = StratResult {
             name,

@@ -12,10 +12,10 @@ use rayon::prelude::*;
 use serde::Serialize;
 use uvt_core::bounds::BoundsStrategy;
 use uvt_core::{
-    sample_eval, Laine2011, Ops, Outcome, PixelRect, Prec, Precision, ScreenPos, Setup, Triangle,
+    sample_test, Laine2011, Ops, Outcome, PixelRect, Prec, Precision, ScreenPos, Setup, Triangle,
 };
 
-use crate::compare::{check_sample, Rounding};
+use crate::compare::{check_sample_eps, eps_of, Rounding};
 use crate::frame::{run, Fixed, Reference, RunOpts};
 use crate::pattern::Pattern;
 use crate::reference;
@@ -259,7 +259,9 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, accs
             ) else {
                 return a;
             };
-            let full = Setup::unculled(ct, vp);
+            // P's own sample test (exact or bounded) and its perturbation in the bound.
+            let full = Setup::unculled_with::<P>(ct, vp);
+            let eps = eps_of(&full);
             let rounding = Rounding::at(P::POS_FRAC, P::TUV_FRAC);
             let cell_of = |px: u16, py: u16, fp: PixelRect, bt: u16| {
                 PixelRect {
@@ -304,7 +306,7 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, accs
                     for si in 0..pat.spp as usize {
                         let idx = pat.index(px, py, si);
                         let (q, e) = (&pat.quant[idx], &pat.exact[idx]);
-                        let hf = sample_eval(&full, ScreenPos::of(px, py, q), q, &mut ops).hit;
+                        let hf = sample_test(&full, ScreenPos::of(px, py, q), q, &mut ops);
                         let (x, y) = (px as f64 + e[0], py as f64 + e[1]);
                         let hr = reference::sample::sample_test(st, v, x, y, e[2], e[3], e[4]);
                         // Tile-independent measures go into row 0 and are copied when merging.
@@ -314,7 +316,7 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, accs
                             let d =
                                 reference::sample::edge_distance_px(st, v, x, y, e[2], e[3], e[4]);
                             a[0].max_differ_px = a[0].max_differ_px.max(d);
-                            let c = check_sample(st, v, x, y, e[2], e[3], e[4], &rounding);
+                            let c = check_sample_eps(st, v, x, y, e[2], e[3], e[4], &rounding, eps);
                             a[0].max_ratio = a[0].max_ratio.max(c.ratio);
                             a[0].beyond_bound += u64::from(c.ratio > 1.0);
                             a[0].behind += u64::from(c.behind);
