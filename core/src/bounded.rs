@@ -15,7 +15,7 @@
 //! | 5 edges | `E'_k = a'_{k+1}·b'_{k+2} − a'_{k+2}·b'_{k+1}` | none | 32 × 32 → i64, \|E'\| < 2^61 |
 //! | 6 orientation | all `w_k > 0`: the common sign of the `E'_k`, no product; else `sign(Σ E'_k·w_k)` | none | **rare path** 64 × 32 → i128, \|Σ\| < 2^92 |
 //! | 7 fill rule (`E'_k = 0`) | tie key `κ = cmp((b', a', w)_{k+1}, (b', a', w)_{k+2})` (lexicographic, −1/0/1); the sample is inside edge k iff `s·κ > 0` | none | comparators only, no multiplier |
-//! | 8 depth | `E'' = floor(E'/2^sh)` with \|E''\| < 2^24 (`sh` = bit length of max\|E'\| − 24, ≥ 0), `num = Σ E''·z`, `den = Σ E''·w` | floor | 25 × 30 → i64 sums < 2^55; quotient `floor(num·2^24/den)` saturated to the depth range: a 79-by-56-bit divide (i128) |
+//! | 8 depth (hits only) | `E'' = floor(E'/2^sh)` with \|E''\| ≤ 2^24 (`sh` = bit length of max\|E'\| − 24, ≥ 0), `num = Σ E''·z`, `den = Σ E''·w` | floor | 25 × 30 → i64 sums < 2^55; quotient `floor(num·2^24/den)` saturated to the depth range: saturation from `num` vs `±2^7·den`, then a 64-by-32-bit long division in 32-bit divides with an exact correction (`depth_quotient`) |
 //!
 //! `w` and `z` here are the step-1 values (exact for static and defocus-only triangles).
 //!
@@ -51,12 +51,12 @@ use crate::sample::{Hit, ScreenPos};
 use crate::setup::{Class, Setup};
 use crate::stats::Ops;
 
-/// 2^16: one t/u/v step (a multiplication by this constant, not a shift).
+/// 2^16: one t/u/v step.
 const TUV_SCALE: i64 = 1 << TUV_FRAC;
 /// 2^8: one pixel in sample-position units.
-const SUBPIXEL_SCALE: i64 = 1 << SUBPIXEL_BITS;
+const SUBPIXEL_SCALE: i32 = 1 << SUBPIXEL_BITS;
 /// 2^24: the depth quotient's scale.
-const DEPTH_SCALE: i128 = 1 << DEPTH_FRAC;
+const DEPTH_SCALE: i64 = 1 << DEPTH_FRAC;
 
 /// The conservative epsilon of a setup: how far the bounded test's rounding can move a vertex,
 /// in raw clip units (2^-16), rounded up to integers. All zero for the exact test, so every
@@ -93,10 +93,12 @@ impl Eps {
         // (conservative), never a panic; E ≥ 1 so the divisor is positive.
         let axis = |e: u16| {
             let e = i64::from(e);
-            let num = 2i64
-                .checked_pow(s)
-                .and_then(|p| p.checked_add(k.checked_mul(SUBPIXEL_SCALE)?.checked_mul(e)?));
-            let den = 2i64.saturating_mul(SUBPIXEL_SCALE).saturating_mul(e);
+            let num = 2i64.checked_pow(s).and_then(|p| {
+                p.checked_add(k.checked_mul(i64::from(SUBPIXEL_SCALE))?.checked_mul(e)?)
+            });
+            let den = 2i64
+                .saturating_mul(i64::from(SUBPIXEL_SCALE))
+                .saturating_mul(e);
             num.and_then(|n| crate::formats::ceil_div(i128::from(n), i128::from(den)))
                 .and_then(|q| i32::try_from(q).ok())
                 .unwrap_or(1 << 24)
@@ -112,64 +114,97 @@ impl Eps {
     }
 }
 
-/// `round(v / 2^16)`, to nearest with ties toward +∞: `floor((v + 2^15) / 2^16)`.
-/// Callers pass |v| ≤ 2^45 (module table), so the sum cannot overflow and the result is ≤ 2^29.
-#[inline]
-#[allow(clippy::arithmetic_side_effects)]
-fn rnd16(v: i64) -> i64 {
-    // floor((v + 2^15) / 2^16) as an arithmetic right shift by the constant 16 (exact floor).
-    (v + TUV_SCALE / 2).checked_shr(TUV_FRAC).unwrap_or(0)
+/// Per-sample constants shared by the three vertices (steps 1–4). Ranges (checked `Sample`,
+/// `Viewport`, the position check in [`bounded_eval`]): `t` ∈ [0, 2^16], `u`, `v` ∈ [−2^16,
+/// 2^16]; `sw = 256W`, `sh = 256H` ≤ 2^19; `ngx = sw − 2xs` ∈ (−sw, sw], `ngy = 2ys − sh` ∈
+/// [−sh, sh) (so |ngx|, |ngy| ≤ 2^19); `half = 2^(S−1)` ≤ 2^31; `fine = S − 20` ∈ 0..=12.
+struct Ctx {
+    t: i32,
+    u: i32,
+    v: i32,
+    sw: i32,
+    sh: i32,
+    ngx: i32,
+    ngy: i32,
+    half: i64,
+    fine: u32,
 }
 
-/// Vertex positions `(x, y, w, z)` at the sample's (t, u, v), each on the raw 2^-16 grid
-/// (steps 1–2 of the module table). Ranges: |x|, |y| ≤ 2^30, |w|, |z| ≤ 2^29.
-// Checked triangle: every field |f| ≤ 2^29, |f1 − f0| ≤ 2^30; |T| ≤ 2^16, |U|, |V| ≤ 2^16:
-// f0·2^16 + T·(f1 − f0) = (2^16 − T)·f0 + T·f1, ≤ 2^45; U·c_t ≤ 2^45. All in i64.
+/// `f0 + round(T·(f1 − f0) / 2^16)` (nearest, ties toward +∞): the step-1 lerp. It equals
+/// `rnd16(f0·2^16 + T·(f1 − f0))` of the module table because `f0·2^16` is a multiple of 2^16.
+/// Ranges: |f0|, |f1| ≤ 2^29 so |f1 − f0| ≤ 2^30 (i32); T ∈ [0, 2^16], the product ≤ 2^46 (one
+/// 32 × 32 → 64 multiply, SMULL); the result is the rounded convex combination
+/// `((2^16 − T)·f0 + T·f1)/2^16`, |.| ≤ 2^29, so the narrowing to i32 is exact
+/// (`bounded_corners.rs` drives f0 = ±2^29, f1 = ∓2^29, T = 2^16).
+#[inline(always)]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+fn lerp(f0: i32, f1: i32, t: i32) -> i32 {
+    // (p + 2^15) >> 16 on i64: an arithmetic shift by a constant, the exact floor.
+    f0 + ((i64::from(t) * i64::from(f1 - f0) + TUV_SCALE / 2) >> TUV_FRAC) as i32
+}
+
+/// `round(L·c / 2^16)` (nearest, ties toward +∞), the step-2 lens offset: |L| ≤ 2^16, |c| ≤ 2^29,
+/// |L·c| ≤ 2^45 (SMULL), result |.| ≤ 2^29 (exact in i32).
+#[inline(always)]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+fn lens(l: i32, c: i32) -> i32 {
+    ((i64::from(l) * i64::from(c) + TUV_SCALE / 2) >> TUV_FRAC) as i32
+}
+
+/// `round((e·p + ng·w) / 2^S)` (nearest, ties toward +∞): steps 3–4 for one axis, `e` = 256W
+/// (or 256H), `ng` = −g. |e·p| ≤ 2^19·2^30, |ng·w| ≤ 2^19·2^29, so with `half` ≤ 2^31 the sum
+/// is < 1.5·2^49 + 2^31 (i64; one SMULL and one SMLAL). The floor division by 2^S is done as
+/// `>> 20` on i64 (|.| < 1.5·2^29 + 1 < 2^31 afterwards: the narrowing to i32 is exact) and then
+/// `>> (S − 20)` on i32 — nested floors by powers of two compose to the floor by 2^S exactly.
+/// Result |a'| < 2^(50−S) ≤ 2^30.
+#[inline(always)]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+fn offset<const G20: bool>(e: i32, p: i32, ng: i32, w: i32, c: &Ctx) -> i32 {
+    // `G20`: the grid 2^20 (`half` = 2^19, `fine` = 0) with its constants folded in.
+    let (half, fine) = if G20 { (1 << 19, 0) } else { (c.half, c.fine) };
+    let acc = i64::from(e) * i64::from(p) + i64::from(ng) * i64::from(w) + half;
+    // `fine` ≤ 12 < 32 (Ctx): the i32 shift cannot overflow.
+    ((acc >> OFFSET_SHIFT_MIN) as i32) >> fine
+}
+
+/// One vertex at the sample: `(a', b', w, z)` with z left at its t = 0 value (the depth needs
+/// the lerped z only on a hit, [`depth`]). Steps 1–4; `MOTION` and `DEFOCUS` select the
+/// rounded lerp and the lens offset at compile time (no per-vertex class branch).
+#[inline(always)]
 #[allow(clippy::arithmetic_side_effects)]
-fn positions(setup: &Setup, s: &Sample, ops: &mut Ops) -> [[i64; 4]; 3] {
-    let [v0, v1] = &setup.tri.v;
-    let t = i64::from(s.t().to_bits());
-    let (u, v) = (i64::from(s.u().to_bits()), i64::from(s.v().to_bits()));
-    let motion = setup.class.motion();
-    let defocus = setup.class.defocus();
-    let mut out = [[0i64; 4]; 3];
-    for ((q, r), o) in v0.iter().zip(v1.iter()).zip(out.iter_mut()) {
-        let mut f = q.map(i64::from);
-        if motion {
-            for (fi, &ri) in f.iter_mut().zip(r.iter()) {
-                *fi = rnd16(*fi * TUV_SCALE + t * (i64::from(ri) - *fi));
-            }
-            ops.add_sample(15);
-        }
-        if defocus {
-            f[X] += rnd16(u * f[C]);
-            f[Y] += rnd16(v * f[C]);
-            ops.add_sample(6);
-        }
-        *o = [f[X], f[Y], f[W], f[Z]];
+fn vertex<const MOTION: bool, const DEFOCUS: bool, const G20: bool>(
+    q: &[i32; 5],
+    r: &[i32; 5],
+    c: &Ctx,
+) -> (i32, i32, i32) {
+    let (mut x, mut y, w) = if MOTION {
+        (
+            lerp(q[X], r[X], c.t),
+            lerp(q[Y], r[Y], c.t),
+            lerp(q[W], r[W], c.t),
+        )
+    } else {
+        (q[X], q[Y], q[W])
+    };
+    if DEFOCUS {
+        let coc = if MOTION { lerp(q[C], r[C], c.t) } else { q[C] };
+        // |x_t|, |lens| ≤ 2^29: |x| ≤ 2^30 (i32).
+        x += lens(c.u, coc);
+        y += lens(c.v, coc);
     }
-    out
-}
-
-/// `round(v / 2^s)`, to nearest with ties toward +∞, for the offset grid (step 4): `half` is
-/// 2^(s−1); the arithmetic right shift by `s` is the floor division by 2^s (a right shift
-/// cannot overflow; `s` ≤ 32 < 64, so `checked_shr` never returns `None`, and if it did the
-/// result would be 0, not a panic). |v| < 1.5·2^49, half ≤ 2^31: the sum cannot overflow;
-/// |result| < 2^30 for s ≥ 20. (A shift rather than a division: no 64-bit divide on the M4.)
-#[inline]
-#[allow(clippy::arithmetic_side_effects)]
-fn rnd_grid(v: i64, half: i64, s: u32) -> i64 {
-    (v + half).checked_shr(s).unwrap_or(0)
+    (
+        offset::<G20>(c.sw, x, c.ngx, w, c),
+        offset::<G20>(c.sh, y, c.ngy, w, c),
+        w,
+    )
 }
 
 /// Fill-rule decision on `E'_k = 0` (step 7), for edge k with vertices `i = k+1`, `j = k+2`:
 /// inside iff `s·κ > 0` with the antisymmetric tie key `κ = cmp((b'_i, a'_i, w_i), (b'_j, a'_j,
 /// w_j))` (lexicographic). Comparators only; see the module docs for why it is watertight.
 #[inline]
-fn fill_rule(ab: &[(i64, i64); 3], w: &[i64; 3], i: usize, j: usize, s: i64) -> bool {
-    let (Some(&(ai, bi)), Some(&(aj, bj)), Some(&wi), Some(&wj)) =
-        (ab.get(i), ab.get(j), w.get(i), w.get(j))
-    else {
+fn fill_rule(v: &[(i32, i32, i32); 3], i: usize, j: usize, s: i64) -> bool {
+    let (Some(&(ai, bi, wi)), Some(&(aj, bj, wj))) = (v.get(i), v.get(j)) else {
         return false;
     };
     match (bi, ai, wi).cmp(&(bj, aj, wj)) {
@@ -179,29 +214,117 @@ fn fill_rule(ab: &[(i64, i64); 3], w: &[i64; 3], i: usize, j: usize, s: i64) -> 
     }
 }
 
-/// Depth z/w from the rounded edge values (step 8; rounding as in `sample.rs`: floor).
-// After the shift |e''| < 2^24, |w|, |z| ≤ 2^29: products < 2^53, sums of three < 2^55 (i64);
-// num·2^24 < 2^79 and den > 0 at the division (i128).
-#[allow(clippy::arithmetic_side_effects)]
-fn depth(e: &[i64; 3], wz: &[(i64, i64); 3], sign: i64) -> i32 {
-    let big = e.iter().map(|x| x.unsigned_abs()).max().unwrap_or(0);
+/// `floor(u / v)` for a normalized `v` ∈ [2^31, 2^32) and `u < 2^32·v` (so the quotient fits
+/// u32): long division in two base-2^16 digits with 32-bit divides (Hacker's Delight `divlu`;
+/// the Cortex-M's UDIV), no 64-bit division routine. Each digit estimate `q̂ = ⌊(2 digits)/vn1⌋`
+/// is at most 2 too large (normalized divisor) and is corrected by at most two steps.
+/// Ranges: `vn1` ∈ [2^15, 2^16) (no zero division); `q̂·vn0` is formed only when `q̂ < 2^16`
+/// (< 2^32), `rhat·2^16 + un` only when `rhat < 2^16` (< 2^32); the partial remainder `un21`'s
+/// true value is < v < 2^32, so forming it modulo 2^32 (wrapping) is exact.
+#[inline]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+fn div64_32(u: u64, v: u32) -> u32 {
+    const B: u32 = 1 << 16;
+    let (u1, u0) = ((u >> 32) as u32, u as u32);
+    let (vn1, vn0) = (v >> 16, v & 0xffff);
+    let digit = |hi: u32, lo: u32| {
+        let mut q = hi / vn1;
+        let mut rhat = hi - q * vn1;
+        for _ in 0..2 {
+            if q >= B || q * vn0 > rhat * B + lo {
+                q -= 1;
+                rhat += vn1;
+                if rhat >= B {
+                    break;
+                }
+            }
+        }
+        q
+    };
+    let q1 = digit(u1, u0 >> 16);
+    let un21 = u1
+        .wrapping_mul(B)
+        .wrapping_add(u0 >> 16)
+        .wrapping_sub(q1.wrapping_mul(v));
+    let q0 = digit(un21, u0 & 0xffff);
+    // q1, q0 < 2^16 after the corrections.
+    q1 * B + q0
+}
+
+/// `floor(num·2^24 / den)` for `den` ∈ (0, 2^55) and |num| < 2^7·den, exactly, without a
+/// 64- or 128-bit division routine. Then the quotient lies in [−2^31, 2^31).
+///
+/// With `L = bitlen(den)` ∈ 1..=55: `D = floor(den·2^(32−L))` ∈ [2^31, 2^32) (from the exact
+/// `den·2^(63−L)` < 2^63, shifted right by 31) and `N = num·2^(56−L)` (exact, |N| < 2^(7+L+56−L)
+/// = 2^63). The true quotient is `N/(den·2^(32−L))` with `den·2^(32−L)` ∈ [D, D + 1) and
+/// |N/(den·2^(32−L))| < 2^31, so `|N/D − num·2^24/den| < 2^31·(1 + 2^-31)/2^31` ≈ 1; the
+/// magnitude divide [`div64_32`] truncates (< 1 more), hence `q̂ − q` ∈ [−2, 3]. The remainder
+/// `R = num·2^24 − q̂·den` is formed modulo 2^64 (wrapping): its true value has
+/// |R| < 4·den < 2^57, so the wrapped value is exact, and at most three steps of `q̂ ∓ 1`,
+/// `R ± den` reach `0 ≤ R < den`, i.e. q̂ = q (the loop allows four). `bounded_frozen` checks it
+/// against the 128-bit division on extreme and random operands.
+#[allow(
+    clippy::arithmetic_side_effects,
+    clippy::cast_possible_truncation,
+    clippy::cast_sign_loss
+)]
+pub(crate) fn depth_quotient(num: i64, den: i64) -> i64 {
+    let len = u64::BITS - den.leading_zeros();
+    // len − 1 ∈ 0..=54: 2^62 >> (len − 1) = 2^(63−len), 2^55 >> (len − 1) = 2^(56−len) (right
+    // shifts of constants); the products are < 2^63 (above).
+    let dn = den * ((1i64 << 62) >> (len - 1));
+    let d = (dn >> 31) as u32;
+    let n = num * ((1i64 << 55) >> (len - 1));
+    let mag = i64::from(div64_32(n.unsigned_abs(), d));
+    let mut q = if n < 0 { -mag } else { mag };
+    let mut r = num
+        .wrapping_mul(DEPTH_SCALE)
+        .wrapping_sub(q.wrapping_mul(den));
+    for _ in 0..4 {
+        if r < 0 {
+            q -= 1;
+            r += den;
+        } else if r >= den {
+            q += 1;
+            r -= den;
+        }
+    }
+    q
+}
+
+/// Depth z/w from the rounded edge values (step 8; rounding as in `sample.rs`: floor), `wz`
+/// the step-1 (w, z) of each vertex.
+///
+/// `E'' = floor(E'/2^sh)` with `sh = max(0, bitlen(max|E'|) − 24)`: |E''| ≤ 2^24 (exact in
+/// i32); |w|, |z| ≤ 2^29, so each product ≤ 2^53 (SMULL/SMLAL) and the oriented sums
+/// |num|, |den| < 2^55. With `den > 0` (else `DEPTH_FAR`): `num ≥ 2^7·den` means a quotient
+/// ≥ 2^31 (saturates to `DEPTH_FAR`), `num ≤ −2^7·den` one ≤ −2^31 (`DEPTH_NEAR`); otherwise
+/// [`depth_quotient`] is exact and in [−2^31, 2^31), clamped to `DEPTH_FAR` at the top. This is
+/// `clamp(floor(num·2^24/den), DEPTH_NEAR, DEPTH_FAR)` exactly, as the 128-bit division gave.
+#[inline]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+fn depth(e: &[i64; 3], wz: &[(i32, i32); 3], sign: i64) -> i32 {
+    let big = e.iter().map(|x| x.unsigned_abs()).fold(0, u64::max);
     let len = u64::BITS - big.leading_zeros();
-    // Floor shift by sh ≤ 37 (|E'| < 2^61): an arithmetic right shift, exact floor, cannot fail.
+    // Floor shift by sh ≤ 37 (|E'| < 2^61): an arithmetic right shift, exact floor.
     let sh = len.saturating_sub(24);
     let (mut num, mut den) = (0i64, 0i64);
-    for (ek, &(w, z)) in e.iter().zip(wz.iter()) {
-        let ek = ek.checked_shr(sh).unwrap_or(0);
-        num += ek * z;
-        den += ek * w;
+    for (&ek, &(w, z)) in e.iter().zip(wz.iter()) {
+        let ek = (ek >> sh) as i32;
+        num += i64::from(ek) * i64::from(z);
+        den += i64::from(ek) * i64::from(w);
     }
-    let (num, den) = (i128::from(num * sign), i128::from(den * sign));
-    // den > 0 (checked by floor_div) and the quotient's floor; through a 64-bit divide when the
-    // scaled numerator fits (`floor_div`), else the 128-bit one.
-    let Some(q) = crate::formats::floor_div(num * DEPTH_SCALE, den) else {
+    let (num, den) = if sign < 0 { (-num, -den) } else { (num, den) };
+    // 2^7·den < 2^62 (den < 2^55).
+    let lim = den * (1 << (31 - DEPTH_FRAC));
+    if den <= 0 || num >= lim {
         return DEPTH_FAR;
-    };
-    let clamped = q.clamp(i128::from(DEPTH_NEAR), i128::from(DEPTH_FAR));
-    i32::try_from(clamped).unwrap_or(DEPTH_FAR)
+    }
+    if num <= -lim {
+        return DEPTH_NEAR;
+    }
+    // In [−2^31, 2^31): after the clamp to DEPTH_FAR it fits i32.
+    depth_quotient(num, den).min(i64::from(DEPTH_FAR)) as i32
 }
 
 /// The rounded intermediates of one bounded sample test (for tests and vectors).
@@ -218,13 +341,121 @@ pub struct BoundedEval {
     pub hit: Option<Hit>,
 }
 
+/// Operations counted per sample test of a class (the hardware datapath's count, unchanged by
+/// the software order: the z lerp is counted with the other lerps though it runs on hits only).
+// Constants ≤ 100: no overflow.
+#[allow(clippy::arithmetic_side_effects)]
+const fn class_ops(motion: bool, defocus: bool) -> u64 {
+    let m = if motion { 15 * 3 } else { 0 };
+    let d = if defocus { 6 * 3 } else { 0 };
+    m + d + 2 + 3 * 8 + 9
+}
+
+/// Orientation and coverage (steps 6–7) when some `w ≤ 0` or some `E' = 0` (the fast path in
+/// [`eval_class`] takes the rest): with every w > 0 the common sign of the `E'` (0 if they
+/// have both signs or are all 0), else `sign(Σ E'_k·w_k)` (64 × 32 → i128, |Σ| < 2^92); edges
+/// with `E' = 0` go to the fill rule. Returns (orientation, covered) and counts its operations.
+#[cold]
+#[inline(never)]
+#[allow(clippy::arithmetic_side_effects)]
+fn decide_slow(e: [i64; 3], p: [(i32, i32, i32); 3], n: &mut u64) -> (i64, bool) {
+    let sign = if p.iter().all(|&(_, _, w)| w > 0) {
+        *n += 3;
+        let pos = e.iter().any(|&x| x > 0);
+        let neg = e.iter().any(|&x| x < 0);
+        i64::from(pos && !neg) - i64::from(neg && !pos)
+    } else {
+        *n += 6;
+        let det: i128 = e
+            .iter()
+            .zip(p.iter())
+            .map(|(&ek, &(_, _, wk))| i128::from(ek) * i128::from(wk))
+            .sum();
+        i64::from(det > 0) - i64::from(det < 0)
+    };
+    let covered = sign != 0
+        && e.iter().enumerate().all(|(k, &ek)| {
+            if ek == 0 {
+                fill_rule(&p, (k + 1) % 3, (k + 2) % 3, sign)
+            } else {
+                (ek > 0) == (sign > 0)
+            }
+        });
+    (sign, covered)
+}
+
+/// The bounded sample test of one class (`MOTION`, `DEFOCUS` fixed at compile time; dispatched
+/// once per call from the setup's class by [`bounded_eval`]): steps 1–8 of the module table.
+/// `shift` ∈ [`OFFSET_SHIFT_MIN`]..=[`OFFSET_SHIFT_MAX`] and the position inside the viewport
+/// are checked by the caller.
+// Ranges in the module table and on each helper; |E'| < 2^61 (|a'|, |b'| < 2^30); the
+// rare-path Σ E'·w < 2^92 (i128).
+#[inline(always)]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_wrap)]
+fn eval_class<const MOTION: bool, const DEFOCUS: bool, const G20: bool>(
+    setup: &Setup,
+    c: &Ctx,
+    ops: &mut Ops,
+) -> BoundedEval {
+    let [v0, v1] = &setup.tri.v;
+    let [q0, q1, q2] = v0;
+    let [r0, r1, r2] = v1;
+    let p = [
+        vertex::<MOTION, DEFOCUS, G20>(q0, r0, c),
+        vertex::<MOTION, DEFOCUS, G20>(q1, r1, c),
+        vertex::<MOTION, DEFOCUS, G20>(q2, r2, c),
+    ];
+    let [(a0, b0, w0), (a1, b1, w1), (a2, b2, w2)] = p;
+    let m = |x: i32, y: i32| i64::from(x) * i64::from(y);
+    let e = [
+        m(a1, b2) - m(a2, b1),
+        m(a2, b0) - m(a0, b2),
+        m(a0, b1) - m(a1, b0),
+    ];
+    let mut n = class_ops(MOTION, DEFOCUS);
+    let [e0, e1, e2] = e;
+    // Fast path (every w > 0, no E' = 0): the sign bit of `e0 | e1 | e2` is set iff some E' < 0,
+    // that of `e0 & e1 & e2` iff every E' < 0. Covered iff all E' share one strict sign, which
+    // is then the orientation (module table step 6). Anything else goes to `decide_slow`.
+    let (sign, covered) = if w0 > 0 && w1 > 0 && w2 > 0 && e0 != 0 && e1 != 0 && e2 != 0 {
+        n += 3;
+        if e0 & e1 & e2 < 0 {
+            (-1, true)
+        } else if e0 | e1 | e2 >= 0 {
+            (1, true)
+        } else {
+            (0, false)
+        }
+    } else {
+        decide_slow(e, p, &mut n)
+    };
+    let hit = covered.then(|| {
+        n += 12;
+        let z = |q: &[i32; 5], r: &[i32; 5]| if MOTION { lerp(q[Z], r[Z], c.t) } else { q[Z] };
+        let wz = [(w0, z(q0, r0)), (w1, z(q1, r1)), (w2, z(q2, r2))];
+        Hit {
+            depth: depth(&e, &wz, sign),
+        }
+    });
+    ops.add_sample(n);
+    BoundedEval {
+        ab: p.map(|(a, b, _)| (i64::from(a), i64::from(b))),
+        e,
+        det_sign: sign,
+        hit,
+    }
+}
+
 /// The bounded sample test with its intermediates, offsets on the grid `2^shift`. Counts its
 /// arithmetic in `ops.sample`. `None` for a position outside the viewport (module docs) or a
 /// `shift` outside [`OFFSET_SHIFT_MIN`]..=[`OFFSET_SHIFT_MAX`] (the range the proofs cover).
-// Ranges in the module table: |x| ≤ 2^30, |w| ≤ 2^29, 256W ≤ 2^19 and |2xs − 256W| ≤ 256W
-// (checked below), so |A| < 1.5·2^49; |a'| < 2^30 (grid ≥ 2^20); |E'| < 2^61; the rare-path
-// Σ E'·w < 2^92.
-#[allow(clippy::arithmetic_side_effects)]
+// 256W, 256H ≤ 2^19 and xs < 256W, ys < 256H (checked): every `Ctx` value in its range.
+#[inline]
+#[allow(
+    clippy::arithmetic_side_effects,
+    clippy::cast_possible_wrap,
+    clippy::cast_sign_loss
+)]
 pub fn bounded_eval(
     setup: &Setup,
     shift: u32,
@@ -235,65 +466,36 @@ pub fn bounded_eval(
     if !(OFFSET_SHIFT_MIN..=OFFSET_SHIFT_MAX).contains(&shift) {
         return None;
     }
-    let half = 2i64.checked_pow(shift.checked_sub(1)?)?;
     let vp = setup.viewport;
-    let (sw, sh) = (
-        SUBPIXEL_SCALE * i64::from(vp.w),
-        SUBPIXEL_SCALE * i64::from(vp.h),
-    );
-    let (xs, ys) = (i64::from(pos.xs), i64::from(pos.ys));
-    if xs >= sw || ys >= sh {
+    let sw = SUBPIXEL_SCALE * i32::from(vp.w);
+    let sh = SUBPIXEL_SCALE * i32::from(vp.h);
+    // sw, sh ∈ [256, 2^19] (positive, exact in u32); xs, ys below them fit i32.
+    if pos.xs >= sw as u32 || pos.ys >= sh as u32 {
         return None;
     }
-    let (gx, gy) = (2 * xs - sw, sh - 2 * ys);
-    let p = positions(setup, s, ops);
-    let ab = p.map(|[x, y, w, _]| {
-        (
-            rnd_grid(sw * x - gx * w, half, shift),
-            rnd_grid(sh * y - gy * w, half, shift),
-        )
-    });
-    let w = p.map(|q| q[2]);
-    let [(a0, b0), (a1, b1), (a2, b2)] = ab;
-    let e = [a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0];
-    ops.add_sample(2 + 3 * 8 + 9);
-    let sign = if w.iter().all(|&wk| wk > 0) {
-        let pos_ = e.iter().any(|&x| x > 0);
-        let neg = e.iter().any(|&x| x < 0);
-        ops.add_sample(3);
-        match (pos_, neg) {
-            (true, false) => 1,
-            (false, true) => -1,
-            _ => 0,
-        }
-    } else {
-        let det: i128 = e
-            .iter()
-            .zip(w.iter())
-            .map(|(&ek, &wk)| i128::from(ek) * i128::from(wk))
-            .sum();
-        ops.add_sample(6);
-        i64::from(det > 0) - i64::from(det < 0)
+    let (xs, ys) = (pos.xs as i32, pos.ys as i32);
+    let c = Ctx {
+        t: s.t().to_bits(),
+        u: s.u().to_bits(),
+        v: s.v().to_bits(),
+        sw,
+        sh,
+        ngx: sw - 2 * xs,
+        ngy: 2 * ys - sh,
+        // 2^31 >> (32 − S) = 2^(S−1) (a right shift of a constant; 32 − S ∈ 0..=12).
+        half: (1i64 << 31) >> (OFFSET_SHIFT_MAX - shift),
+        fine: shift - OFFSET_SHIFT_MIN,
     };
-    let covered = sign != 0
-        && e.iter()
-            .enumerate()
-            .all(|(k, &ek)| match (ek * sign).signum() {
-                1 => true,
-                0 => fill_rule(&ab, &w, (k + 1) % 3, (k + 2) % 3, sign),
-                _ => false,
-            });
-    let hit = covered.then(|| {
-        ops.add_sample(12);
-        Hit {
-            depth: depth(&e, &p.map(|q| (q[2], q[3])), sign),
-        }
-    });
-    Some(BoundedEval {
-        ab,
-        e,
-        det_sign: sign,
-        hit,
+    // The default grid 2^20 gets its own copy with the rounding constants folded in.
+    Some(match (setup.class, shift == OFFSET_SHIFT_MIN) {
+        (Class::Static, true) => eval_class::<false, false, true>(setup, &c, ops),
+        (Class::Motion, true) => eval_class::<true, false, true>(setup, &c, ops),
+        (Class::Defocus, true) => eval_class::<false, true, true>(setup, &c, ops),
+        (Class::MotionDefocus, true) => eval_class::<true, true, true>(setup, &c, ops),
+        (Class::Static, false) => eval_class::<false, false, false>(setup, &c, ops),
+        (Class::Motion, false) => eval_class::<true, false, false>(setup, &c, ops),
+        (Class::Defocus, false) => eval_class::<false, true, false>(setup, &c, ops),
+        (Class::MotionDefocus, false) => eval_class::<true, true, false>(setup, &c, ops),
     })
 }
 

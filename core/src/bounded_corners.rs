@@ -164,7 +164,9 @@ fn epsilon_setup_and_bounds_at_the_domain_corners() {
     // The exact configuration: zero epsilon.
     let vp = Viewport::new(7, 5).unwrap();
     for tri in tris() {
-        assert!(Setup::unculled(&tri, vp).eps().is_zero());
+        assert!(Setup::unculled_with::<crate::formats::Exact>(&tri, vp)
+            .eps()
+            .is_zero());
     }
 }
 

@@ -99,7 +99,7 @@ fn positions_at_the_domain_corners() {
         smp(17, 99, ONE - 1, 1 - ONE, ONE - 1),
     ];
     for (tri, class) in corner_triangles() {
-        let setup = Setup::unculled(&tri, vp);
+        let setup = Setup::unculled_with::<crate::formats::Exact>(&tri, vp);
         assert_eq!(setup.class(), class);
         let [v0, v1] = &tri.v;
         for s in &samples {

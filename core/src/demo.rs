@@ -256,9 +256,10 @@ pub mod cost {
     use super::*;
     use core::hint::black_box;
 
-    /// Setup (plus the Laine coefficient preparation) of every triangle, `reps` times.
+    /// Setup (plus the Laine coefficient preparation) of every triangle, `reps` times, at the
+    /// exact configuration ([`crate::formats::Exact`]; `_with` for any other).
     pub fn setup_all(reps: u32) -> Result<u64, Error> {
-        setup_all_with::<crate::formats::DefaultPrecision>(reps)
+        setup_all_with::<crate::formats::Exact>(reps)
     }
 
     /// [`setup_all`] at precision `P` (e.g. the bounded test's ε-widened setup).
@@ -279,9 +280,10 @@ pub mod cost {
         Ok(calls)
     }
 
-    /// Bounds of every 2×2 tile of every visible triangle's footprint, `reps` times.
+    /// Bounds of every 2×2 tile of every visible triangle's footprint, `reps` times (exact
+    /// configuration).
     pub fn bounds_all(reps: u32) -> Result<u64, Error> {
-        bounds_all_with::<crate::formats::DefaultPrecision>(reps)
+        bounds_all_with::<crate::formats::Exact>(reps)
     }
 
     /// [`bounds_all`] at precision `P`.
@@ -306,13 +308,28 @@ pub mod cost {
         Ok(calls)
     }
 
-    /// Sample tests of every sample of a 8×8 pixel window for every visible triangle.
+    /// Passes over the sample window per rep in [`samples_class_with`]: the triangles are set
+    /// up once per call, inside the caller's timing, so with few passes the setups (≈ 30–50 k
+    /// instructions each on the Cortex-M4F) would be charged to the sample test (≈ 90
+    /// instructions per call at 2 passes); at `2 × 16` passes they weigh < 6 per call.
+    pub const SAMPLE_PASSES: u32 = 16;
+
+    /// Sample tests of every sample of a 8×8 pixel window for every visible triangle,
+    /// `reps × SAMPLE_PASSES` times (exact configuration).
     pub fn samples_all(reps: u32) -> Result<u64, Error> {
-        samples_all_with::<crate::formats::DefaultPrecision>(reps)
+        samples_all_with::<crate::formats::Exact>(reps)
     }
 
     /// [`samples_all`] at precision `P` (a `Bounded` one runs the bounded sample test).
     pub fn samples_all_with<P: crate::formats::Precision>(reps: u32) -> Result<u64, Error> {
+        samples_class_with::<P>(reps, None)
+    }
+
+    /// [`samples_all_with`] restricted to the visible triangles of one class (`None`: all).
+    pub fn samples_class_with<P: crate::formats::Precision>(
+        reps: u32,
+        class: Option<crate::setup::Class>,
+    ) -> Result<u64, Error> {
         let setup = crate::setup::setup_with::<P>;
         let prims = prims()?;
         let vp = viewport()?;
@@ -323,7 +340,10 @@ pub mod cost {
             let Outcome::Visible(s) = setup(&p.tri, vp, &mut ops) else {
                 continue;
             };
-            for _ in 0..reps {
+            if class.is_some_and(|c| c != s.class()) {
+                continue;
+            }
+            for _ in 0..reps.saturating_mul(SAMPLE_PASSES) {
                 for py in 12..20u16 {
                     for px in 12..20u16 {
                         for smp in pattern.pixel(px, py) {

@@ -161,12 +161,17 @@ impl<const POS: u32, const TUV: u32, const BND: u32, const OFF: u32> Precision
     };
 }
 
-/// The hardware-plausible bounded candidate: 16 fraction bits everywhere, offsets on a `2^20`
-/// grid (i32 multiplier operands, i64 products). Not the default yet.
+/// The hardware-plausible bounded configuration (`bounded-16-16-16-20`): 16 fraction bits
+/// everywhere, offsets on a `2^20` grid (i32 multiplier operands, i64 products). The default.
 pub type BoundedPrecision = Bounded<16, 16, 16, 20>;
 
-/// The documented default: 16 fraction bits everywhere.
-pub type DefaultPrecision = Prec<16, 16, 16>;
+/// The exact configuration (`exact-16-16-16`): 16 fraction bits everywhere and the exact sample
+/// test of `sample.rs`. Always built and tested beside the default; the committed golden
+/// vectors are of this configuration.
+pub type Exact = Prec<16, 16, 16>;
+
+/// The default configuration: the bounded (hardware-width) sample test, [`BoundedPrecision`].
+pub type DefaultPrecision = BoundedPrecision;
 
 /// The fraction bits of a [`Precision`], carried at run time by a setup. Only built from a
 /// [`Precision`] ([`PrecisionBits::of`]), so `pos`, `tuv` ∈ 2..=16 and `bnd` ∈ 0..=16.

@@ -32,6 +32,8 @@
 pub mod bounded;
 #[cfg(test)]
 mod bounded_corners;
+#[cfg(test)]
+mod bounded_frozen;
 pub mod bounds;
 #[cfg(test)]
 mod corners;
@@ -61,7 +63,7 @@ pub use bounds::{BboxScan, BoundsStrategy, Laine2011, TileBounds, UvtBox};
 pub use embedded_graphics_core::pixelcolor::Rgb888;
 pub use error::{Error, Field, SampleField};
 pub use formats::{
-    Bounded, BoundedPrecision, Coord, DefaultPrecision, Depth, Lens, Prec, Precision,
+    Bounded, BoundedPrecision, Coord, DefaultPrecision, Depth, Exact, Lens, Prec, Precision,
     PrecisionBits, SubPixel, Time,
 };
 pub use input::{PixelRect, Sample, SamplePattern, Triangle, Vertex, Viewport};

@@ -239,6 +239,8 @@ pub struct BenchRow {
     pub strategies: Vec<StratResult>,
     /// STE of the f64 reference (Laine 2011 in f64)
     pub f64: f64,
+    /// wall ms of the f64 reference's frame (same frame driver, no oracle)
+    pub f64_ms: f64,
     /// the axis-aligned limit at bounds tile 1 (all zero when not requested)
     pub limit: Limit,
     /// wall ms of the limit's dense sampling (not part of any strategy's time)
@@ -356,6 +358,7 @@ fn rows_at<P: Precision + Sync>(
                 bbox: st.ste_bbox(),
                 strategies,
                 f64: r.stats.ste(),
+                f64_ms: r.time.as_secs_f64() * 1e3,
                 limit,
                 limit_ms,
                 tile_sweep,
@@ -420,16 +423,20 @@ pub fn table_md(rows: &[BenchRow]) -> String {
             r.avg_area_px
         );
     }
-    s += "\nCost per strategy (bounds tile 1×1): setup ops per triangle / ops per tile / predicate ops per tested sample / all tile + predicate + sample-test ops per covered sample / core wall ms (no oracle)\n\n| Scene |";
+    s += &format!(
+        "\nCost per strategy (bounds tile 1×1, core {}): setup ops per triangle / ops per tile / predicate ops per tested sample / all tile + predicate + sample-test ops per covered sample / core wall ms (no oracle); Laine f64 ms = the f64 reference's frame\n\n| Scene |",
+        rows.first().map_or("-", |r| r.precision.as_str())
+    );
     for n in STRATEGIES {
         s += &format!(" {n} |");
     }
+    s += " Laine f64 ms |";
     s += if with_limit {
         " limit ms (dense sampling) |\n|---|"
     } else {
         "\n|---|"
     };
-    s += &"---|".repeat(STRATEGIES.len() + usize::from(with_limit));
+    s += &"---|".repeat(STRATEGIES.len() + 1 + usize::from(with_limit));
     s += "\n";
     for r in rows {
         s += &format!("| {} |", name_of(r));
@@ -443,6 +450,7 @@ pub fn table_md(rows: &[BenchRow]) -> String {
                 x.ms
             );
         }
+        s += &format!(" {:.0} |", r.f64_ms);
         s += &if with_limit {
             format!(" {:.0} |\n", r.limit_ms)
         } else {

@@ -136,6 +136,34 @@ pub fn check_sample(
     t: f64,
     r: &Rounding,
 ) -> SampleCheck {
+    check_sample_eps(tri, vp, x, y, u, v, t, r, [0.0; 3])
+}
+
+/// The perturbation bound of the core's sample test for a setup, clip units `[x, y, w]`: the
+/// bounded test decides exactly on a triangle whose vertices lie within `Setup::eps()` (raw
+/// 2^-16, rounded up) of the exact test's at the same quantized inputs (`uvt_core::bounded`);
+/// zero for the exact test.
+pub fn eps_of(s: &Setup) -> [f64; 3] {
+    let e = s.eps();
+    let raw = |v: i32| f64::from(v) / 65536.0;
+    [raw(e.x()[0]), raw(e.x()[1]), raw(e.w())]
+}
+
+/// [`check_sample`] for a core sample test that adds a vertex perturbation of at most `eps`
+/// (clip units, x, y, w; [`eps_of`]) after the input rounding: the two perturbations add, so
+/// `Δx_k`, `Δy_k`, `Δw_k` of the module docs grow by `eps` and the bound stays rigorous.
+#[allow(clippy::too_many_arguments)]
+pub fn check_sample_eps(
+    tri: &SceneTri,
+    vp: (u16, u16),
+    x: f64,
+    y: f64,
+    u: f64,
+    v: f64,
+    t: f64,
+    r: &Rounding,
+    eps: [f64; 3],
+) -> SampleCheck {
     let (p, _) = reference::sample::positions(tri, t, u, v);
     let d = reference::sample::direction(vp, x, y);
     let (w, h) = (vp.0 as f64, vp.1 as f64);
@@ -146,7 +174,7 @@ pub fn check_sample(
         let (a, b) = (tri.t0[k], tri.t1[k]);
         let mv = |f: usize| r.pos + r.tuv * (b[f] - a[f]).abs();
         let lens = mv(4) + r.tuv * (a[4] + t * (b[4] - a[4])).abs();
-        *dk = DVec3::new(mv(0) + lens, mv(1) + lens, mv(3)).length();
+        *dk = DVec3::new(mv(0) + lens + eps[0], mv(1) + lens + eps[1], mv(3) + eps[2]).length();
         m += [0, 1, 3, 4]
             .iter()
             .map(|&f| a[f].abs() + b[f].abs())
@@ -271,7 +299,8 @@ pub fn footprint_union(a: Option<PixelRect>, b: Option<PixelRect>) -> Option<Pix
 
 /// Compare every sample of every triangle's footprints (the union of the core's and the
 /// reference's; both are conservative, so every covered sample is inside it), for core triangles
-/// and pattern at the default precision.
+/// and pattern at the default precision (its sample test, exact or bounded; a bounded test's
+/// perturbation `Setup::eps()` is part of the bound, [`check_sample_eps`]).
 pub fn compare(tris: &[SceneTri], core: &[Triangle], vp: Viewport, pat: &Pattern) -> CoverageDiff {
     compare_with(tris, core, vp, pat, &Rounding::default_precision())
 }
@@ -299,6 +328,7 @@ pub fn compare_with(
                 return d;
             };
             let full = Setup::unculled(ct, vp);
+            let eps = eps_of(&full);
             for py in region.y0..region.y1 {
                 for px in region.x0..region.x1 {
                     for si in 0..pat.spp as usize {
@@ -312,7 +342,7 @@ pub fn compare_with(
                         if f != r {
                             let dist =
                                 reference::sample::edge_distance_px(st, v, x, y, e[2], e[3], e[4]);
-                            let c = check_sample(st, v, x, y, e[2], e[3], e[4], rounding);
+                            let c = check_sample_eps(st, v, x, y, e[2], e[3], e[4], rounding, eps);
                             d.record(f, dist, &c);
                         }
                     }

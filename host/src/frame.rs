@@ -87,6 +87,19 @@ impl<'a, B> Fixed<'a, B> {
     }
 }
 
+impl<'a, B, P> Fixed<'a, B, P> {
+    /// The core at precision `P` (e.g. `uvt_core::Exact`, whatever the default).
+    pub fn new_at(strat: B, vp: Viewport, tris: &'a [Triangle], pattern: &'a Pattern) -> Self {
+        Fixed {
+            prec: std::marker::PhantomData,
+            strat,
+            vp,
+            tris,
+            pattern,
+        }
+    }
+}
+
 impl<B: BoundsStrategy + Sync, P: uvt_core::Precision + Sync> Pipeline for Fixed<'_, B, P>
 where
     B::Coeffs: Send + Sync,

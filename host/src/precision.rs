@@ -29,7 +29,7 @@ use uvt_core::{
     Triangle,
 };
 
-use crate::compare::{check_sample, Rounding};
+use crate::compare::{check_sample_eps, eps_of, Rounding};
 use crate::frame::{run, Fixed, Reference, RunOpts};
 use crate::pattern::Pattern;
 use crate::reference;
@@ -326,13 +326,10 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, accs
             ) else {
                 return a;
             };
+            // P's own sample test (exact or bounded) and its perturbation in the bound.
             let full = Setup::unculled_with::<P>(ct, vp);
-            // The bounded test decides exactly on vertices perturbed by ε (module docs): an
-            // extra position rounding of ε_max in the rigorous check (it enters x, y and w).
-            let eps = uvt_core::Eps::of(P::OFFSET_SHIFT, uvt_core::Class::MotionDefocus, vp);
-            let mut rounding = Rounding::at(P::POS_FRAC, P::TUV_FRAC);
-            let [ex, ey] = eps.x();
-            rounding.pos += f64::from(ex.max(ey).max(eps.w())) / 65536.0;
+            let eps = eps_of(&full);
+            let rounding = Rounding::at(P::POS_FRAC, P::TUV_FRAC);
             let d_q = d_q_px(P::OFFSET_SHIFT, v.0, v.1);
             let front = st.t0.iter().chain(st.t1.iter()).all(|q| q[3] >= 1.0);
             let cell_of = |px: u16, py: u16, fp: PixelRect, bt: u16| {
@@ -389,7 +386,7 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, accs
                                 reference::sample::edge_distance_px(st, v, x, y, e[2], e[3], e[4]);
                             a[0].max_differ_px = a[0].max_differ_px.max(d);
                             a[0].beyond_dq += u64::from(front && d > d_q);
-                            let c = check_sample(st, v, x, y, e[2], e[3], e[4], &rounding);
+                            let c = check_sample_eps(st, v, x, y, e[2], e[3], e[4], &rounding, eps);
                             a[0].max_ratio = a[0].max_ratio.max(c.ratio);
                             a[0].beyond_bound += u64::from(c.ratio > 1.0);
                             a[0].behind += u64::from(c.behind);

@@ -1,5 +1,7 @@
 //! Hand-computed cases per pipeline stage, compared bit for bit. Each expected value is derived
 //! in the comment above it; a failure prints inputs, expected and observed as decimal and hex.
+//! The stages are those of the exact configuration (`Exact`); the bounded test has its own hand
+//! cases in `bounded.rs`.
 
 use uvt_core::bounds::BoundsStrategy;
 use uvt_core::formats::{DEPTH_EMPTY, DEPTH_FAR, DEPTH_NEAR};
@@ -17,7 +19,7 @@ fn same(what: &str, t: &Triangle, expected: i128, observed: i128) {
 }
 
 fn visible(t: &Triangle, vp: Viewport) -> Setup {
-    match setup(t, vp, &mut Ops::default()) {
+    match setup_with::<Exact>(t, vp, &mut Ops::default()) {
         Outcome::Visible(s) => s,
         o => panic!("expected visible, got {o:?}\n{}", dump(t)),
     }
@@ -151,24 +153,24 @@ fn setup_classify_and_cull() {
         [0.5, 0.0, 0.0, 1.0, 0.0],
     ];
     assert_eq!(
-        setup(&stat(line), vp, &mut ops),
+        setup_with::<Exact>(&stat(line), vp, &mut ops),
         Outcome::Culled(Cull::Degenerate)
     );
     // zero area at t = 0 only → visible
     assert!(matches!(
-        setup(&tri(line, base), vp, &mut ops),
+        setup_with::<Exact>(&tri(line, base), vp, &mut ops),
         Outcome::Visible(_)
     ));
     // wholly right of the frustum for the whole shutter → outside
     let right = base.map(|v| [v[0] + 3.0, v[1], v[2], v[3], v[4]]);
     assert_eq!(
-        setup(&tri(right, right), vp, &mut ops),
+        setup_with::<Exact>(&tri(right, right), vp, &mut ops),
         Outcome::Culled(Cull::Outside)
     );
     // all behind the camera → outside
     let behind = base.map(|v| [v[0], v[1], v[2], -1.0, v[4]]);
     assert_eq!(
-        setup(&stat(behind), vp, &mut ops),
+        setup_with::<Exact>(&stat(behind), vp, &mut ops),
         Outcome::Culled(Cull::Outside)
     );
 }
@@ -333,7 +335,10 @@ fn sample_test_fill_rule_shared_edge() {
     let (top, bot) = ([0.0, 0.5, 0.0, 1.0, 0.1], [0.0, -0.5, 0.0, 1.0, 0.1]);
     let left = stat([top, bot, [-0.5, 0.0, 0.0, 1.0, 0.1]]);
     let right = stat([bot, top, [0.5, 0.0, 0.0, 1.0, 0.1]]);
-    let (l, r) = (Setup::unculled(&left, vp), Setup::unculled(&right, vp));
+    let (l, r) = (
+        Setup::unculled_with::<Exact>(&left, vp),
+        Setup::unculled_with::<Exact>(&right, vp),
+    );
     let mut ops = Ops::default();
     // u = 0: the edge stays at x = 0 (pixel column 8, sub-pixel 0); also u = ±1 moves it by
     // ±0.1·8 = 0.8 px, which is not on a sample, so use u = 0 and vary v and y.

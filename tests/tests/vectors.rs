@@ -153,7 +153,13 @@ fn frame_vectors_agree_with_the_renderer() {
             ..RunOpts::for_scene(&s, &colors)
         };
         let f = run(
-            &Fixed::new(uvt_core::Laine2011, s.core_viewport(), &core, &pat),
+            // The committed frame vectors are of the exact configuration.
+            &Fixed::<_, uvt_core::Exact>::new_at(
+                uvt_core::Laine2011,
+                s.core_viewport(),
+                &core,
+                &pat,
+            ),
             &pat,
             &o,
         );

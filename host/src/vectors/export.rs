@@ -440,7 +440,7 @@ pub fn frame(scene: &Scene, scene_json: &str) -> Result<Set> {
                 "span": [s.span().lo() as f64 / 65536.0, s.span().hi() as f64 / 65536.0]})
             }
             None => {
-                let o = uvt_core::setup(t, vp, &mut Default::default());
+                let o = uvt_core::setup_with::<uvt_core::Exact>(t, vp, &mut Default::default());
                 json!({"type": "setup", "tri": i, "culled": match o { uvt_core::Outcome::Culled(uvt_core::Cull::Degenerate) => "degenerate", _ => "outside" }})
             }
         };

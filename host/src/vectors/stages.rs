@@ -4,8 +4,9 @@
 use embedded_graphics_core::pixelcolor::RgbColor;
 use uvt_core::bounds::{BoundsStrategy, LaineCoeffs};
 use uvt_core::{
-    resolve_colors, sample_eval, setup, Cull, Interval, Laine2011, Lens, Ops, Outcome, PixelRect,
-    Rgb888, Sample, ScreenPos, Setup, SubPixel, Time, Triangle, UvtBox, Vertex, Viewport,
+    resolve_colors, sample_eval, setup_with, Cull, Exact, Interval, Laine2011, Lens, Ops, Outcome,
+    PixelRect, Rgb888, Sample, ScreenPos, Setup, SubPixel, Time, Triangle, UvtBox, Vertex,
+    Viewport,
 };
 
 use super::format::Rec;
@@ -43,7 +44,8 @@ pub fn dec_setup_in(w: &[u32]) -> Result<(Triangle, Viewport), String> {
 pub fn run_setup(w: &[u32]) -> Result<(Option<(Setup, LaineCoeffs)>, Rec), String> {
     let (tri, vp) = dec_setup_in(w)?;
     let mut ops = Ops::default();
-    let out = setup(&tri, vp, &mut ops);
+    // The committed vectors are of the exact configuration (`Exact`), whatever the default.
+    let out = setup_with::<Exact>(&tri, vp, &mut ops);
     let (vis, cull) = match out {
         Outcome::Visible(s) => (Some((s, Laine2011.prepare(&s, &mut ops))), 0),
         Outcome::Culled(Cull::Outside) => (None, 1),
