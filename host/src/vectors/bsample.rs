@@ -430,3 +430,31 @@ pub fn frame(
     }
     set
 }
+
+/// A unit-level bounded set of configuration `g` (the named edge cases and 48 seeded random
+/// triangles of every kind, inputs rounded onto `g`'s grids), written as `bsample_in.hex` and
+/// `bsample_out.hex` into `dir`: the RTL test's vectors for the unit's other parameter values.
+pub fn export_grid(dir: &std::path::Path, g: Grid, seed: u64) -> anyhow::Result<Coverage> {
+    let mut rng = rand_pcg::Pcg64::seed_from_u64(seed);
+    let mut tris = Vec::new();
+    for (_, list, side) in super::export::named_cases() {
+        let vp = Viewport::new(side, side).map_err(|e| anyhow::anyhow!("{e}"))?;
+        tris.extend(list.into_iter().map(|t| (t, vp)));
+    }
+    for i in 0..48u32 {
+        let vp = Viewport::new([8u16, 17, 32, 61][i as usize % 4], 24)
+            .map_err(|e| anyhow::anyhow!("{e}"))?;
+        let t = crate::scenes::random_tri(&mut rng, i % 6)
+            .to_core()
+            .map_err(|e| anyhow::anyhow!("{e}"))?;
+        tris.push((t, vp));
+    }
+    let set = unit(&tris, seed, g);
+    std::fs::create_dir_all(dir)?;
+    for (name, recs) in [("bsample_in.hex", &set.inp), ("bsample_out.hex", &set.out)] {
+        let p = dir.join(name);
+        std::fs::write(&p, super::format::to_text(recs))
+            .map_err(|e| anyhow::anyhow!("writing {}: {e}", p.display()))?;
+    }
+    Ok(set.cov)
+}
