@@ -241,7 +241,7 @@ fn rtl_sample_test_unit_matches_other_configurations() {
         let g = Grid { off, pos, tuv };
         let set = dir.path().join(g.name());
         let cov = export_grid(&set, g, seed).unwrap();
-        assert!(cov.covered > 50 && cov.ties > 0, "{}: {cov:?}", g.name());
+        assert!(cov.covered >= 20 && cov.ties > 0, "{}: {cov:?}", g.name());
         let tb = build(dir.path(), g);
         let out = run(&tb, &set);
         assert!(
