@@ -135,6 +135,16 @@ fn check_set(dir: &Path) -> Result<u64> {
             Err(e) => diffs.fail("sample_in", line, &e),
         }
     }
+    for (line, (i, o)) in get("bsample_in")
+        .iter()
+        .zip(&get("bsample_out"))
+        .enumerate()
+    {
+        match super::bsample::run_bsample(i) {
+            Ok((_, r)) => diffs.cmp("bsample_out", line, o, &r.0),
+            Err(e) => diffs.fail("bsample_in", line, &e),
+        }
+    }
     for (line, (i, o)) in get("resolve_in")
         .iter()
         .zip(&get("resolve_out"))

@@ -12,6 +12,7 @@ use uvt_core::{
     Lens, PixelRect, Rgb888, Sample, Setup, SubPixel, TileBuffer, Time, Triangle, UvtBox, Viewport,
 };
 
+use super::bsample::{BSet, Coverage, Grid};
 use super::format::{layout, sha256, to_text, Rec, FORMAT_VERSION, STAGES};
 use super::stages::*;
 use crate::pattern::Pattern;
@@ -44,6 +45,10 @@ pub struct Set {
     pub spp: u32,
     /// setups by triangle index
     setups: Vec<Option<(Setup, LaineCoeffs)>>,
+    /// triangles and viewports by index (the bounded records' sources)
+    tris: Vec<(Triangle, Viewport)>,
+    /// what the bounded sample-test records cover
+    pub bcov: Option<Coverage>,
 }
 
 impl Set {
@@ -56,7 +61,13 @@ impl Set {
         self.push("setup_in", input);
         self.push("setup_out", out);
         self.setups.push(s);
+        self.tris.push((*t, vp));
         Ok(self.setups.len() as u32 - 1)
+    }
+    fn bounded(&mut self, b: BSet) {
+        self.files.insert("bsample_in".into(), b.inp);
+        self.files.insert("bsample_out".into(), b.out);
+        self.bcov = Some(b.cov);
     }
     fn lookup(&self) -> impl Fn(u32) -> Result<(Setup, LaineCoeffs), String> + '_ {
         move |i| {
@@ -135,7 +146,16 @@ fn random_sample(rng: &mut rand_pcg::Pcg64, b: Option<&UvtBox>) -> Sample {
 }
 
 /// Named edge cases: (name, triangles, viewport side).
-fn named_cases() -> Vec<(&'static str, Vec<Triangle>, u16)> {
+/// A triangle around the centre at w = 1 (the named cases' base).
+fn base_tri() -> [[f64; 5]; 3] {
+    [
+        [-0.5, -0.5, 0.25, 1.0, 0.0],
+        [0.5, -0.5, 0.25, 1.0, 0.0],
+        [0.0, 0.5, 0.25, 1.0, 0.0],
+    ]
+}
+
+pub(super) fn named_cases() -> Vec<(&'static str, Vec<Triangle>, u16)> {
     let base = [
         [-0.5, -0.5, 0.25, 1.0, 0.0],
         [0.5, -0.5, 0.25, 1.0, 0.0],
@@ -387,6 +407,14 @@ pub fn unit(seed: u64) -> Result<Set> {
             }
         }
     }
+    // Bounded sample-test records: every triangle above, plus depth saturation at both ends.
+    let mut btris = set.tris.clone();
+    let vp32 = Viewport::new(32, 32).map_err(|e| anyhow!("{e}"))?;
+    for z in [8000.0, -8000.0, 200.0, -129.0] {
+        let big = base_tri().map(|v| [v[0], v[1], z, v[3], v[4]]);
+        btris.push((tri(big, big), vp32));
+    }
+    set.bounded(super::bsample::unit(&btris, seed, Grid::DEFAULT));
     // Resolve: random colors, and the rounding edges (all 0, all 255, exact halves).
     let colors = |rng: &mut rand_pcg::Pcg64| {
         (0..UNIT_RESOLVE_SPP)
@@ -521,6 +549,8 @@ pub fn frame(scene: &Scene, scene_json: &str) -> Result<Set> {
         }
     }
     set.trace = Some(trace);
+    let b = super::bsample::frame(&core, vp, &q, 320);
+    set.bounded(b);
     Ok(set)
 }
 
@@ -557,6 +587,8 @@ pub fn write(set: &Set, dir: &Path, kind: &str, seed: u64) -> Result<()> {
         "kind": kind, "seed": seed, "resolve_spp": set.spp, "word_bits": 32,
         "notes": "one record per line; words are 8 hex digits separated by a space; two's complement; a field wider than 32 bits spans whole words, most significant first; value = raw / 2^frac",
         "cases": set.cases, "files": files,
+        "bsample_config": {"name": Grid::DEFAULT.name(), "grid": Grid::DEFAULT, "core": "uvt_core::bounded_eval with uvt_core::BoundedPrecision = Bounded<16, 16, 16, 20>"},
+        "bsample_coverage": set.bcov,
     });
     outputs.push((
         "manifest.json".into(),

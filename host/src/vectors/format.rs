@@ -11,8 +11,9 @@
 use serde::Serialize;
 use sha2::{Digest, Sha256};
 
-/// Version of this format (bump on any layout change).
-pub const FORMAT_VERSION: u32 = 1;
+/// Version of this format (bump on any layout change). 2: the bounded sample-test records
+/// `bsample_{in,out}` (self-contained, no setup index).
+pub const FORMAT_VERSION: u32 = 2;
 
 /// One field of a record.
 #[derive(Clone, Debug, Serialize, PartialEq, Eq)]
@@ -98,7 +99,7 @@ fn tri_fields(l: Layout) -> Layout {
 }
 
 /// The stages and their files.
-pub const STAGES: [&str; 5] = ["setup", "bounds", "select", "sample", "resolve"];
+pub const STAGES: [&str; 6] = ["setup", "bounds", "select", "sample", "bsample", "resolve"];
 
 /// Layout of `<stage>_in` or `<stage>_out`; `spp` sets the resolve width.
 pub fn layout(file: &str, spp: u32) -> Layout {
@@ -194,6 +195,31 @@ pub fn layout(file: &str, spp: u32) -> Layout {
             .w("e1", 192, true, 0)
             .w("e2", 192, true, 0)
             .w("det", 192, true, 0),
+        "bsample_in" => tri_fields(l)
+            .packed(&[("viewport_w", 16, false), ("viewport_h", 16, false)])
+            .packed(&[
+                ("class", 2, false),
+                ("off_shift", 6, false),
+                ("pos_frac", 5, false),
+                ("tuv_frac", 5, false),
+            ])
+            .w("xs", 32, false, 8)
+            .w("ys", 32, false, 8)
+            .w("t", 32, true, 16)
+            .w("u", 32, true, 16)
+            .w("v", 32, true, 16),
+        "bsample_out" => l
+            .packed(&[("covered", 1, false), ("det_sign", 2, true)])
+            .w("depth", 32, true, 24)
+            .w("a0", 32, true, 0)
+            .w("b0", 32, true, 0)
+            .w("a1", 32, true, 0)
+            .w("b1", 32, true, 0)
+            .w("a2", 32, true, 0)
+            .w("b2", 32, true, 0)
+            .w("e0", 64, true, 0)
+            .w("e1", 64, true, 0)
+            .w("e2", 64, true, 0),
         "resolve_in" => {
             let mut l = l;
             for s in 0..spp {

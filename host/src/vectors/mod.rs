@@ -1,5 +1,6 @@
 //! Golden test vectors for RTL: export, check, and the format they share. See `vectors/README.md`.
 
+pub mod bsample;
 pub mod check;
 pub mod export;
 pub mod format;

@@ -1,0 +1,135 @@
+// Testbench of uvt_bsample: streams bsample_in.hex records into the unit, one per clock, and
+// compares every output field with bsample_out.hex. Plusargs:
+//   +IN=<bsample_in.hex> +OUT=<bsample_out.hex> +N=<records>
+//   +STRIDE=<k>  test records 0, k, 2k, … (default 1: every record)
+// Parameters (iverilog -P tb_bsample.OFF=24 …) set the unit's configuration; a record of
+// another configuration is a failure (its off_shift / pos_frac / tuv_frac fields name it).
+// Prints "PASS <n> records" or "FAIL <errors> of <n> records"; each of the first 10 mismatches
+// as "MISMATCH record <r> (line <r+1>) field <name>: expected <hex> observed <hex>" followed by
+// the record's input words in hex.
+`timescale 1ns / 1ps
+module tb_bsample;
+    parameter POS = 16;
+    parameter TUV = 16;
+    parameter OFF = 20;
+    localparam WI = 37, WO = 14, MAXREC = 16384;
+    reg [31:0] in_mem  [0:MAXREC*WI-1];
+    reg [31:0] out_mem [0:MAXREC*WO-1];
+    reg [8*1024-1:0] in_file, out_file;
+    integer n, stride, issued, got_e, got_d, errors, tested, r, w, k, j, ro, wo, ko;
+    integer order [0:MAXREC-1];
+
+    reg clk = 0, in_valid = 0;
+    reg [959:0] trin = 0;
+    reg [11:0] vp_w = 1, vp_h = 1;
+    reg [19:0] xs = 0, ys = 0;
+    reg signed [31:0] t = 0, u = 0, v = 0;
+    wire edge_valid, covered, out_valid, out_covered;
+    wire [191:0] ab, e;
+    wire signed [1:0] det_sign;
+    wire signed [31:0] depth;
+
+    uvt_bsample #(.POS(POS), .TUV(TUV), .OFF(OFF)) dut (
+        .clk(clk), .in_valid(in_valid), .trin(trin), .vp_w(vp_w), .vp_h(vp_h), .xs(xs), .ys(ys),
+        .t(t), .u(u), .v(v), .edge_valid(edge_valid), .ab(ab), .e(e), .det_sign(det_sign),
+        .covered(covered), .out_valid(out_valid), .out_covered(out_covered), .depth(depth)
+    );
+
+    always #5 clk = ~clk;
+
+    task show_inputs(input integer rec);
+        begin
+            $write("  inputs (bsample_in words 0..36):");
+            for (j = 0; j < WI; j = j + 1) $write(" %h", in_mem[rec*WI+j]);
+            $write("\n");
+        end
+    endtask
+
+    task check(input integer rec, input [8*8-1:0] name, input [63:0] exp, input [63:0] obs);
+        begin
+            if (exp !== obs) begin
+                errors = errors + 1;
+                if (errors <= 10) begin
+                    $display("MISMATCH record %0d (line %0d) field %0s: expected %h observed %h",
+                             rec, rec + 1, name, exp, obs);
+                    show_inputs(rec);
+                end
+            end
+        end
+    endtask
+
+    // Outputs: compared on the falling edge, in issue order.
+    always @(negedge clk) begin
+        if (edge_valid === 1'b1) begin
+            ro = order[got_e];
+            wo = ro * WO;
+            check(ro, "covered", out_mem[wo][0], covered);
+            check(ro, "det_sign", {{62{out_mem[wo][2]}}, out_mem[wo][2:1]}, {{62{det_sign[1]}}, det_sign});
+            for (ko = 0; ko < 3; ko = ko + 1) begin
+                check(ro, ko == 0 ? "a0" : ko == 1 ? "a1" : "a2", out_mem[wo+2+2*ko], ab[64*ko +: 32]);
+                check(ro, ko == 0 ? "b0" : ko == 1 ? "b1" : "b2", out_mem[wo+3+2*ko], ab[64*ko+32 +: 32]);
+                check(ro, ko == 0 ? "e0" : ko == 1 ? "e1" : "e2",
+                      {out_mem[wo+8+2*ko], out_mem[wo+9+2*ko]}, e[64*ko +: 64]);
+            end
+            got_e = got_e + 1;
+        end
+        if (out_valid === 1'b1) begin
+            ro = order[got_d];
+            wo = ro * WO;
+            check(ro, "covered", out_mem[wo][0], out_covered);
+            check(ro, "depth", out_mem[wo+1], depth[31:0]);
+            got_d = got_d + 1;
+        end
+    end
+
+    initial begin
+        if (!$value$plusargs("IN=%s", in_file) || !$value$plusargs("OUT=%s", out_file) ||
+            !$value$plusargs("N=%d", n)) begin
+            $display("FAIL usage: +IN=bsample_in.hex +OUT=bsample_out.hex +N=records [+STRIDE=k]");
+            $finish;
+        end
+        if (!$value$plusargs("STRIDE=%d", stride) || stride < 1) stride = 1;
+        if (n > MAXREC) begin
+            $display("FAIL %0d records exceed MAXREC %0d", n, MAXREC);
+            $finish;
+        end
+        $readmemh(in_file, in_mem, 0, n * WI - 1);
+        $readmemh(out_file, out_mem, 0, n * WO - 1);
+        errors = 0; issued = 0; got_e = 0; got_d = 0; tested = 0;
+        // Flush the unit's pipeline (unknown valid bits after power-up).
+        repeat (60) @(negedge clk);
+        for (r = 0; r < n; r = r + stride) begin
+            w = r * WI;
+            if (in_mem[w+31][7:2] != OFF || in_mem[w+31][12:8] != POS || in_mem[w+31][17:13] != TUV) begin
+                errors = errors + 1;
+                if (errors <= 10)
+                    $display("MISMATCH record %0d (line %0d): configuration off_shift %0d pos_frac %0d tuv_frac %0d, the unit is OFF %0d POS %0d TUV %0d",
+                             r, r + 1, in_mem[w+31][7:2], in_mem[w+31][12:8], in_mem[w+31][17:13], OFF, POS, TUV);
+            end else begin
+                for (k = 0; k < 30; k = k + 1) trin[32*k +: 32] = in_mem[w+k];
+                vp_w = in_mem[w+30][11:0];
+                vp_h = in_mem[w+30][27:16];
+                xs = in_mem[w+32][19:0];
+                ys = in_mem[w+33][19:0];
+                t = in_mem[w+34];
+                u = in_mem[w+35];
+                v = in_mem[w+36];
+                in_valid = 1;
+                order[issued] = r;
+                issued = issued + 1;
+                tested = tested + 1;
+                @(negedge clk);
+            end
+        end
+        in_valid = 0;
+        repeat (60) @(negedge clk);
+        if (got_e != issued || got_d != issued) begin
+            errors = errors + 1;
+            $display("MISMATCH %0d records issued, %0d edge and %0d depth results came out",
+                     issued, got_e, got_d);
+        end
+        if (errors == 0) $display("PASS %0d records", tested);
+        else $display("FAIL %0d mismatching fields in %0d records", errors, tested);
+        $finish;
+    end
+endmodule

@@ -1,0 +1,373 @@
+// uvt_bsample — the bounded sample test of uvt-core (core/src/bounded.rs, steps 1–8) as a fully
+// pipelined unit: one sample per clock, bit-exact against the golden vectors bsample_in.hex /
+// bsample_out.hex. Synthesizable Verilog-2005 (Icarus Verilog and Yosys).
+//
+// Parameters (the configuration `bounded-POS-TUV-POS-OFF` of the precision sweep):
+//   POS  fraction bits of clip x, y, z, w and CoC (2..16); the inputs' low 16−POS bits are zero
+//   TUV  fraction bits of t, u, v (2..16); the inputs' low 16−TUV bits are zero
+//   OFF  offset-grid shift S (20..32): a' = round(A / 2^OFF)
+// The unit ignores the low zero bits (narrower multipliers for narrower configurations). It
+// needs no class input: for a static triangle the lerp returns the t = 0 value exactly and for
+// a triangle without CoC the lens term is 0, so the general path equals every class's path.
+//
+// Ports = record fields (vectors/README.md "RTL integration"):
+//   trin[32*k +: 32]  bsample_in word k, k = 0..29 (t0 v0 x y z w coc, t0 v1 …, t1 v2 coc)
+//   vp_w, vp_h        viewport (word 30, ≤ 2048), xs, ys (words 32, 33; < 256·vp), t, u, v
+//   ab[32*i +: 32]    a0 b0 a1 b1 a2 b2 (bsample_out words 2..7), sign-extended
+//   e[64*k +: 64]     E'_k (words 8..13)
+//   det_sign, covered (word 0), with edge_valid, LAT_EDGE = 11 clocks after in_valid
+//   depth (word 1; 0 when not covered) with out_valid and out_covered, LAT = 46 clocks after
+// Latency: LAT_EDGE = 11, LAT = 46 (13 stages to num/den, 1 prepare, 31 divider, 1 select).
+// The depth divider is a pipelined restoring (radix-2) divider: one quotient bit per stage,
+// 31 stages, plus an overflow compare for saturation.
+`timescale 1ns / 1ps
+module uvt_bsample #(
+    parameter POS = 16,
+    parameter TUV = 16,
+    parameter OFF = 20
+) (
+    input  wire               clk,
+    input  wire               in_valid,
+    input  wire [959:0]       trin,
+    input  wire [11:0]        vp_w,
+    input  wire [11:0]        vp_h,
+    input  wire [19:0]        xs,
+    input  wire [19:0]        ys,
+    input  wire signed [31:0] t,
+    input  wire signed [31:0] u,
+    input  wire signed [31:0] v,
+    output wire               edge_valid,
+    output wire [191:0]       ab,
+    output wire [191:0]       e,
+    output wire signed [1:0]  det_sign,
+    output wire               covered,
+    output wire               out_valid,
+    output wire               out_covered,
+    output wire signed [31:0] depth
+);
+    localparam FW = POS + 15;          // |f'| <= 2^(13+POS): input coordinate, signed
+    localparam DW = POS + 16;          // f1' - f0'
+    localparam TW = TUV + 2;           // t', u', v' signed (|.| <= 2^TUV)
+    localparam LS = 32 - TUV - POS;    // T·d = T'·d'·2^LS (32 fraction bits)
+    localparam US = 16 - TUV;          // U·c = U'·c·2^US
+    localparam AW = 51 - OFF;          // |a'| < 2^(50-OFF)
+    localparam EW = 2 * AW;            // |E'| < 2^(2·AW-1)
+    localparam RW = EW + 32;           // E'·w, sums of three
+    localparam LAT_EDGE = 11;
+    localparam LAT = 46;
+
+    reg [LAT:1] vld;
+    always @(posedge clk) vld <= {vld[LAT-1:1], in_valid};
+    assign edge_valid = vld[LAT_EDGE];
+    assign out_valid  = vld[LAT];
+
+    // ---- stage 1: inputs at their significant widths; g = sample-relative scale --------------
+    reg [15*FW-1:0] s1_f0, s1_f1;
+    reg signed [TW-1:0] s1_t, s1_u, s1_v;
+    reg signed [12:0] s1_w, s1_h;      // W, H (sw = 256·W)
+    reg signed [21:0] s1_gx, s1_gy;    // gx = 2xs − 256W, gy = 256H − 2ys, |.| <= 2^19
+    genvar i;
+    generate
+        for (i = 0; i < 15; i = i + 1) begin : g_in
+            always @(posedge clk) begin
+                s1_f0[FW*i +: FW] <= trin[32*i + 16 - POS +: FW];
+                s1_f1[FW*i +: FW] <= trin[32*(15+i) + 16 - POS +: FW];
+            end
+        end
+    endgenerate
+    always @(posedge clk) begin
+        s1_t <= t[16-TUV +: TW];
+        s1_u <= u[16-TUV +: TW];
+        s1_v <= v[16-TUV +: TW];
+        s1_w <= {1'b0, vp_w};
+        s1_h <= {1'b0, vp_h};
+        s1_gx <= $signed({1'b0, xs, 1'b0}) - $signed({2'b0, vp_w, 8'b0});
+        s1_gy <= $signed({2'b0, vp_h, 8'b0}) - $signed({1'b0, ys, 1'b0});
+    end
+
+    // ---- stages 2–3: step 1, lerp f_t = rnd16(f0·2^16 + T·(f1 − f0)) -----------------------
+    reg [15*FW-1:0] s2_f0;
+    reg [15*(TW+DW)-1:0] s2_p;
+    reg [15*31-1:0] s3_f;              // x y z w c per vertex, raw 2^-16, |.| <= 2^29
+    generate
+        for (i = 0; i < 15; i = i + 1) begin : g_lerp
+            wire signed [FW-1:0] f0 = s1_f0[FW*i +: FW];
+            wire signed [FW-1:0] f1 = s1_f1[FW*i +: FW];
+            wire signed [DW-1:0] d = f1 - f0;
+            wire signed [TW+DW-1:0] p = s1_t * d;
+            always @(posedge clk) begin
+                s2_f0[FW*i +: FW] <= f0;
+                s2_p[(TW+DW)*i +: TW+DW] <= p;
+            end
+            wire signed [FW-1:0] g0 = s2_f0[FW*i +: FW];
+            wire signed [TW+DW-1:0] gp = s2_p[(TW+DW)*i +: TW+DW];
+            wire signed [47:0] sum = (g0 <<< (32 - POS)) + (gp <<< LS) + 48'sd32768;
+            wire signed [47:0] rnd = sum >>> 16;
+            always @(posedge clk) s3_f[31*i +: 31] <= rnd[30:0];
+        end
+    endgenerate
+    reg signed [TW-1:0] s2_u, s2_v, s3_u, s3_v;
+    reg signed [12:0] s2_w, s2_h, s3_w, s3_h, s4_w, s4_h, s5_w, s5_h;
+    reg signed [21:0] s2_gx, s2_gy, s3_gx, s3_gy, s4_gx, s4_gy, s5_gx, s5_gy;
+    always @(posedge clk) begin
+        {s2_u, s2_v, s2_w, s2_h, s2_gx, s2_gy} <= {s1_u, s1_v, s1_w, s1_h, s1_gx, s1_gy};
+        {s3_u, s3_v, s3_w, s3_h, s3_gx, s3_gy} <= {s2_u, s2_v, s2_w, s2_h, s2_gx, s2_gy};
+        {s4_w, s4_h, s4_gx, s4_gy} <= {s3_w, s3_h, s3_gx, s3_gy};
+        {s5_w, s5_h, s5_gx, s5_gy} <= {s4_w, s4_h, s4_gx, s4_gy};
+    end
+
+    // ---- stages 4–5: step 2, lens x = x_t + rnd16(U·c_t), y = y_t + rnd16(V·c_t) -------------
+    reg [3*32-1:0] s5_x, s5_y;         // |.| <= 2^30
+    reg [3*31-1:0] s5_wt, s5_zt, s6_wt, s6_zt, s7_wt, s7_zt;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_lens
+            wire signed [30:0] c = s3_f[31*(5*i+4) +: 31];
+            reg signed [TW+30:0] pu, pv;
+            reg signed [30:0] xt, yt, wt, zt;
+            always @(posedge clk) begin
+                pu <= s3_u * c;
+                pv <= s3_v * c;
+                {xt, yt, zt, wt} <= {s3_f[31*(5*i) +: 31], s3_f[31*(5*i+1) +: 31],
+                                     s3_f[31*(5*i+2) +: 31], s3_f[31*(5*i+3) +: 31]};
+            end
+            wire signed [47:0] lu = ((pu <<< US) + 48'sd32768) >>> 16;
+            wire signed [47:0] lv = ((pv <<< US) + 48'sd32768) >>> 16;
+            wire signed [31:0] x = xt + $signed(lu[31:0]);
+            wire signed [31:0] y = yt + $signed(lv[31:0]);
+            always @(posedge clk) begin
+                s5_x[32*i +: 32] <= x;
+                s5_y[32*i +: 32] <= y;
+                s5_wt[31*i +: 31] <= wt;
+                s5_zt[31*i +: 31] <= zt;
+            end
+        end
+    endgenerate
+
+    // ---- stages 6–7: steps 3–4, A = 256W·x − gx·w, B = 256H·y − gy·w; a' = rnd_OFF(A) ------
+    reg [3*AW-1:0] s7_a, s7_b;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_off
+            wire signed [31:0] x = s5_x[32*i +: 32];
+            wire signed [31:0] y = s5_y[32*i +: 32];
+            wire signed [30:0] w = s5_wt[31*i +: 31];
+            reg signed [44:0] mx, my;      // W·x, H·y: |.| <= 2^41
+            reg signed [52:0] mw, mh;      // gx·w, gy·w: |.| <= 2^48
+            always @(posedge clk) begin
+                mx <= s5_w * x;
+                my <= s5_h * y;
+                mw <= s5_gx * w;
+                mh <= s5_gy * w;
+            end
+            wire signed [55:0] A = (mx <<< 8) - mw + (56'sd1 <<< (OFF - 1));
+            wire signed [55:0] B = (my <<< 8) - mh + (56'sd1 <<< (OFF - 1));
+            wire signed [55:0] ra = A >>> OFF;
+            wire signed [55:0] rb = B >>> OFF;
+            always @(posedge clk) begin
+                s7_a[AW*i +: AW] <= ra[AW-1:0];
+                s7_b[AW*i +: AW] <= rb[AW-1:0];
+            end
+        end
+    endgenerate
+    always @(posedge clk) begin
+        {s6_wt, s6_zt} <= {s5_wt, s5_zt};
+        {s7_wt, s7_zt} <= {s6_wt, s6_zt};
+    end
+
+    // ---- stages 8–9: step 5, E'_k = a'_{k+1}·b'_{k+2} − a'_{k+2}·b'_{k+1} --------------------
+    reg [3*AW-1:0] s8_a, s8_b, s9_a, s9_b, s10_a, s10_b;
+    reg [3*31-1:0] s8_wt, s8_zt, s9_wt, s9_zt, s10_wt, s10_zt, s11_zt;
+    reg [3*EW-1:0] s9_e;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_edge
+            wire signed [AW-1:0] ai = s7_a[AW*((i+1)%3) +: AW];
+            wire signed [AW-1:0] bi = s7_b[AW*((i+1)%3) +: AW];
+            wire signed [AW-1:0] aj = s7_a[AW*((i+2)%3) +: AW];
+            wire signed [AW-1:0] bj = s7_b[AW*((i+2)%3) +: AW];
+            reg signed [EW-1:0] p1, p2;
+            always @(posedge clk) begin
+                p1 <= ai * bj;
+                p2 <= aj * bi;
+            end
+            always @(posedge clk) s9_e[EW*i +: EW] <= p1 - p2;
+        end
+    endgenerate
+    always @(posedge clk) begin
+        {s8_a, s8_b, s8_wt, s8_zt} <= {s7_a, s7_b, s7_wt, s7_zt};
+        {s9_a, s9_b, s9_wt, s9_zt} <= {s8_a, s8_b, s8_wt, s8_zt};
+        {s10_a, s10_b, s10_wt, s10_zt} <= {s9_a, s9_b, s9_wt, s9_zt};
+        s11_zt <= s10_zt;
+    end
+
+    // ---- stage 10: rare-path products E'·w, tie keys, |E'| bit length ----------------------
+    reg [3*RW-1:0] s10_q;
+    reg [3*EW-1:0] s10_e;
+    reg [2:0] s10_pos, s10_neg, s10_gt, s10_lt;
+    reg s10_wpos;
+    reg [5:0] s10_sh;
+    wire [3*EW-1:0] e_mag;
+    wire [EW-1:0] e_or = e_mag[0 +: EW] | e_mag[EW +: EW] | e_mag[2*EW +: EW];
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_key
+            wire signed [EW-1:0] ek = s9_e[EW*i +: EW];
+            wire signed [30:0] wk = s9_wt[31*i +: 31];
+            assign e_mag[EW*i +: EW] = ek[EW-1] ? -ek : ek;
+            // tie key κ = cmp((b', a', w)_{k+1}, (b', a', w)_{k+2}), lexicographic, signed
+            wire signed [AW-1:0] ai = s9_a[AW*((i+1)%3) +: AW];
+            wire signed [AW-1:0] bi = s9_b[AW*((i+1)%3) +: AW];
+            wire signed [30:0]   wi = s9_wt[31*((i+1)%3) +: 31];
+            wire signed [AW-1:0] aj = s9_a[AW*((i+2)%3) +: AW];
+            wire signed [AW-1:0] bj = s9_b[AW*((i+2)%3) +: AW];
+            wire signed [30:0]   wj = s9_wt[31*((i+2)%3) +: 31];
+            always @(posedge clk) begin
+                s10_q[RW*i +: RW] <= ek * wk;
+                s10_pos[i] <= (ek > 0);
+                s10_neg[i] <= (ek < 0);
+                s10_gt[i] <= (bi > bj) || (bi == bj && ((ai > aj) || (ai == aj && wi > wj)));
+                s10_lt[i] <= (bi < bj) || (bi == bj && ((ai < aj) || (ai == aj && wi < wj)));
+            end
+        end
+    endgenerate
+    // sh = max(bit length of max|E'| − 24, 0); bit length of the max = that of the OR.
+    reg [6:0] blen;
+    integer k;
+    always @(*) begin
+        blen = 0;
+        for (k = 0; k < EW; k = k + 1)
+            if (e_or[k]) blen = k + 1;
+    end
+    always @(posedge clk) begin
+        s10_e <= s9_e;
+        s10_wpos <= ($signed(s9_wt[30:0]) > 0) && ($signed(s9_wt[61:31]) > 0) &&
+                    ($signed(s9_wt[92:62]) > 0);
+        s10_sh <= (blen > 24) ? blen - 7'd24 : 6'd0;
+    end
+
+    // ---- stage 11: steps 6–7, orientation and coverage; E'' = floor(E' / 2^sh) --------------
+    wire signed [RW+1:0] det = $signed(s10_q[0 +: RW]) + $signed(s10_q[RW +: RW]) +
+                               $signed(s10_q[2*RW +: RW]);
+    wire any_pos = |s10_pos, any_neg = |s10_neg;
+    wire sp = s10_wpos ? (any_pos && !any_neg) : (det > 0);
+    wire sn = s10_wpos ? (any_neg && !any_pos) : (det < 0);
+    wire [2:0] in_k = sp ? (s10_pos | (~s10_pos & ~s10_neg & s10_gt))
+                         : (s10_neg | (~s10_pos & ~s10_neg & s10_lt));
+    reg s11_sp, s11_sn, s11_cov;
+    reg [3*AW-1:0] s11_a, s11_b;
+    reg [3*EW-1:0] s11_e;
+    reg [3*31-1:0] s11_wt;
+    reg [3*25-1:0] s11_e2;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_shift
+            wire signed [EW-1:0] ek = s10_e[EW*i +: EW];
+            wire signed [EW-1:0] es = ek >>> s10_sh;
+            always @(posedge clk) s11_e2[25*i +: 25] <= es[24:0];
+        end
+    endgenerate
+    always @(posedge clk) begin
+        s11_sp <= sp;
+        s11_sn <= sn;
+        s11_cov <= (sp || sn) && (&in_k);
+        {s11_a, s11_b, s11_e, s11_wt} <= {s10_a, s10_b, s10_e, s10_wt};
+    end
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_out
+            assign ab[64*i +: 32] = {{(32-AW){s11_a[AW*i+AW-1]}}, s11_a[AW*i +: AW]};
+            assign ab[64*i+32 +: 32] = {{(32-AW){s11_b[AW*i+AW-1]}}, s11_b[AW*i +: AW]};
+            assign e[64*i +: 64] = {{(64-EW){s11_e[EW*i+EW-1]}}, s11_e[EW*i +: EW]};
+        end
+    endgenerate
+    assign det_sign = s11_sp ? 2'sb01 : (s11_sn ? 2'sb11 : 2'sb00);
+    assign covered = s11_cov;
+
+    // ---- stages 12–13: step 8, num = Σ E''·z, den = Σ E''·w (times the orientation sign) -----
+    reg [3*56-1:0] s12_nz, s12_nw;
+    reg s12_neg, s12_cov, s13_cov;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_depth
+            wire signed [24:0] e2 = s11_e2[25*i +: 25];
+            wire signed [30:0] zk = s11_zt[31*i +: 31];
+            wire signed [30:0] wk = s11_wt[31*i +: 31];
+            always @(posedge clk) begin
+                s12_nz[56*i +: 56] <= e2 * zk;
+                s12_nw[56*i +: 56] <= e2 * wk;
+            end
+        end
+    endgenerate
+    always @(posedge clk) begin
+        s12_neg <= s11_sn;
+        s12_cov <= s11_cov;
+        s13_cov <= s12_cov;
+    end
+    wire signed [55:0] nsum = $signed(s12_nz[0 +: 56]) + $signed(s12_nz[56 +: 56]) +
+                              $signed(s12_nz[112 +: 56]);
+    wire signed [55:0] dsum = $signed(s12_nw[0 +: 56]) + $signed(s12_nw[56 +: 56]) +
+                              $signed(s12_nw[112 +: 56]);
+    reg signed [55:0] s13_num, s13_den;
+    always @(posedge clk) begin
+        s13_num <= s12_neg ? -nsum : nsum;
+        s13_den <= s12_neg ? -dsum : dsum;
+    end
+
+    // ---- stage 14: divider set-up. q = floor(num·2^24 / den) saturated to [−2^31, 2^31−2];
+    // den <= 0 gives the far end. Unsigned M / D with M = |num|·2^24 (+ D − 1 when num < 0,
+    // so that floor of the negative quotient = −floor(M / D)); Q >= 2^31 saturates.
+    wire        dneg = s13_num[55];
+    wire [55:0] nmag = dneg ? -s13_num : s13_num;
+    wire [79:0] mm = {nmag[54:0], 24'd0} + (dneg ? {24'd0, s13_den} - 80'd1 : 80'd0);
+    // Stage j of the divider in slice j of each vector (j = 0: set-up, 31: quotient done).
+    reg  [31:0] dv_bad;                // den <= 0: the far end
+    reg  [31:0] dv_sat;                // Q >= 2^31: saturate
+    reg  [31:0] dv_neg, dv_cov;
+    reg  [32*57-1:0] dv_r;             // partial remainder, < D
+    reg  [32*55-1:0] dv_d;             // divisor D = den < 2^55
+    reg  [32*31-1:0] dv_m;             // dividend bits still to shift in (MSB first)
+    reg  [32*31-1:0] dv_q;             // quotient bits so far
+    always @(posedge clk) begin
+        dv_r[0 +: 57] <= {8'd0, mm[79:31]};
+        dv_d[0 +: 55] <= s13_den[54:0];
+        dv_m[0 +: 31] <= mm[30:0];
+        dv_q[0 +: 31] <= 31'd0;
+        dv_neg[0] <= dneg;
+        dv_cov[0] <= s13_cov;
+        dv_bad[0] <= (s13_den <= 0);
+        dv_sat[0] <= {8'd0, mm[79:31]} >= {2'd0, s13_den[54:0]};
+    end
+    // ---- stages 15–45: restoring division, quotient bit 30 − j at stage j -------------------
+    generate
+        for (i = 0; i < 31; i = i + 1) begin : g_div
+            wire [54:0] d  = dv_d[55*i +: 55];
+            wire [30:0] m  = dv_m[31*i +: 31];
+            wire [57:0] r2 = {dv_r[57*i +: 57], m[30]};
+            wire        ge = r2 >= {3'd0, d};
+            wire [57:0] rs = r2 - {3'd0, d};
+            always @(posedge clk) begin
+                dv_r[57*(i+1) +: 57] <= ge ? rs[56:0] : r2[56:0];
+                dv_d[55*(i+1) +: 55] <= d;
+                dv_m[31*(i+1) +: 31] <= {m[29:0], 1'b0};
+                dv_q[31*(i+1) +: 31] <= {dv_q[31*i +: 30], ge};
+                dv_neg[i+1] <= dv_neg[i];
+                dv_cov[i+1] <= dv_cov[i];
+                dv_sat[i+1] <= dv_sat[i];
+                dv_bad[i+1] <= dv_bad[i];
+            end
+        end
+    endgenerate
+    // ---- stage 46: sign, saturation, far end for den <= 0, 0 when not covered -------------
+    wire [30:0] qq = dv_q[31*31 +: 31];
+    reg  signed [31:0] r_depth;
+    reg         r_cov;
+    always @(posedge clk) begin
+        r_cov <= dv_cov[31];
+        if (!dv_cov[31])
+            r_depth <= 32'sd0;
+        else if (dv_bad[31])
+            r_depth <= 32'sh7ffffffe;
+        else if (dv_sat[31])
+            r_depth <= dv_neg[31] ? 32'sh80000000 : 32'sh7ffffffe;
+        else if (dv_neg[31])
+            r_depth <= -$signed({1'b0, qq});
+        else
+            r_depth <= (qq == 31'h7fffffff) ? 32'sh7ffffffe : $signed({1'b0, qq});
+    end
+    assign depth = r_depth;
+    assign out_covered = r_cov;
+endmodule
