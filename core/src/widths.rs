@@ -820,10 +820,10 @@ pub fn write_class_markdown<W: fmt::Write>(out: &mut W) -> fmt::Result {
     Ok(())
 }
 
-/// The configurations of `core/README.md`'s width section: the exact default and the bounded
-/// candidate.
+/// The configurations of `core/README.md`'s width section: the exact test and the bounded
+/// default.
 pub const README_CONFIGS: [Config; 2] = [
-    Config::of::<crate::formats::DefaultPrecision>(),
+    Config::of::<crate::formats::Exact>(),
     Config::of::<crate::formats::BoundedPrecision>(),
 ];
 
@@ -899,7 +899,7 @@ mod tests {
         assert_eq!(c, Config::of::<crate::formats::BoundedPrecision>());
         assert_eq!(format!("{c}"), "bounded-16-16-16-20");
         let e = Config::parse("exact-16-16-16").unwrap();
-        assert_eq!(e, Config::of::<crate::formats::DefaultPrecision>());
+        assert_eq!(e, Config::of::<crate::formats::Exact>());
         for bad in [
             "exact-16-16",
             "exact-16-16-16-20",
@@ -919,7 +919,7 @@ mod tests {
     /// The entries issue 10 lists as wrong in the old hand-written table.
     #[test]
     fn corrected_entries() {
-        let t = table(&Config::of::<crate::formats::DefaultPrecision>());
+        let t = table(&Config::of::<crate::formats::Exact>());
         // Clip coordinates up to +2^29 raw: 31 bits with sign.
         let w = t.find("setup", "corner `w").unwrap();
         assert_eq!((w.bound, w.bits()), (Mag::pow2(29), 31));

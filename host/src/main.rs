@@ -47,7 +47,7 @@ enum Cmd {
         /// bounds strategy of the core: laine2011 or bbox
         #[arg(long, default_value = "laine2011")]
         bounds: String,
-        /// core precision POS/TUV/BND fraction bits: 16/16/16, 12/12/8, 8/8/4 or 6/6/2
+        /// core precision POS/TUV/BND fraction bits: 16/16/16 (the default, bounded-16-16-16-20), or the exact test at 12/12/8, 8/8/4 or 6/6/2
         #[arg(long, default_value = "16/16/16")]
         precision: String,
         /// memory budget of the scene, e.g. 512M or 8G (estimate in host/src/budget.rs)

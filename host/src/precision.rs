@@ -504,7 +504,7 @@ pub fn pareto(points: &[(f64, f64)]) -> Vec<usize> {
 /// One stress case at the default precision: STE, decisions against f64, conservativeness.
 pub fn stress_row(scene: &Scene) -> PrecRow {
     let mut acc = [PrecRow {
-        config: CONFIGS[0].to_string(),
+        config: CONFIGS[1].to_string(),
         tile: scene.tile,
         ..Default::default()
     }];

@@ -52,7 +52,8 @@ impl Strategy {
     }
 }
 
-/// The exact-test precisions `uvt render --precision` accepts (`POS/TUV/BND` fraction bits).
+/// The precisions `uvt render --precision` accepts (`POS/TUV/BND` fraction bits): 16/16/16 is
+/// the default configuration (`bounded-16-16-16-20`), the narrower ones run the exact test.
 pub const RENDER_PRECISIONS: [(u32, u32, u32); 4] =
     [(6, 6, 2), (8, 8, 4), (12, 12, 8), (16, 16, 16)];
 

@@ -59,7 +59,7 @@ pub(crate) fn report_json(
         "format": "uvt-render-report", "version": 1,
         "scene": s.name, "viewport": [s.viewport.0, s.viewport.1], "spp": s.spp, "tile": s.tile,
         "pattern": s.pattern, "seed": s.seed, "triangles": s.tris.len(),
-        "bounds": o.bounds.name(), "precision": format!("{}/{}/{}", p.0, p.1, p.2),
+        "bounds": o.bounds.name(), "precision": if p == (16, 16, 16) { crate::bench::precision_name::<uvt_core::DefaultPrecision>() } else { format!("exact-{}-{}-{}", p.0, p.1, p.2) },
         "classes": {"static": st.by_class[0], "motion": st.by_class[1], "defocus": st.by_class[2], "motion_defocus": st.by_class[3],
                      "culled_outside": st.culled_outside, "culled_degenerate": st.culled_degenerate},
         "fixed": frame_json(fixed, true), "f64": frame_json(f64, false), "bbox_scan": frame_json(bbox, true),
@@ -97,7 +97,7 @@ pub fn report_md(r: &Rendered) -> String {
     };
     let mut s = format!(
         "# uvt render report: {}\n\n{}×{} px, {} spp, bounds tile {}, pattern {} (seed {}), {} triangles; \
-         core at precision {} (position/t·u·v/bounds fraction bits) with {bounds} bounds.\n\n",
+         core at configuration {} (fraction bits of position, t/u/v, bounds[, offset-grid shift of the bounded sample test]) with {bounds} bounds.\n\n",
         j["scene"].as_str().unwrap_or(""), j["viewport"][0], j["viewport"][1], j["spp"], j["tile"],
         j["pattern"].as_str().unwrap_or(""), j["seed"], j["triangles"], j["precision"].as_str().unwrap_or("")
     );
