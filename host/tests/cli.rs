@@ -398,7 +398,7 @@ fn render_options_override_the_scene() {
     );
     assert_eq!(
         (r["bounds"].as_str(), r["precision"].as_str()),
-        (Some("bbox"), Some("8/8/4"))
+        (Some("bbox"), Some("exact-8-8-4"))
     );
     // With bbox bounds the core tests every footprint sample, like the bbox scan.
     assert_eq!(
