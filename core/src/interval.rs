@@ -183,7 +183,10 @@ pub fn solve_le(d: i128, n: i128) -> Option<Interval> {
         if n >= d {
             return full;
         }
-        match n.checked_mul(1 << TUV_FRAC).and_then(|m| ceil_div(m, d)) {
+        match n
+            .checked_mul(i128::from(TUV_ONE))
+            .and_then(|m| ceil_div(m, d))
+        {
             Some(hi) => Some(Interval {
                 lo: 0,
                 hi: clamp_raw(hi),
@@ -198,7 +201,10 @@ pub fn solve_le(d: i128, n: i128) -> Option<Interval> {
         if b > a {
             return None;
         }
-        match b.checked_mul(1 << TUV_FRAC).and_then(|m| floor_div(m, a)) {
+        match b
+            .checked_mul(i128::from(TUV_ONE))
+            .and_then(|m| floor_div(m, a))
+        {
             Some(lo) => Some(Interval {
                 lo: clamp_raw(lo),
                 hi: TUV_ONE,
@@ -303,14 +309,13 @@ impl RecipConstraint {
     // q0 + 1 ≤ 2^63 and r0 = 0); 2^16·q0 < 2^80 and the fraction < 2^16: far inside i128.
     #[allow(clippy::arithmetic_side_effects)]
     pub fn new(d: i64) -> RecipConstraint {
+        // 2^RECIP_SHIFT = 2^80 < 2^126: a constant shift, checked by the compiler.
+        const RECIP_ONE: i128 = 1i128 << crate::formats::RECIP_SHIFT;
         const _: () = assert!(crate::formats::RECIP_SHIFT == 64 + TUV_FRAC);
         let a = d.unsigned_abs();
         let (r_up, r_dn) = match a {
             0 => (0, 0),
-            1 => (
-                1i128 << crate::formats::RECIP_SHIFT,
-                1i128 << crate::formats::RECIP_SHIFT,
-            ),
+            1 => (RECIP_ONE, RECIP_ONE),
             _ => {
                 let mut q0 = u64::MAX / a;
                 let mut r0 = u64::MAX - q0 * a + 1;

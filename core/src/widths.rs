@@ -622,7 +622,9 @@ pub fn table(cfg: &Config) -> Table {
                 "exact",
                 mul(p.bits(), n.bits(), 3),
             ));
-            let es = Mag::int((1u128 << DEPTH_EDGE_BITS).saturating_sub(1));
+            // 2^DEPTH_EDGE_BITS − 1 with DEPTH_EDGE_BITS ≤ 32: a constant shift, checked by the compiler.
+            const ES: u128 = (1u128 << DEPTH_EDGE_BITS) - 1;
+            let es = Mag::int(ES);
             let dn = es.mul(p).times(3);
             t.push(r(
                 "sample",
@@ -726,7 +728,9 @@ pub fn table(cfg: &Config) -> Table {
                 "exact",
                 mul(ep.bits(), ft.bits(), 3),
             ));
-            let es = Mag::int((1u128 << BOUNDED_DEPTH_EDGE_BITS).saturating_sub(1));
+            // 2^BOUNDED_DEPTH_EDGE_BITS − 1 with BOUNDED_DEPTH_EDGE_BITS ≤ 32: a constant shift, checked by the compiler.
+            const ES: u128 = (1u128 << BOUNDED_DEPTH_EDGE_BITS) - 1;
+            let es = Mag::int(ES);
             let dn = es.mul(ft).times(3);
             t.push(r(
                 "sample",

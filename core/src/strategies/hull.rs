@@ -62,6 +62,9 @@
 
 use crate::bounds::BoundsStrategy;
 use crate::formats::SUBPIXEL_BITS;
+
+/// One pixel in sub-pixel units, 2^SUBPIXEL_BITS = 2^8 (a constant shift, checked by the compiler).
+const SUBPIXEL_ONE: i128 = 1i128 << SUBPIXEL_BITS;
 use crate::input::{PixelRect, Triangle, Viewport, C, W, X, Y};
 use crate::setup::{Class, Setup};
 use crate::stats::Ops;
@@ -247,7 +250,7 @@ fn same_face(m: &[i128; 3], n: &[i128; 3]) -> Option<bool> {
 /// c = 256·W·H·(n2 + n1 − n0). |n| < 2^61, W, H ≤ 2^11: |a|, |b| < 2^73, |c| < 2^93.
 fn face_of(n: &[i128; 3], vp: Viewport) -> Option<HullFace> {
     let (w, h) = (i128::from(vp.width()), i128::from(vp.height()));
-    let one = 1i128 << SUBPIXEL_BITS;
+    let one = SUBPIXEL_ONE;
     let a = n[0].checked_mul(h.checked_mul(2)?)?;
     let b = n[1].checked_mul(w.checked_mul(-2)?)?;
     let s = n[2].checked_add(n[1])?.checked_sub(n[0])?;
@@ -316,7 +319,7 @@ pub fn hull_faces(pts: &[[i64; 3]], vp: Viewport, ops: &mut Ops) -> HullCoeffs {
 /// `false` on overflow. Counts 7 operations per face in `ops.bounds`.
 pub fn face_culls(face: &HullFace, tile: PixelRect, ops: &mut Ops) -> bool {
     ops.bounds = ops.bounds.saturating_add(7);
-    let one = 1i128 << SUBPIXEL_BITS;
+    let one = SUBPIXEL_ONE;
     let lo = |p: u16| i128::from(p).checked_mul(one);
     let hi = |p: u16| {
         i128::from(p)

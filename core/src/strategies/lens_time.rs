@@ -90,6 +90,13 @@ impl<const R: usize> LensTime<R> {
         R.trailing_zeros()
     };
 
+    /// The slab count R ∈ {1, 2, 4, 8} as u64 and i64 (checked at compile time by `LOG`).
+    #[allow(clippy::cast_possible_truncation, clippy::cast_possible_wrap)]
+    const SUBS: u64 = R as u64;
+    /// See [`Self::SUBS`].
+    #[allow(clippy::cast_possible_truncation, clippy::cast_possible_wrap)]
+    const R: i64 = R as i64;
+
     /// `R·u` at the low end of slab `j` (exact: 2j − R with j < R ≤ 8).
     #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_wrap)]
     fn slab_lo(j: usize) -> i64 {
@@ -186,8 +193,8 @@ impl<const R: usize> BoundsStrategy for LensTime<R> {
             // 6 vertex ends × 2 footprint ends × 9 ops, per slab and axis.
             ops.setup = ops
                 .setup
-                .saturating_add(108u64.saturating_mul(2u64 << Self::LOG));
-            let r = 1i64 << Self::LOG;
+                .saturating_add(108u64.saturating_mul(2u64.saturating_mul(Self::SUBS)));
+            let r = Self::R;
             [0usize, 1].map(|axis| {
                 let (x, e) = (xi.get(axis).copied(), ext.get(axis).copied());
                 let (x, e) = (x.unwrap_or([0, 0]), e.unwrap_or(0));
