@@ -6,6 +6,8 @@
 //   POS  fraction bits of clip x, y, z, w and CoC (2..16); the inputs' low 16−POS bits are zero
 //   TUV  fraction bits of t, u, v (2..16); the inputs' low 16−TUV bits are zero
 //   OFF  offset-grid shift S (20..32): a' = round(A / 2^OFF)
+//   DSP_A, DSP_B, LUTW  the multiplier tiling of every product (uvt_mul.v): hard-multiplier
+//        ports 25 × 18 (DSP48E1, default) or 18 × 18 (ECP5), top chunks <= LUTW bits in LUTs
 // The unit ignores the low zero bits (narrower multipliers for narrower configurations). It
 // needs no class input: for a static triangle the lerp returns the t = 0 value exactly and for
 // a triangle without CoC the lens term is 0, so the general path equals every class's path.
