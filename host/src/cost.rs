@@ -323,7 +323,11 @@ mod tests {
         let v: serde_json::Value =
             serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
         let configs = v["configs"].as_array().unwrap();
-        assert!(configs.len() >= 4, "{path}: {} configurations", configs.len());
+        assert!(
+            configs.len() >= 4,
+            "{path}: {} configurations",
+            configs.len()
+        );
         for c in configs {
             let name = c["name"].as_str().unwrap();
             let model = sample_cost(&Config::parse(name).unwrap());

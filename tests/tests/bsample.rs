@@ -247,9 +247,12 @@ fn rtl_sample_test_unit_matches_other_configurations() {
 #[test]
 fn rtl_multiplier_is_exact_and_tiles_as_the_cost_model_counts() {
     use uvt_core::widths::{table, Config};
-    use uvt_host::cost::{ecp5_tiling, dsp48e1_tiling, Tiling};
+    use uvt_host::cost::{dsp48e1_tiling, ecp5_tiling, Tiling};
     let mut pairs: Vec<(u32, u32)> = Vec::new();
-    for name in uvt_host::cost::SWEEP.iter().filter(|n| n.starts_with("bounded")) {
+    for name in uvt_host::cost::SWEEP
+        .iter()
+        .filter(|n| n.starts_with("bounded"))
+    {
         let cfg = Config::parse(name).unwrap();
         for r in table(&cfg).rows().filter(|r| r.stage == "sample") {
             for m in r.mul.iter().flatten() {
