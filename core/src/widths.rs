@@ -685,13 +685,26 @@ pub fn table(cfg: &Config) -> Table {
             ));
             let sw = sub.mul(e);
             let aa = sw.mul(x).add(sw.mul(ft));
+            // The multipliers: W·x (the factor 256 is wiring, W ≤ 2^11) and
+            // (2xs − 256W)·w (|2xs − 256W| ≤ 256W), six of each.
             t.push(r(
                 "sample",
                 "3 offset `A = 256W·x − (2xs − 256W)·w`",
                 aa,
                 "i64",
                 "exact",
-                mul(sw.bits(), x.bits(), 12),
+                two(
+                    Mul {
+                        a: ew13,
+                        b: x.bits(),
+                        count: 6,
+                    },
+                    Mul {
+                        a: sw.bits(),
+                        b: ft.bits(),
+                        count: 6,
+                    },
+                ),
             ));
             let half = Mag::pow2(s.saturating_sub(1));
             t.push(r(

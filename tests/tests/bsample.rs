@@ -8,11 +8,10 @@
 //! runs every configuration of the precision sweep instead of two.
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
-
 use uvt_host::vectors::bsample::{export_grid, Grid};
 use uvt_host::vectors::check::check;
 use uvt_host::vectors::format::sha256;
+use uvt_tests::icarus;
 
 fn committed() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../vectors")
@@ -29,50 +28,31 @@ fn extensive() -> bool {
     std::env::var("UVT_EXTENSIVE").is_ok_and(|v| v == "1")
 }
 
-/// Compile the testbench for configuration `g` into `dir`.
+/// Compile the testbench for configuration `g` into `dir`, with the unit's multipliers tiled
+/// for hard multipliers of `ports` (25 × 18: DSP48E1, the default; 18 × 18: ECP5).
+fn build_with(dir: &Path, g: Grid, ports: (u32, u32)) -> PathBuf {
+    let p = |k: &'static str, v: u32| (k, v.to_string());
+    icarus::compile(
+        &dir.join(format!("tb-{}-{}x{}.vvp", g.name(), ports.0, ports.1)),
+        &[
+            p("tb_bsample.POS", g.pos),
+            p("tb_bsample.TUV", g.tuv),
+            p("tb_bsample.OFF", g.off),
+            p("tb_bsample.DSP_A", ports.0),
+            p("tb_bsample.DSP_B", ports.1),
+        ],
+        &["uvt_mul.v", "uvt_bsample.v", "tb_bsample.v"],
+    )
+}
+
+/// Compile the testbench for configuration `g` into `dir` (DSP48E1 tiling).
 fn build(dir: &Path, g: Grid) -> PathBuf {
-    let tb = dir.join(format!("tb-{}.vvp", g.name()));
-    let rtl = committed().join("rtl");
-    let out = Command::new("iverilog")
-        .args(["-g2005", "-Wall"])
-        .arg(format!("-Ptb_bsample.POS={}", g.pos))
-        .arg(format!("-Ptb_bsample.TUV={}", g.tuv))
-        .arg(format!("-Ptb_bsample.OFF={}", g.off))
-        .arg("-o")
-        .arg(&tb)
-        .arg(rtl.join("uvt_bsample.v"))
-        .arg(rtl.join("tb_bsample.v"))
-        .output()
-        .expect("iverilog (Debian package iverilog; tests/run.sh installs it)");
-    assert!(
-        out.status.success() && out.stderr.is_empty(),
-        "iverilog failed or warned for {}: {}",
-        g.name(),
-        String::from_utf8_lossy(&out.stderr)
-    );
-    tb
+    build_with(dir, g, (25, 18))
 }
 
 /// Run the compiled testbench on the bsample files of `set`.
 fn run(tb: &Path, set: &Path) -> String {
-    let n = std::fs::read_to_string(set.join("bsample_out.hex"))
-        .unwrap()
-        .lines()
-        .count();
-    let out = Command::new("vvp")
-        .arg("-n")
-        .arg(tb)
-        .arg(format!("+IN={}", set.join("bsample_in.hex").display()))
-        .arg(format!("+OUT={}", set.join("bsample_out.hex").display()))
-        .arg(format!("+N={n}"))
-        .output()
-        .expect("vvp (Debian package iverilog)");
-    assert!(
-        out.status.success(),
-        "vvp failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8_lossy(&out.stdout).into_owned()
+    icarus::run_vectors(tb, set, "bsample", &[])
 }
 
 fn coverage(set: &str) -> serde_json::Value {
@@ -257,5 +237,82 @@ fn rtl_sample_test_unit_matches_other_configurations() {
                 "{out}"
             );
         }
+    }
+}
+
+/// `uvt_mul.v` (every product of the unit) is the exact signed product at every operand-width
+/// pair of the bounded configurations' width tables — corner operands and `UVT_SEED`-seeded
+/// random ones — and tiles each pair into the hard multipliers and LUT bits that the cost model
+/// (`uvt_host::cost`) counts, for the DSP48E1 (25 × 18) and ECP5 (18 × 18) ports.
+#[test]
+fn rtl_multiplier_is_exact_and_tiles_as_the_cost_model_counts() {
+    use uvt_core::widths::{table, Config};
+    use uvt_host::cost::{dsp48e1_tiling, ecp5_tiling, Tiling};
+    let mut pairs: Vec<(u32, u32)> = Vec::new();
+    for name in uvt_host::cost::SWEEP
+        .iter()
+        .filter(|n| n.starts_with("bounded"))
+    {
+        let cfg = Config::parse(name).unwrap();
+        for r in table(&cfg).rows().filter(|r| r.stage == "sample") {
+            for m in r.mul.iter().flatten() {
+                if !pairs.contains(&(m.a, m.b)) {
+                    pairs.push((m.a, m.b));
+                }
+            }
+        }
+    }
+    // The unit's own widths where they differ from the table: gx·w with a 22-bit gx (any
+    // 20-bit xs; the table's 21 bits hold the in-viewport range).
+    pairs.push((22, 31));
+    assert!(pairs.len() >= 15, "{pairs:?}");
+    let seed = seed();
+    let nr = if extensive() { 20_000 } else { 300 };
+    let dir = tempfile::tempdir().unwrap();
+    for &(a, b) in &pairs {
+        for (ports, model) in [
+            ((25, 18), dsp48e1_tiling(a, b)),
+            ((18, 18), ecp5_tiling(a, b)),
+        ] {
+            let p = |k: &'static str, v: u32| (k, v.to_string());
+            let tb = icarus::compile(
+                &dir.path().join(format!("mul-{a}x{b}-{}.vvp", ports.0)),
+                &[
+                    p("tb_mul.AW", a),
+                    p("tb_mul.BW", b),
+                    p("tb_mul.PA", ports.0),
+                    p("tb_mul.PB", ports.1),
+                ],
+                &["uvt_mul.v", "tb_mul.v"],
+            );
+            let out = icarus::run(&tb, &[format!("+SEED={seed}"), format!("+NR={nr}")]);
+            let Tiling { hard, lut_bits } = model;
+            let want = format!(
+                "PASS {} products {a}x{b}: {hard} hard multipliers, {lut_bits} LUT bits",
+                36 + nr
+            );
+            assert!(
+                out.contains(&want),
+                "{a} × {b} on {ports:?} ports (UVT_SEED={seed}): expected '{want}', got: {out}"
+            );
+        }
+    }
+}
+
+/// The unit with its multipliers tiled for the ECP5's 18 × 18 ports is bit-identical too (the
+/// frame_b set; every set under `UVT_EXTENSIVE=1`).
+#[test]
+fn rtl_sample_test_unit_with_ecp5_tiling_passes_committed_records() {
+    let dir = tempfile::tempdir().unwrap();
+    let tb = build_with(dir.path(), Grid::DEFAULT, (18, 18));
+    let sets: &[&str] = if extensive() {
+        &["unit", "frame_a", "frame_b"]
+    } else {
+        &["frame_b"]
+    };
+    for set in sets {
+        let out = run(&tb, &committed().join(set));
+        let n = coverage(set)["records"].as_u64().unwrap();
+        assert!(out.contains(&format!("PASS {n} records")), "{set}: {out}");
     }
 }

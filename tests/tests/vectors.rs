@@ -4,9 +4,8 @@
 //! vectors agree with the renderer; and an RTL unit consumes them under Icarus Verilog.
 
 use std::path::{Path, PathBuf};
-use std::process::Command;
-
 use uvt_host::vectors::{self, check::check, format::sha256};
+use uvt_tests::icarus;
 
 fn committed() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../vectors")
@@ -197,39 +196,17 @@ fn frame_vectors_agree_with_the_renderer() {
 }
 
 fn iverilog(set: &Path, tb: &Path) -> String {
-    let n = std::fs::read_to_string(set.join("select_out.hex"))
-        .unwrap()
-        .lines()
-        .count();
-    let out = Command::new("vvp")
-        .arg("-n")
-        .arg(tb)
-        .arg(format!("+IN={}", set.join("select_in.hex").display()))
-        .arg(format!("+OUT={}", set.join("select_out.hex").display()))
-        .arg(format!("+N={n}"))
-        .output()
-        .expect("vvp (Debian package iverilog; tests/run.sh installs it)");
-    assert!(
-        out.status.success(),
-        "vvp failed: {}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    String::from_utf8_lossy(&out.stdout).into_owned()
+    icarus::run_vectors(tb, set, "select", &[])
 }
 
 #[test]
 fn rtl_interval_check_passes_every_exported_record() {
     let dir = tempfile::tempdir().unwrap();
-    let tb = dir.path().join("tb.vvp");
-    let rtl = committed().join("rtl");
-    let st = Command::new("iverilog")
-        .args(["-g2005", "-Wall", "-o"])
-        .arg(&tb)
-        .arg(rtl.join("uvt_interval_check.v"))
-        .arg(rtl.join("tb_interval_check.v"))
-        .status()
-        .expect("iverilog (Debian package iverilog; tests/run.sh installs it)");
-    assert!(st.success());
+    let tb = icarus::compile(
+        &dir.path().join("tb.vvp"),
+        &[],
+        &["uvt_interval_check.v", "tb_interval_check.v"],
+    );
     for set in SETS {
         let out = iverilog(&committed().join(set), &tb);
         assert!(out.contains("PASS"), "{set}: {out}");

@@ -12,6 +12,8 @@ module tb_bsample;
     parameter POS = 16;
     parameter TUV = 16;
     parameter OFF = 20;
+    parameter DSP_A = 25;              // the unit's multiplier tiling (uvt_mul.v)
+    parameter DSP_B = 18;
     localparam WI = 37, WO = 14, MAXREC = 16384;
     reg [31:0] in_mem  [0:MAXREC*WI-1];
     reg [31:0] out_mem [0:MAXREC*WO-1];
@@ -29,7 +31,7 @@ module tb_bsample;
     wire signed [1:0] det_sign;
     wire signed [31:0] depth;
 
-    uvt_bsample #(.POS(POS), .TUV(TUV), .OFF(OFF)) dut (
+    uvt_bsample #(.POS(POS), .TUV(TUV), .OFF(OFF), .DSP_A(DSP_A), .DSP_B(DSP_B)) dut (
         .clk(clk), .in_valid(in_valid), .trin(trin), .vp_w(vp_w), .vp_h(vp_h), .xs(xs), .ys(ys),
         .t(t), .u(u), .v(v), .edge_valid(edge_valid), .ab(ab), .e(e), .det_sign(det_sign),
         .covered(covered), .out_valid(out_valid), .out_covered(out_covered), .depth(depth)

@@ -6,6 +6,8 @@
 //   POS  fraction bits of clip x, y, z, w and CoC (2..16); the inputs' low 16−POS bits are zero
 //   TUV  fraction bits of t, u, v (2..16); the inputs' low 16−TUV bits are zero
 //   OFF  offset-grid shift S (20..32): a' = round(A / 2^OFF)
+//   DSP_A, DSP_B, LUTW  the multiplier tiling of every product (uvt_mul.v): hard-multiplier
+//        ports 25 × 18 (DSP48E1, default) or 18 × 18 (ECP5), top chunks <= LUTW bits in LUTs
 // The unit ignores the low zero bits (narrower multipliers for narrower configurations). It
 // needs no class input: for a static triangle the lerp returns the t = 0 value exactly and for
 // a triangle without CoC the lens term is 0, so the general path equals every class's path.
@@ -24,7 +26,12 @@
 module uvt_bsample #(
     parameter POS = 16,
     parameter TUV = 16,
-    parameter OFF = 20
+    parameter OFF = 20,
+    // hard-multiplier ports and LUT chunk limit of every product (uvt_mul.v): 25 × 18 for
+    // Xilinx DSP48E1 (the default), 18 × 18 for Lattice ECP5 MULT18X18D
+    parameter DSP_A = 25,
+    parameter DSP_B = 18,
+    parameter LUTW = 8
 ) (
     input  wire               clk,
     input  wire               in_valid,
@@ -94,7 +101,8 @@ module uvt_bsample #(
             wire signed [FW-1:0] f0 = s1_f0[FW*i +: FW];
             wire signed [FW-1:0] f1 = s1_f1[FW*i +: FW];
             wire signed [DW-1:0] d = f1 - f0;
-            wire signed [TW+DW-1:0] p = s1_t * d;
+            wire signed [TW+DW-1:0] p;
+            uvt_mul #(.AW(TW), .BW(DW), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_t (s1_t, d, p);
             always @(posedge clk) begin
                 s2_f0[FW*i +: FW] <= f0;
                 s2_p[(TW+DW)*i +: TW+DW] <= p;
@@ -123,10 +131,13 @@ module uvt_bsample #(
         for (i = 0; i < 3; i = i + 1) begin : g_lens
             wire signed [30:0] c = s3_f[31*(5*i+4) +: 31];
             reg signed [TW+30:0] pu, pv;
+            wire signed [TW+30:0] mu, mv;
+            uvt_mul #(.AW(TW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_u (s3_u, c, mu);
+            uvt_mul #(.AW(TW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_v (s3_v, c, mv);
             reg signed [30:0] xt, yt, wt, zt;
             always @(posedge clk) begin
-                pu <= s3_u * c;
-                pv <= s3_v * c;
+                pu <= mu;
+                pv <= mv;
                 {xt, yt, zt, wt} <= {s3_f[31*(5*i) +: 31], s3_f[31*(5*i+1) +: 31],
                                      s3_f[31*(5*i+2) +: 31], s3_f[31*(5*i+3) +: 31]};
             end
@@ -152,11 +163,17 @@ module uvt_bsample #(
             wire signed [30:0] w = s5_wt[31*i +: 31];
             reg signed [44:0] mx, my;      // W·x, H·y: |.| <= 2^41
             reg signed [52:0] mw, mh;      // gx·w, gy·w: |.| <= 2^48
+            wire signed [44:0] px, py;
+            wire signed [52:0] pw, ph;
+            uvt_mul #(.AW(13), .BW(32), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_x (s5_w, x, px);
+            uvt_mul #(.AW(13), .BW(32), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_y (s5_h, y, py);
+            uvt_mul #(.AW(22), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_w (s5_gx, w, pw);
+            uvt_mul #(.AW(22), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_h (s5_gy, w, ph);
             always @(posedge clk) begin
-                mx <= s5_w * x;
-                my <= s5_h * y;
-                mw <= s5_gx * w;
-                mh <= s5_gy * w;
+                mx <= px;
+                my <= py;
+                mw <= pw;
+                mh <= ph;
             end
             wire signed [55:0] A = (mx <<< 8) - mw + (56'sd1 <<< (OFF - 1));
             wire signed [55:0] B = (my <<< 8) - mh + (56'sd1 <<< (OFF - 1));
@@ -184,9 +201,12 @@ module uvt_bsample #(
             wire signed [AW-1:0] aj = s7_a[AW*((i+2)%3) +: AW];
             wire signed [AW-1:0] bj = s7_b[AW*((i+2)%3) +: AW];
             reg signed [EW-1:0] p1, p2;
+            wire signed [EW-1:0] q1, q2;
+            uvt_mul #(.AW(AW), .BW(AW), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_1 (ai, bj, q1);
+            uvt_mul #(.AW(AW), .BW(AW), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_2 (aj, bi, q2);
             always @(posedge clk) begin
-                p1 <= ai * bj;
-                p2 <= aj * bi;
+                p1 <= q1;
+                p2 <= q2;
             end
             always @(posedge clk) s9_e[EW*i +: EW] <= p1 - p2;
         end
@@ -210,6 +230,8 @@ module uvt_bsample #(
         for (i = 0; i < 3; i = i + 1) begin : g_key
             wire signed [EW-1:0] ek = s9_e[EW*i +: EW];
             wire signed [30:0] wk = s9_wt[31*i +: 31];
+            wire signed [EW+30:0] qk;
+            uvt_mul #(.AW(EW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_q (ek, wk, qk);
             assign e_mag[EW*i +: EW] = ek[EW-1] ? -ek : ek;
             // tie key κ = cmp((b', a', w)_{k+1}, (b', a', w)_{k+2}), lexicographic, signed
             wire signed [AW-1:0] ai = s9_a[AW*((i+1)%3) +: AW];
@@ -219,7 +241,7 @@ module uvt_bsample #(
             wire signed [AW-1:0] bj = s9_b[AW*((i+2)%3) +: AW];
             wire signed [30:0]   wj = s9_wt[31*((i+2)%3) +: 31];
             always @(posedge clk) begin
-                s10_q[RW*i +: RW] <= ek * wk;
+                s10_q[RW*i +: RW] <= {qk[EW+30], qk};
                 s10_pos[i] <= (ek > 0);
                 s10_neg[i] <= (ek < 0);
                 s10_gt[i] <= (bi > bj) || (bi == bj && ((ai > aj) || (ai == aj && wi > wj)));
@@ -286,9 +308,12 @@ module uvt_bsample #(
             wire signed [24:0] e2 = s11_e2[25*i +: 25];
             wire signed [30:0] zk = s11_zt[31*i +: 31];
             wire signed [30:0] wk = s11_wt[31*i +: 31];
+            wire signed [55:0] pz, pw;
+            uvt_mul #(.AW(25), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_z (e2, zk, pz);
+            uvt_mul #(.AW(25), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_w (e2, wk, pw);
             always @(posedge clk) begin
-                s12_nz[56*i +: 56] <= e2 * zk;
-                s12_nw[56*i +: 56] <= e2 * wk;
+                s12_nz[56*i +: 56] <= pz;
+                s12_nw[56*i +: 56] <= pw;
             end
         end
     endgenerate

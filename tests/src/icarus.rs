@@ -1,0 +1,73 @@
+//! The Icarus Verilog runner shared by the RTL tests (`tests/tests/bsample.rs`,
+//! `tests/tests/vectors.rs`): compile a testbench with `iverilog -g2005 -Wall` (a warning is a
+//! failure) and run it with `vvp` on a vector file pair. Both tools come from the Debian package
+//! `iverilog`, which `tests/run.sh` installs.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+/// `vectors/rtl`, the committed Verilog.
+pub fn rtl_dir() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../vectors/rtl")
+}
+
+/// Compile `sources` (file names in `vectors/rtl`) with the parameter overrides `params`
+/// (`("tb_bsample.OFF", "24")` → `-Ptb_bsample.OFF=24`) into `out`. Panics with iverilog's
+/// output if it fails or warns.
+pub fn compile(out: &Path, params: &[(&str, String)], sources: &[&str]) -> PathBuf {
+    let rtl = rtl_dir();
+    let mut cmd = Command::new("iverilog");
+    cmd.args(["-g2005", "-Wall"]);
+    for (k, v) in params {
+        cmd.arg(format!("-P{k}={v}"));
+    }
+    cmd.arg("-o").arg(out);
+    for s in sources {
+        cmd.arg(rtl.join(s));
+    }
+    let o = cmd
+        .output()
+        .expect("iverilog (Debian package iverilog; tests/run.sh installs it)");
+    assert!(
+        o.status.success() && o.stderr.is_empty() && o.stdout.is_empty(),
+        "iverilog failed or warned for {sources:?} {params:?}: {}{}",
+        String::from_utf8_lossy(&o.stdout),
+        String::from_utf8_lossy(&o.stderr)
+    );
+    out.to_path_buf()
+}
+
+/// Run the compiled testbench `tb` with the plusargs `args` (`"+SEED=7"`); its standard output.
+/// Panics with vvp's error output if it fails.
+pub fn run(tb: &Path, args: &[String]) -> String {
+    let o = Command::new("vvp")
+        .arg("-n")
+        .arg(tb)
+        .args(args)
+        .output()
+        .expect("vvp (Debian package iverilog; tests/run.sh installs it)");
+    assert!(
+        o.status.success(),
+        "vvp {} failed: {}",
+        tb.display(),
+        String::from_utf8_lossy(&o.stderr)
+    );
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+/// Run the testbench `tb` on the vector pair `{stem}_in.hex` / `{stem}_out.hex` of `set`
+/// (`+IN`, `+OUT`, `+N` = the output file's line count, then `extra`); its standard output.
+pub fn run_vectors(tb: &Path, set: &Path, stem: &str, extra: &[String]) -> String {
+    let out = set.join(format!("{stem}_out.hex"));
+    let n = std::fs::read_to_string(&out)
+        .unwrap_or_else(|e| panic!("{}: {e}", out.display()))
+        .lines()
+        .count();
+    let mut args = vec![
+        format!("+IN={}", set.join(format!("{stem}_in.hex")).display()),
+        format!("+OUT={}", out.display()),
+        format!("+N={n}"),
+    ];
+    args.extend_from_slice(extra);
+    run(tb, &args)
+}

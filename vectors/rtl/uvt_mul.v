@@ -1,0 +1,171 @@
+// uvt_mul — a signed AW × BW product decomposed explicitly into hard-multiplier-sized partial
+// products, so that synthesis maps each `*` to exactly one hard multiplier (vectors/README.md
+// "Multiplier decomposition"; host/src/cost.rs models the same rule). Combinational;
+// synthesizable Verilog-2005 (Icarus Verilog and Yosys).
+//
+// Tiling rule (ports PA × PB, signed only, as the DSP48E1's 25 × 18; ECP5 builds use 18 × 18):
+// - An n-bit operand on a p-bit port is one signed piece if n <= p; otherwise k = ceil((n−p)/(p−1))
+//   unsigned low chunks of p−1 bits (zero-extended to p bits signed) and a signed top chunk of
+//   h = n − k·(p−1) bits. Every chunk pair is one hard multiplier.
+// - A top chunk of at most LW bits may instead be multiplied by the whole other operand in LUTs
+//   (a shift-and-add of h rows; no `*`, so synthesis cannot put it on a DSP), removing that
+//   chunk's row of hard multipliers. At most one operand's top chunk goes to LUTs.
+// - Among both orientations (A on port PA or on port PB) and the options {no LUT chunk, A's top
+//   in LUTs, B's top in LUTs}, the one with the fewest hard multipliers is taken, ties broken by
+//   fewer LUT partial-product bits (h × other operand's width), then A on port PA.
+// The partial products are summed in the fabric (or the DSP cascade, as synthesis packs them);
+// the sum is the exact AW+BW-bit product.
+`timescale 1ns / 1ps
+module uvt_mul #(
+    parameter AW = 18,
+    parameter BW = 32,
+    parameter PA = 25,
+    parameter PB = 18,
+    parameter LW = 8
+) (
+    input  wire signed [AW-1:0]    a,
+    input  wire signed [BW-1:0]    b,
+    output wire signed [AW+BW-1:0] p
+);
+    // Unsigned low chunks of an n-bit operand on a p-bit signed port.
+    function integer nlow(input integer n, input integer pw);
+        nlow = (n <= pw) ? 0 : (n - pw + pw - 2) / (pw - 1);
+    endfunction
+    // Width of the signed top chunk.
+    function integer top(input integer n, input integer pw);
+        top = n - nlow(n, pw) * (pw - 1);
+    endfunction
+    // Whether the top chunk may go to LUTs.
+    function integer lutable(input integer n, input integer pw, input integer lw);
+        lutable = (nlow(n, pw) > 0 && top(n, pw) <= lw) ? 1 : 0;
+    endfunction
+    // Score (hard multipliers · 2^20 + LUT bits) of x on port px, y on port py, option o:
+    // 0 none, 1 x's top in LUTs, 2 y's top in LUTs (a large score when not allowed).
+    function integer score(input integer x, input integer y, input integer px, input integer py,
+                           input integer lw, input integer o);
+        integer kx, ky;
+        begin
+            kx = nlow(x, px);
+            ky = nlow(y, py);
+            if (o == 0)
+                score = (kx + 1) * (ky + 1) * 1048576;
+            else if (o == 1)
+                score = lutable(x, px, lw) ? kx * (ky + 1) * 1048576 + top(x, px) * y
+                                           : 32'h7fffffff;
+            else
+                score = lutable(y, py, lw) ? (kx + 1) * ky * 1048576 + top(y, py) * x
+                                           : 32'h7fffffff;
+        end
+    endfunction
+    // The chosen layout: swap · 4 + option (0, 1: X's top in LUTs, 2: Y's top in LUTs).
+    function integer choose(input integer aw, input integer bw, input integer pa,
+                            input integer pb, input integer lw);
+        integer s, o, best, c;
+        begin
+            best = 32'h7fffffff;
+            choose = 0;
+            for (s = 0; s < 2; s = s + 1)
+                for (o = 0; o < 3; o = o + 1) begin
+                    c = s ? score(bw, aw, pa, pb, lw, o) : score(aw, bw, pa, pb, lw, o);
+                    if (c < best) begin
+                        best = c;
+                        choose = s * 4 + o;
+                    end
+                end
+        end
+    endfunction
+
+    localparam C = choose(AW, BW, PA, PB, LW);
+    localparam SWAP = C / 4;
+    localparam LX = (C % 4) == 1;
+    localparam LY = (C % 4) == 2;
+    localparam XW = SWAP ? BW : AW;    // operand X on port PA
+    localparam YW = SWAP ? AW : BW;    // operand Y on port PB
+    localparam PW = AW + BW;
+    localparam XK = nlow(XW, PA), XH = top(XW, PA);
+    localparam YK = nlow(YW, PB), YH = top(YW, PB);
+    localparam XN = XK + (LX ? 0 : 1);  // hard-multiplier pieces of X
+    localparam YN = YK + (LY ? 0 : 1);
+    localparam NT = XN * YN + 1;        // terms: hard products, then the LUT product (or 0)
+
+    wire signed [XW-1:0] x;
+    wire signed [YW-1:0] y;
+    generate
+        if (SWAP) begin : g_swap
+            assign x = b;
+            assign y = a;
+        end else begin : g_keep
+            assign x = a;
+            assign y = b;
+        end
+    endgenerate
+
+    // Running sum of the terms: acc[t+1] = acc[t] + term t.
+    wire [PW*(NT+1)-1:0] acc;
+    assign acc[0 +: PW] = {PW{1'b0}};
+    genvar i, j;
+    generate
+        for (i = 0; i < XN; i = i + 1) begin : g_x
+            wire signed [PA-1:0] xp;
+            if (i < XK) begin : g_lo
+                assign xp = $signed({1'b0, x[i*(PA-1) +: PA-1]});
+            end else begin : g_hi
+                wire signed [XH-1:0] xt = x[XW-1 -: XH];
+                assign xp = xt;
+            end
+            for (j = 0; j < YN; j = j + 1) begin : g_y
+                wire signed [PB-1:0] yp;
+                if (j < YK) begin : g_lo
+                    assign yp = $signed({1'b0, y[j*(PB-1) +: PB-1]});
+                end else begin : g_hi
+                    wire signed [YH-1:0] yt = y[YW-1 -: YH];
+                    assign yp = yt;
+                end
+                wire signed [PA+PB-1:0] pp = xp * yp;   // one hard multiplier
+                wire signed [PW-1:0] pe = pp;
+                assign acc[PW*(i*YN+j+1) +: PW] =
+                    $signed(acc[PW*(i*YN+j) +: PW]) + (pe <<< (i*(PA-1) + j*(PB-1)));
+            end
+        end
+        // The LUT product: a signed top chunk t (TH bits) times the signed operand o (OW bits)
+        // as a shift-and-add of TH rows, shifted to the chunk's position.
+        if (LX || LY) begin : g_lut
+            localparam TH = LX ? XH : YH;
+            localparam OW = LX ? YW : XW;
+            localparam SH = LX ? XK * (PA - 1) : YK * (PB - 1);
+            wire signed [TH-1:0] t;
+            wire signed [OW-1:0] o;
+            if (LX) begin : g_lx
+                assign t = x[XW-1 -: XH];
+                assign o = y;
+            end else begin : g_ly
+                assign t = y[YW-1 -: YH];
+                assign o = x;
+            end
+            // Row q adds t[q]·o·2^q (the top row subtracts it); the partial sum after row q is
+            // OW+q+1 bits signed, and each row is one (OW+1)-bit adder above the q bits that
+            // are final already (no sign extension to the full width).
+            wire [(TH+1)*(OW+TH)-1:0] r;
+            assign r[0 +: OW+TH] = {(OW+TH){1'b0}};
+            for (j = 0; j < TH; j = j + 1) begin : g_row
+                wire signed [OW-1:0] pr = {OW{t[j]}} & o;
+                wire signed [OW+j-1:0] prev = r[(OW+TH)*j +: OW+j];  // previous sum >> 0
+                wire signed [OW:0] hi = (j == TH - 1)
+                    ? $signed(prev[OW+j-1:j]) - pr
+                    : $signed(prev[OW+j-1:j]) + pr;
+                if (j == 0) begin : g_first
+                    assign r[(OW+TH)*(j+1) +: OW+TH] = $signed(hi);
+                end else begin : g_next
+                    wire signed [OW+j:0] nx = {hi, prev[j-1:0]};
+                    assign r[(OW+TH)*(j+1) +: OW+TH] = $signed(nx);
+                end
+            end
+            wire signed [OW+TH-1:0] s = r[(OW+TH)*TH +: OW+TH];
+            wire signed [PW-1:0] se = s;
+            assign acc[PW*NT +: PW] = $signed(acc[PW*(NT-1) +: PW]) + (se <<< SH);
+        end else begin : g_nolut
+            assign acc[PW*NT +: PW] = acc[PW*(NT-1) +: PW];
+        end
+    endgenerate
+    assign p = acc[PW*NT +: PW];
+endmodule
