@@ -44,6 +44,15 @@ impl Class {
             Class::MotionDefocus => 3,
         }
     }
+    /// Name for reports and errors: "static", "motion", "defocus", "motion+defocus".
+    pub fn name(self) -> &'static str {
+        match self {
+            Class::Static => "static",
+            Class::Motion => "motion",
+            Class::Defocus => "defocus",
+            Class::MotionDefocus => "motion+defocus",
+        }
+    }
     /// Whether the triangle moves (any of x, y, z, w, or the CoC of a defocused triangle).
     pub fn motion(self) -> bool {
         matches!(self, Class::Motion | Class::MotionDefocus)

@@ -21,8 +21,9 @@ use crate::error::Error;
 use crate::formats::{DefaultPrecision, Precision, DEPTH_EMPTY, MAX_VIEWPORT};
 use crate::input::{PixelRect, SamplePattern, Triangle, Viewport, MAX_PATTERN};
 use crate::sample::{sample_test, ScreenPos};
-use crate::setup::{setup_with, Cull, Outcome, Setup};
+use crate::setup::{classify, setup_with, Cull, Outcome, Setup};
 use crate::stats::{Ops, Stats};
+use crate::unit::{Full, Unit};
 
 /// A triangle with its flat color.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -192,9 +193,15 @@ pub fn resolve_colors(colors: &[Rgb888]) -> Rgb888 {
 }
 
 /// Renders a triangle list with bounds strategy `B`, holding at most `N` visible setups, at
-/// precision `P` (default: [`DefaultPrecision`]).
-pub struct Renderer<B: BoundsStrategy, const N: usize, P: Precision = DefaultPrecision> {
-    prec: core::marker::PhantomData<P>,
+/// precision `P` (default: [`DefaultPrecision`]) on unit `U` (default: [`Full`]; a narrower
+/// unit refuses the classes it lacks, [`Error::ClassNotInUnit`]).
+pub struct Renderer<
+    B: BoundsStrategy,
+    const N: usize,
+    P: Precision = DefaultPrecision,
+    U: Unit = Full,
+> {
+    prec: core::marker::PhantomData<(P, U)>,
     bounds: B,
     vp: Viewport,
     setups: heapless::Vec<(Setup, B::Coeffs, Rgb888), N>,
@@ -202,9 +209,21 @@ pub struct Renderer<B: BoundsStrategy, const N: usize, P: Precision = DefaultPre
     pub stats: Stats,
 }
 
-impl<B: BoundsStrategy, const N: usize, P: Precision> Renderer<B, N, P> {
-    /// Set every triangle up exactly once. Fails if more than `N` triangles are visible.
+impl<B: BoundsStrategy, const N: usize, P: Precision, U: Unit> Renderer<B, N, P, U> {
+    /// Set every triangle up exactly once. Fails if more than `N` triangles are visible, or
+    /// with [`Error::ClassNotInUnit`] (naming the first such primitive, culled or not) if a
+    /// primitive's class is not accepted by `U`: every class is checked before any setup.
     pub fn new(bounds: B, vp: Viewport, prims: &[Prim]) -> Result<Self, Error> {
+        for (index, p) in prims.iter().enumerate() {
+            let class = classify(&p.tri);
+            if !U::accepts(class) {
+                return Err(Error::ClassNotInUnit {
+                    index,
+                    class,
+                    unit: U::NAME,
+                });
+            }
+        }
         let mut r = Renderer {
             prec: core::marker::PhantomData,
             bounds,
