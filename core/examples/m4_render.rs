@@ -15,6 +15,15 @@
 //! the core's `DefaultPrecision`); the program then also prints `prec NAME` and the cost lines
 //! `setup_sel`, `bounds_sel`, `sample_sel` of that configuration (one instantiation per build;
 //! an unknown name fails the build). `m4_report.sh --sweep` builds and runs every one.
+//!
+//! **Per unit.** `UVT_M4_UNIT` at build time (`full`, `motion-only`, `defocus-only`,
+//! `static-only`; an unknown name fails the build) makes it the program of that unit variant
+//! (`uvt_core::unit`) instead: only the default configuration (`DefaultPrecision`), only the
+//! demo prims the unit accepts, rendered with `Renderer<Laine2011, _, DefaultPrecision, U>`
+//! (checksum and counters) and the cost lines `setup_unit`, `bounds_unit`, `sample_unit` of
+//! those prims on `U`. Nothing of the precision sweep or the exact configuration is in it, so
+//! the `full` program is the same program with `U = Full`. `m4_report.sh --units` builds and
+//! runs all four.
 #![cfg_attr(target_os = "none", no_std)]
 #![cfg_attr(target_os = "none", no_main)]
 
@@ -85,6 +94,40 @@ macro_rules! with_sel {
             _ => f::<Bounded<8, 8, 8, 28>>($reps),
         }
         .unwrap_or(0)
+    }};
+}
+
+/// The unit chosen at build time (`UVT_M4_UNIT`); `None`: the precision program.
+const UNIT: Option<&str> = option_env!("UVT_M4_UNIT");
+
+/// Index of `UNIT` in `uvt_core::unit::UNIT_NAMES` (0 without `UVT_M4_UNIT`); an unknown name
+/// is a build error.
+const UNIT_SEL: usize = match UNIT {
+    None => 0,
+    Some(u) => {
+        let names = uvt_core::unit::UNIT_NAMES;
+        let mut i = 0;
+        while i < names.len() && !same(names[i], u) {
+            i += 1;
+        }
+        assert!(
+            i < names.len(),
+            "UVT_M4_UNIT must be full, motion-only, defocus-only or static-only"
+        );
+        i
+    }
+};
+
+/// `f::<U>(args)` for the selected unit (a constant match: one instantiation kept).
+macro_rules! with_unit {
+    ($($f:ident)::+, $($arg:expr),*) => {{
+        use uvt_core::{DefocusOnly, Full, MotionOnly, StaticOnly};
+        match crate::UNIT_SEL {
+            0 => $($f)::+::<Full>($($arg),*),
+            1 => $($f)::+::<MotionOnly>($($arg),*),
+            2 => $($f)::+::<DefocusOnly>($($arg),*),
+            _ => $($f)::+::<StaticOnly>($($arg),*),
+        }
     }};
 }
 
@@ -168,6 +211,9 @@ mod target {
             cortex_m::asm::delay(4_000_000);
             0
         });
+        if crate::UNIT.is_some() {
+            unit_program(&mut cp.SYST, cal);
+        }
         match demo::render() {
             Ok(r) => {
                 report!(hprintln, r);
@@ -216,6 +262,39 @@ mod target {
         }
     }
 
+    /// The unit program (`UVT_M4_UNIT`): render and cost of the prims the unit accepts, at the
+    /// default configuration only.
+    fn unit_program(syst: &mut cortex_m::peripheral::SYST, cal: u64) -> ! {
+        match with_unit!(demo::render_unit,) {
+            Ok(r) => {
+                report!(hprintln, r);
+            }
+            Err(e) => {
+                hprintln!("error {}", e);
+                debug::exit(debug::EXIT_FAILURE);
+            }
+        }
+        hprintln!("stack_peak_bytes {}", peak());
+        hprintln!("calibration delay(4000000) insn={}", cal);
+        hprintln!("unit {}", crate::UNIT.unwrap_or(""));
+        let (c, i) = ticks(syst, || {
+            with_unit!(demo::cost::setup_all_unit, 20).unwrap_or(0)
+        });
+        hprintln!("cost setup_unit calls={} insn={}", c, i);
+        let (c, i) = ticks(syst, || {
+            with_unit!(demo::cost::bounds_all_unit, 5).unwrap_or(0)
+        });
+        hprintln!("cost bounds_unit calls={} insn={}", c, i);
+        let (c, i) = ticks(syst, || {
+            with_unit!(demo::cost::samples_all_unit, 2).unwrap_or(0)
+        });
+        hprintln!("cost sample_unit calls={} insn={}", c, i);
+        debug::exit(debug::EXIT_SUCCESS);
+        loop {
+            cortex_m::asm::wfi();
+        }
+    }
+
     #[panic_handler]
     fn panic(_: &core::panic::PanicInfo) -> ! {
         hprintln!("panic");
@@ -229,6 +308,17 @@ mod target {
 #[cfg(not(target_os = "none"))]
 fn main() {
     use uvt_core::demo;
+    if let Some(name) = UNIT {
+        match with_unit!(demo::render_unit,) {
+            Ok(r) => report!(println, r),
+            Err(e) => {
+                eprintln!("error {e}");
+                std::process::exit(1);
+            }
+        }
+        println!("unit {name}");
+        return;
+    }
     match demo::render() {
         Ok(r) => report!(println, r),
         Err(e) => {
