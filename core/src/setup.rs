@@ -768,10 +768,17 @@ fn setup_gated<P: Precision, U: Unit>(
             exact_boxes(tri, 0, ew, prec.bnd(), ops),
             exact_boxes(tri, 1, eh, prec.bnd(), ops),
         ]
-    } else {
+    } else if U::MOTION {
         [
             axis_boxes(tri, 0, ew, prec.bnd(), &eps, ops),
             axis_boxes(tri, 1, eh, prec.bnd(), &eps, ops),
+        ]
+    } else {
+        // ε_w = 0 without motion: `axis_boxes`' six-point branch, without its twelve-point one.
+        let ex = |axis: usize| eps.x.get(axis).copied().unwrap_or(0);
+        [
+            corner_boxes::<1, 6>(tri, 0, ew, prec.bnd(), ex(0), [0], ops),
+            corner_boxes::<1, 6>(tri, 1, eh, prec.bnd(), ex(1), [0], ops),
         ]
     };
     let (x0, x1) = axis_range(&axes[0], vp.w, prec.bnd());
