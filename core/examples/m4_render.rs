@@ -23,7 +23,7 @@
 //! (checksum and counters) and the cost lines `setup_unit`, `bounds_unit`, `sample_unit` of
 //! those prims on `U`. Nothing of the precision sweep or the exact configuration is in it, so
 //! the `full` program is the same program with `U = Full`. `m4_report.sh --units` builds and
-//! runs all four.
+//! runs all four (and the full unit on each narrower unit's prims: `UVT_M4_PRIMS`).
 #![cfg_attr(target_os = "none", no_std)]
 #![cfg_attr(target_os = "none", no_main)]
 
@@ -118,17 +118,45 @@ const UNIT_SEL: usize = match UNIT {
     }
 };
 
-/// `f::<U>(args)` for the selected unit (a constant match: one instantiation kept).
+/// Optional `UVT_M4_PRIMS` (a unit name; default `UVT_M4_UNIT`): run the unit on the demo
+/// prims *this* unit accepts — e.g. the full unit on the static-only unit's prims, to compare
+/// the two on the same work. Its index in `UNIT_NAMES`; an unknown name is a build error.
+const PRIMS_SEL: usize = match option_env!("UVT_M4_PRIMS") {
+    None => UNIT_SEL,
+    Some(u) => {
+        let names = uvt_core::unit::UNIT_NAMES;
+        let mut i = 0;
+        while i < names.len() && !same(names[i], u) {
+            i += 1;
+        }
+        assert!(
+            i < names.len(),
+            "UVT_M4_PRIMS must be full, motion-only, defocus-only or static-only"
+        );
+        i
+    }
+};
+
+/// `f::<U, V>(args)` for the selected unit `U` and prims unit `V` (constant matches: one
+/// instantiation kept).
 macro_rules! with_unit {
     ($($f:ident)::+, $($arg:expr),*) => {{
         use uvt_core::{DefocusOnly, Full, MotionOnly, StaticOnly};
         match crate::UNIT_SEL {
-            0 => $($f)::+::<Full>($($arg),*),
-            1 => $($f)::+::<MotionOnly>($($arg),*),
-            2 => $($f)::+::<DefocusOnly>($($arg),*),
-            _ => $($f)::+::<StaticOnly>($($arg),*),
+            0 => with_unit!(@v Full, $($f)::+, $($arg),*),
+            1 => with_unit!(@v MotionOnly, $($f)::+, $($arg),*),
+            2 => with_unit!(@v DefocusOnly, $($f)::+, $($arg),*),
+            _ => with_unit!(@v StaticOnly, $($f)::+, $($arg),*),
         }
     }};
+    (@v $u:ident, $($f:ident)::+, $($arg:expr),*) => {
+        match crate::PRIMS_SEL {
+            0 => $($f)::+::<$u, Full>($($arg),*),
+            1 => $($f)::+::<$u, MotionOnly>($($arg),*),
+            2 => $($f)::+::<$u, DefocusOnly>($($arg),*),
+            _ => $($f)::+::<$u, StaticOnly>($($arg),*),
+        }
+    };
 }
 
 /// Print the checksum and counters lines (identical format on target and host).
@@ -324,7 +352,7 @@ mod target {
     /// default configuration only. Prints the same lines as the other programs.
     fn unit_program(syst: &mut cortex_m::peripheral::SYST, cal: u64) -> ! {
         let mut o = Plain(cortex_m_semihosting::hio::hstdout().ok());
-        let Ok(r) = with_unit!(demo::render_unit,) else {
+        let Ok(r) = with_unit!(demo::render_on,) else {
             o.s("error rendering the unit's prims\n");
             debug::exit(debug::EXIT_FAILURE);
             loop {
@@ -356,16 +384,19 @@ mod target {
         o.s("stack_peak_bytes ").n(peak() as u64).s("\n");
         o.s("calibration delay(4000000) insn=").n(cal).s("\n");
         o.s("unit ").s(crate::UNIT.unwrap_or("")).s("\n");
+        o.s("prims ")
+            .s(uvt_core::unit::UNIT_NAMES[crate::PRIMS_SEL])
+            .s("\n");
         let c = ticks(syst, || {
-            with_unit!(demo::cost::setup_all_unit, 20).unwrap_or(0)
+            with_unit!(demo::cost::setup_all_on, 20).unwrap_or(0)
         });
         o.cost("setup_unit", c);
         let c = ticks(syst, || {
-            with_unit!(demo::cost::bounds_all_unit, 5).unwrap_or(0)
+            with_unit!(demo::cost::bounds_all_on, 5).unwrap_or(0)
         });
         o.cost("bounds_unit", c);
         let c = ticks(syst, || {
-            with_unit!(demo::cost::samples_all_unit, 2).unwrap_or(0)
+            with_unit!(demo::cost::samples_all_on, 2).unwrap_or(0)
         });
         o.cost("sample_unit", c);
         debug::exit(debug::EXIT_SUCCESS);
@@ -388,7 +419,7 @@ mod target {
 fn main() {
     use uvt_core::demo;
     if let Some(name) = UNIT {
-        match with_unit!(demo::render_unit,) {
+        match with_unit!(demo::render_on,) {
             Ok(r) => report!(println, r),
             Err(e) => {
                 eprintln!("error {e}");
@@ -396,6 +427,7 @@ fn main() {
             }
         }
         println!("unit {name}");
+        println!("prims {}", uvt_core::unit::UNIT_NAMES[PRIMS_SEL]);
         return;
     }
     match demo::render() {

@@ -14,7 +14,9 @@
 # the default configuration and the demo prims the unit accepts only), runs each on the
 # Cortex-M4F under QEMU and writes flash (.vector_table + .text + .rodata), .text, RAM (.data +
 # .bss), peak stack, instructions per setup / tile bounds / sample test and the image checksum
-# to OUT.json (default host/report/m4_units.json).
+# to OUT.json (default host/report/m4_units.json); then the full unit on each narrower unit's
+# prims (UVT_M4_PRIMS; its checksum must equal that unit's), so the cost per call can be
+# compared on the same work ("full_on_unit_prims").
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 tdir=${CARGO_TARGET_DIR:-target}
@@ -24,6 +26,8 @@ if [[ "${1:-}" == "--units" ]]; then
   per() { echo "$1" | awk -v s="$2" '$1=="cost" && $2==s {split($3,a,"="); split($4,b,"="); printf "%.0f", b[2]/a[2]}'; }
   field() { echo "$1" | awk -v k="$2" '$1 == k {print $2}'; }
   rows=()
+  same=()
+  declare -A sums
   for u in full motion-only defocus-only static-only; do
     echo "m4_report --units: $u" >&2
     UVT_M4_UNIT=$u cargo build -q --release -p uvt-core --example m4_render --target thumbv7em-none-eabihf
@@ -37,7 +41,20 @@ if [[ "${1:-}" == "--units" ]]; then
     text=$(sec "$elf" .text)
     flash=$(( $(sec "$elf" .vector_table) + text + $(sec "$elf" .rodata) ))
     ram=$(( $(sec "$elf" .data) + $(sec "$elf" .bss) ))
+    sums[$u]=$(field "$m4" checksum)
     rows+=("    {\"unit\": \"$u\", \"flash\": $flash, \"text\": $text, \"ram\": $ram, \"stack\": $(field "$m4" stack_peak_bytes), \"setup\": $(per "$m4" setup_unit), \"bounds\": $(per "$m4" bounds_unit), \"sample\": $(per "$m4" sample_unit), \"checksum\": \"$(field "$m4" checksum)\"}")
+  done
+  # The full unit on each narrower unit's prims: the same work as that unit's row (its image
+  # must be the same, bit for bit).
+  for u in motion-only defocus-only static-only; do
+    echo "m4_report --units: full on the $u prims" >&2
+    UVT_M4_UNIT=full UVT_M4_PRIMS=$u cargo build -q --release -p uvt-core --example m4_render --target thumbv7em-none-eabihf
+    elf=$tdir/thumbv7em-none-eabihf/release/examples/m4_render
+    m4=$(timeout 120 qemu-system-arm -machine mps2-an386 -cpu cortex-m4 -nographic -monitor none \
+        -semihosting-config enable=on,target=native -icount shift=0 -kernel "$elf")
+    [[ "$(field "$m4" prims)" == "$u" ]] || { echo "m4_render not built for the $u prims" >&2; exit 1; }
+    [[ "$(field "$m4" checksum)" == "${sums[$u]}" ]] || { echo "full on the $u prims: checksum $(field "$m4" checksum), the $u unit ${sums[$u]}" >&2; exit 1; }
+    same+=("    {\"prims\": \"$u\", \"setup\": $(per "$m4" setup_unit), \"bounds\": $(per "$m4" bounds_unit), \"sample\": $(per "$m4" sample_unit), \"checksum\": \"$(field "$m4" checksum)\"}")
   done
   tmp=$(mktemp "$json.XXXX")
   {
@@ -48,6 +65,12 @@ if [[ "${1:-}" == "--units" ]]; then
     for i in "${!rows[@]}"; do
       sep=","; [[ $i -eq $((${#rows[@]} - 1)) ]] && sep=""
       echo "${rows[$i]}$sep"
+    done
+    echo "  ],"
+    echo "  \"full_on_unit_prims\": ["
+    for i in "${!same[@]}"; do
+      sep=","; [[ $i -eq $((${#same[@]} - 1)) ]] && sep=""
+      echo "${same[$i]}$sep"
     done
     echo "  ]"
     echo "}"
@@ -73,6 +96,18 @@ if [[ "${1:-}" == "--sweep" ]]; then
     [[ "$got" == "$n" ]] || { echo "m4_render built for '$got', expected '$n'" >&2; exit 1; }
     cal=$(echo "$m4" | awk -F= '/^calibration/ {print $2}')
     rows+=("    {\"name\": \"$n\", \"setup\": $(per "$m4" setup_sel 0), \"bounds\": $(per "$m4" bounds_sel 0), \"sample\": $(per "$m4" sample_sel 0), \"host_ns\": [$(per "$host" setup_sel 1), $(per "$host" bounds_sel 1), $(per "$host" sample_sel 1)], \"calibration\": $cal}")
+  done
+  # The full unit on each narrower unit's prims: the same work as that unit's row (its image
+  # must be the same, bit for bit).
+  for u in motion-only defocus-only static-only; do
+    echo "m4_report --units: full on the $u prims" >&2
+    UVT_M4_UNIT=full UVT_M4_PRIMS=$u cargo build -q --release -p uvt-core --example m4_render --target thumbv7em-none-eabihf
+    elf=$tdir/thumbv7em-none-eabihf/release/examples/m4_render
+    m4=$(timeout 120 qemu-system-arm -machine mps2-an386 -cpu cortex-m4 -nographic -monitor none \
+        -semihosting-config enable=on,target=native -icount shift=0 -kernel "$elf")
+    [[ "$(field "$m4" prims)" == "$u" ]] || { echo "m4_render not built for the $u prims" >&2; exit 1; }
+    [[ "$(field "$m4" checksum)" == "${sums[$u]}" ]] || { echo "full on the $u prims: checksum $(field "$m4" checksum), the $u unit ${sums[$u]}" >&2; exit 1; }
+    same+=("    {\"prims\": \"$u\", \"setup\": $(per "$m4" setup_unit), \"bounds\": $(per "$m4" bounds_unit), \"sample\": $(per "$m4" sample_unit), \"checksum\": \"$(field "$m4" checksum)\"}")
   done
   tmp=$(mktemp "$json.XXXX")
   {

@@ -230,7 +230,14 @@ pub fn render() -> Result<DemoResult, Error> {
 /// The scene's primitives that unit `U` accepts (in scene order), rendered at the default
 /// precision on `U`: checksum and counters. `render_unit::<Full>()` is [`render`].
 pub fn render_unit<U: Unit>() -> Result<DemoResult, Error> {
-    let prims = unit_prims::<U>()?;
+    render_on::<U, U>()
+}
+
+/// The scene's primitives that unit `V` accepts, rendered on unit `U` (e.g. the full unit on
+/// the static-only unit's prims, for a comparison on the same work). `Err(ClassNotInUnit)`
+/// unless `U` accepts all of them.
+pub fn render_on<U: Unit, V: Unit>() -> Result<DemoResult, Error> {
+    let prims = unit_prims::<V>()?;
     let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLES)?;
     let mut r =
         Renderer::<Laine2011, NTRIS, DefaultPrecision, U>::new(Laine2011, viewport()?, &prims)?;
@@ -333,7 +340,13 @@ pub mod cost {
     /// Setup and the Laine preparation of the prims unit `U` accepts, `reps` times, at the
     /// default precision on `U` (what the unit's program links).
     pub fn setup_all_unit<U: Unit>(reps: u32) -> Result<u64, Error> {
-        let prims = unit_prims::<U>()?;
+        setup_all_on::<U, U>(reps)
+    }
+
+    /// [`setup_all_unit`] on unit `U` with the prims unit `V` accepts (`V`'s work on `U`, for `V`'s
+    /// classes ⊆ `U`'s).
+    pub fn setup_all_on<U: Unit, V: Unit>(reps: u32) -> Result<u64, Error> {
+        let prims = unit_prims::<V>()?;
         let vp = viewport()?;
         let mut ops = Ops::default();
         let mut calls = 0u64;
@@ -351,7 +364,13 @@ pub mod cost {
 
     /// Tile bounds (2×2) of the visible prims unit `U` accepts, `reps` times, on `U`.
     pub fn bounds_all_unit<U: Unit>(reps: u32) -> Result<u64, Error> {
-        let prims = unit_prims::<U>()?;
+        bounds_all_on::<U, U>(reps)
+    }
+
+    /// [`bounds_all_unit`] on unit `U` with the prims unit `V` accepts (`V`'s work on `U`, for `V`'s
+    /// classes ⊆ `U`'s).
+    pub fn bounds_all_on<U: Unit, V: Unit>(reps: u32) -> Result<u64, Error> {
+        let prims = unit_prims::<V>()?;
         let vp = viewport()?;
         let mut ops = Ops::default();
         let mut calls = 0u64;
@@ -374,7 +393,13 @@ pub mod cost {
     /// Sample tests (the 8×8 window of [`samples_class_with`], `reps × SAMPLE_PASSES` passes)
     /// of the visible prims unit `U` accepts, on `U` at the default precision.
     pub fn samples_all_unit<U: Unit>(reps: u32) -> Result<u64, Error> {
-        let prims = unit_prims::<U>()?;
+        samples_all_on::<U, U>(reps)
+    }
+
+    /// [`samples_all_unit`] on unit `U` with the prims unit `V` accepts (`V`'s work on `U`, for `V`'s
+    /// classes ⊆ `U`'s).
+    pub fn samples_all_on<U: Unit, V: Unit>(reps: u32) -> Result<u64, Error> {
+        let prims = unit_prims::<V>()?;
         let vp = viewport()?;
         let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLES)?;
         let mut ops = Ops::default();
