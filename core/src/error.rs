@@ -133,6 +133,17 @@ pub enum Error {
     },
     /// A pixel outside the viewport was asked for.
     PixelOutOfRange,
+    /// A primitive's class needs an effect the renderer's [`crate::unit::Unit`] has no
+    /// hardware for (e.g. a moving triangle in a static-only unit): refused, never rendered
+    /// without the effect.
+    ClassNotInUnit {
+        /// index of the primitive in the list handed to the renderer
+        index: usize,
+        /// its class (`setup::classify`)
+        class: crate::setup::Class,
+        /// the unit's name (`Unit::NAME`)
+        unit: &'static str,
+    },
 }
 
 impl fmt::Display for Error {
@@ -174,6 +185,11 @@ impl fmt::Display for Error {
                 write!(f, "more than {capacity} triangles for this renderer")
             }
             Error::PixelOutOfRange => f.write_str("pixel outside the viewport"),
+            Error::ClassNotInUnit { index, class, unit } => write!(
+                f,
+                "primitive {index}: class {} is not accepted by the {unit} unit",
+                class.name()
+            ),
         }
     }
 }

@@ -53,6 +53,7 @@ pub mod strategies;
 #[cfg(test)]
 mod testrng;
 pub mod tile;
+pub mod unit;
 pub mod wide;
 #[cfg(test)]
 mod width_corners;
@@ -72,4 +73,5 @@ pub use sample::{sample_eval, sample_test, Hit, SampleEval, ScreenPos};
 pub use setup::{setup, setup_scaled, setup_with, Class, Cull, Outcome, Setup};
 pub use stats::{Ops, Stats};
 pub use tile::{resolve_colors, DepthTest, PixelStats, Prim, RenderError, Renderer, TileBuffer};
+pub use unit::{DefocusOnly, Full, MotionOnly, StaticOnly, Unit};
 pub use wide::Wide;
