@@ -269,7 +269,8 @@ pub fn prim_dq(tri: &SceneTri, vp: (u16, u16), r: &Rounding, eps: [f64; 3]) -> O
         }
         for (axis, e) in [(0usize, eps[0]), (1, eps[1])] {
             let dx = r.pos + r.tuv * (b[axis] - a[axis]).abs() + lens + e;
-            let rho = ((a[axis].abs() + a[4].abs()) / a[3]).max((b[axis].abs() + b[4].abs()) / b[3]);
+            let rho =
+                ((a[axis].abs() + a[4].abs()) / a[3]).max((b[axis].abs() + b[4].abs()) / b[3]);
             let px = (dx + rho * dw) / (wmin - dw) * half[axis];
             d = d.max(px);
         }
@@ -360,7 +361,10 @@ pub fn config_fits(
 pub fn narrowest(fits: &[ConfigFit], tol: f64) -> Result<&ConfigFit> {
     let mut bounded: Vec<&ConfigFit> = fits.iter().filter(|f| f.unit_cost.is_some()).collect();
     bounded.sort_by_key(|f| {
-        let c = f.unit_cost.as_ref().map_or((0, 0), |c| (c.dsp48e1, c.bit_products));
+        let c = f
+            .unit_cost
+            .as_ref()
+            .map_or((0, 0), |c| (c.dsp48e1, c.bit_products));
         (c.0, c.1)
     });
     if let Some(f) = bounded.into_iter().find(|f| f.meets) {

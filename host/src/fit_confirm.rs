@@ -11,8 +11,7 @@ use uvt_core::bounds::{BoundsStrategy, TileBounds};
 use uvt_core::strategies::{best, hull, hull_lens, Hyper, LensTime, BEST_SLABS};
 use uvt_core::{
     sample_test, Bounded, DefocusOnly, Full, Laine2011, MotionOnly, Ops, Outcome, PixelRect, Prec,
-    Precision, Prim, Renderer, Rgb888, SamplePattern, ScreenPos, Setup, StaticOnly, Triangle,
-    Unit,
+    Precision, Prim, Renderer, Rgb888, SamplePattern, ScreenPos, Setup, StaticOnly, Triangle, Unit,
 };
 
 use crate::bench::run_strategy_at;
@@ -350,10 +349,7 @@ fn render<P: Precision, B: BoundsStrategy, U: Unit>(
         })
         .map_err(|e| e.to_string())?;
     }
-    let image = samples
-        .chunks(spp)
-        .map(uvt_core::resolve_colors)
-        .collect();
+    let image = samples.chunks(spp).map(uvt_core::resolve_colors).collect();
     Ok(Frame {
         samples,
         image,
@@ -457,7 +453,8 @@ where
             a.beyond_tolerance += b.beyond_tolerance;
             a.max_distance_px = a.max_distance_px.max(b.max_distance_px);
             a.differ_unbounded += b.differ_unbounded;
-            a.max_distance_unbounded_px = a.max_distance_unbounded_px.max(b.max_distance_unbounded_px);
+            a.max_distance_unbounded_px =
+                a.max_distance_unbounded_px.max(b.max_distance_unbounded_px);
             a
         })
 }

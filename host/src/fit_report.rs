@@ -87,7 +87,8 @@ pub fn fit(
     let chosen = narrowest(&fits, tol)?.clone();
     let cfg = Config::parse(&chosen.config)
         .ok_or_else(|| anyhow!("not a configuration: {}", chosen.config))?;
-    let sample_cost = unit_sample_cost(&cfg, terms.0, terms.1).unwrap_or_else(|| full_sample_cost(&cfg));
+    let sample_cost =
+        unit_sample_cost(&cfg, terms.0, terms.1).unwrap_or_else(|| full_sample_cost(&cfg));
     let width = sample_cost.bit_products as f64 / (sample_cost.products.max(1) as f64 * 1024.0);
     let strategies = search(scene, &chosen.config, width)
         .ok_or_else(|| anyhow!("configuration {} has no precision type", chosen.config))??;
