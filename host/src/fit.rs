@@ -264,7 +264,8 @@ pub fn prim_dq(tri: &SceneTri, vp: (u16, u16), r: &Rounding, eps: [f64; 3]) -> O
         let lens = r.pos + r.tuv * (b[4] - a[4]).abs() + r.tuv * cmax;
         let dw = r.pos + r.tuv * (b[3] - a[3]).abs() + eps[2];
         let wmin = a[3].min(b[3]);
-        if !(wmin > dw) {
+        // NaN-safe: anything but "in front by more than Δw" has no bound.
+        if wmin.partial_cmp(&dw) != Some(std::cmp::Ordering::Greater) {
             return None;
         }
         for (axis, e) in [(0usize, eps[0]), (1, eps[1])] {
