@@ -15,6 +15,15 @@
 //! the core's `DefaultPrecision`); the program then also prints `prec NAME` and the cost lines
 //! `setup_sel`, `bounds_sel`, `sample_sel` of that configuration (one instantiation per build;
 //! an unknown name fails the build). `m4_report.sh --sweep` builds and runs every one.
+//!
+//! **Per unit.** `UVT_M4_UNIT` at build time (`full`, `motion-only`, `defocus-only`,
+//! `static-only`; an unknown name fails the build) makes it the program of that unit variant
+//! (`uvt_core::unit`) instead: only the default configuration (`DefaultPrecision`), only the
+//! demo prims the unit accepts, rendered with `Renderer<Laine2011, _, DefaultPrecision, U>`
+//! (checksum and counters) and the cost lines `setup_unit`, `bounds_unit`, `sample_unit` of
+//! those prims on `U`. Nothing of the precision sweep or the exact configuration is in it, so
+//! the `full` program is the same program with `U = Full`. `m4_report.sh --units` builds and
+//! runs all four (and the full unit on each narrower unit's prims: `UVT_M4_PRIMS`).
 #![cfg_attr(target_os = "none", no_std)]
 #![cfg_attr(target_os = "none", no_main)]
 
@@ -88,6 +97,68 @@ macro_rules! with_sel {
     }};
 }
 
+/// The unit chosen at build time (`UVT_M4_UNIT`); `None`: the precision program.
+const UNIT: Option<&str> = option_env!("UVT_M4_UNIT");
+
+/// Index of `UNIT` in `uvt_core::unit::UNIT_NAMES` (0 without `UVT_M4_UNIT`); an unknown name
+/// is a build error.
+const UNIT_SEL: usize = match UNIT {
+    None => 0,
+    Some(u) => {
+        let names = uvt_core::unit::UNIT_NAMES;
+        let mut i = 0;
+        while i < names.len() && !same(names[i], u) {
+            i += 1;
+        }
+        assert!(
+            i < names.len(),
+            "UVT_M4_UNIT must be full, motion-only, defocus-only or static-only"
+        );
+        i
+    }
+};
+
+/// Optional `UVT_M4_PRIMS` (a unit name; default `UVT_M4_UNIT`): run the unit on the demo
+/// prims *this* unit accepts — e.g. the full unit on the static-only unit's prims, to compare
+/// the two on the same work. Its index in `UNIT_NAMES`; an unknown name is a build error.
+const PRIMS_SEL: usize = match option_env!("UVT_M4_PRIMS") {
+    None => UNIT_SEL,
+    Some(u) => {
+        let names = uvt_core::unit::UNIT_NAMES;
+        let mut i = 0;
+        while i < names.len() && !same(names[i], u) {
+            i += 1;
+        }
+        assert!(
+            i < names.len(),
+            "UVT_M4_PRIMS must be full, motion-only, defocus-only or static-only"
+        );
+        i
+    }
+};
+
+/// `f::<U, V>(args)` for the selected unit `U` and prims unit `V` (constant matches: one
+/// instantiation kept).
+macro_rules! with_unit {
+    ($($f:ident)::+, $($arg:expr),*) => {{
+        use uvt_core::{DefocusOnly, Full, MotionOnly, StaticOnly};
+        match crate::UNIT_SEL {
+            0 => with_unit!(@v Full, $($f)::+, $($arg),*),
+            1 => with_unit!(@v MotionOnly, $($f)::+, $($arg),*),
+            2 => with_unit!(@v DefocusOnly, $($f)::+, $($arg),*),
+            _ => with_unit!(@v StaticOnly, $($f)::+, $($arg),*),
+        }
+    }};
+    (@v $u:ident, $($f:ident)::+, $($arg:expr),*) => {
+        match crate::PRIMS_SEL {
+            0 => $($f)::+::<$u, Full>($($arg),*),
+            1 => $($f)::+::<$u, MotionOnly>($($arg),*),
+            2 => $($f)::+::<$u, DefocusOnly>($($arg),*),
+            _ => $($f)::+::<$u, StaticOnly>($($arg),*),
+        }
+    };
+}
+
 /// Print the checksum and counters lines (identical format on target and host).
 macro_rules! report {
     ($out:ident, $r:expr) => {{
@@ -157,7 +228,13 @@ mod target {
 
     #[entry]
     fn main() -> ! {
-        let mut cp = cortex_m::Peripherals::take().expect("peripherals");
+        // Taken once, at reset: always available (no panic message, so no formatting code).
+        let Some(mut cp) = cortex_m::Peripherals::take() else {
+            debug::exit(debug::EXIT_FAILURE);
+            loop {
+                cortex_m::asm::wfi();
+            }
+        };
         cp.SYST.set_clock_source(SystClkSource::Core);
         cp.SYST.set_reload(0x00ff_ffff);
         cp.SYST.enable_counter();
@@ -168,6 +245,9 @@ mod target {
             cortex_m::asm::delay(4_000_000);
             0
         });
+        if crate::UNIT.is_some() {
+            unit_program(&mut cp.SYST, cal);
+        }
         match demo::render() {
             Ok(r) => {
                 report!(hprintln, r);
@@ -216,6 +296,115 @@ mod target {
         }
     }
 
+    /// Output of the unit programs without `core::fmt` (the formatting machinery would be a
+    /// large shared part of every unit's flash): strings and numbers straight to semihosting.
+    struct Plain(Option<cortex_m_semihosting::hio::HostStream>);
+
+    impl Plain {
+        fn s(&mut self, s: &str) -> &mut Self {
+            self.b(s.as_bytes())
+        }
+        #[inline(never)]
+        fn b(&mut self, b: &[u8]) -> &mut Self {
+            if let Some(h) = self.0.as_mut() {
+                // A failed host write loses output only; the test then finds the line missing.
+                let _ = h.write_all(b);
+            }
+            self
+        }
+        /// `v` in decimal, as `{}` prints it.
+        #[inline(never)]
+        fn n(&mut self, v: u64) -> &mut Self {
+            let mut buf = [0u8; 20];
+            let mut i = buf.len();
+            let mut v = v;
+            loop {
+                i -= 1;
+                buf[i] = b'0' + (v % 10) as u8;
+                v /= 10;
+                if v == 0 {
+                    break;
+                }
+            }
+            self.b(&buf[i..])
+        }
+        /// `v` as `{:#010x}` prints it.
+        fn x(&mut self, v: u32) -> &mut Self {
+            let mut buf = *b"0x00000000";
+            for (k, b) in buf[2..].iter_mut().enumerate() {
+                let d = (v >> (28 - 4 * k)) & 0xf;
+                *b = b"0123456789abcdef"[d as usize];
+            }
+            self.b(&buf)
+        }
+        fn cost(&mut self, name: &str, (calls, insn): (u64, u64)) {
+            self.s("cost ")
+                .s(name)
+                .s(" calls=")
+                .n(calls)
+                .s(" insn=")
+                .n(insn)
+                .s("\n");
+        }
+    }
+
+    /// The unit program (`UVT_M4_UNIT`): render and cost of the prims the unit accepts, at the
+    /// default configuration only. Prints the same lines as the other programs.
+    fn unit_program(syst: &mut cortex_m::peripheral::SYST, cal: u64) -> ! {
+        let mut o = Plain(cortex_m_semihosting::hio::hstdout().ok());
+        let Ok(r) = with_unit!(demo::render_on,) else {
+            o.s("error rendering the unit's prims\n");
+            debug::exit(debug::EXIT_FAILURE);
+            loop {
+                cortex_m::asm::wfi();
+            }
+        };
+        let s = r.stats;
+        o.s("checksum ").x(r.checksum).s("\n");
+        o.s("stats triangles=").n(s.triangles);
+        o.s(" culled_outside=").n(s.culled_outside);
+        o.s(" culled_degenerate=").n(s.culled_degenerate);
+        o.s(" static=")
+            .n(s.by_class[0])
+            .s(" motion=")
+            .n(s.by_class[1]);
+        o.s(" defocus=")
+            .n(s.by_class[2])
+            .s(" motion_defocus=")
+            .n(s.by_class[3]);
+        o.s(" tiles_visited=").n(s.tiles_visited);
+        o.s(" tiles_skipped=").n(s.tiles_skipped);
+        o.s(" samples_tested=").n(s.samples_tested);
+        o.s(" samples_covered=").n(s.samples_covered);
+        o.s(" ops_setup=")
+            .n(s.ops.setup)
+            .s(" ops_bounds=")
+            .n(s.ops.bounds);
+        o.s(" ops_sample=").n(s.ops.sample).s("\n");
+        o.s("stack_peak_bytes ").n(peak() as u64).s("\n");
+        o.s("calibration delay(4000000) insn=").n(cal).s("\n");
+        o.s("unit ").s(crate::UNIT.unwrap_or("")).s("\n");
+        o.s("prims ")
+            .s(uvt_core::unit::UNIT_NAMES[crate::PRIMS_SEL])
+            .s("\n");
+        let c = ticks(syst, || {
+            with_unit!(demo::cost::setup_all_on, 20).unwrap_or(0)
+        });
+        o.cost("setup_unit", c);
+        let c = ticks(syst, || {
+            with_unit!(demo::cost::bounds_all_on, 5).unwrap_or(0)
+        });
+        o.cost("bounds_unit", c);
+        let c = ticks(syst, || {
+            with_unit!(demo::cost::samples_all_on, 2).unwrap_or(0)
+        });
+        o.cost("sample_unit", c);
+        debug::exit(debug::EXIT_SUCCESS);
+        loop {
+            cortex_m::asm::wfi();
+        }
+    }
+
     #[panic_handler]
     fn panic(_: &core::panic::PanicInfo) -> ! {
         hprintln!("panic");
@@ -229,6 +418,18 @@ mod target {
 #[cfg(not(target_os = "none"))]
 fn main() {
     use uvt_core::demo;
+    if let Some(name) = UNIT {
+        match with_unit!(demo::render_on,) {
+            Ok(r) => report!(println, r),
+            Err(e) => {
+                eprintln!("error {e}");
+                std::process::exit(1);
+            }
+        }
+        println!("unit {name}");
+        println!("prims {}", uvt_core::unit::UNIT_NAMES[PRIMS_SEL]);
+        return;
+    }
     match demo::render() {
         Ok(r) => report!(println, r),
         Err(e) => {

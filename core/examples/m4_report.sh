@@ -9,9 +9,76 @@
 # precision sweep (UVT_M4_PREC=NAME), runs each on the Cortex-M4F under QEMU and on the host, and
 # writes instructions (and host ns) per setup / tile bounds / sample test to OUT.json (default
 # host/report/m4.json), which `uvt precision` reads.
+#
+# `m4_report.sh --units [OUT.json]` builds m4_render once per unit variant (UVT_M4_UNIT=NAME:
+# the default configuration and the demo prims the unit accepts only), runs each on the
+# Cortex-M4F under QEMU and writes flash (.vector_table + .text + .rodata), .text, RAM (.data +
+# .bss), peak stack, instructions per setup / tile bounds / sample test and the image checksum
+# to OUT.json (default host/report/m4_units.json); then the full unit on each narrower unit's
+# prims (UVT_M4_PRIMS; its checksum must equal that unit's), so the cost per call can be
+# compared on the same work ("full_on_unit_prims").
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 tdir=${CARGO_TARGET_DIR:-target}
+sec() { printf '%d' "0x$(readelf -S -W "$1" | awk -v s="$2" '{for (i = 1; i <= NF; i++) if ($i == s) print $(i + 4)}')"; }
+if [[ "${1:-}" == "--units" ]]; then
+  json=${2:-host/report/m4_units.json}
+  per() { echo "$1" | awk -v s="$2" '$1=="cost" && $2==s {split($3,a,"="); split($4,b,"="); printf "%.0f", b[2]/a[2]}'; }
+  field() { echo "$1" | awk -v k="$2" '$1 == k {print $2}'; }
+  rows=()
+  same=()
+  declare -A sums
+  for u in full motion-only defocus-only static-only; do
+    echo "m4_report --units: $u" >&2
+    UVT_M4_UNIT=$u cargo build -q --release -p uvt-core --example m4_render --target thumbv7em-none-eabihf
+    elf=$tdir/thumbv7em-none-eabihf/release/examples/m4_render
+    m4=$(timeout 120 qemu-system-arm -machine mps2-an386 -cpu cortex-m4 -nographic -monitor none \
+        -semihosting-config enable=on,target=native -icount shift=0 -kernel "$elf")
+    got=$(field "$m4" unit)
+    [[ "$got" == "$u" ]] || { echo "m4_render built for unit '$got', expected '$u'" >&2; exit 1; }
+    cal=$(echo "$m4" | awk -F= '/^calibration/ {print $2}')
+    [[ $cal -ge 7999922 && $cal -le 8000082 ]] || { echo "calibration $cal, expected 8000002 +- 80" >&2; exit 1; }
+    text=$(sec "$elf" .text)
+    flash=$(( $(sec "$elf" .vector_table) + text + $(sec "$elf" .rodata) ))
+    ram=$(( $(sec "$elf" .data) + $(sec "$elf" .bss) ))
+    sums[$u]=$(field "$m4" checksum)
+    rows+=("    {\"unit\": \"$u\", \"flash\": $flash, \"text\": $text, \"ram\": $ram, \"stack\": $(field "$m4" stack_peak_bytes), \"setup\": $(per "$m4" setup_unit), \"bounds\": $(per "$m4" bounds_unit), \"sample\": $(per "$m4" sample_unit), \"checksum\": \"$(field "$m4" checksum)\"}")
+  done
+  # The full unit on each narrower unit's prims: the same work as that unit's row (its image
+  # must be the same, bit for bit).
+  for u in motion-only defocus-only static-only; do
+    echo "m4_report --units: full on the $u prims" >&2
+    UVT_M4_UNIT=full UVT_M4_PRIMS=$u cargo build -q --release -p uvt-core --example m4_render --target thumbv7em-none-eabihf
+    elf=$tdir/thumbv7em-none-eabihf/release/examples/m4_render
+    m4=$(timeout 120 qemu-system-arm -machine mps2-an386 -cpu cortex-m4 -nographic -monitor none \
+        -semihosting-config enable=on,target=native -icount shift=0 -kernel "$elf")
+    [[ "$(field "$m4" prims)" == "$u" ]] || { echo "m4_render not built for the $u prims" >&2; exit 1; }
+    [[ "$(field "$m4" checksum)" == "${sums[$u]}" ]] || { echo "full on the $u prims: checksum $(field "$m4" checksum), the $u unit ${sums[$u]}" >&2; exit 1; }
+    same+=("    {\"prims\": \"$u\", \"setup\": $(per "$m4" setup_unit), \"bounds\": $(per "$m4" bounds_unit), \"sample\": $(per "$m4" sample_unit), \"checksum\": \"$(field "$m4" checksum)\"}")
+  done
+  tmp=$(mktemp "$json.XXXX")
+  {
+    echo "{"
+    echo "  \"command\": \"bash core/examples/m4_report.sh --units\","
+    echo "  \"target\": \"Cortex-M4F (thumbv7em-none-eabihf, QEMU mps2-an386, -icount shift=0): m4_render built with UVT_M4_UNIT; default configuration only; the demo prims the unit accepts; flash = .vector_table + .text + .rodata bytes, ram = .data + .bss bytes, stack = painted peak bytes; setup/bounds/sample = instructions per call\","
+    echo "  \"units\": ["
+    for i in "${!rows[@]}"; do
+      sep=","; [[ $i -eq $((${#rows[@]} - 1)) ]] && sep=""
+      echo "${rows[$i]}$sep"
+    done
+    echo "  ],"
+    echo "  \"full_on_unit_prims\": ["
+    for i in "${!same[@]}"; do
+      sep=","; [[ $i -eq $((${#same[@]} - 1)) ]] && sep=""
+      echo "${same[$i]}$sep"
+    done
+    echo "  ]"
+    echo "}"
+  } > "$tmp"
+  mv "$tmp" "$json"
+  cat "$json"
+  exit 0
+fi
 if [[ "${1:-}" == "--sweep" ]]; then
   json=${2:-host/report/m4.json}
   names=(exact-16-16-16 bounded-16-16-16-20 bounded-16-16-16-22 bounded-16-16-16-24
@@ -29,6 +96,18 @@ if [[ "${1:-}" == "--sweep" ]]; then
     [[ "$got" == "$n" ]] || { echo "m4_render built for '$got', expected '$n'" >&2; exit 1; }
     cal=$(echo "$m4" | awk -F= '/^calibration/ {print $2}')
     rows+=("    {\"name\": \"$n\", \"setup\": $(per "$m4" setup_sel 0), \"bounds\": $(per "$m4" bounds_sel 0), \"sample\": $(per "$m4" sample_sel 0), \"host_ns\": [$(per "$host" setup_sel 1), $(per "$host" bounds_sel 1), $(per "$host" sample_sel 1)], \"calibration\": $cal}")
+  done
+  # The full unit on each narrower unit's prims: the same work as that unit's row (its image
+  # must be the same, bit for bit).
+  for u in motion-only defocus-only static-only; do
+    echo "m4_report --units: full on the $u prims" >&2
+    UVT_M4_UNIT=full UVT_M4_PRIMS=$u cargo build -q --release -p uvt-core --example m4_render --target thumbv7em-none-eabihf
+    elf=$tdir/thumbv7em-none-eabihf/release/examples/m4_render
+    m4=$(timeout 120 qemu-system-arm -machine mps2-an386 -cpu cortex-m4 -nographic -monitor none \
+        -semihosting-config enable=on,target=native -icount shift=0 -kernel "$elf")
+    [[ "$(field "$m4" prims)" == "$u" ]] || { echo "m4_render not built for the $u prims" >&2; exit 1; }
+    [[ "$(field "$m4" checksum)" == "${sums[$u]}" ]] || { echo "full on the $u prims: checksum $(field "$m4" checksum), the $u unit ${sums[$u]}" >&2; exit 1; }
+    same+=("    {\"prims\": \"$u\", \"setup\": $(per "$m4" setup_unit), \"bounds\": $(per "$m4" bounds_unit), \"sample\": $(per "$m4" sample_unit), \"checksum\": \"$(field "$m4" checksum)\"}")
   done
   tmp=$(mktemp "$json.XXXX")
   {
@@ -58,7 +137,6 @@ for p in "${profiles[@]}"; do
   out[$name]=$(timeout 120 qemu-system-arm -machine "$machine" -cpu "$cpu" -nographic -monitor none \
       -semihosting-config enable=on,target=native -icount shift=0 -kernel "${elf[$name]}")
 done
-sec() { printf '%d' "0x$(readelf -S -W "$1" | awk -v s="$2" '{for (i = 1; i <= NF; i++) if ($i == s) print $(i + 4)}')"; }
 field() { echo "$1" | awk -v k="$2" '$1 == k {print $2}'; }
 echo "checksum: M4F $(field "${out[M4F]}" checksum), M3 $(field "${out[M3]}" checksum), host $(field "$host" checksum)"
 echo "calibration (8000002 expected): M4F $(echo "${out[M4F]}" | awk -F= '/^calibration/ {print $2}'), M3 $(echo "${out[M3]}" | awk -F= '/^calibration/ {print $2}')"

@@ -43,6 +43,7 @@
 //! A sample position outside the viewport (`xs ≥ 256W` or `ys ≥ 256H`) is never covered: the
 //! range proofs above assume `|2xs − 256W| ≤ 256W`, and a renderer never asks.
 
+use crate::formats::Precision;
 use crate::formats::{
     DEPTH_FAR, DEPTH_FRAC, DEPTH_NEAR, OFFSET_SHIFT_MAX, OFFSET_SHIFT_MIN, SUBPIXEL_BITS, TUV_FRAC,
 };
@@ -50,6 +51,7 @@ use crate::input::{Sample, Viewport, C, W, X, Y, Z};
 use crate::sample::{Hit, ScreenPos};
 use crate::setup::{Class, Setup};
 use crate::stats::Ops;
+use crate::unit::{Full, Unit};
 
 /// 2^16: one t/u/v step.
 const TUV_SCALE: i64 = 1 << TUV_FRAC;
@@ -449,13 +451,7 @@ fn eval_class<const MOTION: bool, const DEFOCUS: bool, const G20: bool>(
 /// The bounded sample test with its intermediates, offsets on the grid `2^shift`. Counts its
 /// arithmetic in `ops.sample`. `None` for a position outside the viewport (module docs) or a
 /// `shift` outside [`OFFSET_SHIFT_MIN`]..=[`OFFSET_SHIFT_MAX`] (the range the proofs cover).
-// 256W, 256H ≤ 2^19 and xs < 256W, ys < 256H (checked): every `Ctx` value in its range.
 #[inline]
-#[allow(
-    clippy::arithmetic_side_effects,
-    clippy::cast_possible_wrap,
-    clippy::cast_sign_loss
-)]
 pub fn bounded_eval(
     setup: &Setup,
     shift: u32,
@@ -463,6 +459,24 @@ pub fn bounded_eval(
     s: &Sample,
     ops: &mut Ops,
 ) -> Option<BoundedEval> {
+    let c = ctx(setup, shift, pos, s)?;
+    // The default grid 2^20 gets its own copy with the rounding constants folded in.
+    if shift == OFFSET_SHIFT_MIN {
+        eval_unit::<Full, true>(setup, &c, ops)
+    } else {
+        eval_unit::<Full, false>(setup, &c, ops)
+    }
+}
+
+/// The per-sample constants of [`bounded_eval`]; `None` as documented there.
+// 256W, 256H ≤ 2^19 and xs < 256W, ys < 256H (checked): every `Ctx` value in its range.
+#[inline]
+#[allow(
+    clippy::arithmetic_side_effects,
+    clippy::cast_possible_wrap,
+    clippy::cast_sign_loss
+)]
+fn ctx(setup: &Setup, shift: u32, pos: ScreenPos, s: &Sample) -> Option<Ctx> {
     if !(OFFSET_SHIFT_MIN..=OFFSET_SHIFT_MAX).contains(&shift) {
         return None;
     }
@@ -474,7 +488,7 @@ pub fn bounded_eval(
         return None;
     }
     let (xs, ys) = (pos.xs as i32, pos.ys as i32);
-    let c = Ctx {
+    Some(Ctx {
         t: s.t().to_bits(),
         u: s.u().to_bits(),
         v: s.v().to_bits(),
@@ -485,17 +499,28 @@ pub fn bounded_eval(
         // 2^31 >> (32 − S) = 2^(S−1) (a right shift of a constant; 32 − S ∈ 0..=12).
         half: (1i64 << 31) >> (OFFSET_SHIFT_MAX - shift),
         fine: shift - OFFSET_SHIFT_MIN,
-    };
-    // The default grid 2^20 gets its own copy with the rounding constants folded in.
-    Some(match (setup.class, shift == OFFSET_SHIFT_MIN) {
-        (Class::Static, true) => eval_class::<false, false, true>(setup, &c, ops),
-        (Class::Motion, true) => eval_class::<true, false, true>(setup, &c, ops),
-        (Class::Defocus, true) => eval_class::<false, true, true>(setup, &c, ops),
-        (Class::MotionDefocus, true) => eval_class::<true, true, true>(setup, &c, ops),
-        (Class::Static, false) => eval_class::<false, false, false>(setup, &c, ops),
-        (Class::Motion, false) => eval_class::<true, false, false>(setup, &c, ops),
-        (Class::Defocus, false) => eval_class::<false, true, false>(setup, &c, ops),
-        (Class::MotionDefocus, false) => eval_class::<true, true, false>(setup, &c, ops),
+    })
+}
+
+/// Class dispatch on unit `U` (grid `G20` fixed): only the classes `U` accepts are
+/// instantiated (`U::MOTION && class.motion()` is the class's own flag for an accepted class,
+/// a constant `false` where `U` lacks the effect); `None` for a class `U` does not accept.
+#[inline(always)]
+fn eval_unit<U: Unit, const G20: bool>(
+    setup: &Setup,
+    c: &Ctx,
+    ops: &mut Ops,
+) -> Option<BoundedEval> {
+    if !U::accepts(setup.class) {
+        return None;
+    }
+    let m = U::MOTION && setup.class.motion();
+    let d = U::DEFOCUS && setup.class.defocus();
+    Some(match (m, d) {
+        (false, false) => eval_class::<false, false, G20>(setup, c, ops),
+        (true, false) => eval_class::<true, false, G20>(setup, c, ops),
+        (false, true) => eval_class::<false, true, G20>(setup, c, ops),
+        (true, true) => eval_class::<true, true, G20>(setup, c, ops),
     })
 }
 
@@ -504,4 +529,23 @@ pub fn bounded_eval(
 pub fn bounded_test(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> Option<Hit> {
     let shift = setup.prec.offset_shift().unwrap_or(OFFSET_SHIFT_MIN);
     bounded_eval(setup, shift, pos, s, ops)?.hit
+}
+
+/// [`bounded_test`] of precision `P` on unit `U`, for a setup of precision `P`: the grid is
+/// `P`'s constant (so one grid's copy is compiled) and only the classes `U` accepts are
+/// instantiated; `None` (not covered) for a class `U` does not accept.
+#[inline]
+pub fn bounded_test_unit<P: Precision, U: Unit>(
+    setup: &Setup,
+    pos: ScreenPos,
+    s: &Sample,
+    ops: &mut Ops,
+) -> Option<Hit> {
+    let shift = P::OFFSET_SHIFT.unwrap_or(OFFSET_SHIFT_MIN);
+    let c = ctx(setup, shift, pos, s)?;
+    if shift == OFFSET_SHIFT_MIN {
+        eval_unit::<U, true>(setup, &c, ops)?.hit
+    } else {
+        eval_unit::<U, false>(setup, &c, ops)?.hit
+    }
 }

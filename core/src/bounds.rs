@@ -45,6 +45,7 @@ use crate::input::{PixelRect, Triangle, W};
 use crate::interval::{solve_le64, Interval, RecipConstraint};
 use crate::setup::{axis_coord, Setup};
 use crate::stats::Ops;
+use crate::unit::{Full, Unit};
 
 /// The (u, v, t) box of one bounds tile.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -118,6 +119,22 @@ pub trait BoundsStrategy {
         tile: PixelRect,
         ops: &mut Ops,
     ) -> Option<Self::Tile>;
+    /// [`Self::prepare`] on unit `U` for a setup whose class `U` accepts (the renderer
+    /// checks): the same value, with the terms of the effects `U` lacks compiled out where the
+    /// strategy gates them (default: `prepare` itself).
+    fn prepare_unit<U: Unit>(&self, setup: &Setup, ops: &mut Ops) -> Self::Coeffs {
+        self.prepare(setup, ops)
+    }
+    /// [`Self::tile`] on unit `U`, as [`Self::prepare_unit`].
+    fn tile_unit<U: Unit>(
+        &self,
+        setup: &Setup,
+        c: &Self::Coeffs,
+        tile: PixelRect,
+        ops: &mut Ops,
+    ) -> Option<Self::Tile> {
+        self.tile(setup, c, tile, ops)
+    }
 }
 
 /// The bounding-box scan: every sample of the footprint is tested, whatever its (u, v, t)
@@ -306,17 +323,34 @@ impl BoundsStrategy for Laine2011 {
     }
 
     fn prepare(&self, setup: &Setup, ops: &mut Ops) -> LaineCoeffs {
+        self.prepare_unit::<Full>(setup, ops)
+    }
+
+    fn tile(
+        &self,
+        setup: &Setup,
+        c: &LaineCoeffs,
+        tile: PixelRect,
+        ops: &mut Ops,
+    ) -> Option<UvtBox> {
+        self.tile_unit::<Full>(setup, c, tile, ops)
+    }
+
+    // Gated on the unit: lens terms only with `U::DEFOCUS`, dual lines only with `U::MOTION`
+    // (for an accepted class the same coefficients: a class without defocus gets no lens axis,
+    // one without motion no dual axis, on every unit).
+    fn prepare_unit<U: Unit>(&self, setup: &Setup, ops: &mut Ops) -> LaineCoeffs {
         // Filled in place (no array `map` of the ~100-byte axis values: each would be copied).
         let mut c = LaineCoeffs {
             lens: [None; 2],
             dual: [None; 2],
         };
-        if setup.class.defocus() {
+        if U::DEFOCUS && setup.class.defocus() {
             for (a, slot) in c.lens.iter_mut().enumerate() {
                 *slot = Some(lens_axis(setup, a, ops));
             }
         }
-        if setup.class.motion() {
+        if U::MOTION && setup.class.motion() {
             let ext = [setup.viewport.w, setup.viewport.h];
             for ((a, slot), e) in c.dual.iter_mut().enumerate().zip(ext) {
                 let ex = setup.eps.x.get(a).copied().unwrap_or(0);
@@ -334,7 +368,7 @@ impl BoundsStrategy for Laine2011 {
         c
     }
 
-    fn tile(
+    fn tile_unit<U: Unit>(
         &self,
         setup: &Setup,
         c: &LaineCoeffs,
@@ -350,7 +384,7 @@ impl BoundsStrategy for Laine2011 {
             ..UvtBox::FULL
         };
         for (axis, &(p0, p1)) in xs.iter().enumerate() {
-            if let Some(Some(l)) = c.lens.get(axis) {
+            if let (true, Some(Some(l))) = (U::DEFOCUS, c.lens.get(axis)) {
                 let lens = lens_s(l, p0, p1, setup.prec.bnd(), ops)?
                     .s_to_lens()
                     .round_out(setup.prec.tuv());
@@ -360,7 +394,7 @@ impl BoundsStrategy for Laine2011 {
                     b.v = lens;
                 }
             }
-            if let Some(Some(d)) = c.dual.get(axis) {
+            if let (true, Some(Some(d))) = (U::MOTION, c.dual.get(axis)) {
                 b.t =
                     b.t.meet(dual_t(d, p0, p1, ops)?.round_out(setup.prec.tuv()))?;
             }

@@ -11,12 +11,14 @@ use embedded_graphics_core::pixelcolor::{Rgb888, RgbColor};
 
 use crate::bounds::{BoundsStrategy, Laine2011};
 use crate::error::Error;
+use crate::formats::DefaultPrecision;
 use crate::formats::{Coord, Lens, SubPixel, Time};
 use crate::input::{Sample, SamplePattern, Triangle, Vertex, Viewport};
-use crate::sample::{sample_test, ScreenPos};
-use crate::setup::Outcome;
+use crate::sample::{sample_test, sample_test_unit, ScreenPos};
+use crate::setup::{classify, setup_unit, Outcome};
 use crate::stats::{Ops, Stats};
 use crate::tile::{Prim, Renderer};
+use crate::unit::Unit;
 
 /// Viewport side.
 pub const SIZE: u16 = 32;
@@ -220,11 +222,25 @@ pub struct DemoResult {
     pub stats: Stats,
 }
 
-/// Render the scene and return checksum and counters.
+/// Render the scene and return checksum and counters (the full unit, default precision).
 pub fn render() -> Result<DemoResult, Error> {
-    let prims = prims()?;
+    render_unit::<crate::unit::Full>()
+}
+
+/// The scene's primitives that unit `U` accepts (in scene order), rendered at the default
+/// precision on `U`: checksum and counters. `render_unit::<Full>()` is [`render`].
+pub fn render_unit<U: Unit>() -> Result<DemoResult, Error> {
+    render_on::<U, U>()
+}
+
+/// The scene's primitives that unit `V` accepts, rendered on unit `U` (e.g. the full unit on
+/// the static-only unit's prims, for a comparison on the same work). `Err(ClassNotInUnit)`
+/// unless `U` accepts all of them.
+pub fn render_on<U: Unit, V: Unit>() -> Result<DemoResult, Error> {
+    let prims = unit_prims::<V>()?;
     let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLES)?;
-    let mut r = Renderer::<Laine2011, NTRIS>::new(Laine2011, viewport()?, &prims)?;
+    let mut r =
+        Renderer::<Laine2011, NTRIS, DefaultPrecision, U>::new(Laine2011, viewport()?, &prims)?;
     let mut image = [[0u8; 3]; NPIXELS];
     r.render_with::<8, 8, SPP>(
         &pattern,
@@ -248,6 +264,19 @@ pub fn render() -> Result<DemoResult, Error> {
         checksum: h,
         stats: r.stats,
     })
+}
+
+/// The scene's primitives whose class unit `U` accepts, in scene order.
+pub fn unit_prims<U: Unit>() -> Result<heapless::Vec<Prim, NTRIS>, Error> {
+    let mut out = heapless::Vec::new();
+    for p in prims()? {
+        if U::accepts(classify(&p.tri)) {
+            // At most NTRIS of NTRIS prims: the push cannot fail.
+            out.push(p)
+                .map_err(|_| Error::TooManyTriangles { capacity: NTRIS })?;
+        }
+    }
+    Ok(out)
 }
 
 /// Per-stage workloads for cost measurement: each runs one stage of the scene `reps` times and
@@ -302,6 +331,97 @@ pub mod cost {
                 for cell in s.footprint().cells(2) {
                     black_box(Laine2011.tile(black_box(&s), &c, cell, &mut ops));
                     calls = calls.saturating_add(1);
+                }
+            }
+        }
+        Ok(calls)
+    }
+
+    /// Setup and the Laine preparation of the prims unit `U` accepts, `reps` times, at the
+    /// default precision on `U` (what the unit's program links).
+    pub fn setup_all_unit<U: Unit>(reps: u32) -> Result<u64, Error> {
+        setup_all_on::<U, U>(reps)
+    }
+
+    /// [`setup_all_unit`] on unit `U` with the prims unit `V` accepts (`V`'s work on `U`, for `V`'s
+    /// classes ⊆ `U`'s).
+    pub fn setup_all_on<U: Unit, V: Unit>(reps: u32) -> Result<u64, Error> {
+        let prims = unit_prims::<V>()?;
+        let vp = viewport()?;
+        let mut ops = Ops::default();
+        let mut calls = 0u64;
+        for _ in 0..reps {
+            for p in prims.iter() {
+                let out = setup_unit::<DefaultPrecision, U>(black_box(&p.tri), vp, &mut ops);
+                if let Ok(Outcome::Visible(s)) = black_box(out) {
+                    black_box(Laine2011.prepare_unit::<U>(&s, &mut ops));
+                }
+                calls = calls.saturating_add(1);
+            }
+        }
+        Ok(calls)
+    }
+
+    /// Tile bounds (2×2) of the visible prims unit `U` accepts, `reps` times, on `U`.
+    pub fn bounds_all_unit<U: Unit>(reps: u32) -> Result<u64, Error> {
+        bounds_all_on::<U, U>(reps)
+    }
+
+    /// [`bounds_all_unit`] on unit `U` with the prims unit `V` accepts (`V`'s work on `U`, for `V`'s
+    /// classes ⊆ `U`'s).
+    pub fn bounds_all_on<U: Unit, V: Unit>(reps: u32) -> Result<u64, Error> {
+        let prims = unit_prims::<V>()?;
+        let vp = viewport()?;
+        let mut ops = Ops::default();
+        let mut calls = 0u64;
+        for p in prims.iter() {
+            let Ok(Outcome::Visible(s)) = setup_unit::<DefaultPrecision, U>(&p.tri, vp, &mut ops)
+            else {
+                continue;
+            };
+            let c = Laine2011.prepare_unit::<U>(&s, &mut ops);
+            for _ in 0..reps {
+                for cell in s.footprint().cells(2) {
+                    black_box(Laine2011.tile_unit::<U>(black_box(&s), &c, cell, &mut ops));
+                    calls = calls.saturating_add(1);
+                }
+            }
+        }
+        Ok(calls)
+    }
+
+    /// Sample tests (the 8×8 window of [`samples_class_with`], `reps × SAMPLE_PASSES` passes)
+    /// of the visible prims unit `U` accepts, on `U` at the default precision.
+    pub fn samples_all_unit<U: Unit>(reps: u32) -> Result<u64, Error> {
+        samples_all_on::<U, U>(reps)
+    }
+
+    /// [`samples_all_unit`] on unit `U` with the prims unit `V` accepts (`V`'s work on `U`, for `V`'s
+    /// classes ⊆ `U`'s).
+    pub fn samples_all_on<U: Unit, V: Unit>(reps: u32) -> Result<u64, Error> {
+        let prims = unit_prims::<V>()?;
+        let vp = viewport()?;
+        let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLES)?;
+        let mut ops = Ops::default();
+        let mut calls = 0u64;
+        for p in prims.iter() {
+            let Ok(Outcome::Visible(s)) = setup_unit::<DefaultPrecision, U>(&p.tri, vp, &mut ops)
+            else {
+                continue;
+            };
+            for _ in 0..reps.saturating_mul(SAMPLE_PASSES) {
+                for py in 12..20u16 {
+                    for px in 12..20u16 {
+                        for smp in pattern.pixel(px, py) {
+                            black_box(sample_test_unit::<DefaultPrecision, U>(
+                                black_box(&s),
+                                ScreenPos::of(px, py, smp),
+                                smp,
+                                &mut ops,
+                            ));
+                            calls = calls.saturating_add(1);
+                        }
+                    }
                 }
             }
         }

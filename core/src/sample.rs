@@ -46,9 +46,11 @@ const TUV_SCALE: i64 = 1 << TUV_FRAC;
 const SUBPIXEL_SCALE: u32 = 1 << SUBPIXEL_BITS;
 /// 2^24: the depth quotient's scale.
 const DEPTH_SCALE: i128 = 1 << DEPTH_FRAC;
+use crate::formats::Precision;
 use crate::input::{Sample, Viewport, C, W, X, Y, Z};
 use crate::setup::{Class, Setup};
 use crate::stats::Ops;
+use crate::unit::{Full, Unit};
 use crate::wide::Wide;
 
 /// A sample's screen position in 1/256 pixel: `xs = 256·column + sx`, `ys = 256·row + sy`.
@@ -103,19 +105,31 @@ pub struct Hit {
 /// The scalings are multiplications by the constant 2^16 (no shift), so debug builds' overflow
 /// checks see them; `tests::positions_at_the_domain_corners` drives the extremes.
 #[allow(clippy::arithmetic_side_effects)]
+#[cfg(test)]
 pub(crate) fn positions(setup: &Setup, s: &Sample, ops: &mut Ops) -> ([[i64; 4]; 3], u32) {
+    positions_unit::<Full>(setup, s, ops)
+}
+
+/// `positions` on unit `U`: the class arms `U` lacks are compiled out (an accepted class
+/// takes the same arm).
+#[allow(clippy::arithmetic_side_effects)] // ranges at `positions`
+fn positions_unit<U: Unit>(setup: &Setup, s: &Sample, ops: &mut Ops) -> ([[i64; 4]; 3], u32) {
     let [v0, v1] = &setup.tri.v;
     let t = i64::from(s.t().to_bits());
     let (u, v) = (i64::from(s.u().to_bits()), i64::from(s.v().to_bits()));
     let mut out = [[0i64; 4]; 3];
-    let frac = match setup.class {
-        Class::Static => {
+    let gated = (
+        U::MOTION && setup.class.motion(),
+        U::DEFOCUS && setup.class.defocus(),
+    );
+    let frac = match gated {
+        (false, false) => {
             for (q, o) in v0.iter().zip(out.iter_mut()) {
                 *o = [q[X], q[Y], q[W], q[Z]].map(i64::from);
             }
             16
         }
-        Class::Motion => {
+        (true, false) => {
             for ((q, r), o) in v0.iter().zip(v1.iter()).zip(out.iter_mut()) {
                 let l = lerp5(q, r, t);
                 *o = [l[X], l[Y], l[W], l[Z]];
@@ -123,7 +137,7 @@ pub(crate) fn positions(setup: &Setup, s: &Sample, ops: &mut Ops) -> ([[i64; 4];
             }
             32
         }
-        Class::Defocus => {
+        (false, true) => {
             for (q, o) in v0.iter().zip(out.iter_mut()) {
                 let c = i64::from(q[C]);
                 *o = [
@@ -136,7 +150,7 @@ pub(crate) fn positions(setup: &Setup, s: &Sample, ops: &mut Ops) -> ([[i64; 4];
             }
             32
         }
-        Class::MotionDefocus => {
+        (true, true) => {
             for ((q, r), o) in v0.iter().zip(v1.iter()).zip(out.iter_mut()) {
                 let l = lerp5(q, r, t);
                 let c = l[C];
@@ -258,6 +272,17 @@ pub struct SampleEval {
 /// exact test, whatever the setup's precision; a `Bounded` setup's rounded intermediates come
 /// from [`crate::bounded::bounded_eval`].
 pub fn sample_eval(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> SampleEval {
+    sample_eval_unit::<Full>(setup, pos, s, ops)
+}
+
+/// [`sample_eval`] on unit `U` for a setup whose class `U` accepts (the renderer checks): the
+/// same value, the class terms `U` lacks compiled out.
+pub fn sample_eval_unit<U: Unit>(
+    setup: &Setup,
+    pos: ScreenPos,
+    s: &Sample,
+    ops: &mut Ops,
+) -> SampleEval {
     let d = direction(setup.viewport, pos);
     ops.add_sample(5);
     if let (Class::Static, Some(st)) = (setup.class, setup.edges.as_ref()) {
@@ -283,7 +308,7 @@ pub fn sample_eval(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> 
             }),
         };
     }
-    let (p, _frac) = positions(setup, s, ops);
+    let (p, _frac) = positions_unit::<U>(setup, s, ops);
     let n = [
         cross(&p[1], &p[2]),
         cross(&p[2], &p[0]),
@@ -318,4 +343,24 @@ pub fn sample_test(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> 
         return crate::bounded::bounded_test(setup, pos, s, ops);
     }
     sample_eval(setup, pos, s, ops).hit
+}
+
+/// The sample test of precision `P` on unit `U`, chosen at compile time: `P`'s bounded test
+/// ([`crate::bounded::bounded_test_unit`]) or the exact one, with only the classes `U`
+/// accepts instantiated. For a setup of precision `P` whose class `U` accepts, the same hit as
+/// [`sample_test`]; a class `U` does not accept is never covered (the renderer refuses it
+/// before setup).
+pub fn sample_test_unit<P: Precision, U: Unit>(
+    setup: &Setup,
+    pos: ScreenPos,
+    s: &Sample,
+    ops: &mut Ops,
+) -> Option<Hit> {
+    if !U::accepts(setup.class) {
+        return None;
+    }
+    if P::OFFSET_SHIFT.is_some() {
+        return crate::bounded::bounded_test_unit::<P, U>(setup, pos, s, ops);
+    }
+    sample_eval_unit::<U>(setup, pos, s, ops).hit
 }

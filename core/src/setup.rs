@@ -20,6 +20,7 @@ use crate::formats::{DefaultPrecision, PixelCoord, Precision, PrecisionBits};
 use crate::input::{PixelRect, Triangle, Viewport, C, W, X, Y, Z};
 use crate::interval::{solve_le64, Interval};
 use crate::stats::Ops;
+use crate::unit::{Full, Unit};
 
 /// Which effects a triangle has; the class decides which work is skipped.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -567,10 +568,10 @@ pub(crate) fn det3(p: &[[i128; 3]; 3]) -> i128 {
 // Ranges: j, u, v ∈ {0..3}; (3 − j)·q + j·r ≤ 3·2^29, plus u·c ≤ 3·2^29: |P| < 2^32 < 2^33 as
 // `det3` needs.
 #[allow(clippy::arithmetic_side_effects)]
-fn degenerate(tri: &Triangle, class: Class, ops: &mut Ops) -> bool {
+fn degenerate(tri: &Triangle, (motion, defocus): (bool, bool), ops: &mut Ops) -> bool {
     let [v0, v1] = &tri.v;
-    let tj: &[i128] = if class.motion() { &[0, 1, 2, 3] } else { &[0] };
-    let lens: &[i128] = if class.defocus() { &[0, 1] } else { &[0] };
+    let tj: &[i128] = if motion { &[0, 1, 2, 3] } else { &[0] };
+    let lens: &[i128] = if defocus { &[0, 1] } else { &[0] };
     for &j in tj {
         for &u in lens {
             for &v in lens {
@@ -668,8 +669,63 @@ pub fn setup_scaled<P: Precision>(
     den: u32,
     ops: &mut Ops,
 ) -> Outcome {
-    let prec = PrecisionBits::of::<P>();
+    setup_gated::<P, Full>(tri, classify(tri), vp, num, den, ops)
+}
+
+/// Setup on unit `U` ([`crate::unit`]) at precision `P`: `Err(class)` (nothing computed
+/// beyond [`classify`]) when `U` does not accept the triangle's class, else exactly
+/// [`setup_with::<P>`]'s outcome. The terms of the classes `U` lacks are compiled out: the
+/// stages read the unit's view of the triangle ([`unit_view`]: t0 fields only without
+/// motion, no CoC without defocus), which equals the triangle for every class `U` accepts.
+pub fn setup_unit<P: Precision, U: Unit>(
+    tri: &Triangle,
+    vp: Viewport,
+    ops: &mut Ops,
+) -> Result<Outcome, Class> {
     let class = classify(tri);
+    if !U::accepts(class) {
+        return Err(class);
+    }
+    Ok(setup_gated::<P, U>(
+        &unit_view::<U>(tri),
+        class,
+        vp,
+        1,
+        1,
+        ops,
+    ))
+}
+
+/// The fields of `tri` unit `U` reads: the shutter-close vertices replaced by the open ones
+/// without `U::MOTION`, the CoC set to 0 without `U::DEFOCUS`. For a triangle whose class `U`
+/// accepts this is the triangle itself: a class without motion has equal ends (`classify`), one
+/// without defocus every CoC 0. Compiled per unit, so the full unit copies the triangle as is.
+pub fn unit_view<U: Unit>(tri: &Triangle) -> Triangle {
+    let mut t = *tri;
+    if !U::MOTION {
+        let [v0, _] = t.v;
+        t.v = [v0, v0];
+    }
+    if !U::DEFOCUS {
+        for p in t.v.iter_mut().flatten() {
+            p[C] = 0;
+        }
+    }
+    t
+}
+
+/// [`setup_scaled`] of a triangle of `class` that `U` accepts (the caller checks): every class
+/// branch is `U::MOTION && class.motion()` (`U::DEFOCUS && …`), the same value for an accepted
+/// class and a constant `false` where the unit lacks the effect.
+fn setup_gated<P: Precision, U: Unit>(
+    tri: &Triangle,
+    class: Class,
+    vp: Viewport,
+    num: u32,
+    den: u32,
+    ops: &mut Ops,
+) -> Outcome {
+    let prec = PrecisionBits::of::<P>();
     // Exact precisions decide on the type's constant: their instantiation carries no epsilon
     // code, so the exact setup compiles (and costs on the Cortex-M4F) as before the epsilon.
     let exact = P::OFFSET_SHIFT.is_none();
@@ -686,9 +742,11 @@ pub fn setup_scaled<P: Precision>(
             .and_then(|x| i32::try_from(x).ok())
             .unwrap_or(0)
     };
+    // Without motion ε_w is 0 for every accepted class (`Eps::of`); stating it lets the unit
+    // drop the twelve-corner box code.
     let eps = Eps {
         x: full.x.map(scale),
-        w: scale(full.w),
+        w: if U::MOTION { scale(full.w) } else { 0 },
     };
     ops.add_setup(30);
     let span = match if exact {
@@ -700,7 +758,8 @@ pub fn setup_scaled<P: Precision>(
         None => return Outcome::Culled(Cull::Outside),
     };
     // A bounded test decides on a perturbed triangle, which need not be degenerate.
-    if exact && degenerate(tri, class, ops) {
+    let gated = (U::MOTION && class.motion(), U::DEFOCUS && class.defocus());
+    if exact && degenerate(tri, gated, ops) {
         return Outcome::Culled(Cull::Degenerate);
     }
     let (ew, eh) = (vp.w as i64, vp.h as i64);
@@ -709,10 +768,17 @@ pub fn setup_scaled<P: Precision>(
             exact_boxes(tri, 0, ew, prec.bnd(), ops),
             exact_boxes(tri, 1, eh, prec.bnd(), ops),
         ]
-    } else {
+    } else if U::MOTION {
         [
             axis_boxes(tri, 0, ew, prec.bnd(), &eps, ops),
             axis_boxes(tri, 1, eh, prec.bnd(), &eps, ops),
+        ]
+    } else {
+        // ε_w = 0 without motion: `axis_boxes`' six-point branch, without its twelve-point one.
+        let ex = |axis: usize| eps.x.get(axis).copied().unwrap_or(0);
+        [
+            corner_boxes::<1, 6>(tri, 0, ew, prec.bnd(), ex(0), [0], ops),
+            corner_boxes::<1, 6>(tri, 1, eh, prec.bnd(), ex(1), [0], ops),
         ]
     };
     let (x0, x1) = axis_range(&axes[0], vp.w, prec.bnd());

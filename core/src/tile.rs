@@ -20,8 +20,8 @@ use crate::bounds::{BoundsStrategy, TileBounds};
 use crate::error::Error;
 use crate::formats::{DefaultPrecision, Precision, DEPTH_EMPTY, MAX_VIEWPORT};
 use crate::input::{PixelRect, SamplePattern, Triangle, Viewport, MAX_PATTERN};
-use crate::sample::{sample_test, ScreenPos};
-use crate::setup::{classify, setup_with, Cull, Outcome, Setup};
+use crate::sample::{sample_test_unit, ScreenPos};
+use crate::setup::{classify, setup_unit, Cull, Outcome, Setup};
 use crate::stats::{Ops, Stats};
 use crate::unit::{Full, Unit};
 
@@ -231,16 +231,23 @@ impl<B: BoundsStrategy, const N: usize, P: Precision, U: Unit> Renderer<B, N, P,
             setups: heapless::Vec::new(),
             stats: Stats::default(),
         };
-        for p in prims {
+        for (index, p) in prims.iter().enumerate() {
             Stats::inc(&mut r.stats.triangles);
-            match setup_with::<P>(&p.tri, vp, &mut r.stats.ops) {
+            // Every class is accepted (checked above): `Err` cannot occur; were it to, the
+            // primitive is refused, never rendered.
+            let outcome = setup_unit::<P, U>(&p.tri, vp, &mut r.stats.ops);
+            match outcome.map_err(|class| Error::ClassNotInUnit {
+                index,
+                class,
+                unit: U::NAME,
+            })? {
                 Outcome::Culled(Cull::Outside) => Stats::inc(&mut r.stats.culled_outside),
                 Outcome::Culled(Cull::Degenerate) => Stats::inc(&mut r.stats.culled_degenerate),
                 Outcome::Visible(s) => {
                     if let Some(c) = r.stats.by_class.get_mut(s.class.index()) {
                         Stats::inc(c);
                     }
-                    let coeffs = r.bounds.prepare(&s, &mut r.stats.ops);
+                    let coeffs = r.bounds.prepare_unit::<U>(&s, &mut r.stats.ops);
                     r.setups
                         .push((s, coeffs, p.color))
                         .map_err(|_| Error::TooManyTriangles { capacity: N })?;
@@ -295,12 +302,14 @@ impl<B: BoundsStrategy, const N: usize, P: Precision, U: Unit> Renderer<B, N, P,
             }
             for cell in region.cells(b) {
                 Stats::inc(&mut self.stats.tiles_visited);
-                let bounds = self.bounds.tile(setup, coeffs, cell, &mut self.stats.ops);
+                let bounds = self
+                    .bounds
+                    .tile_unit::<U>(setup, coeffs, cell, &mut self.stats.ops);
                 let Some(uvt) = bounds else {
                     Stats::inc(&mut self.stats.tiles_skipped);
                     continue;
                 };
-                shade_cell(
+                shade_cell::<_, P, U, TW, TH, S>(
                     setup,
                     &uvt,
                     cell,
@@ -388,7 +397,14 @@ impl<B: BoundsStrategy, const N: usize, P: Precision, U: Unit> Renderer<B, N, P,
 
 /// Test the samples of one bounds tile that fall inside its intervals.
 #[allow(clippy::too_many_arguments)]
-fn shade_cell<T: TileBounds, const TW: usize, const TH: usize, const S: usize>(
+fn shade_cell<
+    T: TileBounds,
+    P: Precision,
+    U: Unit,
+    const TW: usize,
+    const TH: usize,
+    const S: usize,
+>(
     setup: &Setup,
     uvt: &T,
     cell: PixelRect,
@@ -412,7 +428,7 @@ fn shade_cell<T: TileBounds, const TW: usize, const TH: usize, const S: usize>(
                     continue;
                 }
                 Stats::inc(&mut stats.samples_tested);
-                let hit = sample_test(setup, ScreenPos::of(px, py, s), s, &mut ops);
+                let hit = sample_test_unit::<P, U>(setup, ScreenPos::of(px, py, s), s, &mut ops);
                 let ps = fb.stats.get_mut(ty).and_then(|r| r.get_mut(tx));
                 if let Some(ps) = ps {
                     ps.tested = ps.tested.saturating_add(1);

@@ -2,9 +2,16 @@
 //! `thumbv7em-none-eabihf` (Cortex-M4F, QEMU `mps2-an386`) and for `thumbv7m-none-eabi`
 //! (Cortex-M3 without FPU, QEMU `mps2-an385`), run under `qemu-system-arm` with a time limit, and
 //! its checksum and counters must equal the host's for the same scene through the same core.
+//! Each unit variant's program (`UVT_M4_UNIT`, Cortex-M4F only) must equal the host render of
+//! the same prims on the same unit.
 
 use std::path::PathBuf;
 use std::process::Command;
+use std::sync::Mutex;
+
+/// The Cortex-M4F builds share one target directory and one output path: one build-and-run at
+/// a time.
+static M4F: Mutex<()> = Mutex::new(());
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..")
@@ -12,7 +19,10 @@ fn root() -> PathBuf {
 
 /// The lines the program prints for checksum and counters, computed on the host.
 fn host_lines() -> (String, String) {
-    let r = uvt_core::demo::render().expect("demo renders on the host");
+    lines(uvt_core::demo::render().expect("demo renders on the host"))
+}
+
+fn lines(r: uvt_core::demo::DemoResult) -> (String, String) {
     let s = r.stats;
     (
         format!("checksum {:#010x}", r.checksum),
@@ -27,10 +37,23 @@ fn host_lines() -> (String, String) {
 /// Build the program for `target`, run it on QEMU's `machine` with `cpu`, and check it against the
 /// host.
 fn bit_exact_under_qemu(target: &str, machine: &str, cpu: &str) {
+    let _one = M4F.lock().unwrap_or_else(|e| e.into_inner());
+    let text = build_and_run(target, machine, cpu, None);
+    check_output(&text, host_lines(), target, machine, cpu);
+}
+
+/// Build `m4_render` for `target` (as unit `unit`'s program, or the default program) and run it
+/// on QEMU's `machine`; its standard output.
+fn build_and_run(target: &str, machine: &str, cpu: &str, unit: Option<&str>) -> String {
     // Build in a separate target directory so the outer `cargo test` lock is not contended.
     let tdir = root().join("target").join("m4-test");
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
-    let st = Command::new(cargo)
+    let mut cmd = Command::new(cargo);
+    match unit {
+        Some(u) => cmd.env("UVT_M4_UNIT", u),
+        None => cmd.env_remove("UVT_M4_UNIT"),
+    };
+    let st = cmd
         .current_dir(root())
         .args([
             "build",
@@ -56,20 +79,26 @@ fn bit_exact_under_qemu(target: &str, machine: &str, cpu: &str) {
         .arg(&elf)
         .output()
         .expect("qemu-system-arm not runnable: tests/run.sh installs the Debian package qemu-system-arm");
-    let text = String::from_utf8_lossy(&out.stdout);
+    let text = String::from_utf8_lossy(&out.stdout).into_owned();
     assert!(
         out.status.success(),
-        "qemu {machine} ({target}) exited {:?} (124 = time limit)\nstdout:\n{text}\nstderr:\n{}",
+        "qemu {machine} ({target}, unit {unit:?}) exited {:?} (124 = time limit)\nstdout:\n{text}\nstderr:\n{}",
         out.status,
         String::from_utf8_lossy(&out.stderr)
     );
+    text
+}
+
+/// The program's checksum and counters lines equal the host's; calibration and stack
+/// plausible.
+fn check_output(text: &str, host: (String, String), target: &str, machine: &str, cpu: &str) {
     let line = |p: &str| {
         text.lines()
             .find(|l| l.starts_with(p))
             .unwrap_or_else(|| panic!("no '{p}' line in:\n{text}"))
             .to_string()
     };
-    let (checksum, stats) = host_lines();
+    let (checksum, stats) = host;
     assert_eq!(
         line("checksum "),
         checksum,
@@ -112,4 +141,34 @@ fn cortex_m4f_under_qemu_is_bit_exact_with_host() {
 #[test]
 fn cortex_m3_under_qemu_is_bit_exact_with_host() {
     bit_exact_under_qemu("thumbv7m-none-eabi", "mps2-an385", "cortex-m3");
+}
+
+/// Each unit variant's Cortex-M4F program (the demo prims the unit accepts, default
+/// configuration) against the host render of the same prims on the same unit.
+#[test]
+fn cortex_m4f_unit_programs_are_bit_exact_with_host() {
+    use uvt_core::demo::render_unit;
+    use uvt_core::{DefocusOnly, Full, MotionOnly, StaticOnly, Unit};
+    let _one = M4F.lock().unwrap_or_else(|e| e.into_inner());
+    let host = [
+        (Full::NAME, render_unit::<Full>()),
+        (MotionOnly::NAME, render_unit::<MotionOnly>()),
+        (DefocusOnly::NAME, render_unit::<DefocusOnly>()),
+        (StaticOnly::NAME, render_unit::<StaticOnly>()),
+    ];
+    for (name, r) in host {
+        let r = r.unwrap_or_else(|e| panic!("unit {name}: host render: {e}"));
+        let text = build_and_run(
+            "thumbv7em-none-eabihf",
+            "mps2-an386",
+            "cortex-m4",
+            Some(name),
+        );
+        assert!(
+            text.lines().any(|l| l == format!("unit {name}")),
+            "the program was not built for unit {name}:\n{text}"
+        );
+        let cpu = format!("cortex-m4 (unit {name})");
+        check_output(&text, lines(r), "thumbv7em-none-eabihf", "mps2-an386", &cpu);
+    }
 }
