@@ -181,14 +181,34 @@ pub struct M4Unit {
     pub checksum: String,
 }
 
+/// The full unit's instructions on the primitives a narrower unit accepts
+/// (`full_on_unit_prims` of `m4_units.json`): the same work as that unit's row.
+#[derive(Clone, Debug, Deserialize, Serialize)]
+pub struct M4FullOn {
+    /// the narrower unit whose primitives the full unit rendered
+    pub prims: String,
+    /// instructions per setup
+    pub setup: f64,
+    /// per tile bounds
+    pub bounds: f64,
+    /// per sample test
+    pub sample: f64,
+}
+
 #[derive(Deserialize)]
 struct M4Units {
     units: Vec<M4Unit>,
+    #[serde(default)]
+    full_on_unit_prims: Vec<M4FullOn>,
 }
+
+/// `m4_units.json`: the units and the full unit's instructions on each narrower unit's
+/// primitives.
+pub type M4Data = (Vec<M4Unit>, Vec<M4FullOn>);
 
 /// Read `m4_units.json` if it exists (`None` if absent); a file that exists but does not parse
 /// is an error naming it.
-pub fn load_m4_units(path: &Path) -> Result<Option<Vec<M4Unit>>> {
+pub fn load_m4_units(path: &Path) -> Result<Option<M4Data>> {
     if !path.exists() {
         return Ok(None);
     }
@@ -200,7 +220,7 @@ pub fn load_m4_units(path: &Path) -> Result<Option<Vec<M4Unit>>> {
             path.display()
         )
     })?;
-    Ok(Some(f.units))
+    Ok(Some((f.units, f.full_on_unit_prims)))
 }
 
 /// Markdown: the unit-variant table (`uvt units`) at configuration `cfg`.

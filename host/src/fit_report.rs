@@ -10,7 +10,7 @@ use uvt_core::Class;
 
 use crate::fit::{
     classes, config_fits, full_sample_cost, narrowest, unit_for, unit_sample_cost, unit_terms,
-    ConfigFit, M4Unit, UnitCost, DEFAULT_TOLERANCE_PX,
+    ConfigFit, M4Data, M4Unit, UnitCost, DEFAULT_TOLERANCE_PX,
 };
 use crate::fit_confirm::{confirm, search, Confirm, StratCost};
 use crate::scene::Scene;
@@ -66,7 +66,7 @@ pub struct Fit {
 pub fn fit(
     scene: &Scene,
     tolerance: Option<f64>,
-    m4: Option<Vec<M4Unit>>,
+    m4: Option<M4Data>,
     m4_path: &Path,
 ) -> Result<Fit> {
     let (tol, source) = match tolerance {
@@ -116,9 +116,15 @@ pub fn fit(
     .ok_or_else(|| anyhow!("cannot confirm {} / {}", chosen.config, best.strategy))??;
     let default_cfg =
         Config::parse(DEFAULT_CONFIG).ok_or_else(|| anyhow!("bad default configuration"))?;
-    let m4 = m4.and_then(|rows| {
+    // The full unit's instructions on this unit's primitives when measured (same work), else
+    // on the full demo; flash and RAM are the programs'.
+    let m4 = m4.and_then(|(rows, on)| {
         let find = |n: &str| rows.iter().find(|r| r.unit == n).cloned();
-        Some([find(unit)?, find("full")?])
+        let mut full = find("full")?;
+        if let Some(o) = on.iter().find(|o| o.prims == unit) {
+            (full.setup, full.bounds, full.sample) = (o.setup, o.bounds, o.sample);
+        }
+        Some([find(unit)?, full])
     });
     let ok = conf.ok();
     Ok(Fit {
@@ -292,7 +298,7 @@ pub fn fit_md(f: &Fit) -> String {
                 s += &format!("| {n} | {a:.0} | {b:.0} | {} |\n", saved(a, b));
             }
             s += &format!(
-                "\nM4F figures from `{}` (the units at the configuration that file was measured at).\n",
+                "\nM4F figures from `{}` (measured at the configuration named there; the full unit's instructions on the primitives this unit accepts where the file has them, `full_on_unit_prims`).\n",
                 f.m4_path
             );
         }

@@ -521,7 +521,11 @@ fn run(cli: Cli) -> Result<()> {
         Cmd::Units { config, m4_units } => {
             let cfg = parse_config(&config)?;
             let m4 = uvt_host::fit::load_m4_units(&m4_units)?;
-            say(&uvt_host::fit::units_md(&cfg, m4.as_deref(), &m4_units))?;
+            say(&uvt_host::fit::units_md(
+                &cfg,
+                m4.as_ref().map(|m| m.0.as_slice()),
+                &m4_units,
+            ))?;
         }
         Cmd::Stress { dir } => {
             let scenes = uvt_host::precision::stress_scenes(&dir)?;
