@@ -132,6 +132,38 @@ enum Cmd {
         #[arg(long)]
         config: Option<String>,
     },
+    /// Which unit a scene needs: the smallest unit variant, the narrowest configuration whose
+    /// documented error distance meets the tolerance, the cheapest bounds strategy and tile size;
+    /// then a confirming render (exit status non-zero if a confirmation fails). Writes
+    /// DIR/fit.md and DIR/fit.json.
+    Fit {
+        /// scene file (JSON, format in host/scenes/README.md)
+        scene: PathBuf,
+        /// largest allowed distance (px) from an edge of a decision differing from the exact
+        /// image (default 1/32 px; host/src/fit.rs says why)
+        #[arg(long, allow_hyphen_values = true)]
+        tolerance: Option<String>,
+        /// output directory for fit.md and fit.json
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+        /// Cortex-M4F figures per unit (`bash core/examples/m4_report.sh --units` writes it);
+        /// "not measured" when absent
+        #[arg(long, default_value = "host/report/m4_units.json")]
+        m4_units: PathBuf,
+        /// memory budget of the scene, e.g. 512M or 8G
+        #[arg(long, default_value = "4G")]
+        mem_budget: String,
+    },
+    /// The unit-variant table: per unit flash, RAM and M4F instructions (from m4_units.json)
+    /// and the sample test's multiplier estimate restricted to the unit's stages.
+    Units {
+        /// configuration name (exact-P-T-B or bounded-P-T-B-O)
+        #[arg(long, default_value = "bounded-16-16-16-20")]
+        config: String,
+        /// Cortex-M4F figures per unit
+        #[arg(long, default_value = "host/report/m4_units.json")]
+        m4_units: PathBuf,
+    },
     /// Stiff and extreme cases: STE, error against f64 and conservativeness per scene file.
     Stress {
         /// folder of scene files
@@ -446,6 +478,55 @@ fn run(cli: Cli) -> Result<()> {
             }
             None => say(&uvt_host::cost::summary_md())?,
         },
+        Cmd::Fit {
+            scene,
+            tolerance,
+            out,
+            m4_units,
+            mem_budget,
+        } => {
+            let tol = tolerance
+                .as_deref()
+                .map(uvt_host::fit::parse_tolerance)
+                .transpose()?;
+            render::check_out_dir(&out)?;
+            let m4 = uvt_host::fit::load_m4_units(&m4_units)?;
+            let load = LoadOpts {
+                mem_budget: budget::parse_size(&mem_budget).context("--mem-budget")?,
+                ..LoadOpts::default()
+            };
+            let l = Scene::load_with(&scene, &load)?;
+            for w in &l.warnings {
+                eprintln!("uvt: warning: {}: {w}", scene.display());
+            }
+            let f = uvt_host::fit_report::fit(&l.scene, tol, m4, &m4_units)
+                .with_context(|| format!("uvt fit {}", scene.display()))?;
+            let md = uvt_host::fit_report::fit_md(&f);
+            std::fs::create_dir_all(&out)
+                .with_context(|| format!("cannot create {}", out.display()))?;
+            write_atomic(&out.join("fit.md"), md.as_bytes())?;
+            write_atomic(
+                &out.join("fit.json"),
+                (serde_json::to_string_pretty(&f)? + "\n").as_bytes(),
+            )?;
+            say(&md)?;
+            if !f.ok {
+                bail!(
+                    "{}: the confirmation failed (see {})",
+                    scene.display(),
+                    out.join("fit.md").display()
+                );
+            }
+        }
+        Cmd::Units { config, m4_units } => {
+            let cfg = parse_config(&config)?;
+            let m4 = uvt_host::fit::load_m4_units(&m4_units)?;
+            say(&uvt_host::fit::units_md(
+                &cfg,
+                m4.as_ref().map(|m| m.0.as_slice()),
+                &m4_units,
+            ))?;
+        }
         Cmd::Stress { dir } => {
             let scenes = uvt_host::precision::stress_scenes(&dir)?;
             let rows: Vec<_> = scenes
