@@ -237,7 +237,7 @@ impl Fast {
     /// not use are 0.
     #[inline(always)]
     #[allow(clippy::arithmetic_side_effects)]
-    fn new<const MOTION: bool, const DEFOCUS: bool>(
+    fn new<const MOTION: bool, const DEFOCUS: bool, const G20: bool>(
         vp: Viewport,
         xs: i32,
         ys: i32,
@@ -252,9 +252,12 @@ impl Fast {
         } else {
             (0, 0)
         };
-        // `shift` − 9 ∈ 11..=23: the right shift of a constant is 2^(S−9) ≥ 2048.
+        // `G20`: the default grid 2^20, with the constants below folded.
+        let shift = if G20 { OFFSET_SHIFT_MIN } else { shift };
+        // `shift` − 9 ∈ 11..=23: the right shift of a constant is 2^(S−9) ≥ 2048, a power of
+        // two, so max(W, H) < 2^(S−9) iff W | H < 2^(S−9).
         let side = (1u32 << 23) >> (OFFSET_SHIFT_MAX - shift);
-        if t == HALF || u == ONE || v == ONE || u32::from(vp.w.max(vp.h)) >= side {
+        if t == HALF || u == ONE || v == ONE || u32::from(vp.w | vp.h) >= side {
             return None;
         }
         let late = t > HALF;
@@ -435,17 +438,23 @@ pub(crate) fn depth_quotient(num: i64, den: i64) -> i64 {
 /// Depth z/w from the rounded edge values (step 8; rounding as in `sample.rs`: floor), `wz`
 /// the step-1 (w, z) of each vertex.
 ///
-/// `E'' = floor(E'/2^sh)` with `sh = max(0, bitlen(max|E'|) − 24)` (the bit length of the
-/// largest magnitude is that of the OR of the magnitudes): |E''| ≤ 2^24 (exact in i32);
+/// Called on covered samples only. `E'' = floor(E'/2^sh)` with `sh = max(0, bitlen(max|E'|) −
+/// 24)` (the bit length of the largest magnitude is that of the OR of the magnitudes): |E''| ≤ 2^24 (exact in i32);
 /// |w|, |z| ≤ 2^29, so each product ≤ 2^53 (SMULL/SMLAL) and the oriented sums
 /// |num|, |den| < 2^55. With `den > 0` (else `DEPTH_FAR`): `num ≥ 2^7·den` means a quotient
 /// ≥ 2^31 (saturates to `DEPTH_FAR`), `num ≤ −2^7·den` one ≤ −2^31 (`DEPTH_NEAR`); otherwise
 /// [`depth_quotient`] is exact and in [−2^31, 2^31), clamped to `DEPTH_FAR` at the top. This is
 /// `clamp(floor(num·2^24/den), DEPTH_NEAR, DEPTH_FAR)` exactly, as the 128-bit division gave.
 #[inline]
-#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+#[allow(
+    clippy::arithmetic_side_effects,
+    clippy::cast_possible_truncation,
+    clippy::cast_sign_loss
+)]
 fn depth(e: &[i64; 3], wz: &[(i32, i32); 3], sign: i64) -> i32 {
-    let big = e.iter().fold(0, |m, x| m | x.unsigned_abs());
+    // A covered sample's E' are each 0 or of the orientation's sign, so |E'| = sign·E'
+    // (|E'| < 2^61: the negation cannot overflow).
+    let big = e.iter().fold(0, |m, &x| m | if sign < 0 { -x } else { x }) as u64;
     let len = u64::BITS - big.leading_zeros();
     // Floor shift by sh ≤ 37 (|E'| < 2^61): an arithmetic right shift, exact floor.
     let sh = len.saturating_sub(24);
@@ -492,9 +501,34 @@ const fn class_ops(motion: bool, defocus: bool) -> u64 {
     m + d + 2 + 3 * 8 + 9
 }
 
+/// `sign(Σ E'_k·w_k)` (|E'| < 2^61, |w| ≤ 2^29, so |Σ| < 2^92) without 128-bit arithmetic:
+/// with `E' = h·2^32 + l` (`h = E' >> 32`, |h| < 2^29; `l` = the low word, 0 ≤ l < 2^32),
+/// `Σ E'·w = H·2^32 + L` with `H = Σ h·w` (|.| < 3·2^58) and `L = Σ l·w` (|.| < 3·2^61 < 2^63),
+/// both exact in i64; moving `floor(L/2^32)` into H leaves `H'·2^32 + L'` with 0 ≤ L' < 2^32
+/// (|H'| < 2^61), whose sign is that of H', or of L' when H' = 0. `bounded_frozen` compares it
+/// with the i128 sum of the frozen copy.
+#[inline]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+fn det_sign(e: &[i64; 3], w: [i32; 3]) -> i64 {
+    let (mut hi, mut lo) = (0i64, 0i64);
+    for (&ek, wk) in e.iter().zip(w) {
+        // Arithmetic shift by the constant 32 (floor) and the low word (< 2^32, exact in i64).
+        hi += (ek >> 32) * i64::from(wk);
+        lo += i64::from(ek as u32) * i64::from(wk);
+    }
+    // Shift by the constant 32 (floor); the mask keeps the low word, ≥ 0.
+    let hi = hi + (lo >> 32);
+    let lo = lo & 0xffff_ffff;
+    if hi != 0 {
+        hi.signum()
+    } else {
+        i64::from(lo != 0)
+    }
+}
+
 /// Orientation and coverage (steps 6–7) when some `w ≤ 0` or some `E' = 0` (the fast path in
-/// [`eval_class`] takes the rest): with every w > 0 the common sign of the `E'` (0 if they
-/// have both signs or are all 0), else `sign(Σ E'_k·w_k)` (64 × 32 → i128, |Σ| < 2^92); edges
+/// [`finish`] takes the rest): with every w > 0 the common sign of the `E'` (0 if they
+/// have both signs or are all 0), else `sign(Σ E'_k·w_k)` ([`det_sign`], |Σ| < 2^92); edges
 /// with `E' = 0` go to the fill rule. Returns (orientation, covered) and counts its operations.
 #[cold]
 #[inline(never)]
@@ -507,12 +541,7 @@ fn decide_slow(e: [i64; 3], p: [(i32, i32, i32); 3], n: &mut u64) -> (i64, bool)
         i64::from(pos && !neg) - i64::from(neg && !pos)
     } else {
         *n += 6;
-        let det: i128 = e
-            .iter()
-            .zip(p.iter())
-            .map(|(&ek, &(_, _, wk))| i128::from(ek) * i128::from(wk))
-            .sum();
-        i64::from(det > 0) - i64::from(det < 0)
+        det_sign(&e, p.map(|(_, _, w)| w))
     };
     let covered = sign != 0
         && e.iter().enumerate().all(|(k, &ek)| {
@@ -583,7 +612,7 @@ fn finish<const MOTION: bool, const DEFOCUS: bool>(
 /// general datapath for the inputs [`Fast::new`] refuses. `xs`, `ys` inside the viewport and
 /// `shift` ∈ 20..=32 (checked by the caller).
 #[inline(always)]
-fn eval_fast<const MOTION: bool, const DEFOCUS: bool>(
+fn eval_fast<const MOTION: bool, const DEFOCUS: bool, const G20: bool>(
     setup: &Setup,
     shift: u32,
     xs: i32,
@@ -591,7 +620,7 @@ fn eval_fast<const MOTION: bool, const DEFOCUS: bool>(
     s: &Sample,
     ops: &mut Ops,
 ) -> BoundedEval {
-    let Some(f) = Fast::new::<MOTION, DEFOCUS>(setup.viewport, xs, ys, s, shift) else {
+    let Some(f) = Fast::new::<MOTION, DEFOCUS, G20>(setup.viewport, xs, ys, s, shift) else {
         return eval_general_class(setup, shift, xs, ys, s, ops);
     };
     let [v0, v1] = &setup.tri.v;
@@ -716,16 +745,24 @@ pub fn bounded_eval(
         return None;
     }
     let (xs, ys) = (pos.xs as i32, pos.ys as i32);
-    Some(match setup.class {
-        Class::Static => eval_fast::<false, false>(setup, shift, xs, ys, s, ops),
-        Class::Motion => eval_fast::<true, false>(setup, shift, xs, ys, s, ops),
-        Class::Defocus => eval_fast::<false, true>(setup, shift, xs, ys, s, ops),
-        Class::MotionDefocus => eval_fast::<true, true>(setup, shift, xs, ys, s, ops),
+    // The default grid 2^20 gets its own copy with the scaling constants folded in.
+    Some(match (setup.class, shift == OFFSET_SHIFT_MIN) {
+        (Class::Static, true) => eval_fast::<false, false, true>(setup, shift, xs, ys, s, ops),
+        (Class::Motion, true) => eval_fast::<true, false, true>(setup, shift, xs, ys, s, ops),
+        (Class::Defocus, true) => eval_fast::<false, true, true>(setup, shift, xs, ys, s, ops),
+        (Class::MotionDefocus, true) => eval_fast::<true, true, true>(setup, shift, xs, ys, s, ops),
+        (Class::Static, false) => eval_fast::<false, false, false>(setup, shift, xs, ys, s, ops),
+        (Class::Motion, false) => eval_fast::<true, false, false>(setup, shift, xs, ys, s, ops),
+        (Class::Defocus, false) => eval_fast::<false, true, false>(setup, shift, xs, ys, s, ops),
+        (Class::MotionDefocus, false) => {
+            eval_fast::<true, true, false>(setup, shift, xs, ys, s, ops)
+        }
     })
 }
 
 /// The bounded sample test: the depth on a hit (`S` = the setup's offset shift; a setup of the
 /// exact test is evaluated at the finest grid, [`OFFSET_SHIFT_MIN`]).
+#[inline]
 pub fn bounded_test(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> Option<Hit> {
     let shift = setup.prec.offset_shift().unwrap_or(OFFSET_SHIFT_MIN);
     bounded_eval(setup, shift, pos, s, ops)?.hit
