@@ -400,6 +400,7 @@ fn div64_32(u: u64, v: u32) -> u32 {
     clippy::cast_possible_wrap,
     clippy::cast_sign_loss
 )]
+#[inline]
 pub(crate) fn depth_quotient(num: i64, den: i64) -> i64 {
     // den > 0: the conversion is exact.
     let den = den as u64;
@@ -529,19 +530,17 @@ fn det_sign(e: &[i64; 3], w: [i32; 3]) -> i64 {
 /// Orientation and coverage (steps 6–7) when some `w ≤ 0` or some `E' = 0` (the fast path in
 /// [`finish`] takes the rest): with every w > 0 the common sign of the `E'` (0 if they
 /// have both signs or are all 0), else `sign(Σ E'_k·w_k)` ([`det_sign`], |Σ| < 2^92); edges
-/// with `E' = 0` go to the fill rule. Returns (orientation, covered) and counts its operations.
+/// with `E' = 0` go to the fill rule. Returns (orientation, covered, operations counted).
 #[cold]
 #[inline(never)]
 #[allow(clippy::arithmetic_side_effects)]
-fn decide_slow(e: [i64; 3], p: [(i32, i32, i32); 3], n: &mut u64) -> (i64, bool) {
-    let sign = if p.iter().all(|&(_, _, w)| w > 0) {
-        *n += 3;
+fn decide_slow(e: [i64; 3], p: [(i32, i32, i32); 3]) -> (i64, bool, u64) {
+    let (sign, n) = if p.iter().all(|&(_, _, w)| w > 0) {
         let pos = e.iter().any(|&x| x > 0);
         let neg = e.iter().any(|&x| x < 0);
-        i64::from(pos && !neg) - i64::from(neg && !pos)
+        (i64::from(pos && !neg) - i64::from(neg && !pos), 3)
     } else {
-        *n += 6;
-        det_sign(&e, p.map(|(_, _, w)| w))
+        (det_sign(&e, p.map(|(_, _, w)| w)), 6)
     };
     let covered = sign != 0
         && e.iter().enumerate().all(|(k, &ek)| {
@@ -551,7 +550,7 @@ fn decide_slow(e: [i64; 3], p: [(i32, i32, i32); 3], n: &mut u64) -> (i64, bool)
                 (ek > 0) == (sign > 0)
             }
         });
-    (sign, covered)
+    (sign, covered, n)
 }
 
 /// Edges, orientation, coverage and depth (steps 5–8) from the rounded offsets `ab` of the
@@ -590,7 +589,9 @@ fn finish<const MOTION: bool, const DEFOCUS: bool>(
         }
     } else {
         let [(w0, _), (w1, _), (w2, _)] = wz();
-        decide_slow(e, [(a0, b0, w0), (a1, b1, w1), (a2, b2, w2)], &mut n)
+        let (sign, covered, k) = decide_slow(e, [(a0, b0, w0), (a1, b1, w1), (a2, b2, w2)]);
+        n += k;
+        (sign, covered)
     };
     let hit = covered.then(|| {
         n += 12;
@@ -632,7 +633,14 @@ fn eval_fast<const MOTION: bool, const DEFOCUS: bool, const G20: bool>(
     let (a1, bb1, w1) = fast_vertex::<MOTION, DEFOCUS>(b1, o1, &f);
     let (a2, bb2, w2) = fast_vertex::<MOTION, DEFOCUS>(b2, o2, &f);
     let wpos = w0 > 0 && w1 > 0 && w2 > 0;
-    let wz = || fast_wz::<MOTION>(setup, f.tq, f.late);
+    // Motion classes recompute w and z out of line; the others only load them.
+    let wz = || {
+        if MOTION {
+            fast_wz::<MOTION>(setup, f.tq, f.late)
+        } else {
+            [b0, b1, b2].map(|v| (v[W], v[Z]))
+        }
+    };
     finish::<MOTION, DEFOCUS>([(a0, bb0), (a1, bb1), (a2, bb2)], wpos, wz, ops)
 }
 
