@@ -745,6 +745,25 @@ pub fn bounded_eval(
     if !(OFFSET_SHIFT_MIN..=OFFSET_SHIFT_MAX).contains(&shift) {
         return None;
     }
+    eval_at(setup, shift, pos, s, ops)
+}
+
+/// [`bounded_eval`] for a `shift` ∈ [`OFFSET_SHIFT_MIN`]..=[`OFFSET_SHIFT_MAX`] (the caller's
+/// obligation): the position check and the dispatch by class and grid.
+// 256W, 256H ≤ 2^19 and xs < 256W, ys < 256H (checked): every value in its range.
+#[inline(always)]
+#[allow(
+    clippy::arithmetic_side_effects,
+    clippy::cast_possible_wrap,
+    clippy::cast_sign_loss
+)]
+fn eval_at(
+    setup: &Setup,
+    shift: u32,
+    pos: ScreenPos,
+    s: &Sample,
+    ops: &mut Ops,
+) -> Option<BoundedEval> {
     let vp = setup.viewport;
     let sw = SUBPIXEL_SCALE * i32::from(vp.w);
     let sh = SUBPIXEL_SCALE * i32::from(vp.h);
@@ -768,10 +787,26 @@ pub fn bounded_eval(
     })
 }
 
+/// Whether [`bounded_eval`] takes the fast datapath for these inputs (for the boundary tests;
+/// inputs as [`bounded_eval`] accepts them).
+#[cfg(test)]
+#[allow(clippy::cast_possible_wrap)]
+pub(crate) fn takes_fast_path(setup: &Setup, shift: u32, pos: ScreenPos, s: &Sample) -> bool {
+    let (vp, xs, ys) = (setup.viewport, pos.xs as i32, pos.ys as i32);
+    match setup.class {
+        Class::Static => Fast::new::<false, false, false>(vp, xs, ys, s, shift).is_some(),
+        Class::Motion => Fast::new::<true, false, false>(vp, xs, ys, s, shift).is_some(),
+        Class::Defocus => Fast::new::<false, true, false>(vp, xs, ys, s, shift).is_some(),
+        Class::MotionDefocus => Fast::new::<true, true, false>(vp, xs, ys, s, shift).is_some(),
+    }
+}
+
 /// The bounded sample test: the depth on a hit (`S` = the setup's offset shift; a setup of the
 /// exact test is evaluated at the finest grid, [`OFFSET_SHIFT_MIN`]).
 #[inline]
 pub fn bounded_test(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> Option<Hit> {
+    // A setup's shift is in range by construction (`PrecisionBits::of` of a sealed precision
+    // whose OFF is checked at compile time), so `bounded_eval`'s range check is not repeated.
     let shift = setup.prec.offset_shift().unwrap_or(OFFSET_SHIFT_MIN);
-    bounded_eval(setup, shift, pos, s, ops)?.hit
+    eval_at(setup, shift, pos, s, ops)?.hit
 }
