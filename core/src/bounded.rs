@@ -13,11 +13,24 @@
 //! | 3 offsets | `A = 256W·x − (2xs − 256W)·w`, `B = 256H·y − (256H − 2ys)·w` | none (exact) | 20 × 31 → i64, \|A\| < 1.5·2^49 |
 //! | 4 grid | `a' = rnd_S(A)`, `b' = rnd_S(B)` | nearest, ties up, 2^(S−1) | result \|a'\| < 2^(50−S) ≤ 2^30 (i32) |
 //! | 5 edges | `E'_k = a'_{k+1}·b'_{k+2} − a'_{k+2}·b'_{k+1}` | none | 32 × 32 → i64, \|E'\| < 2^61 |
-//! | 6 orientation | all `w_k > 0`: the common sign of the `E'_k`, no product; else `sign(Σ E'_k·w_k)` | none | **rare path** 64 × 32 → i128, \|Σ\| < 2^92 |
+//! | 6 orientation | all `w_k > 0`: the common sign of the `E'_k`, no product; else `sign(Σ E'_k·w_k)` | none | **rare path** \|Σ\| < 2^92, its sign from two i64 sums of the high and low words of E' times w (`det_sign`, no 128-bit arithmetic) |
 //! | 7 fill rule (`E'_k = 0`) | tie key `κ = cmp((b', a', w)_{k+1}, (b', a', w)_{k+2})` (lexicographic, −1/0/1); the sample is inside edge k iff `s·κ > 0` | none | comparators only, no multiplier |
 //! | 8 depth (hits only) | `E'' = floor(E'/2^sh)` with \|E''\| ≤ 2^24 (`sh` = bit length of max\|E'\| − 24, ≥ 0), `num = Σ E''·z`, `den = Σ E''·w` | floor | 25 × 30 → i64 sums < 2^55; quotient `floor(num·2^24/den)` saturated to the depth range: saturation from `num` vs `±2^7·den`, then a 64-by-32-bit long division in 32-bit divides with an exact correction (`depth_quotient`) |
 //!
 //! `w` and `z` here are the step-1 values (exact for static and defocus-only triangles).
+//!
+//! **Software form (the Cortex-M4 cost).** The values above are computed by one of two
+//! datapaths with identical results. The fast one (`fast_vertex`) scales one factor of every
+//! rounded product so that its rounding point is 2^32 and the result is the rounded high word of
+//! a 32 × 32 → 64 product: the lerps and the lens offsets are one SMMLAR each (`f0 +
+//! floor((T·2^16·d + 2^31)/2^32)`, T measured from the nearer shutter end so that `T·2^16`
+//! fits i32), the offsets one SMULL + SMLAL and the rounding add (factors `256W·2^(32−S)`,
+//! `ngx·2^(32−S)`). It refuses the few inputs where a scaled factor does not fit i32 — T =
+//! 2^15, U or V = 2^16, a viewport side ≥ 2^(S−9) (2048 at S = 20) — which take the general
+//! datapath (the step-by-step form of the table, out of line). Proofs on `Fast` and
+//! `fast_vertex`; `bounded_corners.rs` drives both sides of each boundary against the frozen
+//! contract. Misses keep only (a', b') and the sign of w live; w and z are recomputed for the
+//! rare path and for depth.
 //!
 //! **What the test decides.** With `x' = (a'·2^S + (2xs − 256W)·w)/(256W)` and `y'` likewise,
 //! `E'` and `det' = Σ E'_k·w_k` are positive multiples of the exact test's `E_k` and `det` for
@@ -306,18 +319,18 @@ fn fast_vertex<const MOTION: bool, const DEFOCUS: bool>(
     o: &[i32; 5],
     f: &Fast,
 ) -> (i32, i32, i32) {
-    // |o[i] − b[i]| ≤ 2^30 (checked triangle, |f| ≤ 2^29).
-    let at = |i: usize| {
+    // |f1 − f0| ≤ 2^30 (checked triangle, |f| ≤ 2^29).
+    let at = |f0: i32, f1: i32| {
         if MOTION {
-            mla_hi(f.tq, o[i] - b[i], b[i])
+            mla_hi(f.tq, f1 - f0, f0)
         } else {
-            b[i]
+            f0
         }
     };
-    let (mut x, mut y, w) = (at(X), at(Y), at(W));
+    let (mut x, mut y, w) = (at(b[X], o[X]), at(b[Y], o[Y]), at(b[W], o[W]));
     if DEFOCUS {
         // |c_t| ≤ 2^29: 2c ≤ 2^30 (i32).
-        let c2 = at(C) * 2;
+        let c2 = at(b[C], o[C]) * 2;
         x = mla_hi(f.uq, c2, x);
         y = mla_hi(f.vq, c2, y);
     }
@@ -509,13 +522,13 @@ const fn class_ops(motion: bool, defocus: bool) -> u64 {
 /// (|H'| < 2^61), whose sign is that of H', or of L' when H' = 0. `bounded_frozen` compares it
 /// with the i128 sum of the frozen copy.
 #[inline]
-#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+#[allow(clippy::arithmetic_side_effects)]
 fn det_sign(e: &[i64; 3], w: [i32; 3]) -> i64 {
     let (mut hi, mut lo) = (0i64, 0i64);
     for (&ek, wk) in e.iter().zip(w) {
         // Arithmetic shift by the constant 32 (floor) and the low word (< 2^32, exact in i64).
         hi += (ek >> 32) * i64::from(wk);
-        lo += i64::from(ek as u32) * i64::from(wk);
+        lo += (ek & 0xffff_ffff) * i64::from(wk);
     }
     // Shift by the constant 32 (floor); the mask keeps the low word, ≥ 0.
     let hi = hi + (lo >> 32);
@@ -652,19 +665,19 @@ fn eval_fast<const MOTION: bool, const DEFOCUS: bool, const G20: bool>(
 fn fast_wz<const MOTION: bool>(setup: &Setup, tq: i32, late: bool) -> [(i32, i32); 3] {
     let [v0, v1] = &setup.tri.v;
     let (b, o) = if MOTION && late { (v1, v0) } else { (v0, v1) };
-    let at = |b: &[i32; 5], o: &[i32; 5], i: usize| {
+    let at = |f0: i32, f1: i32| {
         if MOTION {
-            mla_hi(tq, o[i] - b[i], b[i])
+            mla_hi(tq, f1 - f0, f0)
         } else {
-            b[i]
+            f0
         }
     };
     let [b0, b1, b2] = b;
     let [o0, o1, o2] = o;
     [
-        (at(b0, o0, W), at(b0, o0, Z)),
-        (at(b1, o1, W), at(b1, o1, Z)),
-        (at(b2, o2, W), at(b2, o2, Z)),
+        (at(b0[W], o0[W]), at(b0[Z], o0[Z])),
+        (at(b1[W], o1[W]), at(b1[Z], o1[Z])),
+        (at(b2[W], o2[W]), at(b2[Z], o2[Z])),
     ]
 }
 

@@ -168,7 +168,13 @@ fn fast_and_general_datapaths_agree_at_their_boundary() {
     let mut all = tris().to_vec();
     all.push(cover);
     let (mut fast, mut general, mut hits) = (0u32, 0u32, 0u32);
-    for (vw, vh) in [(2047u16, 2047u16), (2048, 2047), (2047, 2048), (2048, 2048), (1, 1)] {
+    for (vw, vh) in [
+        (2047u16, 2047u16),
+        (2048, 2047),
+        (2047, 2048),
+        (2048, 2048),
+        (1, 1),
+    ] {
         let vp = Viewport::new(vw, vh).unwrap();
         for tri in &all {
             let setup = Setup::unculled(tri, vp);
@@ -200,7 +206,10 @@ fn fast_and_general_datapaths_agree_at_their_boundary() {
             }
         }
     }
-    assert!(fast > 1000 && general > 1000 && hits > 100, "{fast} {general} {hits}");
+    assert!(
+        fast > 1000 && general > 1000 && hits > 100,
+        "{fast} {general} {hits}"
+    );
 }
 
 #[test]
