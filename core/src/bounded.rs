@@ -13,11 +13,24 @@
 //! | 3 offsets | `A = 256W·x − (2xs − 256W)·w`, `B = 256H·y − (256H − 2ys)·w` | none (exact) | 20 × 31 → i64, \|A\| < 1.5·2^49 |
 //! | 4 grid | `a' = rnd_S(A)`, `b' = rnd_S(B)` | nearest, ties up, 2^(S−1) | result \|a'\| < 2^(50−S) ≤ 2^30 (i32) |
 //! | 5 edges | `E'_k = a'_{k+1}·b'_{k+2} − a'_{k+2}·b'_{k+1}` | none | 32 × 32 → i64, \|E'\| < 2^61 |
-//! | 6 orientation | all `w_k > 0`: the common sign of the `E'_k`, no product; else `sign(Σ E'_k·w_k)` | none | **rare path** 64 × 32 → i128, \|Σ\| < 2^92 |
+//! | 6 orientation | all `w_k > 0`: the common sign of the `E'_k`, no product; else `sign(Σ E'_k·w_k)` | none | **rare path** \|Σ\| < 2^92, its sign from two i64 sums of the high and low words of E' times w (`det_sign`, no 128-bit arithmetic) |
 //! | 7 fill rule (`E'_k = 0`) | tie key `κ = cmp((b', a', w)_{k+1}, (b', a', w)_{k+2})` (lexicographic, −1/0/1); the sample is inside edge k iff `s·κ > 0` | none | comparators only, no multiplier |
 //! | 8 depth (hits only) | `E'' = floor(E'/2^sh)` with \|E''\| ≤ 2^24 (`sh` = bit length of max\|E'\| − 24, ≥ 0), `num = Σ E''·z`, `den = Σ E''·w` | floor | 25 × 30 → i64 sums < 2^55; quotient `floor(num·2^24/den)` saturated to the depth range: saturation from `num` vs `±2^7·den`, then a 64-by-32-bit long division in 32-bit divides with an exact correction (`depth_quotient`) |
 //!
 //! `w` and `z` here are the step-1 values (exact for static and defocus-only triangles).
+//!
+//! **Software form (the Cortex-M4 cost).** The values above are computed by one of two
+//! datapaths with identical results. The fast one (`fast_vertex`) scales one factor of every
+//! rounded product so that its rounding point is 2^32 and the result is the rounded high word of
+//! a 32 × 32 → 64 product: the lerps and the lens offsets are one SMMLAR each (`f0 +
+//! floor((T·2^16·d + 2^31)/2^32)`, T measured from the nearer shutter end so that `T·2^16`
+//! fits i32), the offsets one SMULL + SMLAL and the rounding add (factors `256W·2^(32−S)`,
+//! `ngx·2^(32−S)`). It refuses the few inputs where a scaled factor does not fit i32 — T =
+//! 2^15, U or V = 2^16, a viewport side ≥ 2^(S−9) (2048 at S = 20) — which take the general
+//! datapath (the step-by-step form of the table, out of line). Proofs on `Fast` and
+//! `fast_vertex`; `bounded_corners.rs` drives both sides of each boundary against the frozen
+//! contract. Misses keep only (a', b') and the sign of w live; w and z are recomputed for the
+//! rare path and for depth.
 //!
 //! **What the test decides.** With `x' = (a'·2^S + (2xs − 256W)·w)/(256W)` and `y'` likewise,
 //! `E'` and `det' = Σ E'_k·w_k` are positive multiples of the exact test's `E_k` and `det` for
@@ -116,10 +129,11 @@ impl Eps {
     }
 }
 
-/// Per-sample constants shared by the three vertices (steps 1–4). Ranges (checked `Sample`,
-/// `Viewport`, the position check in [`bounded_eval`]): `t` ∈ [0, 2^16], `u`, `v` ∈ [−2^16,
-/// 2^16]; `sw = 256W`, `sh = 256H` ≤ 2^19; `ngx = sw − 2xs` ∈ (−sw, sw], `ngy = 2ys − sh` ∈
-/// [−sh, sh) (so |ngx|, |ngy| ≤ 2^19); `half = 2^(S−1)` ≤ 2^31; `fine = S − 20` ∈ 0..=12.
+/// Per-sample constants of the general datapath ([`eval_general`], the inputs [`Fast::new`]
+/// refuses). Ranges (checked `Sample`, `Viewport`, the position check in [`bounded_eval`]): `t` ∈
+/// [0, 2^16], `u`, `v` ∈ [−2^16, 2^16]; `sw = 256W`, `sh = 256H` ≤ 2^19; `ngx = sw − 2xs` ∈
+/// (−sw, sw], `ngy = 2ys − sh` ∈ [−sh, sh) (so |ngx|, |ngy| ≤ 2^19); `half = 2^(S−1)` ≤ 2^31;
+/// `fine = S − 20` ∈ 0..=12.
 struct Ctx {
     t: i32,
     u: i32,
@@ -161,20 +175,18 @@ fn lens(l: i32, c: i32) -> i32 {
 /// Result |a'| < 2^(50−S) ≤ 2^30.
 #[inline(always)]
 #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
-fn offset<const G20: bool>(e: i32, p: i32, ng: i32, w: i32, c: &Ctx) -> i32 {
-    // `G20`: the grid 2^20 (`half` = 2^19, `fine` = 0) with its constants folded in.
-    let (half, fine) = if G20 { (1 << 19, 0) } else { (c.half, c.fine) };
-    let acc = i64::from(e) * i64::from(p) + i64::from(ng) * i64::from(w) + half;
+fn offset(e: i32, p: i32, ng: i32, w: i32, c: &Ctx) -> i32 {
+    let acc = i64::from(e) * i64::from(p) + i64::from(ng) * i64::from(w) + c.half;
     // `fine` ≤ 12 < 32 (Ctx): the i32 shift cannot overflow.
-    ((acc >> OFFSET_SHIFT_MIN) as i32) >> fine
+    ((acc >> OFFSET_SHIFT_MIN) as i32) >> c.fine
 }
 
-/// One vertex at the sample: `(a', b', w, z)` with z left at its t = 0 value (the depth needs
-/// the lerped z only on a hit, [`depth`]). Steps 1–4; `MOTION` and `DEFOCUS` select the
-/// rounded lerp and the lens offset at compile time (no per-vertex class branch).
+/// One vertex at the sample on the general datapath: `(a', b', w)` (z is lerped on hits only,
+/// [`depth`]). Steps 1–4; `MOTION` and `DEFOCUS` select the rounded lerp and the lens offset at
+/// compile time (no per-vertex class branch).
 #[inline(always)]
 #[allow(clippy::arithmetic_side_effects)]
-fn vertex<const MOTION: bool, const DEFOCUS: bool, const G20: bool>(
+fn vertex<const MOTION: bool, const DEFOCUS: bool>(
     q: &[i32; 5],
     r: &[i32; 5],
     c: &Ctx,
@@ -195,10 +207,139 @@ fn vertex<const MOTION: bool, const DEFOCUS: bool, const G20: bool>(
         y += lens(c.v, coc);
     }
     (
-        offset::<G20>(c.sw, x, c.ngx, w, c),
-        offset::<G20>(c.sh, y, c.ngy, w, c),
+        offset(c.sw, x, c.ngx, w, c),
+        offset(c.sh, y, c.ngy, w, c),
         w,
     )
+}
+
+/// `acc + floor((m·n + 2^31) / 2^32)`: the high word of a rounded 32 × 32 → 64 product, added
+/// to `acc` — one SMMLAR on the Cortex-M4. |m·n| < 2^62 for every caller (i64, no overflow);
+/// the caller proves that the sum fits i32.
+#[inline(always)]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+fn mla_hi(m: i32, n: i32, acc: i32) -> i32 {
+    // |m·n| ≤ 2^62 < 2^63 − 2^31; the shift by the constant 32 is the exact floor, and the
+    // quotient is < 2^31 in magnitude (each caller's range), so the narrowing is exact.
+    acc + ((i64::from(m) * i64::from(n) + (1 << 31)) >> 32) as i32
+}
+
+/// Per-sample constants of the fast datapath: every rounding of steps 1–4 becomes the rounded
+/// high word of a 64-bit sum of 32 × 32 products (SMMLAR / SMULL + SMLAL on the M4), by
+/// scaling one factor so that the rounding point lands at 2^32. Identical results (proofs on
+/// [`fast_vertex`]); [`Fast::new`] refuses the few inputs whose scaled factors do not fit i32,
+/// which go to the general datapath ([`eval_general`]).
+///
+/// - `tq = min(T, 2^16 − T)·2^16` ∈ [0, 2^31) (T ≠ 2^15), `late = T > 2^15`.
+/// - `uq = U·2^15`, `vq = V·2^15` ∈ [−2^31, 2^31) (U, V ≠ 2^16).
+/// - `swq = 256W·2^(32−S)`, `shq`, `ngxq = ngx·2^(32−S)`, `ngyq` (|.| < 2^31, checked).
+struct Fast {
+    tq: i32,
+    late: bool,
+    uq: i32,
+    vq: i32,
+    swq: i32,
+    shq: i32,
+    ngxq: i32,
+    ngyq: i32,
+}
+
+impl Fast {
+    /// The fast constants of a sample for a triangle of class (`MOTION`, `DEFOCUS`), or `None`
+    /// when a scaled factor would not fit i32: T = 2^15 (motion classes), U or V = 2^16
+    /// (defocus classes), or `max(W, H) ≥ 2^(S−9)` (at S = 20: a 2048-pixel side). `xs`, `ys`
+    /// inside the viewport and `shift` ∈ 20..=32 (checked by the caller). Fields a class does
+    /// not use are 0.
+    #[inline(always)]
+    #[allow(clippy::arithmetic_side_effects)]
+    fn new<const MOTION: bool, const DEFOCUS: bool, const G20: bool>(
+        vp: Viewport,
+        xs: i32,
+        ys: i32,
+        s: &Sample,
+        shift: u32,
+    ) -> Option<Fast> {
+        const HALF: i32 = 1 << (TUV_FRAC - 1);
+        const ONE: i32 = 1 << TUV_FRAC;
+        let t = if MOTION { s.t().to_bits() } else { 0 };
+        let (u, v) = if DEFOCUS {
+            (s.u().to_bits(), s.v().to_bits())
+        } else {
+            (0, 0)
+        };
+        // `G20`: the default grid 2^20, with the constants below folded.
+        let shift = if G20 { OFFSET_SHIFT_MIN } else { shift };
+        // `shift` − 9 ∈ 11..=23: the right shift of a constant is 2^(S−9) ≥ 2048, a power of
+        // two, so max(W, H) < 2^(S−9) iff W | H < 2^(S−9).
+        let side = (1u32 << 23) >> (OFFSET_SHIFT_MAX - shift);
+        if t == HALF || u == ONE || v == ONE || u32::from(vp.w | vp.h) >= side {
+            return None;
+        }
+        let late = t > HALF;
+        // T ∈ [0, 2^16] \ {2^15}: the smaller of T, 2^16 − T is < 2^15, so `tq` < 2^31; U, V ∈
+        // [−2^16, 2^16): U·2^15 ∈ [−2^31, 2^31). Multiplications by the constants 2^16, 2^15.
+        let tq = if late { ONE - t } else { t } * ONE;
+        // 2^(32−S) ∈ [1, 2^12] (a right shift of a constant). 256·max(W, H) < 2^(S−1), so
+        // 256W·2^(32−S) < 2^31, and |ngx| ≤ 256W, |ngy| ≤ 256H: all four products fit i32.
+        let k = (1i32 << 12) >> (shift - OFFSET_SHIFT_MIN);
+        let (sw, sh) = (
+            SUBPIXEL_SCALE * i32::from(vp.w),
+            SUBPIXEL_SCALE * i32::from(vp.h),
+        );
+        Some(Fast {
+            tq,
+            late,
+            uq: u * HALF,
+            vq: v * HALF,
+            swq: sw * k,
+            shq: sh * k,
+            ngxq: (sw - 2 * xs) * k,
+            ngyq: (2 * ys - sh) * k,
+        })
+    }
+}
+
+/// One vertex at the sample on the fast datapath: the same `(a', b', w)` as [`vertex`]. `b` is
+/// the vertex at the shutter end nearer to T (`q` for `T < 2^15`, `r` for `T > 2^15`), `o` the
+/// other one (motion classes; else both are `q`).
+///
+/// - **Lerp** `f0 + rnd16(T·(f1 − f0))`: for T < 2^15 it is `mla_hi(T·2^16, f1 − f0, f0)`, since
+///   `floor((T·2^16·d + 2^31)/2^32) = floor((T·d + 2^15)/2^16)` (numerator and denominator
+///   scaled by 2^16). For T > 2^15, with `d = f1 − f0` and T' = 2^16 − T:
+///   `f1 + floor((T'·2^16·(f0 − f1) + 2^31)/2^32) = f1 + floor((T·d + 2^15)/2^16 − d)
+///   = f0 + floor((T·d + 2^15)/2^16)` (subtracting the integer d inside the floor). |d| ≤ 2^30,
+///   `tq` < 2^31: the product < 2^61; the result is the lerp, |.| ≤ 2^29.
+/// - **Lens** `x + rnd16(U·c)` = `mla_hi(U·2^15, 2c, x)`: `U·2^15·2c = 2^16·U·c`, the same
+///   scaling; |2c| ≤ 2^30, result |x| ≤ 2^30.
+/// - **Offset** `floor((e·p + ng·w + 2^(S−1))/2^S)` = `floor((e·2^(32−S)·p + ng·2^(32−S)·w +
+///   2^31)/2^32)` (scaled by 2^(32−S)); |swq·x| < 2^31·2^30, |ngxq·w| < 2^31·2^29: the sum
+///   < 2^62 (i64), its high word the result |a'| < 2^30.
+#[inline(always)]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+fn fast_vertex<const MOTION: bool, const DEFOCUS: bool>(
+    b: &[i32; 5],
+    o: &[i32; 5],
+    f: &Fast,
+) -> (i32, i32, i32) {
+    // |f1 − f0| ≤ 2^30 (checked triangle, |f| ≤ 2^29).
+    let at = |f0: i32, f1: i32| {
+        if MOTION {
+            mla_hi(f.tq, f1 - f0, f0)
+        } else {
+            f0
+        }
+    };
+    let (mut x, mut y, w) = (at(b[X], o[X]), at(b[Y], o[Y]), at(b[W], o[W]));
+    if DEFOCUS {
+        // |c_t| ≤ 2^29: 2c ≤ 2^30 (i32).
+        let c2 = at(b[C], o[C]) * 2;
+        x = mla_hi(f.uq, c2, x);
+        y = mla_hi(f.vq, c2, y);
+    }
+    let hi = |e: i32, p: i32, ng: i32| {
+        ((i64::from(e) * i64::from(p) + i64::from(ng) * i64::from(w) + (1 << 31)) >> 32) as i32
+    };
+    (hi(f.swq, x, f.ngxq), hi(f.shq, y, f.ngyq), w)
 }
 
 /// Fill-rule decision on `E'_k = 0` (step 7), for edge k with vertices `i = k+1`, `j = k+2`:
@@ -219,10 +360,11 @@ fn fill_rule(v: &[(i32, i32, i32); 3], i: usize, j: usize, s: i64) -> bool {
 /// `floor(u / v)` for a normalized `v` ∈ [2^31, 2^32) and `u < 2^32·v` (so the quotient fits
 /// u32): long division in two base-2^16 digits with 32-bit divides (Hacker's Delight `divlu`;
 /// the Cortex-M's UDIV), no 64-bit division routine. Each digit estimate `q̂ = ⌊(2 digits)/vn1⌋`
-/// is at most 2 too large (normalized divisor) and is corrected by at most two steps.
-/// Ranges: `vn1` ∈ [2^15, 2^16) (no zero division); `q̂·vn0` is formed only when `q̂ < 2^16`
-/// (< 2^32), `rhat·2^16 + un` only when `rhat < 2^16` (< 2^32); the partial remainder `un21`'s
-/// true value is < v < 2^32, so forming it modulo 2^32 (wrapping) is exact.
+/// is at most 2 too large (normalized divisor) and is corrected by at most two steps (the loop
+/// stops at the first step whose test fails: q̂ and rhat are then unchanged, so it would fail
+/// again). Ranges: `vn1` ∈ [2^15, 2^16) (no zero division); `q̂·vn0` is formed only when
+/// `q̂ < 2^16` (< 2^32), `rhat·2^16 + un` only when `rhat < 2^16` (< 2^32); the partial
+/// remainder `un21`'s true value is < v < 2^32, so forming it modulo 2^32 (wrapping) is exact.
 #[inline]
 #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
 fn div64_32(u: u64, v: u32) -> u32 {
@@ -233,12 +375,13 @@ fn div64_32(u: u64, v: u32) -> u32 {
         let mut q = hi / vn1;
         let mut rhat = hi - q * vn1;
         for _ in 0..2 {
-            if q >= B || q * vn0 > rhat * B + lo {
-                q -= 1;
-                rhat += vn1;
-                if rhat >= B {
-                    break;
-                }
+            if q < B && q * vn0 <= rhat * B + lo {
+                break;
+            }
+            q -= 1;
+            rhat += vn1;
+            if rhat >= B {
+                break;
             }
         }
         q
@@ -256,57 +399,78 @@ fn div64_32(u: u64, v: u32) -> u32 {
 /// `floor(num·2^24 / den)` for `den` ∈ (0, 2^55) and |num| < 2^7·den, exactly, without a
 /// 64- or 128-bit division routine. Then the quotient lies in [−2^31, 2^31).
 ///
-/// With `L = bitlen(den)` ∈ 1..=55: `D = floor(den·2^(32−L))` ∈ [2^31, 2^32) (from the exact
-/// `den·2^(63−L)` < 2^63, shifted right by 31) and `N = num·2^(56−L)` (exact, |N| < 2^(7+L+56−L)
-/// = 2^63). The true quotient is `N/(den·2^(32−L))` with `den·2^(32−L)` ∈ [D, D + 1) and
-/// |N/(den·2^(32−L))| < 2^31, so `|N/D − num·2^24/den| < 2^31·(1 + 2^-31)/2^31` ≈ 1; the
-/// magnitude divide [`div64_32`] truncates (< 1 more), hence `q̂ − q` ∈ [−2, 3]. The remainder
-/// `R = num·2^24 − q̂·den` is formed modulo 2^64 (wrapping): its true value has
-/// |R| < 4·den < 2^57, so the wrapped value is exact, and at most three steps of `q̂ ∓ 1`,
-/// `R ± den` reach `0 ≤ R < den`, i.e. q̂ = q (the loop allows four). `bounded_frozen` checks it
-/// against the 128-bit division on extreme and random operands.
+/// With `L = bitlen(den)` ∈ 1..=55 and `x = |num|·2^24/den` (< 2^31): `D = floor(den·2^(32−L))`
+/// ∈ [2^31, 2^32) (a right shift of `den` for L > 32, else a multiplication by 2^(32−L) < 2^32)
+/// and `U = |num|·2^(56−L)` (exact, < 2^(7+L+56−L) = 2^63), so `x = U/(den·2^(32−L))` with
+/// `den·2^(32−L)` ∈ [D, D + 1). Hence `U/D ≥ x` and `U/D − x < U/(D(D + 1)) < 2^63/2^62 = 2`:
+/// the magnitude divide `q̂ = floor(U/D)` ([`div64_32`], U < 2^32·D) is `floor(x)` plus 0, 1 or
+/// 2. The remainder `R = |num|·2^24 − q̂·den` is formed modulo 2^64 (wrapping): its true value
+/// lies in [−2·den, den), |R| < 2^56, so the wrapped value is exact, and at most two steps
+/// `q̂ − 1`, `R + den` reach `0 ≤ R < den`, i.e. q̂ = floor(x). For `num < 0` the floor is
+/// `−q̂` if R = 0, else `−q̂ − 1`. `bounded_frozen` checks it against the 128-bit division on
+/// extreme and random operands.
 #[allow(
     clippy::arithmetic_side_effects,
     clippy::cast_possible_truncation,
+    clippy::cast_possible_wrap,
     clippy::cast_sign_loss
 )]
+#[inline]
 pub(crate) fn depth_quotient(num: i64, den: i64) -> i64 {
+    // den > 0: the conversion is exact.
+    let den = den as u64;
     let len = u64::BITS - den.leading_zeros();
-    // len − 1 ∈ 0..=54: 2^62 >> (len − 1) = 2^(63−len), 2^55 >> (len − 1) = 2^(56−len) (right
-    // shifts of constants); the products are < 2^63 (above).
-    let dn = den * ((1i64 << 62) >> (len - 1));
-    let d = (dn >> 31) as u32;
-    let n = num * ((1i64 << 55) >> (len - 1));
-    let mag = i64::from(div64_32(n.unsigned_abs(), d));
-    let mut q = if n < 0 { -mag } else { mag };
-    let mut r = num
-        .wrapping_mul(DEPTH_SCALE)
-        .wrapping_sub(q.wrapping_mul(den));
-    for _ in 0..4 {
-        if r < 0 {
-            q -= 1;
-            r += den;
-        } else if r >= den {
-            q += 1;
-            r -= den;
+    let d = if len > 32 {
+        // len − 32 ∈ 1..=23: the top 32 bits of den.
+        (den >> (len - 32)) as u32
+    } else {
+        // len ∈ 1..=32: 2^31 >> (len − 1) = 2^(32−len) (a right shift of a constant), and
+        // den < 2^len, so the product is < 2^32.
+        (den as u32) * ((1u32 << 31) >> (len - 1))
+    };
+    let mag = num.unsigned_abs();
+    // 2^55 >> (len − 1) = 2^(56−len) (a right shift of a constant); the product is < 2^63.
+    let u = mag * ((1u64 << 55) >> (len - 1));
+    let mut q = div64_32(u, d);
+    let mut r = mag
+        .wrapping_mul(DEPTH_SCALE as u64)
+        .wrapping_sub(u64::from(q).wrapping_mul(den)) as i64;
+    for _ in 0..2 {
+        if r >= 0 {
+            break;
         }
+        q -= 1;
+        r += den as i64;
     }
-    q
+    // q = floor(x) < 2^31, 0 ≤ r < den.
+    let q = i64::from(q);
+    if num >= 0 {
+        q
+    } else {
+        -q - i64::from(r != 0)
+    }
 }
 
 /// Depth z/w from the rounded edge values (step 8; rounding as in `sample.rs`: floor), `wz`
 /// the step-1 (w, z) of each vertex.
 ///
-/// `E'' = floor(E'/2^sh)` with `sh = max(0, bitlen(max|E'|) − 24)`: |E''| ≤ 2^24 (exact in
-/// i32); |w|, |z| ≤ 2^29, so each product ≤ 2^53 (SMULL/SMLAL) and the oriented sums
+/// Called on covered samples only. `E'' = floor(E'/2^sh)` with `sh = max(0, bitlen(max|E'|) −
+/// 24)` (the bit length of the largest magnitude is that of the OR of the magnitudes): |E''| ≤ 2^24 (exact in i32);
+/// |w|, |z| ≤ 2^29, so each product ≤ 2^53 (SMULL/SMLAL) and the oriented sums
 /// |num|, |den| < 2^55. With `den > 0` (else `DEPTH_FAR`): `num ≥ 2^7·den` means a quotient
 /// ≥ 2^31 (saturates to `DEPTH_FAR`), `num ≤ −2^7·den` one ≤ −2^31 (`DEPTH_NEAR`); otherwise
 /// [`depth_quotient`] is exact and in [−2^31, 2^31), clamped to `DEPTH_FAR` at the top. This is
 /// `clamp(floor(num·2^24/den), DEPTH_NEAR, DEPTH_FAR)` exactly, as the 128-bit division gave.
 #[inline]
-#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+#[allow(
+    clippy::arithmetic_side_effects,
+    clippy::cast_possible_truncation,
+    clippy::cast_sign_loss
+)]
 fn depth(e: &[i64; 3], wz: &[(i32, i32); 3], sign: i64) -> i32 {
-    let big = e.iter().map(|x| x.unsigned_abs()).fold(0, u64::max);
+    // A covered sample's E' are each 0 or of the orientation's sign, so |E'| = sign·E'
+    // (|E'| < 2^61: the negation cannot overflow).
+    let big = e.iter().fold(0, |m, &x| m | if sign < 0 { -x } else { x }) as u64;
     let len = u64::BITS - big.leading_zeros();
     // Floor shift by sh ≤ 37 (|E'| < 2^61): an arithmetic right shift, exact floor.
     let sh = len.saturating_sub(24);
@@ -353,27 +517,45 @@ const fn class_ops(motion: bool, defocus: bool) -> u64 {
     m + d + 2 + 3 * 8 + 9
 }
 
+/// `sign(Σ E'_k·w_k)` (|E'| < 2^61, |w| ≤ 2^29, so |Σ| < 2^92) without 128-bit arithmetic:
+/// with `E' = h·2^32 + l` (`h = E' >> 32`, |h| < 2^29; `l` = the low word, 0 ≤ l < 2^32),
+/// `Σ E'·w = H·2^32 + L` with `H = Σ h·w` (|.| < 3·2^58) and `L = Σ l·w` (|.| < 3·2^61 < 2^63),
+/// both exact in i64; moving `floor(L/2^32)` into H leaves `H'·2^32 + L'` with 0 ≤ L' < 2^32
+/// (|H'| < 2^61), whose sign is that of H', or of L' when H' = 0. `bounded_frozen` compares it
+/// with the i128 sum of the frozen copy.
+#[inline]
+#[allow(clippy::arithmetic_side_effects)]
+fn det_sign(e: &[i64; 3], w: [i32; 3]) -> i64 {
+    let (mut hi, mut lo) = (0i64, 0i64);
+    for (&ek, wk) in e.iter().zip(w) {
+        // Arithmetic shift by the constant 32 (floor) and the low word (< 2^32, exact in i64).
+        hi += (ek >> 32) * i64::from(wk);
+        lo += (ek & 0xffff_ffff) * i64::from(wk);
+    }
+    // Shift by the constant 32 (floor); the mask keeps the low word, ≥ 0.
+    let hi = hi + (lo >> 32);
+    let lo = lo & 0xffff_ffff;
+    if hi != 0 {
+        hi.signum()
+    } else {
+        i64::from(lo != 0)
+    }
+}
+
 /// Orientation and coverage (steps 6–7) when some `w ≤ 0` or some `E' = 0` (the fast path in
-/// [`eval_class`] takes the rest): with every w > 0 the common sign of the `E'` (0 if they
-/// have both signs or are all 0), else `sign(Σ E'_k·w_k)` (64 × 32 → i128, |Σ| < 2^92); edges
-/// with `E' = 0` go to the fill rule. Returns (orientation, covered) and counts its operations.
+/// [`finish`] takes the rest): with every w > 0 the common sign of the `E'` (0 if they
+/// have both signs or are all 0), else `sign(Σ E'_k·w_k)` ([`det_sign`], |Σ| < 2^92); edges
+/// with `E' = 0` go to the fill rule. Returns (orientation, covered, operations counted).
 #[cold]
 #[inline(never)]
 #[allow(clippy::arithmetic_side_effects)]
-fn decide_slow(e: [i64; 3], p: [(i32, i32, i32); 3], n: &mut u64) -> (i64, bool) {
-    let sign = if p.iter().all(|&(_, _, w)| w > 0) {
-        *n += 3;
+fn decide_slow(e: [i64; 3], p: [(i32, i32, i32); 3]) -> (i64, bool, u64) {
+    let (sign, n) = if p.iter().all(|&(_, _, w)| w > 0) {
         let pos = e.iter().any(|&x| x > 0);
         let neg = e.iter().any(|&x| x < 0);
-        i64::from(pos && !neg) - i64::from(neg && !pos)
+        (i64::from(pos && !neg) - i64::from(neg && !pos), 3)
     } else {
-        *n += 6;
-        let det: i128 = e
-            .iter()
-            .zip(p.iter())
-            .map(|(&ek, &(_, _, wk))| i128::from(ek) * i128::from(wk))
-            .sum();
-        i64::from(det > 0) - i64::from(det < 0)
+        (det_sign(&e, p.map(|(_, _, w)| w)), 6)
     };
     let covered = sign != 0
         && e.iter().enumerate().all(|(k, &ek)| {
@@ -383,31 +565,23 @@ fn decide_slow(e: [i64; 3], p: [(i32, i32, i32); 3], n: &mut u64) -> (i64, bool)
                 (ek > 0) == (sign > 0)
             }
         });
-    (sign, covered)
+    (sign, covered, n)
 }
 
-/// The bounded sample test of one class (`MOTION`, `DEFOCUS` fixed at compile time; dispatched
-/// once per call from the setup's class by [`bounded_eval`]): steps 1–8 of the module table.
-/// `shift` ∈ [`OFFSET_SHIFT_MIN`]..=[`OFFSET_SHIFT_MAX`] and the position inside the viewport
-/// are checked by the caller.
-// Ranges in the module table and on each helper; |E'| < 2^61 (|a'|, |b'| < 2^30); the
-// rare-path Σ E'·w < 2^92 (i128).
+/// Edges, orientation, coverage and depth (steps 5–8) from the rounded offsets `ab` of the
+/// three vertices; `wpos` says whether every step-1 w is > 0, and `wz` gives the step-1 (w, z)
+/// of each vertex (called only on the rare path and on hits, so that w and z need not stay
+/// live through the common miss).
+// |E'| < 2^61 (|a'|, |b'| < 2^30, 32 × 32 → 64 products).
 #[inline(always)]
-#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_wrap)]
-fn eval_class<const MOTION: bool, const DEFOCUS: bool, const G20: bool>(
-    setup: &Setup,
-    c: &Ctx,
+#[allow(clippy::arithmetic_side_effects)]
+fn finish<const MOTION: bool, const DEFOCUS: bool>(
+    ab: [(i32, i32); 3],
+    wpos: bool,
+    wz: impl Fn() -> [(i32, i32); 3],
     ops: &mut Ops,
 ) -> BoundedEval {
-    let [v0, v1] = &setup.tri.v;
-    let [q0, q1, q2] = v0;
-    let [r0, r1, r2] = v1;
-    let p = [
-        vertex::<MOTION, DEFOCUS, G20>(q0, r0, c),
-        vertex::<MOTION, DEFOCUS, G20>(q1, r1, c),
-        vertex::<MOTION, DEFOCUS, G20>(q2, r2, c),
-    ];
-    let [(a0, b0, w0), (a1, b1, w1), (a2, b2, w2)] = p;
+    let [(a0, b0), (a1, b1), (a2, b2)] = ab;
     let m = |x: i32, y: i32| i64::from(x) * i64::from(y);
     let e = [
         m(a1, b2) - m(a2, b1),
@@ -419,7 +593,7 @@ fn eval_class<const MOTION: bool, const DEFOCUS: bool, const G20: bool>(
     // Fast path (every w > 0, no E' = 0): the sign bit of `e0 | e1 | e2` is set iff some E' < 0,
     // that of `e0 & e1 & e2` iff every E' < 0. Covered iff all E' share one strict sign, which
     // is then the orientation (module table step 6). Anything else goes to `decide_slow`.
-    let (sign, covered) = if w0 > 0 && w1 > 0 && w2 > 0 && e0 != 0 && e1 != 0 && e2 != 0 {
+    let (sign, covered) = if wpos && e0 != 0 && e1 != 0 && e2 != 0 {
         n += 3;
         if e0 & e1 & e2 < 0 {
             (-1, true)
@@ -429,66 +603,124 @@ fn eval_class<const MOTION: bool, const DEFOCUS: bool, const G20: bool>(
             (0, false)
         }
     } else {
-        decide_slow(e, p, &mut n)
+        let [(w0, _), (w1, _), (w2, _)] = wz();
+        let (sign, covered, k) = decide_slow(e, [(a0, b0, w0), (a1, b1, w1), (a2, b2, w2)]);
+        n += k;
+        (sign, covered)
     };
     let hit = covered.then(|| {
         n += 12;
-        let z = |q: &[i32; 5], r: &[i32; 5]| if MOTION { lerp(q[Z], r[Z], c.t) } else { q[Z] };
-        let wz = [(w0, z(q0, r0)), (w1, z(q1, r1)), (w2, z(q2, r2))];
         Hit {
-            depth: depth(&e, &wz, sign),
+            depth: depth(&e, &wz(), sign),
         }
     });
     ops.add_sample(n);
     BoundedEval {
-        ab: p.map(|(a, b, _)| (i64::from(a), i64::from(b))),
+        ab: ab.map(|(a, b)| (i64::from(a), i64::from(b))),
         e,
         det_sign: sign,
         hit,
     }
 }
 
-/// The bounded sample test with its intermediates, offsets on the grid `2^shift`. Counts its
-/// arithmetic in `ops.sample`. `None` for a position outside the viewport (module docs) or a
-/// `shift` outside [`OFFSET_SHIFT_MIN`]..=[`OFFSET_SHIFT_MAX`] (the range the proofs cover).
-#[inline]
-pub fn bounded_eval(
+/// The bounded sample test of one class on the fast datapath (`MOTION`, `DEFOCUS` fixed at
+/// compile time; dispatched once per call from the setup's class by [`bounded_eval`]); the
+/// general datapath for the inputs [`Fast::new`] refuses. `xs`, `ys` inside the viewport and
+/// `shift` ∈ 20..=32 (checked by the caller).
+#[inline(always)]
+fn eval_fast<const MOTION: bool, const DEFOCUS: bool, const G20: bool>(
     setup: &Setup,
     shift: u32,
-    pos: ScreenPos,
+    xs: i32,
+    ys: i32,
     s: &Sample,
     ops: &mut Ops,
-) -> Option<BoundedEval> {
-    let c = ctx(setup, shift, pos, s)?;
-    // The default grid 2^20 gets its own copy with the rounding constants folded in.
-    if shift == OFFSET_SHIFT_MIN {
-        eval_unit::<Full, true>(setup, &c, ops)
-    } else {
-        eval_unit::<Full, false>(setup, &c, ops)
-    }
+) -> BoundedEval {
+    let Some(f) = Fast::new::<MOTION, DEFOCUS, G20>(setup.viewport, xs, ys, s, shift) else {
+        return eval_general_at::<MOTION, DEFOCUS>(setup, shift, xs, ys, s, ops);
+    };
+    let [v0, v1] = &setup.tri.v;
+    // The shutter end nearer to T is the base of every lerp (`fast_vertex`).
+    let (b, o) = if MOTION && f.late { (v1, v0) } else { (v0, v1) };
+    let [b0, b1, b2] = b;
+    let [o0, o1, o2] = o;
+    let (a0, bb0, w0) = fast_vertex::<MOTION, DEFOCUS>(b0, o0, &f);
+    let (a1, bb1, w1) = fast_vertex::<MOTION, DEFOCUS>(b1, o1, &f);
+    let (a2, bb2, w2) = fast_vertex::<MOTION, DEFOCUS>(b2, o2, &f);
+    let wpos = w0 > 0 && w1 > 0 && w2 > 0;
+    // Motion classes recompute w and z out of line; the others only load them.
+    let wz = || {
+        if MOTION {
+            fast_wz::<MOTION>(setup, f.tq, f.late)
+        } else {
+            [b0, b1, b2].map(|v| (v[W], v[Z]))
+        }
+    };
+    finish::<MOTION, DEFOCUS>([(a0, bb0), (a1, bb1), (a2, bb2)], wpos, wz, ops)
 }
 
-/// The per-sample constants of [`bounded_eval`]; `None` as documented there.
-// 256W, 256H ≤ 2^19 and xs < 256W, ys < 256H (checked): every `Ctx` value in its range.
-#[inline]
-#[allow(
-    clippy::arithmetic_side_effects,
-    clippy::cast_possible_wrap,
-    clippy::cast_sign_loss
-)]
-fn ctx(setup: &Setup, shift: u32, pos: ScreenPos, s: &Sample) -> Option<Ctx> {
-    if !(OFFSET_SHIFT_MIN..=OFFSET_SHIFT_MAX).contains(&shift) {
-        return None;
-    }
+/// The step-1 (w, z) of every vertex on the fast datapath, as in [`fast_vertex`] (|f1 − f0| ≤
+/// 2^30, results |.| ≤ 2^29). Out of line: the rare path and hits recompute them here rather
+/// than keep them live (in registers or spilled) through every sample test.
+#[inline(never)]
+#[allow(clippy::arithmetic_side_effects)]
+fn fast_wz<const MOTION: bool>(setup: &Setup, tq: i32, late: bool) -> [(i32, i32); 3] {
+    let [v0, v1] = &setup.tri.v;
+    let (b, o) = if MOTION && late { (v1, v0) } else { (v0, v1) };
+    let at = |f0: i32, f1: i32| {
+        if MOTION {
+            mla_hi(tq, f1 - f0, f0)
+        } else {
+            f0
+        }
+    };
+    let [b0, b1, b2] = b;
+    let [o0, o1, o2] = o;
+    [
+        (at(b0[W], o0[W]), at(b0[Z], o0[Z])),
+        (at(b1[W], o1[W]), at(b1[Z], o1[Z])),
+        (at(b2[W], o2[W]), at(b2[Z], o2[Z])),
+    ]
+}
+
+/// The bounded sample test of one class on the general datapath (the inputs [`Fast::new`]
+/// refuses: T = 2^15, U or V = 2^16, a 2048-pixel viewport side at S = 20).
+#[inline(always)]
+fn eval_general<const MOTION: bool, const DEFOCUS: bool>(
+    setup: &Setup,
+    c: &Ctx,
+    ops: &mut Ops,
+) -> BoundedEval {
+    let [v0, v1] = &setup.tri.v;
+    let [q0, q1, q2] = v0;
+    let [r0, r1, r2] = v1;
+    let (a0, b0, w0) = vertex::<MOTION, DEFOCUS>(q0, r0, c);
+    let (a1, b1, w1) = vertex::<MOTION, DEFOCUS>(q1, r1, c);
+    let (a2, b2, w2) = vertex::<MOTION, DEFOCUS>(q2, r2, c);
+    let z = |q: &[i32; 5], r: &[i32; 5]| if MOTION { lerp(q[Z], r[Z], c.t) } else { q[Z] };
+    let wz = || [(w0, z(q0, r0)), (w1, z(q1, r1)), (w2, z(q2, r2))];
+    let wpos = w0 > 0 && w1 > 0 && w2 > 0;
+    finish::<MOTION, DEFOCUS>([(a0, b0), (a1, b1), (a2, b2)], wpos, wz, ops)
+}
+
+/// [`eval_general`] of one class: out of line, it serves only rare inputs. `xs`, `ys`
+/// inside the viewport, `shift` ∈ 20..=32 (checked by [`bounded_eval`]).
+// 256W, 256H ≤ 2^19 and xs < 256W, ys < 256H: every `Ctx` value in its range.
+#[cold]
+#[inline(never)]
+#[allow(clippy::arithmetic_side_effects)]
+fn eval_general_at<const MOTION: bool, const DEFOCUS: bool>(
+    setup: &Setup,
+    shift: u32,
+    xs: i32,
+    ys: i32,
+    s: &Sample,
+    ops: &mut Ops,
+) -> BoundedEval {
     let vp = setup.viewport;
     let sw = SUBPIXEL_SCALE * i32::from(vp.w);
     let sh = SUBPIXEL_SCALE * i32::from(vp.h);
-    // sw, sh ∈ [256, 2^19] (positive, exact in u32); xs, ys below them fit i32.
-    if pos.xs >= sw as u32 || pos.ys >= sh as u32 {
-        return None;
-    }
-    let (xs, ys) = (pos.xs as i32, pos.ys as i32);
-    Some(Ctx {
+    let c = Ctx {
         t: s.t().to_bits(),
         u: s.u().to_bits(),
         v: s.v().to_bits(),
@@ -499,36 +731,99 @@ fn ctx(setup: &Setup, shift: u32, pos: ScreenPos, s: &Sample) -> Option<Ctx> {
         // 2^31 >> (32 − S) = 2^(S−1) (a right shift of a constant; 32 − S ∈ 0..=12).
         half: (1i64 << 31) >> (OFFSET_SHIFT_MAX - shift),
         fine: shift - OFFSET_SHIFT_MIN,
-    })
+    };
+    eval_general::<MOTION, DEFOCUS>(setup, &c, ops)
 }
 
-/// Class dispatch on unit `U` (grid `G20` fixed): only the classes `U` accepts are
-/// instantiated (`U::MOTION && class.motion()` is the class's own flag for an accepted class,
-/// a constant `false` where `U` lacks the effect); `None` for a class `U` does not accept.
-#[inline(always)]
-fn eval_unit<U: Unit, const G20: bool>(
+/// The bounded sample test with its intermediates, offsets on the grid `2^shift`. Counts its
+/// arithmetic in `ops.sample`. `None` for a position outside the viewport (module docs) or a
+/// `shift` outside [`OFFSET_SHIFT_MIN`]..=[`OFFSET_SHIFT_MAX`] (the range the proofs cover).
+// 256W, 256H ≤ 2^19 and xs < 256W, ys < 256H (checked): every `Ctx` value in its range.
+#[inline]
+#[allow(
+    clippy::arithmetic_side_effects,
+    clippy::cast_possible_wrap,
+    clippy::cast_sign_loss
+)]
+pub fn bounded_eval(
     setup: &Setup,
-    c: &Ctx,
+    shift: u32,
+    pos: ScreenPos,
+    s: &Sample,
     ops: &mut Ops,
 ) -> Option<BoundedEval> {
+    if !(OFFSET_SHIFT_MIN..=OFFSET_SHIFT_MAX).contains(&shift) {
+        return None;
+    }
+    eval_at::<Full>(setup, shift, pos, s, ops)
+}
+
+/// [`bounded_eval`] for a `shift` ∈ [`OFFSET_SHIFT_MIN`]..=[`OFFSET_SHIFT_MAX`] (the caller's
+/// obligation): the position check and the dispatch by class and grid.
+// 256W, 256H ≤ 2^19 and xs < 256W, ys < 256H (checked): every value in its range.
+#[inline(always)]
+#[allow(
+    clippy::arithmetic_side_effects,
+    clippy::cast_possible_wrap,
+    clippy::cast_sign_loss
+)]
+fn eval_at<U: Unit>(
+    setup: &Setup,
+    shift: u32,
+    pos: ScreenPos,
+    s: &Sample,
+    ops: &mut Ops,
+) -> Option<BoundedEval> {
+    let vp = setup.viewport;
+    let sw = SUBPIXEL_SCALE * i32::from(vp.w);
+    let sh = SUBPIXEL_SCALE * i32::from(vp.h);
+    // sw, sh ∈ [256, 2^19] (positive, exact in u32); xs, ys below them fit i32.
+    if pos.xs >= sw as u32 || pos.ys >= sh as u32 {
+        return None;
+    }
+    let (xs, ys) = (pos.xs as i32, pos.ys as i32);
+    // Unit `U` instantiates only the classes it accepts: `U::MOTION && class.motion()` is the
+    // class's own flag for an accepted class and a constant `false` where `U` lacks the effect.
     if !U::accepts(setup.class) {
         return None;
     }
     let m = U::MOTION && setup.class.motion();
     let d = U::DEFOCUS && setup.class.defocus();
-    Some(match (m, d) {
-        (false, false) => eval_class::<false, false, G20>(setup, c, ops),
-        (true, false) => eval_class::<true, false, G20>(setup, c, ops),
-        (false, true) => eval_class::<false, true, G20>(setup, c, ops),
-        (true, true) => eval_class::<true, true, G20>(setup, c, ops),
+    // The default grid 2^20 gets its own copy with the scaling constants folded in.
+    Some(match (m, d, shift == OFFSET_SHIFT_MIN) {
+        (false, false, true) => eval_fast::<false, false, true>(setup, shift, xs, ys, s, ops),
+        (true, false, true) => eval_fast::<true, false, true>(setup, shift, xs, ys, s, ops),
+        (false, true, true) => eval_fast::<false, true, true>(setup, shift, xs, ys, s, ops),
+        (true, true, true) => eval_fast::<true, true, true>(setup, shift, xs, ys, s, ops),
+        (false, false, false) => eval_fast::<false, false, false>(setup, shift, xs, ys, s, ops),
+        (true, false, false) => eval_fast::<true, false, false>(setup, shift, xs, ys, s, ops),
+        (false, true, false) => eval_fast::<false, true, false>(setup, shift, xs, ys, s, ops),
+        (true, true, false) => eval_fast::<true, true, false>(setup, shift, xs, ys, s, ops),
     })
+}
+
+/// Whether [`bounded_eval`] takes the fast datapath for these inputs (for the boundary tests;
+/// inputs as [`bounded_eval`] accepts them).
+#[cfg(test)]
+#[allow(clippy::cast_possible_wrap)]
+pub(crate) fn takes_fast_path(setup: &Setup, shift: u32, pos: ScreenPos, s: &Sample) -> bool {
+    let (vp, xs, ys) = (setup.viewport, pos.xs as i32, pos.ys as i32);
+    match setup.class {
+        Class::Static => Fast::new::<false, false, false>(vp, xs, ys, s, shift).is_some(),
+        Class::Motion => Fast::new::<true, false, false>(vp, xs, ys, s, shift).is_some(),
+        Class::Defocus => Fast::new::<false, true, false>(vp, xs, ys, s, shift).is_some(),
+        Class::MotionDefocus => Fast::new::<true, true, false>(vp, xs, ys, s, shift).is_some(),
+    }
 }
 
 /// The bounded sample test: the depth on a hit (`S` = the setup's offset shift; a setup of the
 /// exact test is evaluated at the finest grid, [`OFFSET_SHIFT_MIN`]).
+#[inline]
 pub fn bounded_test(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> Option<Hit> {
+    // A setup's shift is in range by construction (`PrecisionBits::of` of a sealed precision
+    // whose OFF is checked at compile time), so `bounded_eval`'s range check is not repeated.
     let shift = setup.prec.offset_shift().unwrap_or(OFFSET_SHIFT_MIN);
-    bounded_eval(setup, shift, pos, s, ops)?.hit
+    eval_at::<Full>(setup, shift, pos, s, ops)?.hit
 }
 
 /// [`bounded_test`] of precision `P` on unit `U`, for a setup of precision `P`: the grid is
@@ -542,10 +837,5 @@ pub fn bounded_test_unit<P: Precision, U: Unit>(
     ops: &mut Ops,
 ) -> Option<Hit> {
     let shift = P::OFFSET_SHIFT.unwrap_or(OFFSET_SHIFT_MIN);
-    let c = ctx(setup, shift, pos, s)?;
-    if shift == OFFSET_SHIFT_MIN {
-        eval_unit::<U, true>(setup, &c, ops)?.hit
-    } else {
-        eval_unit::<U, false>(setup, &c, ops)?.hit
-    }
+    eval_at::<U>(setup, shift, pos, s, ops)?.hit
 }

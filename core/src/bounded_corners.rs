@@ -135,6 +135,83 @@ fn bounded_test_at_the_domain_corners() {
     }
 }
 
+/// The boundary between the fast and the general datapath (`bounded.rs`, `Fast::new`): T = 2^15
+/// (motion classes), U or V = 2^16 (defocus classes) and a side W or H ≥ 2^(S−9) go to the
+/// general datapath, their neighbours to the fast one. On both sides of each boundary, at every
+/// screen corner, on the domain-corner triangles (lerps over |f1 − f0| = 2^30, CoC ±2^29, where
+/// every scaled factor is at its extreme) and on a screen-covering triangle (hits, depth), at
+/// grids 2^20, 2^21 and 2^32, every output equals the frozen contract (`bounded_frozen.rs`),
+/// and each path is taken where expected. Fails, e.g., if `Fast::new` accepts T = 2^15 (its
+/// time factor 2^31 overflows i32) or W = 2048 at S = 20.
+#[test]
+fn fast_and_general_datapaths_agree_at_their_boundary() {
+    use crate::bounded::takes_fast_path;
+    use crate::bounded_frozen::frozen_eval;
+    let ts = [0, 1, ONE / 2 - 1, ONE / 2, ONE / 2 + 1, ONE - 1, ONE];
+    let ls = [-ONE, 1 - ONE, -1, 0, 1, ONE - 1, ONE];
+    let cover = {
+        let v = |x: i32, y: i32, z: i32, w: i32, c: i32| Vertex::from_bits([x, y, z, w, c]);
+        Triangle::new(
+            [
+                v(-4 * ONE, -4 * ONE, ONE / 2, ONE, ONE / 8),
+                v(4 * ONE, -4 * ONE, ONE / 4, ONE, -ONE / 8),
+                v(0, 4 * ONE, ONE / 3, 2 * ONE, ONE / 16),
+            ],
+            [
+                v(-3 * ONE, -5 * ONE, ONE / 2, ONE + 7, ONE / 7),
+                v(5 * ONE, -4 * ONE, ONE / 5, ONE, -ONE / 9),
+                v(ONE, 5 * ONE, ONE / 3, 2 * ONE - 3, ONE / 17),
+            ],
+        )
+        .unwrap()
+    };
+    let mut all = tris().to_vec();
+    all.push(cover);
+    let (mut fast, mut general, mut hits) = (0u32, 0u32, 0u32);
+    for (vw, vh) in [
+        (2047u16, 2047u16),
+        (2048, 2047),
+        (2047, 2048),
+        (2048, 2048),
+        (1, 1),
+    ] {
+        let vp = Viewport::new(vw, vh).unwrap();
+        for tri in &all {
+            let setup = Setup::unculled(tri, vp);
+            let (motion, defocus) = (setup.class().motion(), setup.class().defocus());
+            for &t in &ts {
+                for (&u, &v) in ls.iter().zip(ls.iter().rev()) {
+                    let s = smp(0, 255, u, v, t);
+                    for (px, py) in [(0, 0), (vw - 1, 0), (0, vh - 1), (vw - 1, vh - 1)] {
+                        let pos = ScreenPos::of(px, py, &s);
+                        for shift in [OFFSET_SHIFT_MIN, 21, OFFSET_SHIFT_MAX] {
+                            let mut ops = Ops::default();
+                            let want = frozen_eval(&setup, shift, pos, &s, &mut ops);
+                            let got = bounded_eval(&setup, shift, pos, &s, &mut ops);
+                            assert_eq!(
+                                got, want,
+                                "vp {vw}x{vh} shift {shift} {s:?} px ({px},{py}) {tri:?}"
+                            );
+                            let refused = (motion && t == ONE / 2)
+                                || (defocus && (u == ONE || v == ONE))
+                                || u32::from(vw.max(vh)) >= 1 << (shift - 9);
+                            let f = takes_fast_path(&setup, shift, pos, &s);
+                            assert_eq!(f, !refused, "vp {vw}x{vh} shift {shift} {s:?}");
+                            fast += u32::from(f);
+                            general += u32::from(!f);
+                            hits += u32::from(got.is_some_and(|e| e.hit.is_some()));
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        fast > 1000 && general > 1000 && hits > 100,
+        "{fast} {general} {hits}"
+    );
+}
+
 #[test]
 fn epsilon_setup_and_bounds_at_the_domain_corners() {
     for (vw, vh) in [(2048u16, 2048u16), (1, 1), (1, 2048)] {

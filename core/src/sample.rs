@@ -342,6 +342,13 @@ pub fn sample_test(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> 
     if setup.prec.offset_shift().is_some() {
         return crate::bounded::bounded_test(setup, pos, s, ops);
     }
+    exact_test(setup, pos, s, ops)
+}
+
+/// The exact test's hit, out of line: `sample_eval` returns a large value, and inlined here its
+/// stack frame would be set up on the bounded path's calls too.
+#[inline(never)]
+fn exact_test(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> Option<Hit> {
     sample_eval(setup, pos, s, ops).hit
 }
 
