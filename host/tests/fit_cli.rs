@@ -249,14 +249,15 @@ fn units_table() {
             .map(String::from)
             .collect::<Vec<_>>()
     };
-    // DSP48E1 column (7th cell): full 120 (= `uvt cost`'s sample total), motion-only without
-    // the lens products and the CoC lerp, defocus-only without the lerps, static-only without
-    // both (bounded-16-16-16-20: lerp 2 DSP each, lens 2 DSP each).
+    // DSP48E1 column (7th cell): full 75 (= `uvt cost`'s sample total), motion-only without
+    // the 6 lens products and the 3 CoC lerps, defocus-only without the 15 lerps, static-only
+    // without both (bounded-16-16-16-20 with the RTL's tiling: lerp 18×32 and lens 18×31 are one
+    // DSP48E1 each plus an 8-bit LUT corner).
     let dsp: Vec<String> = ["full", "motion-only", "defocus-only", "static-only"]
         .iter()
         .map(|u| row(u)[6].clone())
         .collect();
-    assert_eq!(dsp, ["120", "102", "90", "78"], "{t}");
+    assert_eq!(dsp, ["75", "66", "60", "54"], "{t}");
     assert!(row("full")[3].contains("not measured"));
     // With a measured file its figures appear.
     let dir = tempfile::tempdir().unwrap();
