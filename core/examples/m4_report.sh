@@ -97,18 +97,6 @@ if [[ "${1:-}" == "--sweep" ]]; then
     cal=$(echo "$m4" | awk -F= '/^calibration/ {print $2}')
     rows+=("    {\"name\": \"$n\", \"setup\": $(per "$m4" setup_sel 0), \"bounds\": $(per "$m4" bounds_sel 0), \"sample\": $(per "$m4" sample_sel 0), \"host_ns\": [$(per "$host" setup_sel 1), $(per "$host" bounds_sel 1), $(per "$host" sample_sel 1)], \"calibration\": $cal}")
   done
-  # The full unit on each narrower unit's prims: the same work as that unit's row (its image
-  # must be the same, bit for bit).
-  for u in motion-only defocus-only static-only; do
-    echo "m4_report --units: full on the $u prims" >&2
-    UVT_M4_UNIT=full UVT_M4_PRIMS=$u cargo build -q --release -p uvt-core --example m4_render --target thumbv7em-none-eabihf
-    elf=$tdir/thumbv7em-none-eabihf/release/examples/m4_render
-    m4=$(timeout 120 qemu-system-arm -machine mps2-an386 -cpu cortex-m4 -nographic -monitor none \
-        -semihosting-config enable=on,target=native -icount shift=0 -kernel "$elf")
-    [[ "$(field "$m4" prims)" == "$u" ]] || { echo "m4_render not built for the $u prims" >&2; exit 1; }
-    [[ "$(field "$m4" checksum)" == "${sums[$u]}" ]] || { echo "full on the $u prims: checksum $(field "$m4" checksum), the $u unit ${sums[$u]}" >&2; exit 1; }
-    same+=("    {\"prims\": \"$u\", \"setup\": $(per "$m4" setup_unit), \"bounds\": $(per "$m4" bounds_unit), \"sample\": $(per "$m4" sample_unit), \"checksum\": \"$(field "$m4" checksum)\"}")
-  done
   tmp=$(mktemp "$json.XXXX")
   {
     echo "{"
