@@ -72,6 +72,9 @@ const TUV_SCALE: i64 = 1 << TUV_FRAC;
 const SUBPIXEL_SCALE: i32 = 1 << SUBPIXEL_BITS;
 /// 2^24: the depth quotient's scale.
 const DEPTH_SCALE: i64 = 1 << DEPTH_FRAC;
+/// 2^(31 − DEPTH_FRAC) = 2^7: the quotient saturates where num ≥ 2^7·den (a constant shift,
+/// checked by the compiler).
+const DEPTH_SAT_SCALE: i64 = 1 << (31 - DEPTH_FRAC);
 
 /// The conservative epsilon of a setup: how far the bounded test's rounding can move a vertex,
 /// in raw clip units (2^-16), rounded up to integers. All zero for the exact test, so every
@@ -482,7 +485,7 @@ fn depth(e: &[i64; 3], wz: &[(i32, i32); 3], sign: i64) -> i32 {
     }
     let (num, den) = if sign < 0 { (-num, -den) } else { (num, den) };
     // 2^7·den < 2^62 (den < 2^55).
-    let lim = den * (1 << (31 - DEPTH_FRAC));
+    let lim = den * DEPTH_SAT_SCALE;
     if den <= 0 || num >= lim {
         return DEPTH_FAR;
     }
