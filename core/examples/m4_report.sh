@@ -20,6 +20,10 @@
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 tdir=${CARGO_TARGET_DIR:-target}
+# The rows of a JSON array, comma-separated (one per line, as given).
+json_items() { local n=$#; local i=0; for r in "$@"; do i=$((i + 1)); if [[ $i -lt $n ]]; then echo "$r,"; else echo "$r"; fi; done; }
+# Move a finished temporary file into place (nothing half-written), print it and stop.
+publish() { mv "$1" "$2"; cat "$2"; exit 0; }
 sec() { printf '%d' "0x$(readelf -S -W "$1" | awk -v s="$2" '{for (i = 1; i <= NF; i++) if ($i == s) print $(i + 4)}')"; }
 if [[ "${1:-}" == "--units" ]]; then
   json=${2:-host/report/m4_units.json}
@@ -62,22 +66,14 @@ if [[ "${1:-}" == "--units" ]]; then
     echo "  \"command\": \"bash core/examples/m4_report.sh --units\","
     echo "  \"target\": \"Cortex-M4F (thumbv7em-none-eabihf, QEMU mps2-an386, -icount shift=0): m4_render built with UVT_M4_UNIT; default configuration only; the demo prims the unit accepts; flash = .vector_table + .text + .rodata bytes, ram = .data + .bss bytes, stack = painted peak bytes; setup/bounds/sample = instructions per call\","
     echo "  \"units\": ["
-    for i in "${!rows[@]}"; do
-      sep=","; [[ $i -eq $((${#rows[@]} - 1)) ]] && sep=""
-      echo "${rows[$i]}$sep"
-    done
+    json_items "${rows[@]}"
     echo "  ],"
     echo "  \"full_on_unit_prims\": ["
-    for i in "${!same[@]}"; do
-      sep=","; [[ $i -eq $((${#same[@]} - 1)) ]] && sep=""
-      echo "${same[$i]}$sep"
-    done
+    json_items "${same[@]}"
     echo "  ]"
     echo "}"
   } > "$tmp"
-  mv "$tmp" "$json"
-  cat "$json"
-  exit 0
+  publish "$tmp" "$json"
 fi
 if [[ "${1:-}" == "--sweep" ]]; then
   json=${2:-host/report/m4.json}
@@ -103,16 +99,11 @@ if [[ "${1:-}" == "--sweep" ]]; then
     echo "  \"command\": \"bash core/examples/m4_report.sh --sweep\","
     echo "  \"target\": \"Cortex-M4F (thumbv7em-none-eabihf, QEMU mps2-an386, -icount shift=0; instructions per call on the demo scene; calibration 8000002 expected)\","
     echo "  \"configs\": ["
-    for i in "${!rows[@]}"; do
-      sep=","; [[ $i -eq $((${#rows[@]} - 1)) ]] && sep=""
-      echo "${rows[$i]}$sep"
-    done
+    json_items "${rows[@]}"
     echo "  ]"
     echo "}"
   } > "$tmp"
-  mv "$tmp" "$json"
-  cat "$json"
-  exit 0
+  publish "$tmp" "$json"
 fi
 # profile: name target machine cpu
 profiles=("M4F thumbv7em-none-eabihf mps2-an386 cortex-m4" "M3 thumbv7m-none-eabi mps2-an385 cortex-m3")
