@@ -233,7 +233,8 @@ fn mla_hi(m: i32, n: i32, acc: i32) -> i32 {
 /// [`fast_vertex`]); [`Fast::new`] refuses the few inputs whose scaled factors do not fit i32,
 /// which go to the general datapath ([`eval_general`]).
 ///
-/// - `tq = min(T, 2^16 − T)·2^16` ∈ [0, 2^31) (T ≠ 2^15), `late = T > 2^15`.
+/// - `tq = ±min(T, 2^16 − T)·2^16`, |tq| < 2^31 (T ≠ 2^15): `+T·2^16` for T < 2^15, and
+///   `−(2^16 − T)·2^16` with `late = T > 2^15`.
 /// - `uq = U·2^15`, `vq = V·2^15` ∈ [−2^31, 2^31) (U, V ≠ 2^16).
 /// - `swq = 256W·2^(32−S)`, `shq`, `ngxq = ngx·2^(32−S)`, `ngyq` (|.| < 2^31, checked).
 struct Fast {
@@ -281,7 +282,8 @@ impl Fast {
         let late = t > HALF;
         // T ∈ [0, 2^16] \ {2^15}: the smaller of T, 2^16 − T is < 2^15, so `tq` < 2^31; U, V ∈
         // [−2^16, 2^16): U·2^15 ∈ [−2^31, 2^31). Multiplications by the constants 2^16, 2^15.
-        let tq = if late { ONE - t } else { t } * ONE;
+        // Negated for T > 2^15: −(2^16 − T)·2^16 > −2^31 (i32).
+        let tq = if late { t - ONE } else { t } * ONE;
         // 2^(32−S) ∈ [1, 2^12] (a right shift of a constant). 256·max(W, H) < 2^(S−1), so
         // 256W·2^(32−S) < 2^31, and |ngx| ≤ 256W, |ngy| ≤ 256H: all four products fit i32.
         let k = (1i32 << 12) >> (shift - OFFSET_SHIFT_MIN);
@@ -303,15 +305,15 @@ impl Fast {
 }
 
 /// One vertex at the sample on the fast datapath: the same `(a', b', w)` as [`vertex`]. `b` is
-/// the vertex at the shutter end nearer to T (`q` for `T < 2^15`, `r` for `T > 2^15`), `o` the
-/// other one (motion classes; else both are `q`).
+/// the vertex at the shutter end nearer to T (`q` for `T < 2^15`, `r` for `T > 2^15`; `q` for
+/// the classes without motion), `d` the setup's `r − q` of the same vertex ([`Setup::dv`]).
 ///
-/// - **Lerp** `f0 + rnd16(T·(f1 − f0))`: for T < 2^15 it is `mla_hi(T·2^16, f1 − f0, f0)`, since
-///   `floor((T·2^16·d + 2^31)/2^32) = floor((T·d + 2^15)/2^16)` (numerator and denominator
-///   scaled by 2^16). For T > 2^15, with `d = f1 − f0` and T' = 2^16 − T:
-///   `f1 + floor((T'·2^16·(f0 − f1) + 2^31)/2^32) = f1 + floor((T·d + 2^15)/2^16 − d)
-///   = f0 + floor((T·d + 2^15)/2^16)` (subtracting the integer d inside the floor). |d| ≤ 2^30,
-///   `tq` < 2^31: the product < 2^61; the result is the lerp, |.| ≤ 2^29.
+/// - **Lerp** `f0 + rnd16(T·(f1 − f0))`: for T < 2^15 it is `mla_hi(T·2^16, d, f0)` with
+///   `d = f1 − f0`, since `floor((T·2^16·d + 2^31)/2^32) = floor((T·d + 2^15)/2^16)` (numerator
+///   and denominator scaled by 2^16). For T > 2^15, with T' = 2^16 − T and `tq = −T'·2^16`:
+///   `mla_hi(tq, d, f1) = f1 + floor((T'·2^16·(f0 − f1) + 2^31)/2^32) = f1 + floor((T·d +
+///   2^15)/2^16 − d) = f0 + floor((T·d + 2^15)/2^16)` (subtracting the integer d inside the
+///   floor). |d| ≤ 2^30, |tq| < 2^31: |product| < 2^61; the result is the lerp, |.| ≤ 2^29.
 /// - **Lens** `x + rnd16(U·c)` = `mla_hi(U·2^15, 2c, x)`: `U·2^15·2c = 2^16·U·c`, the same
 ///   scaling; |2c| ≤ 2^30, result |x| ≤ 2^30.
 /// - **Offset** `floor((e·p + ng·w + 2^(S−1))/2^S)` = `floor((e·2^(32−S)·p + ng·2^(32−S)·w +
@@ -321,21 +323,21 @@ impl Fast {
 #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
 fn fast_vertex<const MOTION: bool, const DEFOCUS: bool>(
     b: &[i32; 5],
-    o: &[i32; 5],
+    d: &[i32; 5],
     f: &Fast,
 ) -> (i32, i32, i32) {
-    // |f1 − f0| ≤ 2^30 (checked triangle, |f| ≤ 2^29).
-    let at = |f0: i32, f1: i32| {
+    // |d| ≤ 2^30 (checked triangle, |f| ≤ 2^29; `Setup::dv`).
+    let at = |f0: i32, d: i32| {
         if MOTION {
-            mla_hi(f.tq, f1 - f0, f0)
+            mla_hi(f.tq, d, f0)
         } else {
             f0
         }
     };
-    let (mut x, mut y, w) = (at(b[X], o[X]), at(b[Y], o[Y]), at(b[W], o[W]));
+    let (mut x, mut y, w) = (at(b[X], d[X]), at(b[Y], d[Y]), at(b[W], d[W]));
     if DEFOCUS {
         // |c_t| ≤ 2^29: 2c ≤ 2^30 (i32).
-        let c2 = at(b[C], o[C]) * 2;
+        let c2 = at(b[C], d[C]) * 2;
         x = mla_hi(f.uq, c2, x);
         y = mla_hi(f.vq, c2, y);
     }
@@ -399,6 +401,52 @@ fn div64_32(u: u64, v: u32) -> u32 {
     q1 * B + q0
 }
 
+/// `floor(num·2^24 / den)` for `den` ∈ (0, 2^55) and |num| < 2^7·den, exactly: the same
+/// quotient on every target. 64-bit targets (the host) divide the < 2^86 magnitude by `den` in
+/// `u128` (one 128-by-64-bit hardware division there, [`depth_quotient_wide`]); the others use
+/// 32-bit divides only ([`depth_quotient_32`], the Cortex-M's UDIV). `bounded_frozen` checks
+/// both against the 128-bit floor division on extreme and random operands on the host, and the
+/// Cortex-M4F checksum test (`tests/tests/m4_qemu.rs`) runs the 32-bit one against the host's
+/// image.
+#[inline]
+pub(crate) fn depth_quotient(num: i64, den: i64) -> i64 {
+    #[cfg(target_pointer_width = "64")]
+    {
+        depth_quotient_wide(num, den)
+    }
+    #[cfg(not(target_pointer_width = "64"))]
+    {
+        depth_quotient_32(num, den)
+    }
+}
+
+/// [`depth_quotient`] by a `u128` division of magnitudes: `|num|·2^24` < 2^86 (exact in u128),
+/// `den` > 0, so `q = floor(|num|·2^24/den)` < 2^31 and the remainder `|num|·2^24 − q·den`
+/// ∈ [0, den) are exact; the floor of the negative quotient is `−q` if the remainder is 0, else
+/// `−q − 1`. Compiled on every target (tested on the host), used on 64-bit ones.
+#[allow(
+    clippy::arithmetic_side_effects,
+    clippy::cast_possible_truncation,
+    clippy::cast_possible_wrap,
+    clippy::cast_sign_loss
+)]
+#[cfg_attr(not(target_pointer_width = "64"), allow(dead_code))]
+#[inline]
+pub(crate) fn depth_quotient_wide(num: i64, den: i64) -> i64 {
+    // den > 0 (caller): the conversion is exact; |num| < 2^62, shifted by the constant 24 < 2^86.
+    let d = u128::from(den as u64);
+    let m = u128::from(num.unsigned_abs()) << 24;
+    let q = m / d;
+    // q < 2^31 (|num| < 2^7·den): the narrowing is exact; q·d ≤ m.
+    let rem = m - q * d;
+    let q = q as i64;
+    if num >= 0 {
+        q
+    } else {
+        -q - i64::from(rem != 0)
+    }
+}
+
 /// `floor(num·2^24 / den)` for `den` ∈ (0, 2^55) and |num| < 2^7·den, exactly, without a
 /// 64- or 128-bit division routine. Then the quotient lies in [−2^31, 2^31).
 ///
@@ -411,15 +459,17 @@ fn div64_32(u: u64, v: u32) -> u32 {
 /// lies in [−2·den, den), |R| < 2^56, so the wrapped value is exact, and at most two steps
 /// `q̂ − 1`, `R + den` reach `0 ≤ R < den`, i.e. q̂ = floor(x). For `num < 0` the floor is
 /// `−q̂` if R = 0, else `−q̂ − 1`. `bounded_frozen` checks it against the 128-bit division on
-/// extreme and random operands.
+/// extreme and random operands (on the host, where [`depth_quotient`] uses
+/// [`depth_quotient_wide`]).
 #[allow(
     clippy::arithmetic_side_effects,
     clippy::cast_possible_truncation,
     clippy::cast_possible_wrap,
     clippy::cast_sign_loss
 )]
+#[cfg_attr(target_pointer_width = "64", allow(dead_code))]
 #[inline]
-pub(crate) fn depth_quotient(num: i64, den: i64) -> i64 {
+pub(crate) fn depth_quotient_32(num: i64, den: i64) -> i64 {
     // den > 0: the conversion is exact.
     let den = den as u64;
     let len = u64::BITS - den.leading_zeros();
@@ -644,12 +694,11 @@ fn eval_fast<const MOTION: bool, const DEFOCUS: bool, const G20: bool>(
     };
     let [v0, v1] = &setup.tri.v;
     // The shutter end nearer to T is the base of every lerp (`fast_vertex`).
-    let (b, o) = if MOTION && f.late { (v1, v0) } else { (v0, v1) };
-    let [b0, b1, b2] = b;
-    let [o0, o1, o2] = o;
-    let (a0, bb0, w0) = fast_vertex::<MOTION, DEFOCUS>(b0, o0, &f);
-    let (a1, bb1, w1) = fast_vertex::<MOTION, DEFOCUS>(b1, o1, &f);
-    let (a2, bb2, w2) = fast_vertex::<MOTION, DEFOCUS>(b2, o2, &f);
+    let [b0, b1, b2] = if MOTION && f.late { v1 } else { v0 };
+    let [d0, d1, d2] = &setup.dv;
+    let (a0, bb0, w0) = fast_vertex::<MOTION, DEFOCUS>(b0, d0, &f);
+    let (a1, bb1, w1) = fast_vertex::<MOTION, DEFOCUS>(b1, d1, &f);
+    let (a2, bb2, w2) = fast_vertex::<MOTION, DEFOCUS>(b2, d2, &f);
     let wpos = w0 > 0 && w1 > 0 && w2 > 0;
     // Motion classes recompute w and z out of line; the others only load them.
     let wz = || {
@@ -669,20 +718,21 @@ fn eval_fast<const MOTION: bool, const DEFOCUS: bool, const G20: bool>(
 #[allow(clippy::arithmetic_side_effects)]
 fn fast_wz<const MOTION: bool>(setup: &Setup, tq: i32, late: bool) -> [(i32, i32); 3] {
     let [v0, v1] = &setup.tri.v;
-    let (b, o) = if MOTION && late { (v1, v0) } else { (v0, v1) };
-    let at = |f0: i32, f1: i32| {
+    let b = if MOTION && late { v1 } else { v0 };
+    // |d| ≤ 2^30 (`Setup::dv`).
+    let at = |f0: i32, d: i32| {
         if MOTION {
-            mla_hi(tq, f1 - f0, f0)
+            mla_hi(tq, d, f0)
         } else {
             f0
         }
     };
     let [b0, b1, b2] = b;
-    let [o0, o1, o2] = o;
+    let [d0, d1, d2] = &setup.dv;
     [
-        (at(b0[W], o0[W]), at(b0[Z], o0[Z])),
-        (at(b1[W], o1[W]), at(b1[Z], o1[Z])),
-        (at(b2[W], o2[W]), at(b2[Z], o2[Z])),
+        (at(b0[W], d0[W]), at(b0[Z], d0[Z])),
+        (at(b1[W], d1[W]), at(b1[Z], d1[Z])),
+        (at(b2[W], d2[W]), at(b2[Z], d2[Z])),
     ]
 }
 

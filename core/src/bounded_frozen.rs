@@ -434,12 +434,22 @@ mod tests {
         let mut r = Rng(seed);
         let check = |num: i64, den: i64| {
             let want = (i128::from(num) * (1 << 24)).div_euclid(i128::from(den));
-            let got = crate::bounded::depth_quotient(num, den);
-            assert_eq!(
-                i128::from(got),
-                want,
-                "num {num} ({num:#x}) den {den} ({den:#x}), seed {seed}"
-            );
+            for (name, got) in [
+                (
+                    "depth_quotient_32",
+                    crate::bounded::depth_quotient_32(num, den),
+                ),
+                (
+                    "depth_quotient_wide",
+                    crate::bounded::depth_quotient_wide(num, den),
+                ),
+            ] {
+                assert_eq!(
+                    i128::from(got),
+                    want,
+                    "{name}: num {num} ({num:#x}) den {den} ({den:#x}), seed {seed}"
+                );
+            }
         };
         let dmax = (1i64 << 55) - 1;
         for den in [

@@ -118,6 +118,9 @@ pub struct Setup {
     pub(crate) span: Interval,
     pub(crate) axes: [AxisBoxes; 2],
     pub(crate) tri: Triangle,
+    /// `dv[i][k] = r_i[k] − q_i[k]`: each vertex field's change over the shutter (|.| ≤ 2^30,
+    /// both ends |.| ≤ 2^29), the bounded sample test's lerp operand ([`Setup::dv`]).
+    pub(crate) dv: [[i32; 5]; 3],
     pub(crate) viewport: Viewport,
     pub(crate) edges: Option<StaticEdges>,
     pub(crate) prec: PrecisionBits,
@@ -144,6 +147,11 @@ impl Setup {
     /// The input triangle.
     pub fn tri(&self) -> &Triangle {
         &self.tri
+    }
+    /// Each vertex field's change over the shutter, `r − q` (t = 1 minus t = 0), per vertex
+    /// and field (x, y, z, w, CoC); all zero for the classes without motion. |.| ≤ 2^30.
+    pub fn dv(&self) -> [[i32; 5]; 3] {
+        self.dv
     }
     /// Viewport.
     pub fn viewport(&self) -> Viewport {
@@ -620,6 +628,7 @@ impl Setup {
             span: Interval::UNIT,
             axes: [full, full],
             tri: *tri,
+            dv: shutter_deltas(tri),
             viewport: vp,
             edges,
             prec,
@@ -797,9 +806,24 @@ fn setup_gated<P: Precision, U: Unit>(
         span,
         axes,
         tri: *tri,
+        dv: shutter_deltas(tri),
         viewport: vp,
         edges,
         prec,
         eps,
     })
+}
+
+/// `r − q` per vertex and field ([`Setup::dv`]). A checked triangle's fields are |.| ≤ 2^29, so
+/// each difference is |.| ≤ 2^30 and fits i32 (`bounded_corners.rs` drives ±2^29 ends).
+#[allow(clippy::arithmetic_side_effects)]
+fn shutter_deltas(tri: &Triangle) -> [[i32; 5]; 3] {
+    let [q, r] = &tri.v;
+    let mut d = [[0; 5]; 3];
+    for ((dv, qv), rv) in d.iter_mut().zip(q).zip(r) {
+        for ((dk, qk), rk) in dv.iter_mut().zip(qv).zip(rv) {
+            *dk = rk - qk;
+        }
+    }
+    d
 }

@@ -131,8 +131,15 @@ where
     }
     fn test(&self, s: &Self::Setup, px: u16, py: u16, idx: usize, ops: &mut Ops) -> Option<f64> {
         let q = &self.pattern.quant[idx];
-        uvt_core::sample_test(&s.0, uvt_core::ScreenPos::of(px, py, q), q, ops)
-            .map(|h| h.depth as f64)
+        // The renderer's dispatch: P's test chosen at compile time (the same hit as
+        // `uvt_core::sample_test` on a setup of precision P).
+        uvt_core::sample::sample_test_unit::<P, uvt_core::Full>(
+            &s.0,
+            uvt_core::ScreenPos::of(px, py, q),
+            q,
+            ops,
+        )
+        .map(|h| h.depth as f64)
     }
     fn far(&self) -> f64 {
         i32::MAX as f64
@@ -218,7 +225,8 @@ pub struct FrameStats {
     pub samples_covered: u64,
     /// samples the bounding-box scan tests: all samples of every footprint pixel
     pub footprint_samples: u64,
-    /// samples inside the per-tile oracle boxes
+    /// samples inside the per-tile oracle boxes (counted only when the run has the oracle,
+    /// [`RunOpts::oracle`]; 0 otherwise, so that runs without it do not pay its bookkeeping)
     pub oracle_tested: u64,
     /// operation counts (fixed pipeline only)
     pub ops_setup: u64,
@@ -461,7 +469,9 @@ fn band<P: Pipeline>(
         y1,
     };
     let bt = o.tile as u16;
-    let mut cell_samples: Vec<(usize, bool)> = Vec::new();
+    // Only with the oracle: the tested samples of the current cell (for its in-band box count).
+    let oracle = o.oracle.is_some();
+    let mut tested_samples: Vec<usize> = Vec::new();
     let dense = if o.oracle.is_some() {
         oracle_points()
     } else {
@@ -482,27 +492,33 @@ fn band<P: Pipeline>(
                 st.tiles_skipped += 1;
                 continue;
             };
-            cell_samples.clear();
+            tested_samples.clear();
             let mut lo = [f64::MAX; 3];
             let mut hi = [f64::MIN; 3];
             for py in cell.y0..cell.y1 {
                 for px in cell.x0..cell.x1 {
                     let pix = (py - y0) as usize * w + px as usize;
+                    // The pixel's samples are consecutive in the table (`Pattern::index`).
+                    let base = pat.index(px, py, 0);
                     for si in 0..s {
-                        let idx = pat.index(px, py, si);
+                        let idx = base + si;
                         if !p.inside(&bounds, idx, &mut ops) {
                             continue;
                         }
                         st.samples_tested += 1;
                         heat[pix] += 1;
+                        if oracle {
+                            tested_samples.push(idx);
+                        }
                         let hit = p.test(setup, px, py, idx, &mut ops);
-                        cell_samples.push((idx, hit.is_some()));
                         if let Some(d) = hit {
                             st.samples_covered += 1;
-                            let uvt = p.uvt(idx);
-                            for k in 0..3 {
-                                lo[k] = lo[k].min(uvt[k]);
-                                hi[k] = hi[k].max(uvt[k]);
+                            if oracle {
+                                let uvt = p.uvt(idx);
+                                for k in 0..3 {
+                                    lo[k] = lo[k].min(uvt[k]);
+                                    hi[k] = hi[k].max(uvt[k]);
+                                }
                             }
                             let slot = pix * s + si;
                             if d < depth[slot] {
@@ -534,10 +550,10 @@ fn band<P: Pipeline>(
                     }
                 }
             }
-            st.oracle_tested += cell_samples
+            st.oracle_tested += tested_samples
                 .iter()
-                .filter(|(idx, _)| {
-                    let uvt = p.uvt(*idx);
+                .filter(|&&idx| {
+                    let uvt = p.uvt(idx);
                     (0..3).all(|k| lo[k] <= uvt[k] && uvt[k] <= hi[k])
                 })
                 .count() as u64;
