@@ -79,6 +79,10 @@ pub const SAMPLES: [Sample; NSAMPLES] = {
     out
 };
 
+/// [`SAMPLES`] as one table in flash: every use below borrows this one copy (a `const`
+/// borrowed in several functions may be emitted once per codegen unit, 1 KiB each).
+static SAMPLE_TABLE: [Sample; NSAMPLES] = SAMPLES;
+
 /// A vertex from values in 1/256 clip units: `[x, y, z, w, coc]`, scaled by 256 (saturating;
 /// the scene's values are ≤ 500 in magnitude, so 256·a < 2^17 and nothing saturates).
 const fn v(a: [i32; 5]) -> Vertex {
@@ -235,10 +239,12 @@ pub fn render_unit<U: Unit>() -> Result<DemoResult, Error> {
 
 /// The scene's primitives that unit `V` accepts, rendered on unit `U` (e.g. the full unit on
 /// the static-only unit's prims, for a comparison on the same work). `Err(ClassNotInUnit)`
-/// unless `U` accepts all of them.
+/// unless `U` accepts all of them. Inlined into its caller (the Cortex-M unit programs call it
+/// once): out of line, its frame holds the renderer twice, 5–8 KB more peak stack.
+#[inline(always)]
 pub fn render_on<U: Unit, V: Unit>() -> Result<DemoResult, Error> {
     let prims = unit_prims::<V>()?;
-    let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLES)?;
+    let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLE_TABLE)?;
     let mut r =
         Renderer::<Laine2011, NTRIS, DefaultPrecision, U>::new(Laine2011, viewport()?, &prims)?;
     let mut image = [[0u8; 3]; NPIXELS];
@@ -401,7 +407,7 @@ pub mod cost {
     pub fn samples_all_on<U: Unit, V: Unit>(reps: u32) -> Result<u64, Error> {
         let prims = unit_prims::<V>()?;
         let vp = viewport()?;
-        let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLES)?;
+        let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLE_TABLE)?;
         let mut ops = Ops::default();
         let mut calls = 0u64;
         for p in prims.iter() {
@@ -453,7 +459,7 @@ pub mod cost {
         let setup = crate::setup::setup_with::<P>;
         let prims = prims()?;
         let vp = viewport()?;
-        let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLES)?;
+        let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLE_TABLE)?;
         let mut ops = Ops::default();
         let mut calls = 0u64;
         for p in prims.iter() {

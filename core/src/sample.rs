@@ -285,7 +285,13 @@ pub fn sample_eval_unit<U: Unit>(
 ) -> SampleEval {
     let d = direction(setup.viewport, pos);
     ops.add_sample(5);
-    if let (Class::Static, Some(st)) = (setup.class, setup.edges.as_ref()) {
+    // A bounded setup does not store the normals (`Setup::edges`): computed here, same value.
+    let computed = if setup.edges.is_none() {
+        setup.edges()
+    } else {
+        None
+    };
+    if let (Class::Static, Some(st)) = (setup.class, setup.edges.as_ref().or(computed.as_ref())) {
         // Plain 2D test: normals precomputed in setup (|n| < 2^61), |d| < 2^45: each product
         // < 2^106, the sum < 2^108.
         #[allow(clippy::arithmetic_side_effects)]

@@ -157,9 +157,14 @@ impl Setup {
     pub fn viewport(&self) -> Viewport {
         self.viewport
     }
-    /// Static in-focus edge data (class `Static` only).
+    /// Static in-focus edge data (class `Static` only). Stored by an exact precision's setup
+    /// (its sample test reads them); computed here from the triangle for a bounded one (same
+    /// value), so a bounded program does not contain the i128 normals unless it asks.
     pub fn edges(&self) -> Option<StaticEdges> {
-        self.edges
+        match self.edges {
+            Some(e) => Some(e),
+            None => (self.class == Class::Static).then(|| static_edges(&self.tri)),
+        }
     }
     /// The precision this setup (and its bounds) use.
     pub fn prec(&self) -> PrecisionBits {
@@ -527,8 +532,20 @@ fn axis_range(b: &AxisBoxes, extent: u16, bnd: u32) -> (u16, u16) {
 /// constant terms (zero for the exact test, which is then unchanged).
 // Ranges: every raw field ≤ 2^29 in magnitude, ε ≤ 2^24: w + sign·x + |c| + ε < 2^31 and the
 // differences a − b < 2^32, all in i64.
+///
+/// `MOTION = false` (a unit without motion, whose view of the triangle has equal ends,
+/// [`unit_view`]): every chord is constant, `a = b`, and each `solve_le64(a − b, a)` is
+/// `solve_le64(0, a)`, which [`constant_le`] gives without the division (`frac_div`), so such
+/// a unit's program has none; the operations counted are the same.
 #[allow(clippy::arithmetic_side_effects)]
-fn frustum_span(tri: &Triangle, eps: &Eps, ops: &mut Ops) -> Option<Interval> {
+fn frustum_span<const MOTION: bool>(tri: &Triangle, eps: &Eps, ops: &mut Ops) -> Option<Interval> {
+    let solve = |a: i64, b: i64| {
+        if MOTION {
+            solve_le64(a - b, a)
+        } else {
+            constant_le(a)
+        }
+    };
     let [v0, v1] = &tri.v;
     let mut span = Interval::UNIT;
     let ew = i64::from(eps.w);
@@ -539,7 +556,7 @@ fn frustum_span(tri: &Triangle, eps: &Eps, ops: &mut Ops) -> Option<Interval> {
     if a <= 0 && b <= 0 {
         return None;
     }
-    span = span.meet(solve_le64(a - b, a)?)?;
+    span = span.meet(solve(a, b)?)?;
     for axis in 0..2 {
         let e = ew + i64::from(eps.x.get(axis).copied().unwrap_or(0));
         for sign in [-1i64, 1] {
@@ -554,10 +571,17 @@ fn frustum_span(tri: &Triangle, eps: &Eps, ops: &mut Ops) -> Option<Interval> {
             };
             let (a, b) = (dist(v0), dist(v1));
             ops.add_setup(14);
-            span = span.meet(solve_le64(a - b, a)?)?;
+            span = span.meet(solve(a, b)?)?;
         }
     }
     Some(span)
+}
+
+/// `solve_le64(0, n)`: the t ∈ [0, 1] with `0·t ≤ n` — all of them for `n ≥ 0`, none else
+/// (the constant chord of a triangle that does not move; `tests::constant_le_is_solve_le64_at_0`).
+#[inline]
+fn constant_le(n: i64) -> Option<Interval> {
+    (n >= 0).then_some(Interval::UNIT)
 }
 
 /// det(P0, P1, P2) of raw (x, y, w) triples, exact in i128 (|P| < 2^33 here, so |det| < 2^102).
@@ -621,7 +645,8 @@ impl Setup {
             x1: vp.w,
             y1: vp.h,
         };
-        let edges = (class == Class::Static).then(|| static_edges(tri));
+        let exact = P::OFFSET_SHIFT.is_none();
+        let edges = (exact && class == Class::Static).then(|| static_edges(tri));
         Setup {
             class,
             footprint,
@@ -758,10 +783,11 @@ fn setup_gated<P: Precision, U: Unit>(
         w: if U::MOTION { scale(full.w) } else { 0 },
     };
     ops.add_setup(30);
-    let span = match if exact {
-        frustum_span(tri, &Eps::default(), ops)
+    let span_eps = if exact { Eps::default() } else { eps };
+    let span = match if U::MOTION {
+        frustum_span::<true>(tri, &span_eps, ops)
     } else {
-        frustum_span(tri, &eps, ops)
+        frustum_span::<false>(tri, &span_eps, ops)
     } {
         Some(s) => s.round_out(prec.tuv()),
         None => return Outcome::Culled(Cull::Outside),
@@ -796,10 +822,14 @@ fn setup_gated<P: Precision, U: Unit>(
     if footprint.is_empty() {
         return Outcome::Culled(Cull::Outside);
     }
-    let edges = (class == Class::Static).then(|| {
+    // The edge normals are counted for every static triangle (the setup's cost model), but
+    // stored only by an exact precision, whose sample test reads them (`sample.rs`); the
+    // bounded test never does, so its programs (the unit programs) carry no i128 normals.
+    // [`Setup::edges`] gives the same value for both.
+    if class == Class::Static {
         ops.add_setup(30);
-        static_edges(tri)
-    });
+    }
+    let edges = (exact && class == Class::Static).then(|| static_edges(tri));
     Outcome::Visible(Setup {
         class,
         footprint,
@@ -826,4 +856,56 @@ fn shutter_deltas(tri: &Triangle) -> [[i32; 5]; 3] {
         }
     }
     d
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The constant-chord solve of the units without motion equals `solve_le64(0, n)` at the
+    /// sign boundary and the ends of the range `frustum_span` feeds it (|n| < 2^32).
+    #[test]
+    fn constant_le_is_solve_le64_at_0() {
+        let cases = [
+            i64::MIN,
+            -(1 << 32),
+            -(1 << 31),
+            -2,
+            -1,
+            0,
+            1,
+            2,
+            1 << 31,
+            1 << 32,
+            i64::MAX,
+        ];
+        for n in cases {
+            assert_eq!(
+                constant_le(n),
+                solve_le64(0, n),
+                "n = {n} ({n:#x}): expected solve_le64(0, n), observed constant_le(n)"
+            );
+        }
+    }
+
+    /// A bounded setup does not store the static normals, an exact one does; `edges()` gives
+    /// the same value for both, and none for a moving triangle.
+    #[test]
+    fn edges_stored_for_exact_computed_for_bounded() {
+        use crate::formats::{Bounded, Exact};
+        let vp = Viewport::new(32, 32).unwrap();
+        let prims = crate::demo::prims().unwrap();
+        for (i, p) in prims.iter().enumerate() {
+            let mut ops = Ops::default();
+            let ex = setup_with::<Exact>(&p.tri, vp, &mut ops);
+            let bd = setup_with::<Bounded<16, 16, 16, 20>>(&p.tri, vp, &mut ops);
+            if let (Outcome::Visible(ex), Outcome::Visible(bd)) = (ex, bd) {
+                let want = (ex.class == Class::Static).then(|| static_edges(&p.tri));
+                assert_eq!(ex.edges, want, "prim {i}: exact setup stores the normals");
+                assert_eq!(bd.edges, None, "prim {i}: bounded setup stores none");
+                assert_eq!(bd.edges(), want, "prim {i}: bounded edges()");
+                assert_eq!(ex.edges(), want, "prim {i}: exact edges()");
+            }
+        }
+    }
 }
