@@ -66,10 +66,11 @@ impl UvtBox {
         t: Interval::UNIT,
     };
 
-    /// Whether a sample's (u, v, t) raw values lie inside.
+    /// Whether a sample's (u, v, t) raw values lie inside. All six comparisons are evaluated
+    /// (`&`, not `&&`): one decision per sample instead of a chain of data-dependent branches.
     #[inline]
     pub fn contains(&self, u: i32, v: i32, t: i32) -> bool {
-        self.u.contains(u) && self.v.contains(v) && self.t.contains(t)
+        self.u.contains(u) & self.v.contains(v) & self.t.contains(t)
     }
 }
 

@@ -60,7 +60,7 @@ impl Interval {
     /// Whether raw value `x` lies inside.
     #[inline]
     pub fn contains(&self, x: i32) -> bool {
-        self.lo <= x && x <= self.hi
+        (self.lo <= x) & (x <= self.hi)
     }
 
     /// Round outward to the grid of `frac` fraction bits (in the 16-fraction-bit container):
