@@ -15,7 +15,7 @@
 //! | 5 edges | `E'_k = a'_{k+1}·b'_{k+2} − a'_{k+2}·b'_{k+1}` | none | 32 × 32 → i64, \|E'\| < 2^61 |
 //! | 6 orientation | all `w_k > 0`: the common sign of the `E'_k`, no product; else `sign(Σ E'_k·w_k)` | none | **rare path** \|Σ\| < 2^92, its sign from two i64 sums of the high and low words of E' times w (`det_sign`, no 128-bit arithmetic) |
 //! | 7 fill rule (`E'_k = 0`) | tie key `κ = cmp((b', a', w)_{k+1}, (b', a', w)_{k+2})` (lexicographic, −1/0/1); the sample is inside edge k iff `s·κ > 0` | none | comparators only, no multiplier |
-//! | 8 depth (hits only) | `E'' = floor(E'/2^sh)` with \|E''\| ≤ 2^24 (`sh` = bit length of max\|E'\| − 24, ≥ 0), `num = Σ E''·z`, `den = Σ E''·w` | floor | 25 × 30 → i64 sums < 2^55; quotient `floor(num·2^24/den)` saturated to the depth range: saturation from `num` vs `±2^7·den`, then a 64-by-32-bit long division in 32-bit divides with an exact correction (`depth_quotient`) |
+//! | 8 depth (hits only) | `E'' = floor(E'/2^sh)` with \|E''\| ≤ 2^24 (`sh` = bit length of max\|E'\| − 24, ≥ 0), `num = Σ E''·z`, `den = Σ E''·w` | floor | 25 × 30 → i64 sums < 2^55; quotient `floor(num·2^24/den)` saturated to the depth range: saturation from `num` vs `±2^7·den`, then an exact floor division (`depth_quotient`: on 32-bit targets a 64-by-32-bit long division in 32-bit divides with an exact correction, on 64-bit ones one u128 division) |
 //!
 //! `w` and `z` here are the step-1 values (exact for static and defocus-only triangles).
 //!
