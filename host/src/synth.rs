@@ -100,7 +100,7 @@ mod tests {
     }
 
     /// The full unit's entry is the default configuration's full-unit run (`"configs"`), and a
-    /// narrower unit never synthesizes to more multipliers, LUTs or flip-flops than the full one.
+    /// narrower unit never synthesizes to more hard multipliers or flip-flops than the full one.
     #[test]
     fn full_unit_entry_is_the_default_configuration_run() {
         let (path, units) = committed();
@@ -126,12 +126,13 @@ mod tests {
         );
         assert_eq!(Some(full.ecp5.lut4), cfg["ecp5"]["lut4"].as_u64());
         for u in &units {
+            // LUTs are left out: ABC's mapping is not monotonic in the logic removed (Yosys
+            // 0.23's ECP5 motion-only unit maps to 7 LUT4 more than the full one).
             assert!(
                 u.xilinx.dsp48e1 <= full.xilinx.dsp48e1
-                    && u.xilinx.lut <= full.xilinx.lut
                     && u.xilinx.ff <= full.xilinx.ff
                     && u.ecp5.mult18x18d <= full.ecp5.mult18x18d
-                    && u.ecp5.lut4 <= full.ecp5.lut4,
+                    && u.ecp5.ff <= full.ecp5.ff,
                 "{path}: {u:?} against {full:?}"
             );
         }
