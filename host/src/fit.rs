@@ -223,11 +223,20 @@ pub fn load_m4_units(path: &Path) -> Result<Option<M4Data>> {
     Ok(Some((f.units, f.full_on_unit_prims)))
 }
 
-/// Markdown: the unit-variant table (`uvt units`) at configuration `cfg`.
-pub fn units_md(cfg: &Config, m4: Option<&[M4Unit]>, m4_path: &Path) -> String {
+/// Markdown: the unit-variant table (`uvt units`) at configuration `cfg`, with the RTL unit
+/// variants' synthesized counts (`synth`, the `"units"` of `synth_path`) where they were
+/// synthesized at `cfg`.
+pub fn units_md(
+    cfg: &Config,
+    m4: Option<&[M4Unit]>,
+    m4_path: &Path,
+    synth: Option<&[crate::synth::Unit]>,
+    synth_path: &Path,
+) -> String {
     let mut s = format!(
-        "Unit variants at `{cfg}`: sample-test multipliers from the width table's `sample` rows restricted to the unit's stages (`uvt cost --config {cfg}`), Cortex-M4F figures from `{}`.\n\n| unit | accepts | flash bytes | RAM bytes (.data+.bss / stack) | M4F insn setup / tile / sample | sample test DSP48E1 | MULT18X18D | Σ bit-products | products |\n|---|---|---|---|---|---|---|---|---|\n",
-        m4_path.display()
+        "Unit variants at `{cfg}`: sample-test multipliers from the width table's `sample` rows restricted to the unit's stages (`uvt cost --config {cfg}`), Cortex-M4F figures from `{}`, synthesized counts of the RTL unit (`vectors/rtl/uvt_bsample.v`, Yosys) from `{}`.\n\n| unit | accepts | flash bytes | RAM bytes (.data+.bss / stack) | M4F insn setup / tile / sample | sample test DSP48E1 estimate | synthesized DSP48E1 / LUT / FF | MULT18X18D estimate | synthesized MULT18X18D / LUT4 / FF | Σ bit-products | products |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
+        m4_path.display(),
+        synth_path.display()
     );
     for (name, motion, defocus) in UNITS {
         let acc: Vec<&str> = [
@@ -255,13 +264,29 @@ pub fn units_md(cfg: &Config, m4: Option<&[M4Unit]>, m4_path: &Path) -> String {
             c.as_ref()
                 .map_or("not modelled (exact)".into(), |c| g(c).to_string())
         };
+        let syn = synth.and_then(|v| {
+            v.iter()
+                .find(|u| u.unit == name && u.name == cfg.to_string())
+        });
+        let (sx, se) = syn.map_or(("not synthesized".into(), "not synthesized".into()), |u| {
+            (
+                format!("{} / {} / {}", u.xilinx.dsp48e1, u.xilinx.lut, u.xilinx.ff),
+                format!("{} / {} / {}", u.ecp5.mult18x18d, u.ecp5.lut4, u.ecp5.ff),
+            )
+        });
         s += &format!(
-            "| {name} | {} | {flash} | {ram} | {insn} | {} | {} | {} | {} |\n",
+            "| {name} | {} | {flash} | {ram} | {insn} | {} | {sx} | {} | {se} | {} | {} |\n",
             acc.join(", "),
             f(|c| c.dsp48e1),
             f(|c| c.ecp5),
             f(|c| c.bit_products),
             f(|c| c.products)
+        );
+    }
+    if !synth.is_some_and(|v| v.iter().any(|u| u.name == cfg.to_string())) {
+        s += &format!(
+            "\nsynthesized: none at `{cfg}` in `{}` (`bash vectors/rtl/synth.sh` synthesizes every unit at the default configuration).\n",
+            synth_path.display()
         );
     }
     if m4.is_none() {

@@ -27,4 +27,5 @@ pub mod render;
 pub mod report;
 pub mod scene;
 pub mod scenes;
+pub mod synth;
 pub mod vectors;

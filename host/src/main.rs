@@ -154,8 +154,9 @@ enum Cmd {
         #[arg(long, default_value = "4G")]
         mem_budget: String,
     },
-    /// The unit-variant table: per unit flash, RAM and M4F instructions (from m4_units.json)
-    /// and the sample test's multiplier estimate restricted to the unit's stages.
+    /// The unit-variant table: per unit flash, RAM and M4F instructions (from m4_units.json),
+    /// the sample test's multiplier estimate restricted to the unit's stages and the RTL unit's
+    /// synthesized counts (from synth.json).
     Units {
         /// configuration name (exact-P-T-B or bounded-P-T-B-O)
         #[arg(long, default_value = "bounded-16-16-16-20")]
@@ -163,6 +164,10 @@ enum Cmd {
         /// Cortex-M4F figures per unit
         #[arg(long, default_value = "host/report/m4_units.json")]
         m4_units: PathBuf,
+        /// synthesized RTL unit variants (`bash vectors/rtl/synth.sh` writes it); "not
+        /// synthesized" when absent
+        #[arg(long, default_value = "host/report/synth.json")]
+        synth: PathBuf,
     },
     /// Stiff and extreme cases: STE, error against f64 and conservativeness per scene file.
     Stress {
@@ -518,13 +523,20 @@ fn run(cli: Cli) -> Result<()> {
                 );
             }
         }
-        Cmd::Units { config, m4_units } => {
+        Cmd::Units {
+            config,
+            m4_units,
+            synth,
+        } => {
             let cfg = parse_config(&config)?;
             let m4 = uvt_host::fit::load_m4_units(&m4_units)?;
+            let syn = uvt_host::synth::load_units(&synth)?;
             say(&uvt_host::fit::units_md(
                 &cfg,
                 m4.as_ref().map(|m| m.0.as_slice()),
                 &m4_units,
+                syn.as_deref(),
+                &synth,
             ))?;
         }
         Cmd::Stress { dir } => {

@@ -259,6 +259,41 @@ fn units_table() {
         .collect();
     assert_eq!(dsp, ["75", "66", "60", "54"], "{t}");
     assert!(row("full")[3].contains("not measured"));
+    assert!(row("full")[7].contains("not synthesized"), "{t}");
+    // With the committed synth.json: each unit's synthesized DSP48E1 / MULT18X18D (first
+    // figure of its column) is the estimate beside it.
+    let synth = concat!(env!("CARGO_MANIFEST_DIR"), "/report/synth.json");
+    let o = uvt(&["units", "--m4-units", NO_M4, "--synth", synth]);
+    assert!(o.status.success(), "{}", text(&o));
+    let t = String::from_utf8_lossy(&o.stdout);
+    for u in ["full", "motion-only", "defocus-only", "static-only"] {
+        let r: Vec<&str> = t
+            .lines()
+            .find(|l| l.starts_with(&format!("| {u} |")))
+            .unwrap_or_else(|| panic!("no row {u}: {t}"))
+            .split('|')
+            .map(str::trim)
+            .collect();
+        assert!(r[7].starts_with(&format!("{} / ", r[6])), "{u}: {t}");
+        assert!(r[9].starts_with(&format!("{} / ", r[8])), "{u}: {t}");
+    }
+    // A synth file that exists but does not parse is refused with its path.
+    let bad_dir = tempfile::tempdir().unwrap();
+    let bad = bad_dir.path().join("bad-synth.json");
+    std::fs::write(&bad, "{").unwrap();
+    let o = uvt(&[
+        "units",
+        "--m4-units",
+        NO_M4,
+        "--synth",
+        bad.to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    assert!(
+        String::from_utf8_lossy(&o.stderr).contains("bad-synth.json"),
+        "{}",
+        text(&o)
+    );
     // With a measured file its figures appear.
     let dir = tempfile::tempdir().unwrap();
     let m4 = dir.path().join("m4_units.json");

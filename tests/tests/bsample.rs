@@ -2,7 +2,8 @@
 //! (`vectors/rtl/uvt_bsample.v`): the committed records cover the edge cases they claim, the
 //! checker reports a changed or invalid record by field, and under Icarus Verilog the unit
 //! reproduces every committed record bit for bit, reproduces freshly generated records of other
-//! configurations (its POS / TUV / OFF parameters), and a flipped expected bit is caught.
+//! configurations (its POS / TUV / OFF parameters), and a flipped expected bit is caught; each
+//! unit variant (its MOTION / DEFOCUS parameters) does the same on the classes it accepts.
 //!
 //! `UVT_SEED` seeds the other configurations' records (printed on failure); `UVT_EXTENSIVE=1`
 //! runs every configuration of the precision sweep instead of two.
@@ -31,15 +32,30 @@ fn extensive() -> bool {
 /// Compile the testbench for configuration `g` into `dir`, with the unit's multipliers tiled
 /// for hard multipliers of `ports` (25 × 18: DSP48E1, the default; 18 × 18: ECP5).
 fn build_with(dir: &Path, g: Grid, ports: (u32, u32)) -> PathBuf {
+    build_unit(dir, g, ports, (true, true))
+}
+
+/// Compile the testbench of the unit variant with `terms` = (motion, defocus) (the RTL's
+/// `MOTION`, `DEFOCUS`; (true, true) is the full unit) for configuration `g` into `dir`.
+fn build_unit(dir: &Path, g: Grid, ports: (u32, u32), terms: (bool, bool)) -> PathBuf {
     let p = |k: &'static str, v: u32| (k, v.to_string());
     icarus::compile(
-        &dir.join(format!("tb-{}-{}x{}.vvp", g.name(), ports.0, ports.1)),
+        &dir.join(format!(
+            "tb-{}-{}x{}-{}{}.vvp",
+            g.name(),
+            ports.0,
+            ports.1,
+            u8::from(terms.0),
+            u8::from(terms.1)
+        )),
         &[
             p("tb_bsample.POS", g.pos),
             p("tb_bsample.TUV", g.tuv),
             p("tb_bsample.OFF", g.off),
             p("tb_bsample.DSP_A", ports.0),
             p("tb_bsample.DSP_B", ports.1),
+            p("tb_bsample.MOTION", u32::from(terms.0)),
+            p("tb_bsample.DEFOCUS", u32::from(terms.1)),
         ],
         &["uvt_mul.v", "uvt_bsample.v", "tb_bsample.v"],
     )
@@ -314,5 +330,97 @@ fn rtl_sample_test_unit_with_ecp5_tiling_passes_committed_records() {
         let out = run(&tb, &committed().join(set));
         let n = coverage(set)["records"].as_u64().unwrap();
         assert!(out.contains(&format!("PASS {n} records")), "{set}: {out}");
+    }
+}
+
+/// Whether the unit with `terms` = (motion, defocus) accepts class index `class` (bit 0
+/// motion, bit 1 defocus: static, motion, defocus, both).
+fn accepts(terms: (bool, bool), class: usize) -> bool {
+    (terms.0 || class & 1 == 0) && (terms.1 || class & 2 == 0)
+}
+
+/// The testbench's last line for a set whose records per class are `per_class`.
+fn pass_line(terms: (bool, bool), per_class: &serde_json::Value) -> String {
+    let (mut run, mut skip) = (0, 0);
+    for (k, n) in per_class.as_array().unwrap().iter().enumerate() {
+        let n = n.as_u64().unwrap();
+        if accepts(terms, k) {
+            run += n;
+        } else {
+            skip += n;
+        }
+    }
+    match skip {
+        0 => format!("PASS {run} records"),
+        _ => format!("PASS {run} records, {skip} skipped (class not in the unit)"),
+    }
+}
+
+/// The first record of `set` of class `class` with coverage bit `covered`.
+fn first_of_class(set: &Path, class: u32, covered: bool) -> usize {
+    let ins = std::fs::read_to_string(set.join("bsample_in.hex")).unwrap();
+    let outs = std::fs::read_to_string(set.join("bsample_out.hex")).unwrap();
+    ins.lines()
+        .zip(outs.lines())
+        .position(|(i, o)| {
+            let cfg = u32::from_str_radix(i.split(' ').nth(31).unwrap(), 16).unwrap();
+            let cov = u32::from_str_radix(&o[..8], 16).unwrap() & 1 == 1;
+            cfg & 3 == class && cov == covered
+        })
+        .expect("such a record")
+}
+
+/// Each narrow unit variant (`uvt_bsample.v` with `MOTION`/`DEFOCUS` cleared) reproduces every
+/// committed record of the classes it accepts, skips and counts the others (the totals per class
+/// from the manifests), and reports a flipped expected bit in a record of its widest class while
+/// a flipped bit in a record of a class it lacks is skipped, not compared.
+#[test]
+fn rtl_unit_variants_pass_the_committed_records_of_their_classes() {
+    let dir = tempfile::tempdir().unwrap();
+    // (name, terms, the class whose record is corrupted, a class the unit lacks)
+    for (name, terms, widest, lacks) in [
+        ("motion-only", (true, false), 1, 2),
+        ("defocus-only", (false, true), 2, 1),
+        ("static-only", (false, false), 0, 3),
+    ] {
+        let tb = build_unit(dir.path(), Grid::DEFAULT, (25, 18), terms);
+        for set in ["unit", "frame_a", "frame_b"] {
+            let out = run(&tb, &committed().join(set));
+            let want = pass_line(terms, &coverage(set)["class"]);
+            assert!(
+                out.lines().any(|l| l == want),
+                "{name} on {set}: expected '{want}', got: {out}"
+            );
+        }
+        let bad = dir.path().join(format!("bad-{name}"));
+        copy_set(&committed().join("unit"), &bad);
+        let hit = first_of_class(&bad, widest, true);
+        let other = first_of_class(&bad, lacks, true);
+        // Only the records up to both corrupted ones (the testbench reads the files alone).
+        for f in ["bsample_in.hex", "bsample_out.hex"] {
+            let t = std::fs::read_to_string(bad.join(f)).unwrap();
+            let keep: Vec<&str> = t.lines().take(hit.max(other) + 1).collect();
+            std::fs::write(bad.join(f), keep.join("\n") + "\n").unwrap();
+        }
+        let depth = set_word(&bad, "bsample_out.hex", hit, 1, |w| w ^ (1 << 3));
+        set_word(&bad, "bsample_out.hex", other, 1, |w| w ^ (1 << 3));
+        let out = run(&tb, &bad);
+        assert!(
+            out.contains(&format!(
+                "MISMATCH record {hit} (line {}) field depth: expected {:016x} observed {:016x}",
+                hit + 1,
+                depth ^ (1 << 3),
+                depth
+            )),
+            "{name}: {out}"
+        );
+        assert!(
+            !out.contains(&format!("MISMATCH record {other} ")),
+            "{name}: {out}"
+        );
+        assert!(
+            out.contains("FAIL 1 mismatching fields in"),
+            "{name}: {out}"
+        );
     }
 }

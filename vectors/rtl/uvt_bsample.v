@@ -8,12 +8,19 @@
 //   OFF  offset-grid shift S (20..32): a' = round(A / 2^OFF)
 //   DSP_A, DSP_B, LUTW  the multiplier tiling of every product (uvt_mul.v): hard-multiplier
 //        ports 25 × 18 (DSP48E1, default) or 18 × 18 (ECP5), top chunks <= LUTW bits in LUTs
+//   MOTION, DEFOCUS  the unit variant (1, 1: full; 1, 0: motion-only; 0, 1: defocus-only;
+//        0, 0: static-only). A narrow unit has no register or multiplier for what it cannot
+//        use: no key frame 1, t and lerp without MOTION, no CoC, u, v and lens without DEFOCUS.
 // The unit ignores the low zero bits (narrower multipliers for narrower configurations). It
 // needs no class input: for a static triangle the lerp returns the t = 0 value exactly and for
 // a triangle without CoC the lens term is 0, so the general path equals every class's path.
+// A narrow unit gives the full unit's outputs on the classes it accepts (bit 0 of the class
+// index = motion, bit 1 = defocus, vectors/README.md); the caller routes no other class to it.
 //
 // Ports = record fields (vectors/README.md "RTL integration"):
-//   trin[32*k +: 32]  bsample_in word k, k = 0..29 (t0 v0 x y z w coc, t0 v1 …, t1 v2 coc)
+//   trin[32*k +: 32]  bsample_in word k, k = 0..29 (t0 v0 x y z w coc, t0 v1 …, t1 v2 coc);
+//                     without MOTION words 0..14 only (trin is 480 bits); CoC words, t, u, v
+//                     are unconnected in a unit without their terms
 //   vp_w, vp_h        viewport (word 30, ≤ 2048), xs, ys (words 32, 33; < 256·vp), t, u, v
 //   ab[32*i +: 32]    a0 b0 a1 b1 a2 b2 (bsample_out words 2..7), sign-extended
 //   e[64*k +: 64]     E'_k (words 8..13)
@@ -27,6 +34,11 @@ module uvt_bsample #(
     parameter POS = 16,
     parameter TUV = 16,
     parameter OFF = 20,
+    // the unit variant (core/src/unit.rs): MOTION = 0 leaves out key frame 1, t and the lerp
+    // multipliers; DEFOCUS = 0 the CoC, u, v, the CoC lerp and the lens multipliers. Full: 1, 1;
+    // motion-only: 1, 0; defocus-only: 0, 1; static-only: 0, 0.
+    parameter MOTION = 1,
+    parameter DEFOCUS = 1,
     // hard-multiplier ports and LUT chunk limit of every product (uvt_mul.v): 25 × 18 for
     // Xilinx DSP48E1 (the default), 18 × 18 for Lattice ECP5 MULT18X18D
     parameter DSP_A = 25,
@@ -35,7 +47,7 @@ module uvt_bsample #(
 ) (
     input  wire               clk,
     input  wire               in_valid,
-    input  wire [959:0]       trin,
+    input  wire [32*(MOTION ? 30 : 15)-1:0] trin,
     input  wire [11:0]        vp_w,
     input  wire [11:0]        vp_h,
     input  wire [19:0]        xs,
@@ -69,6 +81,8 @@ module uvt_bsample #(
     assign out_valid  = vld[LAT];
 
     // ---- stage 1: inputs at their significant widths; g = sample-relative scale --------------
+    // Registered only where the unit uses them: key frame 1 and t with MOTION, the CoC words
+    // and u, v with DEFOCUS (the other bits of s1_f0 / s1_f1 / s3_f stay undriven and unread).
     reg [15*FW-1:0] s1_f0, s1_f1;
     reg signed [TW-1:0] s1_t, s1_u, s1_v;
     reg signed [12:0] s1_w, s1_h;      // W, H (sw = 256·W)
@@ -76,16 +90,24 @@ module uvt_bsample #(
     genvar i;
     generate
         for (i = 0; i < 15; i = i + 1) begin : g_in
+            if (DEFOCUS || i % 5 != 4) begin : g_f0
+                always @(posedge clk) s1_f0[FW*i +: FW] <= trin[32*i + 16 - POS +: FW];
+            end
+            if (MOTION && (DEFOCUS || i % 5 != 4)) begin : g_f1
+                always @(posedge clk) s1_f1[FW*i +: FW] <= trin[32*(15+i) + 16 - POS +: FW];
+            end
+        end
+        if (MOTION) begin : g_in_t
+            always @(posedge clk) s1_t <= t[16-TUV +: TW];
+        end
+        if (DEFOCUS) begin : g_in_uv
             always @(posedge clk) begin
-                s1_f0[FW*i +: FW] <= trin[32*i + 16 - POS +: FW];
-                s1_f1[FW*i +: FW] <= trin[32*(15+i) + 16 - POS +: FW];
+                s1_u <= u[16-TUV +: TW];
+                s1_v <= v[16-TUV +: TW];
             end
         end
     endgenerate
     always @(posedge clk) begin
-        s1_t <= t[16-TUV +: TW];
-        s1_u <= u[16-TUV +: TW];
-        s1_v <= v[16-TUV +: TW];
         s1_w <= {1'b0, vp_w};
         s1_h <= {1'b0, vp_h};
         s1_gx <= $signed({1'b0, xs, 1'b0}) - $signed({2'b0, vp_w, 8'b0});
@@ -93,59 +115,80 @@ module uvt_bsample #(
     end
 
     // ---- stages 2–3: step 1, lerp f_t = rnd16(f0·2^16 + T·(f1 − f0)) -----------------------
+    // Without MOTION every field is its t = 0 value (the lerp of f1 = f0 returns f0 exactly):
+    // f_t = f0·2^(16−POS), no multiplier. Without DEFOCUS the CoC is not read.
     reg [15*FW-1:0] s2_f0;
     reg [15*(TW+DW)-1:0] s2_p;
     reg [15*31-1:0] s3_f;              // x y z w c per vertex, raw 2^-16, |.| <= 2^29
     generate
         for (i = 0; i < 15; i = i + 1) begin : g_lerp
-            wire signed [FW-1:0] f0 = s1_f0[FW*i +: FW];
-            wire signed [FW-1:0] f1 = s1_f1[FW*i +: FW];
-            wire signed [DW-1:0] d = f1 - f0;
-            wire signed [TW+DW-1:0] p;
-            uvt_mul #(.AW(TW), .BW(DW), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_t (s1_t, d, p);
-            always @(posedge clk) begin
-                s2_f0[FW*i +: FW] <= f0;
-                s2_p[(TW+DW)*i +: TW+DW] <= p;
+            if (MOTION && (DEFOCUS || i % 5 != 4)) begin : g_mul
+                wire signed [FW-1:0] f0 = s1_f0[FW*i +: FW];
+                wire signed [FW-1:0] f1 = s1_f1[FW*i +: FW];
+                wire signed [DW-1:0] d = f1 - f0;
+                wire signed [TW+DW-1:0] p;
+                uvt_mul #(.AW(TW), .BW(DW), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_t (s1_t, d, p);
+                always @(posedge clk) begin
+                    s2_f0[FW*i +: FW] <= f0;
+                    s2_p[(TW+DW)*i +: TW+DW] <= p;
+                end
+                wire signed [FW-1:0] g0 = s2_f0[FW*i +: FW];
+                wire signed [TW+DW-1:0] gp = s2_p[(TW+DW)*i +: TW+DW];
+                wire signed [47:0] sum = (g0 <<< (32 - POS)) + (gp <<< LS) + 48'sd32768;
+                wire signed [47:0] rnd = sum >>> 16;
+                always @(posedge clk) s3_f[31*i +: 31] <= rnd[30:0];
+            end else if (DEFOCUS || i % 5 != 4) begin : g_t0
+                always @(posedge clk) s2_f0[FW*i +: FW] <= s1_f0[FW*i +: FW];
+                wire signed [FW-1:0] g0 = s2_f0[FW*i +: FW];
+                wire signed [30:0] ft = g0 <<< (16 - POS);   // FW + 16 − POS = 31 bits
+                always @(posedge clk) s3_f[31*i +: 31] <= ft;
             end
-            wire signed [FW-1:0] g0 = s2_f0[FW*i +: FW];
-            wire signed [TW+DW-1:0] gp = s2_p[(TW+DW)*i +: TW+DW];
-            wire signed [47:0] sum = (g0 <<< (32 - POS)) + (gp <<< LS) + 48'sd32768;
-            wire signed [47:0] rnd = sum >>> 16;
-            always @(posedge clk) s3_f[31*i +: 31] <= rnd[30:0];
         end
     endgenerate
     reg signed [TW-1:0] s2_u, s2_v, s3_u, s3_v;
     reg signed [12:0] s2_w, s2_h, s3_w, s3_h, s4_w, s4_h, s5_w, s5_h;
     reg signed [21:0] s2_gx, s2_gy, s3_gx, s3_gy, s4_gx, s4_gy, s5_gx, s5_gy;
+    generate
+        if (DEFOCUS) begin : g_uv
+            always @(posedge clk) {s2_u, s2_v, s3_u, s3_v} <= {s1_u, s1_v, s2_u, s2_v};
+        end
+    endgenerate
     always @(posedge clk) begin
-        {s2_u, s2_v, s2_w, s2_h, s2_gx, s2_gy} <= {s1_u, s1_v, s1_w, s1_h, s1_gx, s1_gy};
-        {s3_u, s3_v, s3_w, s3_h, s3_gx, s3_gy} <= {s2_u, s2_v, s2_w, s2_h, s2_gx, s2_gy};
+        {s2_w, s2_h, s2_gx, s2_gy} <= {s1_w, s1_h, s1_gx, s1_gy};
+        {s3_w, s3_h, s3_gx, s3_gy} <= {s2_w, s2_h, s2_gx, s2_gy};
         {s4_w, s4_h, s4_gx, s4_gy} <= {s3_w, s3_h, s3_gx, s3_gy};
         {s5_w, s5_h, s5_gx, s5_gy} <= {s4_w, s4_h, s4_gx, s4_gy};
     end
 
     // ---- stages 4–5: step 2, lens x = x_t + rnd16(U·c_t), y = y_t + rnd16(V·c_t) -------------
+    // Without DEFOCUS the lens term is 0 (no CoC): x = x_t, y = y_t, no multiplier.
     reg [3*32-1:0] s5_x, s5_y;         // |.| <= 2^30
     reg [3*31-1:0] s5_wt, s5_zt, s6_wt, s6_zt, s7_wt, s7_zt;
     generate
         for (i = 0; i < 3; i = i + 1) begin : g_lens
-            wire signed [30:0] c = s3_f[31*(5*i+4) +: 31];
-            reg signed [TW+30:0] pu, pv;
-            wire signed [TW+30:0] mu, mv;
-            uvt_mul #(.AW(TW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_u (s3_u, c, mu);
-            uvt_mul #(.AW(TW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_v (s3_v, c, mv);
             reg signed [30:0] xt, yt, wt, zt;
+            wire signed [31:0] x, y;
+            if (DEFOCUS) begin : g_uv
+                wire signed [30:0] c = s3_f[31*(5*i+4) +: 31];
+                reg signed [TW+30:0] pu, pv;
+                wire signed [TW+30:0] mu, mv;
+                uvt_mul #(.AW(TW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_u (s3_u, c, mu);
+                uvt_mul #(.AW(TW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_v (s3_v, c, mv);
+                always @(posedge clk) begin
+                    pu <= mu;
+                    pv <= mv;
+                end
+                wire signed [47:0] lu = ((pu <<< US) + 48'sd32768) >>> 16;
+                wire signed [47:0] lv = ((pv <<< US) + 48'sd32768) >>> 16;
+                assign x = xt + $signed(lu[31:0]);
+                assign y = yt + $signed(lv[31:0]);
+            end else begin : g_pin
+                assign x = xt;
+                assign y = yt;
+            end
             always @(posedge clk) begin
-                pu <= mu;
-                pv <= mv;
                 {xt, yt, zt, wt} <= {s3_f[31*(5*i) +: 31], s3_f[31*(5*i+1) +: 31],
                                      s3_f[31*(5*i+2) +: 31], s3_f[31*(5*i+3) +: 31]};
-            end
-            wire signed [47:0] lu = ((pu <<< US) + 48'sd32768) >>> 16;
-            wire signed [47:0] lv = ((pv <<< US) + 48'sd32768) >>> 16;
-            wire signed [31:0] x = xt + $signed(lu[31:0]);
-            wire signed [31:0] y = yt + $signed(lv[31:0]);
-            always @(posedge clk) begin
                 s5_x[32*i +: 32] <= x;
                 s5_y[32*i +: 32] <= y;
                 s5_wt[31*i +: 31] <= wt;
