@@ -2,7 +2,7 @@
 //! scenes in seven rows each — columns bbox scan, every bounds strategy of the core (Laine 2011,
 //! swept-hull culling, lens-slab time bounds, bilinear (u, t)/(v, t) surfaces, hull + lens slabs,
 //! the combined best = hull + surfaces), the f64 reference and the
-//! axis-aligned limit ([`crate::oracle`]) at two densities — plus the cost of each strategy
+//! axis-aligned limit ([`crate::oracle`]) at two efforts — plus the cost of each strategy
 //! (ops per tile, per-sample predicate ops, wall time without the oracle) and a second table over
 //! bounds-tile sizes 1, 2, 4, 8. The core runs at one precision per table (`--precision`, one of
 //! [`PRECISIONS`]; default: the core's default precision): the scene rounded to its position
@@ -17,6 +17,7 @@ use uvt_core::strategies::{best, hull, hull_lens, Hyper, LensTime, BEST_SLABS};
 use uvt_core::{Bounded, Laine2011, Prec, Precision, Triangle, Viewport};
 
 use crate::frame::{run, Fixed, FrameStats, Reference, RunOpts};
+use crate::oracle::search::Effort;
 use crate::oracle::{axis_aligned_limit, Limit};
 use crate::pattern::Pattern;
 use crate::scenes::{bench, Bench, Row};
@@ -97,8 +98,53 @@ macro_rules! with_precision {
     }};
 }
 
-/// Dense points per pixel of the axis-aligned limit (low, high).
-pub const ORACLE_DENSITY: [u32; 2] = [64, 256];
+/// The two efforts of the axis-aligned limit (dense points per pixel, face-search proposals per
+/// face); the second continues the first.
+pub const ORACLE_EFFORT: [Effort; 2] = [
+    Effort {
+        density: 64,
+        steps: 64,
+    },
+    Effort {
+        density: 256,
+        steps: 256,
+    },
+];
+
+/// Parse the limit's two efforts `D0:S0,D1:S1` (dense points per pixel, proposals per face; the
+/// second effort continues the first, so `D1 ≥ D0`, `D1 ≤ 65536`); the message names what is
+/// wrong.
+pub fn parse_effort(text: &str) -> Result<[Effort; 2], String> {
+    let parts: Vec<&str> = text.split(',').collect();
+    let [a, b] = parts[..] else {
+        return Err(format!(
+            "expected two efforts D0:S0,D1:S1, found {}",
+            parts.len()
+        ));
+    };
+    let one = |p: &str| -> Result<Effort, String> {
+        let (d, st) = p
+            .split_once(':')
+            .ok_or_else(|| format!("effort {p:?} is not DENSITY:STEPS"))?;
+        let num = |x: &str, what: &str| {
+            x.trim()
+                .parse::<u32>()
+                .map_err(|e| format!("{what} {x:?} in {p:?}: {e}"))
+        };
+        Ok(Effort {
+            density: num(d, "density")?,
+            steps: num(st, "steps")?,
+        })
+    };
+    let (e0, e1) = (one(a)?, one(b)?);
+    if e1.density < e0.density || e1.density > 65536 || e0.density == 0 {
+        return Err(format!(
+            "densities must satisfy 1 ≤ D0 ≤ D1 ≤ 65536, found {} and {}",
+            e0.density, e1.density
+        ));
+    }
+    Ok([e0, e1])
+}
 
 /// One strategy's result on one row.
 #[derive(Clone, Debug, Serialize)]
@@ -138,6 +184,14 @@ impl StratResult {
             s.ops_bounds + s.ops_predicate + s.ops_sample,
             s.samples_covered,
         )
+    }
+}
+
+fn per_f(a: f64, b: f64) -> f64 {
+    if b == 0.0 {
+        0.0
+    } else {
+        a / b
     }
 }
 
@@ -260,15 +314,16 @@ impl BenchRow {
 }
 
 /// Run the benchmark table at the default precision; `sweep` adds the bounds-tile sweep 1, 2, 4,
-/// 8; `density` (dense points per pixel, low and high) adds the axis-aligned limit.
+/// 8; `effort` (low and high: dense points per pixel, face-search proposals per face) adds the
+/// axis-aligned limit.
 pub fn run_table(
     quick: bool,
     scenes: &[Bench],
     rows: &[Row],
     sweep: bool,
-    density: Option<[u32; 2]>,
+    effort: Option<[Effort; 2]>,
 ) -> Vec<BenchRow> {
-    rows_at::<uvt_core::DefaultPrecision>(quick, scenes, rows, sweep, density)
+    rows_at::<uvt_core::DefaultPrecision>(quick, scenes, rows, sweep, effort)
 }
 
 /// [`run_table`] with the core at the precision named `precision` (one of [`PRECISIONS`] or
@@ -279,12 +334,12 @@ pub fn run_table_at(
     scenes: &[Bench],
     rows: &[Row],
     sweep: bool,
-    density: Option<[u32; 2]>,
+    effort: Option<[Effort; 2]>,
 ) -> anyhow::Result<Vec<BenchRow>> {
     with_precision!(
         precision,
         P,
-        rows_at::<P>(quick, scenes, rows, sweep, density)
+        rows_at::<P>(quick, scenes, rows, sweep, effort)
     )
 }
 
@@ -304,7 +359,7 @@ fn rows_at<P: Precision + Sync>(
     scenes: &[Bench],
     rows: &[Row],
     sweep: bool,
-    density: Option<[u32; 2]>,
+    effort: Option<[Effort; 2]>,
 ) -> Vec<BenchRow> {
     let mut out = Vec::new();
     let total = scenes.len() * rows.len();
@@ -380,7 +435,7 @@ fn rows_at<P: Precision + Sync>(
                 .as_secs_f64()
                 * 1e3;
             let start = std::time::Instant::now();
-            let limit = match density {
+            let limit = match effort {
                 Some(d) => axis_aligned_limit(&core, vp, &pattern, 1, d),
                 None => Limit::default(),
             };
@@ -421,18 +476,25 @@ fn name_of(r: &BenchRow) -> String {
 /// The tables as Markdown, STE in percent: STE per strategy with the axis-aligned limit, the cost
 /// per strategy, and (when swept) STE per bounds-tile size.
 pub fn table_md(rows: &[BenchRow]) -> String {
-    let [d0, d1] = rows.first().map_or(ORACLE_DENSITY, |r| r.limit.density);
+    let [e0, e1] = rows.first().map_or(ORACLE_EFFORT, |r| r.limit.effort);
     // `--no-limit`: the limit was not computed, so its columns are left out (not shown as 0).
-    let with_limit = rows.iter().any(|r| r.limit.density != [0, 0]);
+    let with_limit = rows
+        .iter()
+        .any(|r| r.limit.effort != [Effort::default(); 2]);
+    let label = |e: Effort| format!("{}/px + {} steps", e.density, e.steps);
     let limit_head = if with_limit {
-        format!(" axis-aligned limit {d0}/px | limit {d1}/px | covered samples outside the dense box {d0} / {d1} |")
+        format!(
+            " axis-aligned limit, effort {} | limit, effort {} | gap | covered samples outside the limit box (effort 1 / 2) | best ÷ limit |",
+            label(e0),
+            label(e1)
+        )
     } else {
         String::new()
     };
     let prec = rows.first().map_or(String::new(), |r| r.precision.clone());
     let mut s = format!(
         "Core precision {prec}\n\nSTE (%), bounds tile 1×1\n\n| Scene | Bbox scan | Laine 2011 | hull | lens-t | hyper | hull+lens-t | best | Laine f64 |{limit_head} avg area px |\n|---|---|---|---|---|---|---|---|---|{}---|\n",
-        if with_limit { "---|---|---|" } else { "" }
+        if with_limit { "---|---|---|---|---|" } else { "" }
     );
     let ste = |r: &BenchRow, n: &str| r.strat(n).map_or(0.0, |x| 100.0 * x.ste());
     for r in rows {
@@ -448,12 +510,15 @@ pub fn table_md(rows: &[BenchRow]) -> String {
             ste(r, "best"),
             100.0 * r.f64,
             if with_limit {
+                let (l0, l1) = (r.limit.ste(0), r.limit.ste(1));
                 format!(
-                    " {:.2} | {:.2} | {:.3}% / {:.3}% |",
-                    100.0 * r.limit.ste(0),
-                    100.0 * r.limit.ste(1),
+                    " {:.2} | {:.2} | {:.2}% | {:.3}% / {:.3}% | {:.0}% |",
+                    100.0 * l0,
+                    100.0 * l1,
+                    100.0 * per_f(l0 - l1, l1),
                     100.0 * per(r.limit.missed[0], r.limit.covered),
-                    100.0 * per(r.limit.missed[1], r.limit.covered)
+                    100.0 * per(r.limit.missed[1], r.limit.covered),
+                    100.0 * per_f(ste(r, "best") / 100.0, l1)
                 )
             } else {
                 String::new()
@@ -470,7 +535,7 @@ pub fn table_md(rows: &[BenchRow]) -> String {
     }
     s += " Laine f64 ms |";
     s += if with_limit {
-        " limit ms (dense sampling) |\n|---|"
+        " limit ms (search) |\n|---|"
     } else {
         "\n|---|"
     };

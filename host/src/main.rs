@@ -74,9 +74,13 @@ enum Cmd {
         /// add the table over bounds-tile sizes 1, 2, 4, 8 (four times the strategy runs)
         #[arg(long)]
         tile_sweep: bool,
-        /// skip the axis-aligned limit (its dense sampling takes most of the run)
+        /// skip the axis-aligned limit (its search takes most of the run)
         #[arg(long)]
         no_limit: bool,
+        /// the axis-aligned limit's two efforts, low and high, each dense points per pixel and
+        /// face-search proposals per face: `D0:S0,D1:S1` (default 64:64,256:256)
+        #[arg(long)]
+        limit_effort: Option<String>,
         /// the core's configuration: default, exact-16-16-16, bounded-16-16-16-20,
         /// bounded-16-16-16-22, bounded-16-16-16-24, bounded-12-12-12-24, bounded-12-12-12-26,
         /// bounded-8-8-8-28 (the f64 reference and the axis-aligned limit stay exact)
@@ -372,8 +376,15 @@ fn run(cli: Cli) -> Result<()> {
             row,
             tile_sweep,
             no_limit,
+            limit_effort,
             precision,
         } => {
+            let effort = match limit_effort.as_deref() {
+                None => bench::ORACLE_EFFORT,
+                Some(e) => {
+                    bench::parse_effort(e).map_err(|m| anyhow!("--limit-effort {e:?}: {m}"))?
+                }
+            };
             let kinds: Vec<scenes::Bench> = match scene.as_deref() {
                 None => vec![scenes::Bench::Game, scenes::Bench::Dense],
                 Some("game") => vec![scenes::Bench::Game],
@@ -393,7 +404,7 @@ fn run(cli: Cli) -> Result<()> {
                 &kinds,
                 &rows_sel,
                 tile_sweep,
-                (!no_limit).then_some(bench::ORACLE_DENSITY),
+                (!no_limit).then_some(effort),
             )?;
             say(&bench::table_md(&rows))?;
             if let Some(p) = json {

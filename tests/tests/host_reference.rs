@@ -234,11 +234,11 @@ fn bench_rows_fixed_and_f64_ste_within_two_percent() {
     }
 }
 
-/// The axis-aligned limit (dense sampling of every tile Laine 2011 keeps) on the quick
-/// 'game both x2' row: it has converged (the two densities agree within 8% relative STE, and the
-/// dense box misses at most 0.5% of the covered pattern samples), it saw exactly the frame's
+/// The axis-aligned limit (dense points and face search in every tile Laine 2011 keeps) on the
+/// quick 'game both x2' row: it has converged (the two efforts agree within 8% relative STE, and the
+/// limit box misses at most 0.5% of the covered pattern samples), it saw exactly the frame's
 /// covered samples, and no axis-aligned strategy (Laine 2011, swept-hull culling) tests fewer
-/// samples than it — which would mean the strategy culled coverage that the dense points found.
+/// samples than it — which would mean the strategy culled coverage that the search found.
 #[test]
 fn axis_aligned_limit_converged_and_below_axis_aligned_strategies() {
     let rows = uvt_host::bench::run_table(
@@ -246,7 +246,7 @@ fn axis_aligned_limit_converged_and_below_axis_aligned_strategies() {
         &[scenes::Bench::Game],
         &[scenes::Row::Both2],
         false,
-        Some(uvt_host::bench::ORACLE_DENSITY),
+        Some(uvt_host::bench::ORACLE_EFFORT),
     );
     let r = &rows[0];
     let l = &r.limit;
@@ -256,13 +256,13 @@ fn axis_aligned_limit_converged_and_below_axis_aligned_strategies() {
     let (s0, s1) = (l.ste(0), l.ste(1));
     assert!(
         s1 > 0.0 && (s0 - s1).abs() / s1 <= 0.08,
-        "limit not converged: STE {s0} at {} /px, {s1} at {} /px ({l:?})",
-        l.density[0],
-        l.density[1]
+        "limit not converged: STE {s0} at {:?}, {s1} at {:?} ({l:?})",
+        l.effort[0],
+        l.effort[1]
     );
     assert!(
         l.missed[1] * 200 <= l.covered,
-        "dense box misses {} of {} covered samples ({l:?})",
+        "limit box misses {} of {} covered samples ({l:?})",
         l.missed[1],
         l.covered
     );

@@ -1,0 +1,260 @@
+//! The search behind the axis-aligned limit: the box of a covered set in a 5D integer domain,
+//! estimated from inside.
+//!
+//! The set is given only by a membership predicate (`covered`) over the integer points of a
+//! domain box; the search keeps the bounding box of the covered points it has found, so the
+//! estimate is always *inside* the true box of the set (every face it reports is attained by a
+//! covered point). It finds points in two ways:
+//! - **dense points**: a 5D Owen-scrambled Sobol sequence over the domain (nested: a second call
+//!   continues the same sequence);
+//! - **face search**: each of the 6 faces of dimensions 2..5 (the box's u, v, t) is pushed outward
+//!   from the covered point on it by a (1+1) evolution strategy on the integer grid — a proposal
+//!   moves the face's coordinate outward (or keeps it) and a random subset of the other four
+//!   coordinates by a rounded Gaussian step, clamped to the domain; it is accepted if covered;
+//!   each coordinate's step size doubles on success and shrinks by 0.84 on failure (the 1/5
+//!   success rule); a successful step is repeated with doubling length while it stays covered
+//!   (a pattern move along the ridge), and every second proposal steps along the evolution path
+//!   (the decaying sum of successful displacements), so the walk follows thin tubes and wedges
+//!   of the set to their tips — and ends with a bisection along the face's axis. Extremes of coverage sets of moving, defocused triangles
+//!   sit at such tips (a vertex entering a tile corner at an interior lens position), which a
+//!   uniform density reaches only slowly.
+//!
+//! Deterministic: the Sobol seed and the step generator's seed are arguments.
+
+use rand::{Rng, SeedableRng};
+use rand_pcg::Pcg64;
+
+/// An integer point: in the oracle, x and y in 1/256 px (absolute), then u, v, t raw.
+pub type P5 = [i32; 5];
+
+/// A box: per dimension `[lo, hi]`.
+pub type Bounds5 = [[i32; 2]; 5];
+
+/// The effort of one estimate: dense points and face-search proposals.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+pub struct Effort {
+    /// dense points (per pixel in the oracle; a count for [`BoxSearch::dense`])
+    pub density: u32,
+    /// face-search proposals per face (6 faces)
+    pub steps: u32,
+}
+
+/// The inner estimate of a covered set's box, with the covered point on each face.
+#[derive(Clone, Debug)]
+pub struct BoxSearch {
+    lo: P5,
+    hi: P5,
+    sobol_seed: u32,
+    rng: Pcg64,
+    /// box of the covered points found (per dimension `[lo, hi]`) and the covered point on
+    /// each face (dimension, side)
+    found: Option<(Bounds5, [[P5; 2]; 5])>,
+    /// dense points drawn so far (the next index of the Sobol sequence)
+    drawn: u32,
+}
+
+impl BoxSearch {
+    /// An empty search over the integer box `[lo, hi]` (`lo ≤ hi` in every dimension).
+    pub fn new(lo: P5, hi: P5, seed: u64) -> BoxSearch {
+        BoxSearch {
+            lo,
+            hi,
+            // The Sobol scramble seed: the low 32 bits of `seed`.
+            sobol_seed: seed as u32,
+            rng: Pcg64::seed_from_u64(seed),
+            found: None,
+            drawn: 0,
+        }
+    }
+
+    /// The box of the covered points found so far (`None`: none found).
+    pub fn bounds(&self) -> Option<Bounds5> {
+        self.found.map(|f| f.0)
+    }
+
+    /// Whether `(u, v, t)` (dimensions 2..5) lies in the box found so far.
+    pub fn contains_uvt(&self, uvt: [i32; 3]) -> bool {
+        self.found.is_some_and(|(b, _)| {
+            b[2..]
+                .iter()
+                .zip(uvt)
+                .all(|(iv, x)| iv[0] <= x && x <= iv[1])
+        })
+    }
+
+    /// Add covered point `p` to the box.
+    pub fn grow(&mut self, p: P5) {
+        match &mut self.found {
+            None => self.found = Some((p.map(|x| [x, x]), [[p; 2]; 5])),
+            Some((b, ext)) => {
+                for (d, x) in p.into_iter().enumerate() {
+                    if x < b[d][0] {
+                        b[d][0] = x;
+                        ext[d][0] = p;
+                    }
+                    if x > b[d][1] {
+                        b[d][1] = x;
+                        ext[d][1] = p;
+                    }
+                }
+            }
+        }
+    }
+
+    /// Draw dense points until `n` have been drawn in total (continuing the sequence).
+    pub fn dense(&mut self, n: u32, covered: &mut impl FnMut(&P5) -> bool) {
+        while self.drawn < n {
+            let i = self.drawn;
+            self.drawn += 1;
+            let mut p = self.lo;
+            for (d, x) in p.iter_mut().enumerate() {
+                let span = (self.hi[d] - self.lo[d]) as f64 + 1.0;
+                let r = sobol_burley::sample(i, d as u32, self.sobol_seed) as f64;
+                *x = (self.lo[d] + (r * span).floor() as i32).min(self.hi[d]);
+            }
+            if covered(&p) {
+                self.grow(p);
+            }
+        }
+    }
+
+    /// Push each face of dimensions 2..5 outward with `steps` proposals, in two passes (a point
+    /// found for one face may start another face further out).
+    pub fn push_faces(&mut self, steps: u32, covered: &mut impl FnMut(&P5) -> bool) {
+        if self.found.is_none() {
+            return;
+        }
+        for pass in 0..2 {
+            let n = if pass == 0 {
+                steps / 2
+            } else {
+                steps - steps / 2
+            };
+            for k in 2..5 {
+                for side in 0..2 {
+                    self.push_face(k, side, n, covered);
+                }
+            }
+        }
+    }
+
+    fn push_face(
+        &mut self,
+        k: usize,
+        side: usize,
+        steps: u32,
+        covered: &mut impl FnMut(&P5) -> bool,
+    ) {
+        let (end, dir) = if side == 0 {
+            (self.lo[k], -1)
+        } else {
+            (self.hi[k], 1)
+        };
+        let Some((_, ext)) = self.found else {
+            return;
+        };
+        let mut p = ext[k][side];
+        let (lo, hi) = (self.lo, self.hi);
+        let range = |d: usize| ((hi[d] - lo[d]) as f64).max(1.0);
+        let mut sigma: [f64; 5] = core::array::from_fn(|d| range(d) / 4.0);
+        // The evolution path: a decaying sum of successful displacements (the direction of
+        // the ridge the walk follows) and the step scale along it.
+        let (mut path, mut along) = ([0.0f64; 5], 1.0f64);
+        for it in 0..steps {
+            if p[k] == end {
+                return;
+            }
+            let use_path = it % 2 == 1 && path.iter().any(|x| x.abs() >= 1.0);
+            let mut q = p;
+            let mut moved = [false; 5];
+            if use_path {
+                // Along the path (a random length), with a little noise in every coordinate.
+                let g = along * self.gauss().abs();
+                for j in 0..5 {
+                    let n = 0.1 * sigma[j] * self.gauss();
+                    q[j] = (p[j] as f64 + (g * path[j] + n).round())
+                        .clamp(lo[j] as f64, hi[j] as f64) as i32;
+                }
+            } else {
+                // The face coordinate moves outward (or stays); each other one with
+                // probability 1/2.
+                moved[k] = true;
+                let g = self.gauss().abs();
+                q[k] = (p[k] as f64 + dir as f64 * (sigma[k] * g).round())
+                    .clamp(lo[k] as f64, hi[k] as f64) as i32;
+                for j in (0..5).filter(|&j| j != k) {
+                    if self.rng.gen::<bool>() {
+                        moved[j] = true;
+                        let g = self.gauss();
+                        q[j] = (p[j] as f64 + (sigma[j] * g).round())
+                            .clamp(lo[j] as f64, hi[j] as f64)
+                            as i32;
+                    }
+                }
+            }
+            let ok = q != p && dir * (q[k] - p[k]) >= 0 && covered(&q);
+            if ok {
+                self.grow(q);
+                // Pattern move: repeat the successful step, doubling it, while covered and not
+                // inward (a straight ridge — a vertex's track — is followed at once).
+                let d: P5 = core::array::from_fn(|j| q[j] - p[j]);
+                let start = p;
+                p = q;
+                for m in 0..12 {
+                    let r: P5 = core::array::from_fn(|j| {
+                        (p[j].saturating_add(d[j].saturating_mul(1 << m))).clamp(lo[j], hi[j])
+                    });
+                    if r == p || dir * (r[k] - p[k]) < 0 || !covered(&r) {
+                        break;
+                    }
+                    self.grow(r);
+                    p = r;
+                }
+                for j in 0..5 {
+                    path[j] = 0.5 * path[j] + (p[j] - start[j]) as f64;
+                }
+            }
+            if use_path {
+                along = if ok { along * 2.0 } else { along * 0.84 }.clamp(1.0 / 64.0, 64.0);
+            }
+            for j in (0..5).filter(|&j| moved[j]) {
+                sigma[j] = if ok {
+                    (sigma[j] * 2.0).min(range(j))
+                } else {
+                    (sigma[j] * 0.84).max(0.5)
+                };
+            }
+        }
+        self.bisect(p, k, end, covered);
+    }
+
+    /// Bisect along axis `k` from covered `p` toward `target`; the farthest covered point found
+    /// is added to the box.
+    fn bisect(&mut self, p: P5, k: usize, target: i32, covered: &mut impl FnMut(&P5) -> bool) {
+        let mut far = p;
+        far[k] = target;
+        if covered(&far) {
+            self.grow(far);
+            return;
+        }
+        let (mut inside, mut out) = (p[k], target);
+        while (out - inside).abs() > 1 {
+            let mid = inside + (out - inside) / 2;
+            let mut q = p;
+            q[k] = mid;
+            if covered(&q) {
+                self.grow(q);
+                inside = mid;
+            } else {
+                out = mid;
+            }
+        }
+    }
+
+    /// A standard normal deviate (Box–Muller).
+    fn gauss(&mut self) -> f64 {
+        let a: f64 = 1.0 - self.rng.gen::<f64>();
+        let b: f64 = self.rng.gen::<f64>();
+        (-2.0 * a.ln()).sqrt() * (std::f64::consts::TAU * b).cos()
+    }
+}
