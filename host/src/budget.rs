@@ -7,20 +7,18 @@
 //!   T · [`per_triangle_bytes`] + W·H · [`PER_PIXEL_BYTES`] + N · W · 8 · S · 11
 //!
 //! - per triangle: the f64 scene triangle twice (the list and its growth while built), the mesh
-//!   vertices and indices it came from, the core triangle, the larger of the core's and the
-//!   reference's per-triangle setup in the frame driver (its entry and the heap block it points
-//!   to, with 16 bytes of allocator header), and 8 bytes of band lists — sizes taken with
-//!   `size_of` from this build;
+//!   vertices and indices it came from, the core triangle, the frame driver's per-triangle entry
+//!   (setup outcome, footprint and ops; the setups themselves are recomputed per band and not
+//!   kept), and 8 bytes of band lists — sizes taken with `size_of` from this build;
 //! - per pixel: three resolved images and three sample-count maps, the two derived images, their
 //!   band copies and the PNG buffers (64 bytes);
 //! - per worker: one 8-row band of depth (f64) and color (3 bytes) per sample.
 //!
-//! Checked against the peak resident set size (`/usr/bin/time -v uvt render`, debug build,
-//! 2026-11-22): a 512-segment sphere (261120 triangles) on 64×36 px at 4 spp, estimate 427.5 MiB,
-//! peak 343.7 MiB; a 300×300-cell grid (180000 triangles) on 320×180 px at 16 spp, estimate
-//! 299.0 MiB, peak 239.0 MiB — the estimate is about 1.25× the measured peak. (Measured before
-//! the driver kept each setup in its own heap block; the estimate has grown by 32 bytes per
-//! triangle since, the entry's pointer and the block's header.)
+//! Checked against the peak resident set size (`/usr/bin/time -f %M uvt render`, debug build,
+//! 2 worker threads, 2026-11-22, the camera of `host/scenes/camera_meshes.json`): a
+//! 512-segment sphere of radius 1 (261120 triangles) on 64×36 px at 4 spp,
+//! estimate 196.4 MiB, peak 126.1 MiB; a 300×300-cell grid (180000 triangles) on 320×180 px at
+//! 16 spp, estimate 139.6 MiB, peak 95.4 MiB — the estimate is about 1.5× the measured peak.
 //!
 //! The default budget is [`DEFAULT_MEM_BUDGET`] (4 GiB); `uvt render --mem-budget 8G` raises it.
 //! Scene and OBJ files are read only if they are regular files of at most [`FILE_MAX_BYTES`].
@@ -29,7 +27,6 @@ use std::io::Read;
 use std::path::Path;
 
 use anyhow::{bail, Context, Result};
-use uvt_core::bounds::BoundsStrategy;
 
 /// Default memory budget of one scene: 4 GiB.
 pub const DEFAULT_MEM_BUDGET: u64 = 4 << 30;
@@ -43,23 +40,12 @@ pub const PER_PIXEL_BYTES: u64 = 64;
 /// Bytes one triangle costs from mesh to frame (see the module documentation).
 pub fn per_triangle_bytes() -> u64 {
     use std::mem::size_of;
-    type FixedSetup = (
-        uvt_core::Setup,
-        <uvt_core::Laine2011 as BoundsStrategy>::Coeffs,
-    );
-    // The frame driver keeps each visible setup in its own heap block (plus the allocator's
-    // header, counted as 16 bytes) behind a pointer in the per-triangle entry.
-    type Entry<S> = (crate::frame::SetupOut<Box<S>>, uvt_core::Ops);
-    let core_entry = size_of::<Entry<FixedSetup>>() + size_of::<FixedSetup>() + 16;
-    let ref_entry = size_of::<Entry<crate::reference::setup::Setup>>()
-        + size_of::<crate::reference::setup::Setup>()
-        + 16;
+    // The frame driver keeps per triangle only its setup's outcome, footprint and ops (each
+    // band recomputes the setups it renders, one at a time).
+    let entry = size_of::<(crate::frame::SetupOut<uvt_core::PixelRect>, uvt_core::Ops)>();
     let mesh = size_of::<[u32; 3]>() + size_of::<glam::DVec3>() + 2 * size_of::<[f64; 5]>();
-    (2 * size_of::<crate::scene::SceneTri>()
-        + mesh
-        + size_of::<uvt_core::Triangle>()
-        + core_entry.max(ref_entry)
-        + 8) as u64
+    (2 * size_of::<crate::scene::SceneTri>() + mesh + size_of::<uvt_core::Triangle>() + entry + 8)
+        as u64
 }
 
 /// The estimate for `tris` triangles on `viewport` at `spp` samples per pixel.

@@ -370,16 +370,17 @@ const BAND: u16 = 8;
 pub fn run<P: Pipeline>(p: &P, pattern: &Pattern, o: &RunOpts<'_>) -> Frame {
     let start = Instant::now();
     let n = o.colors.len();
-    // Each visible setup in its own heap block: the frame's setups (up to ~1 KB per triangle
-    // for the core) then come from the allocator's reused heap instead of one fresh mapping per
-    // frame (> 32 MiB on the dense scenes, which glibc maps and unmaps every time, each page
-    // faulted in anew) — the same for both pipelines.
-    let setups: Vec<(SetupOut<Box<P::Setup>>, Ops)> = (0..n)
+    // First pass: every triangle's setup, keeping only its outcome and footprint (for the band
+    // lists) and its ops. The setups themselves are not kept: each band recomputes the setups of
+    // its triangles (deterministic, the same values; their ops are counted here, once). Keeping
+    // them cost ~1 KB per triangle for the core (> 800 MiB on the dense scenes at full size),
+    // written once and read back once per frame, most of it fresh pages the kernel had to zero.
+    let setups: Vec<(SetupOut<PixelRect>, Ops)> = (0..n)
         .into_par_iter()
         .map(|i| {
             let mut ops = Ops::default();
             let s = match p.setup(i, &mut ops) {
-                SetupOut::Visible(s, class) => SetupOut::Visible(Box::new(s), class),
+                SetupOut::Visible(s, class) => SetupOut::Visible(p.footprint(&s), class),
                 SetupOut::Culled(c) => SetupOut::Culled(c),
             };
             (s, ops)
@@ -397,9 +398,8 @@ pub fn run<P: Pipeline>(p: &P, pattern: &Pattern, o: &RunOpts<'_>) -> Frame {
         match s {
             SetupOut::Culled(Cull::Outside) => stats.culled_outside += 1,
             SetupOut::Culled(Cull::Degenerate) => stats.culled_degenerate += 1,
-            SetupOut::Visible(st, class) => {
+            SetupOut::Visible(fp, class) => {
                 stats.by_class[class.index()] += 1;
-                let fp = p.footprint(st);
                 stats.footprint_samples +=
                     (fp.x1 - fp.x0) as u64 * (fp.y1 - fp.y0) as u64 * o.spp as u64;
                 for bin in &mut bins[(fp.y0 / BAND) as usize..=((fp.y1 - 1) / BAND) as usize] {
@@ -457,7 +457,7 @@ fn band<P: Pipeline>(
     p: &P,
     pat: &Pattern,
     o: &RunOpts<'_>,
-    setups: &[(SetupOut<Box<P::Setup>>, Ops)],
+    setups: &[(SetupOut<PixelRect>, Ops)],
     b: u16,
     list: &[u32],
 ) -> (FrameStats, Vec<[u8; 3]>, Vec<u32>) {
@@ -486,13 +486,18 @@ fn band<P: Pipeline>(
         Vec::new()
     };
     for &i in list {
-        let SetupOut::Visible(setup, _) = &setups[i as usize].0 else {
+        let SetupOut::Visible(fp, _) = &setups[i as usize].0 else {
             continue;
         };
-        let region = p.footprint(setup).intersect(&screen);
+        let region = fp.intersect(&screen);
         if region.is_empty() {
             continue;
         }
+        // The setup again (the first pass counted its ops); the same outcome, so visible.
+        let SetupOut::Visible(setup, _) = p.setup(i as usize, &mut Ops::default()) else {
+            continue;
+        };
+        let setup = &setup;
         let col = o.colors[i as usize];
         for cell in region.cells(bt) {
             st.tiles_visited += 1;
