@@ -52,7 +52,7 @@ use crate::setup::{axis_coord, Class, Setup};
 use crate::stats::Ops;
 
 #[cfg(test)]
-mod reference;
+pub(crate) mod reference;
 
 /// Laine 2011's box plus bilinear (u, t) / (v, t) bounding surfaces checked per sample.
 #[derive(Clone, Copy, Debug, Default)]

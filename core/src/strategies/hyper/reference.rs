@@ -114,7 +114,7 @@ fn raw(rng: &mut Rng, lo: i64, hi: i64) -> i32 {
 
 /// A random motion + defocus triangle: w mostly in [1/4, 4], sometimes near or behind the
 /// camera plane; x, y within ±1.5 w; CoC up to ±w/4.
-fn random_tri(rng: &mut Rng) -> Option<Triangle> {
+pub(crate) fn random_tri(rng: &mut Rng) -> Option<Triangle> {
     let one = 1i64 << 16;
     let end = |rng: &mut Rng| {
         [0; 3].map(|_| {
