@@ -21,7 +21,7 @@ const LIM: i32 = 1 << 29;
 
 /// Extreme triangles: every class, w from 1 raw to 2^29, coordinates and CoC at ±2^29 (the last
 /// two with every w ≥ 2 raw, so a moving triangle's hull keeps its faces).
-fn tris() -> [Triangle; 6] {
+pub(super) fn tris() -> [Triangle; 6] {
     let a = [LIM, -LIM, LIM, LIM, -LIM];
     let b = [-LIM, LIM, -LIM, 1, LIM];
     let c = [LIM, LIM, -LIM, LIM / 2, LIM];

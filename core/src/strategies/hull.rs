@@ -52,6 +52,17 @@
 //! - If `w_min − ε_w ≤ 0` (a hull point on or behind the camera plane, or within ε_w of it) the
 //!   perturbed cone is not derived: no faces, nothing culled (conservative; the inner strategy
 //!   keeps its own ε-carrying bounds). With ε = 0 (the exact test) the faces are untouched.
+//!
+//! **Per-tile cost** ([`HullTiles`]). The corner a face picks depends only on the signs of a and
+//! b, so setup stores `a' = 256·a`, `b' = 256·b` and folds the corner's sub-pixel offset into c
+//! (`a·(256·X1 − 1) = a'·X1 − a`): a tile evaluates `a'·xe + b'·ye + c' < 0` with xe, ye its
+//! stored ends, 5 ops (2 mul, 2 add, 1 compare), the same integer as the direct maximum. A face
+//! is dropped in setup when it does not cull the footprint pixel where its tile maximum is least
+//! (the maximum over a pixel is monotone in the pixel's column and row, with the signs of a and
+//! b, and a tile's maximum is ≥ that of each of its pixels): it then culls no tile inside the
+//! footprint, so the decisions are unchanged. The kept faces are tested in a greedy order (the
+//! face culling most of an up to 8 × 8 pixel grid over the footprint not culled by an earlier
+//! one first), stopping at the first that culls; the order changes only the op count.
 #![warn(
     clippy::arithmetic_side_effects,
     clippy::indexing_slicing,
@@ -68,6 +79,9 @@ const SUBPIXEL_ONE: i128 = 1i128 << SUBPIXEL_BITS;
 use crate::input::{PixelRect, Triangle, Viewport, C, W, X, Y};
 use crate::setup::{Class, Setup};
 use crate::stats::Ops;
+
+#[cfg(test)]
+mod reference;
 
 /// Most faces kept per triangle (a cone over 24 points has at most 24 faces; the degenerate
 /// planar case keeps both orientations of one plane). Dropping a face is conservative.
@@ -316,7 +330,8 @@ pub fn hull_faces(pts: &[[i64; 3]], vp: Viewport, ops: &mut Ops) -> HullCoeffs {
 }
 
 /// Whether `face` is negative at every sample position of `tile` (then the tile is culled);
-/// `false` on overflow. Counts 7 operations per face in `ops.bounds`.
+/// `false` on overflow. Counts 7 operations per face in `ops.bounds`. The direct form, kept as
+/// the reference of [`HullTiles::culls`] (`hull/reference.rs`).
 pub fn face_culls(face: &HullFace, tile: PixelRect, ops: &mut Ops) -> bool {
     ops.bounds = ops.bounds.saturating_add(7);
     let one = SUBPIXEL_ONE;
@@ -337,6 +352,183 @@ pub fn face_culls(face: &HullFace, tile: PixelRect, ops: &mut Ops) -> bool {
     matches!(max, Some(m) if m < 0)
 }
 
+/// Largest grid of footprint pixels per axis on which setup measures each face's culling to
+/// order the faces (8 × 8 = 64 points, one bit each).
+const ORDER_GRID: u32 = 8;
+
+/// One face in per-tile form: the tile is culled when `a·xe + b·ye + c < 0`, with `xe` the
+/// tile's `x1` (`hi_x`) or `x0` and `ye` likewise: the corner the face's signs picked in setup,
+/// with its sub-pixel offset folded into `c` (module docs, "Per-tile cost").
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct TileFace {
+    a: i128,
+    b: i128,
+    c: i128,
+    hi_x: bool,
+    hi_y: bool,
+}
+
+impl TileFace {
+    /// The per-tile form of `f`: `a' = 256·a`, `b' = 256·b`, and for a > 0 the tile's largest
+    /// sample column `256·x1 − 1` (so `a·(256·x1 − 1) = a'·x1 − a`, `−a` folded into c), else
+    /// its first `256·x0`; the same for y. `None` on overflow (the face is then dropped).
+    /// Ranges (module docs): |a|, |b| < 2^73, |c| < 2^124 after widening: |a'|, |b'| < 2^81,
+    /// |c'| < 2^125.
+    fn of(f: &HullFace) -> Option<TileFace> {
+        let (hi_x, hi_y) = (f.a > 0, f.b > 0);
+        let mut c = f.c;
+        if hi_x {
+            c = c.checked_sub(f.a)?;
+        }
+        if hi_y {
+            c = c.checked_sub(f.b)?;
+        }
+        Some(TileFace {
+            a: f.a.checked_mul(SUBPIXEL_ONE)?,
+            b: f.b.checked_mul(SUBPIXEL_ONE)?,
+            c,
+            hi_x,
+            hi_y,
+        })
+    }
+
+    /// Whether the face is negative at every sample position of `tile` (then the tile is
+    /// culled): 2 mul, 2 add, 1 compare, counted by the caller. The same integer as
+    /// [`face_culls`]'s maximum: `a'·xe + b'·ye + c'` with xe, ye < 2^16 is < 2^98 + 2^125,
+    /// exact; checked anyway (`false`, keep the tile, on overflow).
+    #[inline]
+    fn culls(&self, tile: PixelRect) -> bool {
+        let xe = i128::from(if self.hi_x { tile.x1 } else { tile.x0 });
+        let ye = i128::from(if self.hi_y { tile.y1 } else { tile.y0 });
+        let v = self
+            .a
+            .checked_mul(xe)
+            .and_then(|x| x.checked_add(self.b.checked_mul(ye)?))
+            .and_then(|x| x.checked_add(self.c));
+        matches!(v, Some(m) if m < 0)
+    }
+}
+
+/// Per-triangle faces in per-tile form, kept only if they can cull a tile of the footprint, and
+/// ordered so that the faces culling the most footprint pixels come first.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct HullTiles {
+    faces: [TileFace; MAX_FACES],
+    len: usize,
+}
+
+impl HullTiles {
+    /// No faces: nothing is culled.
+    pub const EMPTY: HullTiles = HullTiles {
+        faces: [TileFace {
+            a: 0,
+            b: 0,
+            c: 0,
+            hi_x: false,
+            hi_y: false,
+        }; MAX_FACES],
+        len: 0,
+    };
+
+    /// The kept faces, in test order.
+    pub fn faces(&self) -> &[TileFace] {
+        self.faces.get(..self.len).unwrap_or(&[])
+    }
+
+    /// The per-tile form of `hull` for tiles inside footprint `fp` (module docs, "Per-tile
+    /// cost"): each face folded ([`TileFace::of`]; 4 ops), dropped if it does not cull the
+    /// footprint pixel where it is least (5 ops; then it culls no tile inside `fp`), and the
+    /// kept ones ordered greedily by the pixels of an up to 8 × 8 grid over `fp` they cull that
+    /// no earlier face culls (5 ops per face and grid pixel, 2 per face and pick).
+    pub fn of(hull: &HullCoeffs, fp: PixelRect, ops: &mut Ops) -> HullTiles {
+        let mut out = HullTiles::EMPTY;
+        if fp.is_empty() {
+            return out;
+        }
+        let w = u32::from(fp.x1.saturating_sub(fp.x0));
+        let h = u32::from(fp.y1.saturating_sub(fp.y0));
+        let (gx, gy) = (w.min(ORDER_GRID), h.min(ORDER_GRID));
+        // Grid pixel k of gx along x: fp.x0 + k·w/gx (< fp.x1; k·w ≤ 7·2^16, no overflow).
+        let at = |o: u16, k: u32, n: u32, g: u32| {
+            let d = k.saturating_mul(n).checked_div(g).unwrap_or(0);
+            o.saturating_add(u16::try_from(d).unwrap_or(u16::MAX))
+        };
+        let pixel = |x: u16, y: u16| PixelRect {
+            x0: x,
+            y0: y,
+            x1: x.saturating_add(1),
+            y1: y.saturating_add(1),
+        };
+        let mut masks = [0u64; MAX_FACES];
+        let mut n = 0usize;
+        for f in hull.faces() {
+            ops.add_setup(4 + 5);
+            let Some(t) = TileFace::of(f) else {
+                continue;
+            };
+            // The footprint pixel where the face's tile maximum is least: its value is monotone
+            // in the pixel column (row) with the direction of sign(a) (sign(b)).
+            let px = if f.a > 0 {
+                fp.x0
+            } else {
+                fp.x1.saturating_sub(1)
+            };
+            let py = if f.b > 0 {
+                fp.y0
+            } else {
+                fp.y1.saturating_sub(1)
+            };
+            if !t.culls(pixel(px, py)) {
+                continue;
+            }
+            let mut mask = 0u64;
+            for j in 0..gy {
+                for i in 0..gx {
+                    ops.add_setup(5);
+                    if t.culls(pixel(at(fp.x0, i, w, gx), at(fp.y0, j, h, gy))) {
+                        mask |= 1u64
+                            .checked_shl(j.saturating_mul(ORDER_GRID).saturating_add(i))
+                            .unwrap_or(0);
+                    }
+                }
+            }
+            if let (Some(slot), Some(m)) = (out.faces.get_mut(n), masks.get_mut(n)) {
+                *slot = t;
+                *m = mask;
+                n = n.saturating_add(1);
+            }
+        }
+        out.len = n;
+        // Greedy order: next, the face culling the most grid pixels not yet culled (the first
+        // such on ties, so the order is deterministic).
+        let mut covered = 0u64;
+        for k in 0..n {
+            let mut pick = k;
+            let mut gain = 0u32;
+            for (i, m) in masks.iter().enumerate().take(n).skip(k) {
+                ops.add_setup(2);
+                let g = (m & !covered).count_ones();
+                if g > gain {
+                    (pick, gain) = (i, g);
+                }
+            }
+            out.faces.swap(k, pick);
+            masks.swap(k, pick);
+            covered |= masks.get(k).copied().unwrap_or(0);
+        }
+        out
+    }
+
+    /// Whether some face culls `tile` (a tile inside the footprint), testing the faces in order
+    /// and stopping at the first that culls: 5 ops per face tested.
+    pub fn culls(&self, tile: PixelRect, ops: &mut Ops) -> bool {
+        self.faces().iter().any(|f| {
+            ops.add_bounds(5);
+            f.culls(tile)
+        })
+    }
+}
+
 /// Tile culling by the swept cone's faces, in front of strategy `S`.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct HullCull<S> {
@@ -352,7 +544,7 @@ impl<S> HullCull<S> {
 }
 
 impl<S: BoundsStrategy> BoundsStrategy for HullCull<S> {
-    type Coeffs = (HullCoeffs, S::Coeffs);
+    type Coeffs = (HullTiles, S::Coeffs);
     type Tile = S::Tile;
     fn name(&self) -> &'static str {
         self.name
@@ -370,7 +562,8 @@ impl<S: BoundsStrategy> BoundsStrategy for HullCull<S> {
                 None => HullCoeffs::EMPTY,
             }
         };
-        (hull, self.inner.prepare(setup, ops))
+        let tiles = HullTiles::of(&hull, setup.footprint, ops);
+        (tiles, self.inner.prepare(setup, ops))
     }
     fn tile(
         &self,
@@ -379,7 +572,7 @@ impl<S: BoundsStrategy> BoundsStrategy for HullCull<S> {
         tile: PixelRect,
         ops: &mut Ops,
     ) -> Option<S::Tile> {
-        if c.0.faces().iter().any(|f| face_culls(f, tile, ops)) {
+        if c.0.culls(tile, ops) {
             return None;
         }
         self.inner.tile(setup, &c.1, tile, ops)

@@ -28,6 +28,16 @@
 //! and raises every upper one by that constant (Laine's term, `bounds.rs`, `dual_axis`); the
 //! bilinear interpolation of corner values lowered by a constant is L lowered by it, so the
 //! argument above holds unchanged. With ε = 0 the values are unchanged.
+//!
+//! **Per-tile cost.** Each bounding line is affine in ξ: `v0·(ξb − ξ) + v1·(ξ − ξa) = K + S·ξ`,
+//! so of a tile's two ends [xl, xl + n] the lower (upper) value is at the end the sign of S picks
+//! (known in setup): `K + S·xl + T·n` with `T = min(S, 0)` (`max(S, 0)`), exactly the min (max)
+//! of the two end values. The coefficients c0..c3 are a fixed linear map of the corner values,
+//! so each is `α + β·xl + γ·(n − 1)` with integers α, β, γ computed once in `prepare`; a tile
+//! evaluates `α + β·xl` (2 ops per coefficient, 16 per axis, plus the width n and the compare
+//! n = 1) and adds `γ·(n − 1)` only when its side is not 1 pixel. The surfaces are the same integers
+//! as those of the corner values evaluated per tile (`hyper/reference.rs` compares every tile
+//! with that formulation).
 #![warn(
     clippy::arithmetic_side_effects,
     clippy::indexing_slicing,
@@ -41,20 +51,41 @@ use crate::input::{PixelRect, Triangle, W};
 use crate::setup::{axis_coord, Class, Setup};
 use crate::stats::Ops;
 
+#[cfg(test)]
+pub(crate) mod reference;
+
 /// Laine 2011's box plus bilinear (u, t) / (v, t) bounding surfaces checked per sample.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Hyper;
 
 /// Dual values of one axis at the corners: `[t][lens −1/+1][footprint end]`, lower (min over
-/// vertices) and upper (max), and the footprint ends.
+/// vertices) and upper (max), and the footprint ends (setup's intermediate; the per-tile form is
+/// [`HyperAxis`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct HyperAxis {
+struct Corners {
     xi: [i64; 2],
     lo: [[[i64; 2]; 2]; 2],
     hi: [[[i64; 2]; 2]; 2],
 }
 
-/// [`Hyper`] coefficients: Laine's, and the corner values per axis (motion + defocus only).
+/// One surface coefficient as an affine function of the tile: `α + β·xl + γ·(n − 1)`, with xl
+/// the tile's first column (row) and n its width (height) in pixels.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+struct Affine {
+    a: i128,
+    b: i128,
+    g: i128,
+}
+
+/// Per-tile form of one axis: `[lower, upper]` surfaces' coefficients c0..c3 (module docs,
+/// "Per-tile cost").
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct HyperAxis {
+    c: [[Affine; 4]; 2],
+}
+
+/// [`Hyper`] coefficients: Laine's, and the per-tile surface forms per axis (motion + defocus
+/// only).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct HyperCoeffs {
     laine: LaineCoeffs,
@@ -78,7 +109,7 @@ pub struct HyperTile {
 /// docs). |a + w| < 2^31, |cs| ≤ 2^29, E, ξ ≤ 2^11: |f| < 2^44; eps < 2^25: |eps·E| < 2^36, so
 /// every widened value is < 2^45.
 #[allow(clippy::arithmetic_side_effects)]
-fn hyper_axis(tri: &Triangle, xi: [i64; 2], axis: usize, e: i64, eps: i64) -> HyperAxis {
+fn corners(tri: &Triangle, xi: [i64; 2], axis: usize, e: i64, eps: i64) -> Corners {
     let pert = eps * e;
     let mut lo = [[[i64::MAX; 2]; 2]; 2];
     let mut hi = [[[i64::MIN; 2]; 2]; 2];
@@ -95,12 +126,13 @@ fn hyper_axis(tri: &Triangle, xi: [i64; 2], axis: usize, e: i64, eps: i64) -> Hy
             }
         }
     }
-    HyperAxis { xi, lo, hi }
+    Corners { xi, lo, hi }
 }
 
 /// Surface through corner values `v[t][lens]` (already bounded over the tile):
 /// 2^33·L = 2^33·A0 + 2^16·(B0 − A0)·σ + 2^17·(A1 − A0)·t + (A0 − B0 − A1 + B1)·t·σ.
-/// |v| < 2^56 (line values scaled by ξb − ξa ≤ 2^11): |c0| < 2^89, the others < 2^75.
+/// A linear map of the corner values (checked; `None` on overflow): |v| < 2^58 gives |c0| <
+/// 2^91, the others < 2^76.
 fn surface(v: [[i128; 2]; 2]) -> Option<Surface> {
     let [[a0, b0], [a1, b1]] = v;
     let c0 = a0.checked_mul(1 << 33)?;
@@ -112,6 +144,91 @@ fn surface(v: [[i128; 2]; 2]) -> Option<Surface> {
     })
 }
 
+/// One bounding line's value over a tile [xl, xl + n] (n ≥ 0) as an [`Affine`]: the line
+/// `v0·(ξb − x) + v1·(x − ξa)` is `K + S·x` with `K = v0·ξb − v1·ξa`, `S = v1 − v0`; its
+/// minimum over the tile's two ends is `K + S·xl + min(S, 0)·n` (maximum: `max(S, 0)`), i.e.
+/// `α = K + T`, `β = S`, `γ = T` with `T = min(S, 0)` (`max`). Exact: |v| < 2^45 and
+/// 0 ≤ ξa, ξb ≤ 2^11 (the footprint lies in the viewport): |K| < 2^57, |S|, |T| < 2^46,
+/// |α| < 2^58 in i128.
+#[allow(clippy::arithmetic_side_effects)]
+fn line_affine(v: [i64; 2], xi: [i64; 2], low: bool) -> Affine {
+    let [v0, v1] = v.map(i128::from);
+    let [xa, xb] = xi.map(i128::from);
+    let k = v0 * xb - v1 * xa;
+    let s = v1 - v0;
+    let t = if low { s.min(0) } else { s.max(0) };
+    Affine {
+        a: k + t,
+        b: s,
+        g: t,
+    }
+}
+
+/// [`surface`] applied to each of α, β, γ of the corners' affine forms: the surface map is
+/// linear, so the resulting α + β·xl + γ·(n − 1) is exactly the surface of the corner values.
+fn surface_affine(v: [[Affine; 2]; 2]) -> Option<[Affine; 4]> {
+    let a = surface(v.map(|r| r.map(|x| x.a)))?.c;
+    let b = surface(v.map(|r| r.map(|x| x.b)))?.c;
+    let g = surface(v.map(|r| r.map(|x| x.g)))?.c;
+    let mut out = [Affine::default(); 4];
+    for (o, ((a, b), g)) in out.iter_mut().zip(a.into_iter().zip(b).zip(g)) {
+        *o = Affine { a, b, g };
+    }
+    Some(out)
+}
+
+/// The per-tile form of one axis from its corner values ([`AXIS_FORM_OPS`], counted in
+/// `ops.setup` by the caller).
+fn axis_form(d: &Corners) -> Option<HyperAxis> {
+    let lo = d.lo.map(|l| l.map(|v| line_affine(v, d.xi, true)));
+    let hi = d.hi.map(|l| l.map(|v| line_affine(v, d.xi, false)));
+    Some(HyperAxis {
+        c: [surface_affine(lo)?, surface_affine(hi)?],
+    })
+}
+
+/// Setup ops of [`axis_form`] per axis: 16 lines × 6 (K: 2 mul + 1 sub; S: 1 sub; T: 1 select;
+/// α: 1 add) + 2 surfaces × 3 components (α, β, γ) × 8 (the corner map of [`surface`]).
+const AXIS_FORM_OPS: u64 = 16 * 6 + 2 * 3 * 8;
+
+/// The tile's start and width along one axis: `(min(x0, x1), |x1 − x0|)`. A renderer tile has
+/// x0 < x1, so the ordering is the identity there (not counted, as in `bounds::dual_t`).
+fn start_width(x0: u16, x1: u16) -> (i128, i128) {
+    let (l, h) = (x0.min(x1), x0.max(x1));
+    (i128::from(l), i128::from(h).saturating_sub(i128::from(l)))
+}
+
+impl HyperAxis {
+    /// The `[lower, upper]` surfaces of the tile [xl, xl + n]: each coefficient `α + β·xl`, plus
+    /// `γ·(n − 1)` when n ≠ 1. Counted: n (1 sub) and n = 1 (1 compare), 2 ops per coefficient
+    /// (1 mul, 1 add), and for n ≠ 1 another 1 + 2 per coefficient: 18 ops for a 1-pixel tile
+    /// side, 35 otherwise. Exact: |α| < 2^91, |β|, |γ| < 2^80 ([`surface`] of |α| < 2^58 and
+    /// |S|, |T| < 2^46 per line), 0 ≤ xl, n < 2^16: every term < 2^97; checked anyway (`None`
+    /// admits, never reached).
+    fn surfaces(&self, xl: i128, n: i128, ops: &mut Ops) -> Option<[Surface; 2]> {
+        ops.add_bounds(2 + 16);
+        let m = n.checked_sub(1)?;
+        if m != 0 {
+            ops.add_bounds(1 + 16);
+        }
+        let eval = |f: &Affine| {
+            let v = f.a.checked_add(f.b.checked_mul(xl)?)?;
+            if m == 0 {
+                Some(v)
+            } else {
+                v.checked_add(f.g.checked_mul(m)?)
+            }
+        };
+        let mut out = [Surface { c: [0; 4] }; 2];
+        for (o, cs) in out.iter_mut().zip(self.c.iter()) {
+            for (c, f) in o.c.iter_mut().zip(cs.iter()) {
+                *c = eval(f)?;
+            }
+        }
+        Some(out)
+    }
+}
+
 impl Surface {
     /// Value at raw t ∈ [0, 2^16] and σ = u + 2^16 ∈ [0, 2^17], with `ts = t·σ` (≤ 2^33):
     /// every term < 2^108, exact; `None` on overflow.
@@ -121,20 +238,6 @@ impl Surface {
             .checked_add(c2.checked_mul(t)?)?
             .checked_add(c3.checked_mul(ts)?)
     }
-}
-
-/// The four surfaces' corner values for tile ends [x0, x1] ⊆ [ξa, ξb]: lower = min of the two
-/// ends of each bounding line, upper = max. Values scaled by ξb − ξa (> 0).
-#[allow(clippy::arithmetic_side_effects)]
-fn tile_surfaces(d: &HyperAxis, x0: i64, x1: i64) -> Option<[Surface; 2]> {
-    let [xa, xb] = d.xi;
-    // |v| < 2^45, 0 ≤ xb − x, x − xa with (xb − x) + (x − xa) = xb − xa ≤ 2^11: |line| < 2^56.
-    let line = |v: &[i64; 2], x: i64| {
-        i128::from(v[0]) * i128::from(xb - x) + i128::from(v[1]) * i128::from(x - xa)
-    };
-    let lo = d.lo.map(|l| l.map(|v| line(&v, x0).min(line(&v, x1))));
-    let hi = d.hi.map(|l| l.map(|v| line(&v, x0).max(line(&v, x1))));
-    Some([surface(lo)?, surface(hi)?])
 }
 
 impl BoundsStrategy for Hyper {
@@ -153,25 +256,26 @@ impl BoundsStrategy for Hyper {
                 let ex = setup.eps.x.get(axis).copied().unwrap_or(0);
                 i64::from(ex.saturating_add(setup.eps.w))
             };
-            // 6 vertex ends × 2 lens corners × 2 footprint ends × 9 ops, per axis.
-            ops.setup = ops.setup.saturating_add(2 * 216);
-            [
-                hyper_axis(
-                    &setup.tri,
-                    [i64::from(fp.x0), i64::from(fp.x1)],
-                    0,
-                    i64::from(vp.width()),
-                    eps(0),
-                ),
-                hyper_axis(
-                    &setup.tri,
-                    [i64::from(fp.y0), i64::from(fp.y1)],
-                    1,
-                    i64::from(vp.height()),
-                    eps(1),
-                ),
-            ]
+            // 6 vertex ends × 2 lens corners × 2 footprint ends × 9 ops, and the per-tile form,
+            // per axis.
+            ops.add_setup(2 * (216 + AXIS_FORM_OPS));
+            let x = corners(
+                &setup.tri,
+                [i64::from(fp.x0), i64::from(fp.x1)],
+                0,
+                i64::from(vp.width()),
+                eps(0),
+            );
+            let y = corners(
+                &setup.tri,
+                [i64::from(fp.y0), i64::from(fp.y1)],
+                1,
+                i64::from(vp.height()),
+                eps(1),
+            );
+            Some([axis_form(&x)?, axis_form(&y)?])
         });
+        let axes = axes.flatten();
         HyperCoeffs { laine, axes }
     }
     fn tile(
@@ -183,11 +287,9 @@ impl BoundsStrategy for Hyper {
     ) -> Option<HyperTile> {
         let b = Laine2011.tile(setup, &c.laine, tile, ops)?;
         let s = c.axes.as_ref().and_then(|[x, y]| {
-            // 16 line values (3 ops) + 8 min/max + 2 × 7 coefficient ops, per axis.
-            ops.bounds = ops.bounds.saturating_add(2 * 70);
-            let sx = tile_surfaces(x, i64::from(tile.x0), i64::from(tile.x1))?;
-            let sy = tile_surfaces(y, i64::from(tile.y0), i64::from(tile.y1))?;
-            Some([sx, sy])
+            let (xl, nx) = start_width(tile.x0, tile.x1);
+            let (yl, ny) = start_width(tile.y0, tile.y1);
+            Some([x.surfaces(xl, nx, ops)?, y.surfaces(yl, ny, ops)?])
         });
         Some(HyperTile { b, s })
     }
