@@ -10,7 +10,7 @@
 use proptest::prelude::*;
 use uvt_core::strategies::{best, hull_edge, EdgeTime};
 use uvt_core::{
-    setup_with, BoundsStrategy, Bounded, Exact, Laine2011, Outcome, PixelRect, SamplePattern,
+    setup_with, Bounded, BoundsStrategy, Exact, Laine2011, Outcome, PixelRect, SamplePattern,
     TileBounds, Triangle, Vertex, Viewport,
 };
 use uvt_tests::kinds::{make, Kind, NP};
@@ -52,7 +52,10 @@ fn active<P: uvt_core::Precision>(t: &Triangle, vp: Viewport) -> bool {
 
 /// Brute force of every strategy with the edge bound at precision `P`, tile sizes 1, 2, 4, 8;
 /// returns (covered samples, whether the edge bound was active).
-fn check_at<P: uvt_core::Precision>(t: &Triangle, pat: &SamplePattern<'_>) -> Result<(u64, bool), String> {
+fn check_at<P: uvt_core::Precision>(
+    t: &Triangle,
+    pat: &SamplePattern<'_>,
+) -> Result<(u64, bool), String> {
     let vp = Viewport::new(24, 20).unwrap();
     let mut covered = 0;
     for bt in [1u16, 2, 4, 8] {
@@ -136,10 +139,19 @@ fn edge_time_conservative_seeded_random() {
             ),
         }
     }
-    assert!(covered > 1000, "only {covered} covered samples (seed {seed})");
+    assert!(
+        covered > 1000,
+        "only {covered} covered samples (seed {seed})"
+    );
     for k in [Kind::Moving, Kind::Crossing, Kind::Sliver] {
-        let i = ALL_KINDS.iter().position(|x| format!("{x:?}") == format!("{k:?}")).unwrap();
-        assert!(act[i] > 0, "edge bound never active on kind {k:?} (seed {seed}): {act:?}");
+        let i = ALL_KINDS
+            .iter()
+            .position(|x| format!("{x:?}") == format!("{k:?}"))
+            .unwrap();
+        assert!(
+            act[i] > 0,
+            "edge bound never active on kind {k:?} (seed {seed}): {act:?}"
+        );
     }
 }
 
@@ -182,7 +194,12 @@ fn edge_direction_hand_picked() {
 }
 
 /// Samples admitted (inside the tile's box and predicate) over the whole viewport, and covered.
-fn admitted<B: BoundsStrategy>(s: &B, t: &Triangle, vp: Viewport, pat: &SamplePattern<'_>) -> (u64, u64) {
+fn admitted<B: BoundsStrategy>(
+    s: &B,
+    t: &Triangle,
+    vp: Viewport,
+    pat: &SamplePattern<'_>,
+) -> (u64, u64) {
     let mut ops = Default::default();
     let Outcome::Visible(set) = setup_with::<Exact>(t, vp, &mut ops) else {
         panic!("visible")
@@ -193,14 +210,34 @@ fn admitted<B: BoundsStrategy>(s: &B, t: &Triangle, vp: Viewport, pat: &SamplePa
     let (mut adm, mut cov) = (0, 0);
     for py in fp.y0..fp.y1 {
         for px in fp.x0..fp.x1 {
-            let cell = PixelRect { x0: px, y0: py, x1: px + 1, y1: py + 1 };
+            let cell = PixelRect {
+                x0: px,
+                y0: py,
+                x1: px + 1,
+                y1: py + 1,
+            };
             let b = s.tile(&set, &co, cell, &mut ops);
             for smp in pat.pixel(px, py) {
-                let hit = uvt_core::sample_test(&full, uvt_core::ScreenPos::of(px, py, smp), smp, &mut ops).is_some();
+                let hit = uvt_core::sample_test(
+                    &full,
+                    uvt_core::ScreenPos::of(px, py, smp),
+                    smp,
+                    &mut ops,
+                )
+                .is_some();
                 let ok = b.as_ref().is_some_and(|b| {
-                    b.admits(smp.u().to_bits(), smp.v().to_bits(), smp.t().to_bits(), &mut ops)
+                    b.admits(
+                        smp.u().to_bits(),
+                        smp.v().to_bits(),
+                        smp.t().to_bits(),
+                        &mut ops,
+                    )
                 });
-                assert!(!hit || ok, "covered sample culled at ({px}, {py})\n{}", dump(t));
+                assert!(
+                    !hit || ok,
+                    "covered sample culled at ({px}, {py})\n{}",
+                    dump(t)
+                );
                 adm += u64::from(ok);
                 cov += u64::from(hit);
             }

@@ -409,7 +409,8 @@ mod tests {
         .map(|(x, y)| nx * i128::from(x) + ny * i128::from(y));
         let (za, zb) = (*zs.iter().min().unwrap(), *zs.iter().max().unwrap());
         let e = s.eps;
-        let rho = nx.abs() * ew * i128::from(e.x[0] + e.w) + ny.abs() * eh * i128::from(e.x[1] + e.w);
+        let rho =
+            nx.abs() * ew * i128::from(e.x[0] + e.w) + ny.abs() * eh * i128::from(e.x[1] + e.w);
         let mut lo = [[i128::MAX; 2]; 2];
         let mut hi = [[i128::MIN; 2]; 2];
         for (time, ends) in s.tri.v.iter().enumerate() {
