@@ -13,7 +13,7 @@
 use serde::Serialize;
 use std::time::Duration;
 use uvt_core::bounds::BoundsStrategy;
-use uvt_core::strategies::{best, hull, hull_lens, Hyper, LensTime, BEST_SLABS};
+use uvt_core::strategies::{best, hull, hull_edge, hull_lens, Hyper, LensTime, BEST_SLABS};
 use uvt_core::{Bounded, Laine2011, Prec, Precision, Triangle, Viewport};
 
 use crate::frame::{run, Fixed, FrameStats, Reference, RunOpts};
@@ -23,12 +23,13 @@ use crate::pattern::Pattern;
 use crate::scenes::{bench, Bench, Row};
 
 /// Strategy names in column order.
-pub const STRATEGIES: [&str; 6] = [
+pub const STRATEGIES: [&str; 7] = [
     "laine2011",
     "hull",
     "lens-t",
     "hyper",
     "hull+lens-t",
+    "hull+edge-t",
     "best",
 ];
 
@@ -272,6 +273,7 @@ pub fn run_strategy_at<P: Precision + Sync>(
         "best" => go::<_, P>(best(), vp, tris, pattern, o),
         "hyper" => go::<_, P>(Hyper, vp, tris, pattern, o),
         "hull+lens-t" => go::<_, P>(hull_lens(), vp, tris, pattern, o),
+        "hull+edge-t" => go::<_, P>(hull_edge(), vp, tris, pattern, o),
         _ => return None,
     })
 }
@@ -493,13 +495,13 @@ pub fn table_md(rows: &[BenchRow]) -> String {
     };
     let prec = rows.first().map_or(String::new(), |r| r.precision.clone());
     let mut s = format!(
-        "Core precision {prec}\n\nSTE (%), bounds tile 1×1\n\n| Scene | Bbox scan | Laine 2011 | hull | lens-t | hyper | hull+lens-t | best | Laine f64 |{limit_head} avg area px |\n|---|---|---|---|---|---|---|---|---|{}---|\n",
+        "Core precision {prec}\n\nSTE (%), bounds tile 1×1\n\n| Scene | Bbox scan | Laine 2011 | hull | lens-t | hyper | hull+lens-t | hull+edge-t | best | Laine f64 |{limit_head} avg area px |\n|---|---|---|---|---|---|---|---|---|---|{}---|\n",
         if with_limit { "---|---|---|---|---|" } else { "" }
     );
     let ste = |r: &BenchRow, n: &str| r.strat(n).map_or(0.0, |x| 100.0 * x.ste());
     for r in rows {
         s += &format!(
-            "| {} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} |{} {:.2} |\n",
+            "| {} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} |{} {:.2} |\n",
             name_of(r),
             100.0 * r.bbox,
             ste(r, "laine2011"),
@@ -507,6 +509,7 @@ pub fn table_md(rows: &[BenchRow]) -> String {
             ste(r, "lens-t"),
             ste(r, "hyper"),
             ste(r, "hull+lens-t"),
+            ste(r, "hull+edge-t"),
             ste(r, "best"),
             100.0 * r.f64,
             if with_limit {

@@ -8,7 +8,7 @@ use embedded_graphics_core::pixelcolor::RgbColor;
 use rayon::prelude::*;
 use serde::Serialize;
 use uvt_core::bounds::{BoundsStrategy, TileBounds};
-use uvt_core::strategies::{best, hull, hull_lens, Hyper, LensTime, BEST_SLABS};
+use uvt_core::strategies::{best, hull, hull_edge, hull_lens, Hyper, LensTime, BEST_SLABS};
 use uvt_core::{
     sample_test, Bounded, DefocusOnly, Full, Laine2011, MotionOnly, Ops, Outcome, PixelRect, Prec,
     Precision, Prim, Renderer, Rgb888, SamplePattern, ScreenPos, Setup, StaticOnly, Triangle, Unit,
@@ -84,6 +84,10 @@ macro_rules! with_strategy {
             }
             "hull+lens-t" => {
                 let $s = hull_lens();
+                Some($body)
+            }
+            "hull+edge-t" => {
+                let $s = hull_edge();
                 Some($body)
             }
             "best" => {

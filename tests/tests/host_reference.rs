@@ -325,7 +325,7 @@ fn bench_rows_every_strategy_conservative_at_the_bounded_precision() {
             );
         }
         // The gain is kept: hull culling on every row, slabs and surfaces on the "both" rows.
-        let mut gains = vec!["hull", "best", "hull+lens-t"];
+        let mut gains = vec!["hull", "best", "hull+lens-t", "hull+edge-t"];
         if matches!(r.row, scenes::Row::Both | scenes::Row::Both2) {
             gains.extend(["lens-t", "hyper"]);
         }
