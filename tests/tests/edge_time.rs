@@ -88,6 +88,7 @@ fn check_case(kind: Kind, p: &[f64; NP], pat_seed: u64) -> Result<(u64, u64), St
         check_at::<uvt_core::BoundedPrecision>(&m, &pat)?,
         check_at::<Bounded<16, 16, 16, 24>>(&m, &pat)?,
         check_at::<Bounded<16, 16, 16, 28>>(&m, &pat)?,
+        check_at::<Exact>(&make(kind, p), &pat)?,
         check_at::<uvt_core::BoundedPrecision>(&make(kind, p), &pat)?,
     ] {
         covered += r.0;

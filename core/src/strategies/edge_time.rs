@@ -1,4 +1,4 @@
-//! Edge-direction time bounds for motion-only triangles: Laine 2011's dual-space t bound
+//! Edge-direction time bounds for moving triangles: Laine 2011's dual-space t bound
 //! (`bounds.rs`, `dual_axis`/`dual_t`) taken along one more screen direction n — the normal of
 //! the triangle's most oblique edge at mid-shutter — and intersected with the inner strategy's
 //! box ([`EdgeTime`] wraps any strategy). By the separating-axis theorem a triangle and a
@@ -18,8 +18,13 @@
 //! sample test covers d only if `d = Σ b_k·P_k` with every b_k ≥ 0, not all 0 (Cramer's rule,
 //! as in `hull.rs`), so `0 = Σ b_k·φ(P_k)` and coverage needs `min_k φ(P_k) ≤ 0 ≤ max_k φ(P_k)` —
 //! no projection, so nothing depends on the sign of any w. For a motion-only triangle,
-//! `P_k(t)` is affine in t, so `φ(P_k(t))` is affine in t (fixed ζ) and in ζ (fixed t). Then
-//! exactly Laine's argument: `g = min_k φ_k` is concave in t, so `g(t, ζ) ≥ (1 − t)·g(0, ζ) +
+//! `P_k(t)` is affine in t, so `φ(P_k(t))` is affine in t (fixed ζ) and in ζ (fixed t). With
+//! defocus, the lens moves vertex k by `u·c_k(t)` in x and by `v·c_k(t)` in y (|u|, |v| ≤ 1,
+//! c_k affine in t), which moves φ by at most `L·|c_k(t)|` with `L = |n_x|·W + |n_y|·H` (as
+//! Laine's lens bias `|c|·E` per axis); `φ_k − L·|c_k|` is concave in t (|c_k| is convex) and
+//! affine in ζ, and its minimum over k is ≤ the minimum over the lens-shifted vertices. Then
+//! exactly Laine's argument, with φ_k lowered by `L·|c_k|` (raised, for the maximum):
+//! `g = min_k φ_k` is concave in t, so `g(t, ζ) ≥ (1 − t)·g(0, ζ) +
 //! t·g(1, ζ)`; concave in ζ, so on the footprint's range `[ζa, ζb]` of ζ (min / max over its
 //! corners; every covered sample lies in the footprint) `g(τ, ·)` is above the line through its
 //! values at ζa and ζb; the tile's samples have ζ in the tile's range `[ζ0, ζ1]` ⊆ `[ζa, ζb]` (the
@@ -35,7 +40,7 @@
 //!
 //! **Conservative epsilon** (a [`crate::formats::Bounded`] precision, `bounded.rs`): that test
 //! decides exactly on a perturbed triangle whose vertices lie within ε_x (x), ε_y (y) and ε_w
-//! (w) of the exact ones at the sample's t ([`crate::bounded::Eps`]), and covers d only if
+//! (w) of the exact ones at the sample's (t, u, v) ([`crate::bounded::Eps`]), and covers d only if
 //! `d = Σ b_k·P'_k` with b_k ≥ 0, not all 0 (`hull.rs`), so coverage needs
 //! `min_k φ(P'_k) ≤ 0 ≤ max_k φ(P'_k)`. A perturbation (δx, δy, δw) moves φ by
 //! `n_x·W·δx − n_y·H·δy + δw·(n_x·(W − 2ξ) + n_y·(H − 2η))`, and with ξ ∈ [0, W], η ∈ [0, H]
@@ -44,7 +49,7 @@
 //! by |n|. Setup lowers every lower value and raises every upper value by this constant, which
 //! keeps the concavity and chord arguments above. With the exact test ε = 0.
 //!
-//! **Cost.** Per triangle: one edge direction (motion-only triangles; other classes pass the
+//! **Cost.** Per triangle: one edge direction (moving triangles; static and defocus-only ones pass the
 //! inner strategy through unchanged). Per tile 34 operations in `ops.bounds`: the tile's ζ range
 //! relative to ζa from the two corners picked by n's signs (4 selects, 4 multiplies, 4 adds);
 //! each of the four lines evaluated once, at the tile end its precomputed slope sign picks
@@ -60,9 +65,9 @@
 
 use crate::bounds::{BoundsStrategy, TileBounds, UvtBox};
 use crate::formats::floor_div;
-use crate::input::{PixelRect, Triangle, Viewport, W, X, Y};
+use crate::input::{PixelRect, Triangle, Viewport, C, W, X, Y};
 use crate::interval::{solve_le, Interval};
-use crate::setup::{Class, Setup};
+use crate::setup::Setup;
 use crate::stats::Ops;
 use crate::unit::{Full, Unit};
 
@@ -70,7 +75,7 @@ use crate::unit::{Full, Unit};
 pub const N_MAX: i64 = 256;
 
 /// The inner strategy's bounds, with t narrowed by the dual-space bound along one edge normal
-/// (motion-only triangles).
+/// (moving triangles, with or without defocus).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct EdgeTime<S> {
     inner: S,
@@ -137,7 +142,7 @@ impl EdgeAxis {
     }
 }
 
-/// [`EdgeTime`] coefficients: the edge direction's lines (motion-only triangles with a usable
+/// [`EdgeTime`] coefficients: the edge direction's lines (moving triangles with a usable
 /// oblique edge) and the inner strategy's coefficients.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct EdgeCoeffs<C> {
@@ -228,12 +233,13 @@ fn edge_dir(p: &[i64; 3], q: &[i64; 3], vp: Viewport, ops: &mut Ops) -> Option<(
     Some((n, score))
 }
 
-/// The edge direction and its four bounding lines for a motion-only triangle (module docs);
+/// The edge direction and its four bounding lines for a moving triangle (module docs);
 /// `None` when no edge of the mid-shutter triangle is oblique on screen (every score 0, or an
 /// axis-aligned direction: then the bound is Laine's own x or y one).
 // Ranges: |n_i| ≤ 2^8, W, H ≤ 2^11, |x + w|, |w − y| ≤ 2^30: |A| ≤ 2^50; |ζ| ≤ 2^20 (footprint
-// corners ≤ 2^11), |2w·ζ| ≤ 2^50: |φ| ≤ 2^51; ε_x, ε_w < 2^25: ρ < 2^45, so every widened value
-// is < 2^52 in i64. D = ζb − ζa ≤ 2^21: |base| = |v0·D| < 2^73 (i128); |slope| < 2^53.
+// corners ≤ 2^11), |2w·ζ| ≤ 2^50: |φ| ≤ 2^51; ε_x, ε_w < 2^25: ρ < 2^45; the lens weight
+// |n_x|·W + |n_y|·H ≤ 2^20 and |c| ≤ 2^29: lens term ≤ 2^49; so every widened value is < 2^52
+// in i64. D = ζb − ζa ≤ 2^21: |base| = |v0·D| < 2^73 (i128); |slope| < 2^53.
 #[allow(clippy::arithmetic_side_effects, clippy::indexing_slicing)]
 fn edge_axis(setup: &Setup, ops: &mut Ops) -> Option<EdgeAxis> {
     let tri = &setup.tri;
@@ -267,7 +273,8 @@ fn edge_axis(setup: &Setup, ops: &mut Ops) -> Option<EdgeAxis> {
     let ey = i64::from(setup.eps.x[1]);
     let e_w = i64::from(setup.eps.w);
     let rho = nx.abs() * ew * (ex + e_w) + ny.abs() * eh * (ey + e_w);
-    ops.add_setup(9);
+    let lens = nx.abs() * ew + ny.abs() * eh;
+    ops.add_setup(12);
     // [t][end ζa, ζb]
     let mut lo = [[i64::MAX; 2]; 2];
     let mut hi = [[i64::MIN; 2]; 2];
@@ -276,11 +283,13 @@ fn edge_axis(setup: &Setup, ops: &mut Ops) -> Option<EdgeAxis> {
             // Constant indices X, Y, W < 5.
             let (x, y, w) = (i64::from(p[X]), i64::from(p[Y]), i64::from(p[W]));
             let a = nx * ew * (x + w) + ny * eh * (w - y);
-            ops.add_setup(7);
+            // The lens term (0 without defocus) plus the epsilon.
+            let bias = lens * i64::from(p[C]).abs() + rho;
+            ops.add_setup(10);
             for ((l, h), z) in lo_t.iter_mut().zip(hi_t.iter_mut()).zip([za, zb]) {
                 let phi = a - 2 * w * z;
-                *l = (*l).min(phi - rho);
-                *h = (*h).max(phi + rho);
+                *l = (*l).min(phi - bias);
+                *h = (*h).max(phi + bias);
                 ops.add_setup(7);
             }
         }
@@ -329,7 +338,7 @@ impl<S: BoundsStrategy> BoundsStrategy for EdgeTime<S> {
     // Gated on the unit: the edge bound only with `U::MOTION` (a class without motion gets none
     // on every unit).
     fn prepare_unit<U: Unit>(&self, setup: &Setup, ops: &mut Ops) -> Self::Coeffs {
-        let edge = if U::MOTION && setup.class == Class::Motion {
+        let edge = if U::MOTION && setup.class.motion() {
             edge_axis(setup, ops)
         } else {
             None
@@ -363,7 +372,7 @@ impl<S: BoundsStrategy> BoundsStrategy for EdgeTime<S> {
 
 #[cfg(test)]
 mod tests {
-    //! Domain corners: motion-only triangles with ±2^29 coordinates, w from 1 raw to 2^29, at
+    //! Domain corners: moving triangles (two with ±2^29 CoC) with ±2^29 coordinates, w from 1 raw to 2^29, at
     //! the widest epsilon (offset grid 2^32) and at ε = 0, on 2048×2048, 1×1 and 1×2048
     //! viewports, every corner tile of the footprint (1×1 and 8×8) with overflow checks on (the
     //! test profile): each unchecked product named in the range comments is driven to its
@@ -377,7 +386,7 @@ mod tests {
 
     const LIM: i32 = 1 << 29;
 
-    fn tris() -> [Triangle; 4] {
+    fn tris() -> [Triangle; 6] {
         let t = |p: [[i32; 5]; 3], q: [[i32; 5]; 3]| {
             Triangle::new(p.map(Vertex::from_bits), q.map(Vertex::from_bits)).expect("in domain")
         };
@@ -387,11 +396,21 @@ mod tests {
         let f = [-LIM, -LIM, LIM, 2, 0];
         let g = [-LIM, LIM, -LIM, LIM, 0];
         let h = [LIM, 3 * (LIM / 4), 0, LIM, 0];
+        // With defocus: CoC at the domain's ±2^29 (and 0) on moving vertices.
+        let lens = |mut p: [i32; 5], c: i32| {
+            p[4] = c;
+            p
+        };
         [
             t([a, b, c], [f, c, a]),
             t([a, g, c], [f, c, a]),
             t([a, g, h], [g, h, a]),
             t([f, g, h], [a, b, c]),
+            t(
+                [lens(a, LIM), lens(g, -LIM), c],
+                [lens(f, -LIM), c, lens(a, LIM)],
+            ),
+            t([lens(a, LIM), g, lens(h, LIM)], [g, lens(h, -LIM), a]),
         ]
     }
 
@@ -416,10 +435,11 @@ mod tests {
         for (time, ends) in s.tri.v.iter().enumerate() {
             for p in ends {
                 let (x, y, w) = (i128::from(p[X]), i128::from(p[Y]), i128::from(p[W]));
+                let bias = (nx.abs() * ew + ny.abs() * eh) * i128::from(p[C]).abs() + rho;
                 for (end, z) in [za, zb].into_iter().enumerate() {
                     let phi = nx * ew * (x + w) + ny * eh * (w - y) - 2 * w * z;
-                    lo[time][end] = lo[time][end].min(phi - rho);
-                    hi[time][end] = hi[time][end].max(phi + rho);
+                    lo[time][end] = lo[time][end].min(phi - bias);
+                    hi[time][end] = hi[time][end].max(phi + bias);
                 }
             }
         }
@@ -469,7 +489,7 @@ mod tests {
 
     #[test]
     fn edge_lines_at_the_domain_corners() {
-        assert!(corners::<Bounded<16, 16, 16, 32>>() >= 3);
-        assert!(corners::<Exact>() >= 3);
+        assert!(corners::<Bounded<16, 16, 16, 32>>() >= 5);
+        assert!(corners::<Exact>() >= 5);
     }
 }
