@@ -18,7 +18,7 @@ use uvt_core::{Bounded, Laine2011, Prec, Precision, Triangle, Viewport};
 
 use crate::frame::{run, Fixed, FrameStats, Reference, RunOpts};
 use crate::oracle::search::Effort;
-use crate::oracle::{axis_aligned_limit, Limit};
+use crate::oracle::{axis_aligned_limit, Limit, Method};
 use crate::pattern::Pattern;
 use crate::scenes::{bench, Bench, Row};
 
@@ -436,7 +436,7 @@ fn rows_at<P: Precision + Sync>(
                 * 1e3;
             let start = std::time::Instant::now();
             let limit = match effort {
-                Some(d) => axis_aligned_limit(&core, vp, &pattern, 1, d),
+                Some(d) => axis_aligned_limit(&core, vp, &pattern, 1, d, Method::Clip3),
                 None => Limit::default(),
             };
             let limit_ms = start.elapsed().as_secs_f64() * 1e3;
@@ -477,6 +477,7 @@ fn name_of(r: &BenchRow) -> String {
 /// per strategy, and (when swept) STE per bounds-tile size.
 pub fn table_md(rows: &[BenchRow]) -> String {
     let [e0, e1] = rows.first().map_or(ORACLE_EFFORT, |r| r.limit.effort);
+    let method = rows.first().map_or(Method::Clip3, |r| r.limit.method);
     // `--no-limit`: the limit was not computed, so its columns are left out (not shown as 0).
     let with_limit = rows
         .iter()
@@ -484,7 +485,8 @@ pub fn table_md(rows: &[BenchRow]) -> String {
     let label = |e: Effort| format!("{}/px + {} steps", e.density, e.steps);
     let limit_head = if with_limit {
         format!(
-            " axis-aligned limit, effort {} | limit, effort {} | gap | covered samples outside the limit box (effort 1 / 2) | best ÷ limit |",
+            " axis-aligned limit ({}), effort {} | limit, effort {} | gap | covered samples outside the limit box (effort 1 / 2) | best ÷ limit |",
+            method.label(),
             label(e0),
             label(e1)
         )

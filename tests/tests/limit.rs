@@ -147,8 +147,22 @@ fn face_search_tightens_the_limit_on_dense_both_x2() {
     let effort: [Effort; 2] = uvt_host::bench::ORACLE_EFFORT;
     let dense_only = effort.map(|e| Effort { steps: 0, ..e });
     let vp = s.core_viewport();
-    let l = uvt_host::oracle::axis_aligned_limit(&tris, vp, &pattern, 1, effort);
-    let d = uvt_host::oracle::axis_aligned_limit(&tris, vp, &pattern, 1, dense_only);
+    let l = uvt_host::oracle::axis_aligned_limit(
+        &tris,
+        vp,
+        &pattern,
+        1,
+        effort,
+        uvt_host::oracle::Method::Points5,
+    );
+    let d = uvt_host::oracle::axis_aligned_limit(
+        &tris,
+        vp,
+        &pattern,
+        1,
+        dense_only,
+        uvt_host::oracle::Method::Points5,
+    );
     println!("with search {l:?}\ndense only {d:?}");
     assert!(l.covered > 1000 && l.covered == d.covered, "{l:?} {d:?}");
     for k in 0..2 {
@@ -206,4 +220,66 @@ fn limit_effort_parses_and_refuses_bad_values() {
         let err = uvt_host::bench::parse_effort(bad).expect_err(bad);
         assert!(err.contains(needle), "{bad:?}: {err:?} lacks {needle:?}");
     }
+}
+
+/// The f64 edge model of `oracle::clip` agrees with the core's sample test at random points of
+/// the Laine boxes of quick 'dense both ×2' tiles wherever the f64 point is farther than 1/64 px
+/// from every edge.
+#[test]
+fn clip_edge_model_agrees_with_the_core() {
+    use rand::{Rng, SeedableRng};
+    use uvt_core::bounds::BoundsStrategy;
+    use uvt_host::oracle::clip::{core_covers, TileCover};
+    use uvt_host::scenes::{bench, Bench, Row};
+    let seed: u64 = std::env::var("UVT_SEED")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(11);
+    let mut rng = rand_pcg::Pcg64::seed_from_u64(seed);
+    let s = bench(Bench::Dense, Row::Both2, true);
+    let vp = s.core_viewport();
+    let (mut agree, mut inside, mut near) = (0u64, 0u64, 0u64);
+    for tri in s.core_tris().expect("converts").into_iter().step_by(64) {
+        let mut ops = uvt_core::Ops::default();
+        let uvt_core::Outcome::Visible(st) = uvt_core::setup(&tri, vp, &mut ops) else {
+            continue;
+        };
+        let co = uvt_core::Laine2011.prepare(&st, &mut ops);
+        for cell in st.footprint().cells(1) {
+            let Some(b) = uvt_core::Laine2011.tile(&st, &co, cell, &mut ops) else {
+                continue;
+            };
+            let cover = TileCover::new(&st, cell);
+            for _ in 0..200 {
+                let xs = u32::from(cell.x0) * 256 + rng.gen_range(0..256);
+                let ys = u32::from(cell.y0) * 256 + rng.gen_range(0..256);
+                let uvt = [
+                    rng.gen_range(b.u.lo()..=b.u.hi()),
+                    rng.gen_range(b.v.lo()..=b.v.hi()),
+                    rng.gen_range(b.t.lo()..=b.t.hi()),
+                ];
+                let core = core_covers(&st, xs, ys, uvt, &mut ops);
+                let Some(e) = cover.edge_values(xs, ys, uvt) else {
+                    assert!(!core, "degenerate in f64 but covered: {xs} {ys} {uvt:?}");
+                    continue;
+                };
+                if e.iter().any(|x| x.abs() < 1.0 / 64.0) {
+                    near += 1;
+                    continue;
+                }
+                let f = e.iter().all(|&x| x > 0.0);
+                inside += f as u64;
+                assert_eq!(
+                    f, core,
+                    "seed {seed}: f64 {e:?} vs core at xs {xs} ({xs:#x}) ys {ys} ({ys:#x}) uvt {uvt:?}"
+                );
+                agree += 1;
+            }
+        }
+    }
+    println!("agree {agree} (inside {inside}), near an edge {near}");
+    assert!(
+        agree > 1000 && inside > 100,
+        "agree {agree}, inside {inside}"
+    );
 }
