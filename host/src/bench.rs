@@ -99,15 +99,17 @@ macro_rules! with_precision {
 }
 
 /// The two efforts of the axis-aligned limit (dense points per pixel, face-search proposals per
-/// face); the second continues the first.
+/// face); the second continues the first. The (u, v, t) search with the 2D clip
+/// ([`crate::oracle::Method::Clip3`]) asks fewer points than the 5D search did (64:64,256:256),
+/// each a clip plus up to a few core sample tests.
 pub const ORACLE_EFFORT: [Effort; 2] = [
     Effort {
-        density: 64,
-        steps: 64,
+        density: 16,
+        steps: 32,
     },
     Effort {
-        density: 256,
-        steps: 256,
+        density: 64,
+        steps: 128,
     },
 ];
 

@@ -253,8 +253,8 @@ pub fn axis_aligned_limit(
                 out.tiles += 1;
                 let seed = (ti as u64) << 32 ^ u64::from(cell.x0) << 16 ^ u64::from(cell.y0);
                 let (found, points) = tile_limit(&s, cell, &b, method, effort, seed, &mut ops);
-                for k in 0..2 {
-                    out.points[k] += points[k];
+                for (o, p) in out.points.iter_mut().zip(points) {
+                    *o += p;
                 }
                 for py in cell.y0..cell.y1 {
                     for px in cell.x0..cell.x1 {

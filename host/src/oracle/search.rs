@@ -19,6 +19,10 @@
 //!   sit at such tips (a vertex entering a tile corner at an interior lens position), which a
 //!   uniform density reaches only slowly.
 //!
+//! A set that does not depend on some dimensions (the oracle's (u, v, t) search of a motion-only
+//! or defocus-only triangle, or x, y collapsed to one point) marks only the others active
+//! ([`BoxSearch::with_active`]): dense points and random moves then vary only those.
+//!
 //! Deterministic: the Sobol seed and the step generator's seed are arguments.
 
 use rand::{Rng, SeedableRng};
