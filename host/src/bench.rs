@@ -18,7 +18,7 @@ use uvt_core::{Bounded, Laine2011, Prec, Precision, Triangle, Viewport};
 
 use crate::frame::{run, Fixed, FrameStats, Reference, RunOpts};
 use crate::oracle::search::Effort;
-use crate::oracle::{axis_aligned_limit, Limit};
+use crate::oracle::{axis_aligned_limit, Limit, Method};
 use crate::pattern::Pattern;
 use crate::scenes::{bench, Bench, Row};
 
@@ -100,15 +100,17 @@ macro_rules! with_precision {
 }
 
 /// The two efforts of the axis-aligned limit (dense points per pixel, face-search proposals per
-/// face); the second continues the first.
+/// face); the second continues the first. The (u, v, t) search with the 2D clip
+/// ([`crate::oracle::Method::Clip3`]) asks fewer points than the 5D search did (64:64,256:256),
+/// each a clip plus up to a few core sample tests.
 pub const ORACLE_EFFORT: [Effort; 2] = [
     Effort {
-        density: 64,
-        steps: 64,
+        density: 16,
+        steps: 32,
     },
     Effort {
-        density: 256,
-        steps: 256,
+        density: 64,
+        steps: 128,
     },
 ];
 
@@ -438,7 +440,7 @@ fn rows_at<P: Precision + Sync>(
                 * 1e3;
             let start = std::time::Instant::now();
             let limit = match effort {
-                Some(d) => axis_aligned_limit(&core, vp, &pattern, 1, d),
+                Some(d) => axis_aligned_limit(&core, vp, &pattern, 1, d, Method::Clip3),
                 None => Limit::default(),
             };
             let limit_ms = start.elapsed().as_secs_f64() * 1e3;
@@ -479,6 +481,7 @@ fn name_of(r: &BenchRow) -> String {
 /// per strategy, and (when swept) STE per bounds-tile size.
 pub fn table_md(rows: &[BenchRow]) -> String {
     let [e0, e1] = rows.first().map_or(ORACLE_EFFORT, |r| r.limit.effort);
+    let method = rows.first().map_or(Method::Clip3, |r| r.limit.method);
     // `--no-limit`: the limit was not computed, so its columns are left out (not shown as 0).
     let with_limit = rows
         .iter()
@@ -486,7 +489,8 @@ pub fn table_md(rows: &[BenchRow]) -> String {
     let label = |e: Effort| format!("{}/px + {} steps", e.density, e.steps);
     let limit_head = if with_limit {
         format!(
-            " axis-aligned limit, effort {} | limit, effort {} | gap | covered samples outside the limit box (effort 1 / 2) | best ÷ limit |",
+            " axis-aligned limit ({}), effort {} | limit, effort {} | gap | covered samples outside the limit box (effort 1 / 2) | best ÷ limit |",
+            method.label(),
             label(e0),
             label(e1)
         )

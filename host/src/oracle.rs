@@ -4,14 +4,26 @@
 //! For every triangle and every bounds tile that Laine 2011 keeps (a conservative bound: the tiles
 //! it culls hold no covered sample — tested in `tests/tests/conservative.rs`), the covered set is
 //! the set of points on the core's grids (x, y in 1/256 px within the tile, u, v, t raw inside
-//! Laine's box) that the core's exact sample test covers; its box is what the tightest
-//! conservative axis-aligned bound must test. [`search::BoxSearch`] estimates that box from
-//! inside: dense points per pixel (5D Owen-scrambled Sobol) and then a search that pushes each of
-//! the six u, v, t faces outward along covered points (evolution strategy + bisection). Every
-//! face of the estimate is attained by a covered point, so the estimated box lies inside the
-//! true box, and the count `|{pattern samples of the tile inside the estimated box or covered}|`
-//! is at most what any conservative axis-aligned bound tests: **the estimated limit STE errs on
-//! the optimistic side** (it is ≥ the true limit STE; it can only fall as effort grows).
+//! Laine's box) that the core's sample test covers; its box is what the tightest conservative
+//! axis-aligned bound must test. Its six faces are extremes of the projection of that set onto
+//! (u, v, t): the set `S` of lens points and times at which the tile holds a covered grid point.
+//!
+//! [`Method::Clip3`] (the default) searches `S` directly: membership of one (u, v, t) is the 2D
+//! question of [`clip::TileCover`] (the tile clipped by the triangle's edge half-planes at
+//! (u, v, t), then a grid point inside confirmed by the core's own sample test), and
+//! [`search::BoxSearch`] estimates the box of `S` from inside — dense (Owen-scrambled Sobol)
+//! points, then a face search (evolution strategy + bisection) — in 3D for a triangle with motion
+//! and defocus, in t alone for motion only, in (u, v) alone for defocus only (the other faces are
+//! Laine's, i.e. the whole domain, attained because coverage does not depend on them), and not at
+//! all for a static triangle. [`Method::Points5`] is the earlier search in 5D (x, y, u, v, t),
+//! each point one core sample test; it converges slowly on tiny, strongly blurred triangles and
+//! is kept for comparison.
+//!
+//! Either way, every face of the estimate is attained by a point the core covers, so the
+//! estimated box lies inside the true box, and the count `|{pattern samples of the tile inside
+//! the estimated box or covered}|` is at most what any conservative axis-aligned bound tests:
+//! **the estimated limit STE errs on the optimistic side** (it is ≥ the true limit STE; it can
+//! only fall as effort grows).
 //!
 //! Two efforts are evaluated, nested (the second continues the first's dense sequence and starts
 //! its faces from the first's box), so their gap shows convergence; the covered pattern samples
@@ -19,22 +31,45 @@
 //! of 0 at the second effort and a small gap are the evidence of convergence. A strategy that is
 //! not axis-aligned (per-sample predicates) may test fewer samples than this limit.
 
+pub mod clip;
 pub mod search;
 
 use rayon::prelude::*;
 use uvt_core::bounds::BoundsStrategy;
 use uvt_core::{
-    sample_test, Laine2011, Lens, Ops, Outcome, Sample, ScreenPos, SubPixel, Time, Triangle,
-    Viewport,
+    sample_test, Laine2011, Ops, Outcome, PixelRect, ScreenPos, Setup, Triangle, UvtBox, Viewport,
 };
 
 use crate::pattern::Pattern;
 
+use clip::{core_covers, TileCover};
 use search::{BoxSearch, Effort, P5};
+
+/// How a tile's limit box is searched.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
+pub enum Method {
+    /// in (u, v, t) (or its active part), each point answered by the 2D clip + a core test
+    #[default]
+    Clip3,
+    /// in (x, y, u, v, t), each point one core sample test (the earlier limit)
+    Points5,
+}
+
+impl Method {
+    /// Label for tables.
+    pub fn label(self) -> &'static str {
+        match self {
+            Method::Clip3 => "uvt search + 2D clip",
+            Method::Points5 => "5D points",
+        }
+    }
+}
 
 /// Counters of the axis-aligned limit at two efforts.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
 pub struct Limit {
+    /// how the boxes were searched
+    pub method: Method,
     /// the two efforts `[low, high]` (dense points per pixel, face-search proposals per face)
     pub effort: [Effort; 2],
     /// bounds tiles Laine keeps (where the search ran)
@@ -45,7 +80,8 @@ pub struct Limit {
     pub tested: [u64; 2],
     /// covered pattern samples outside the estimated box, per effort
     pub missed: [u64; 2],
-    /// sample tests of the search, per effort (the second effort's count includes the first's)
+    /// membership questions of the search, per effort (the second effort's count includes the
+    /// first's): points of `S` asked ([`Method::Clip3`]) or sample tests ([`Method::Points5`])
     pub points: [u64; 2],
 }
 
@@ -69,31 +105,136 @@ impl Limit {
     }
 }
 
-/// `p` (x, y in 1/256 px, then u, v, t raw) as a pixel and a sample; `None` outside the sample
-/// domain (never for points of a tile's search domain, which lie in Laine's box).
-fn to_sample(p: &P5) -> Option<(u16, u16, Sample)> {
-    let (px, sx) = (u16::try_from(p[0] >> 8).ok()?, (p[0] & 255) as u8);
-    let (py, sy) = (u16::try_from(p[1] >> 8).ok()?, (p[1] & 255) as u8);
-    let s = Sample::new(
-        SubPixel::from_bits(sx),
-        SubPixel::from_bits(sy),
-        Lens::from_bits(p[2]),
-        Lens::from_bits(p[3]),
-        Time::from_bits(p[4]),
-    )
-    .ok()?;
-    Some((px, py, s))
+/// A covered point: grid position (1/256 px) and (u, v, t) raw.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Witness {
+    /// x, y in 1/256 px
+    pub xy: [u32; 2],
+    /// u, v, t raw
+    pub uvt: [i32; 3],
+}
+
+/// One tile's estimated limit box at one effort: `[lo, hi]` per u, v, t, and the covered point
+/// on each face (`faces[d][side]`, `d` = u, v, t, side 0 low, 1 high).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct TileBox {
+    /// per u, v, t: `[lo, hi]`
+    pub uvt: [[i32; 2]; 3],
+    /// the covered point attaining each face
+    pub faces: [[Witness; 2]; 3],
+}
+
+impl TileBox {
+    /// Whether (u, v, t) lies in the box.
+    pub fn contains(&self, uvt: [i32; 3]) -> bool {
+        self.uvt
+            .iter()
+            .zip(uvt)
+            .all(|(iv, x)| iv[0] <= x && x <= iv[1])
+    }
+}
+
+/// The estimated limit boxes of tile `cell` (inside Laine's box `b`) at the two nested efforts
+/// (`None`: no covered point found), and the membership questions asked up to each.
+pub fn tile_limit(
+    s: &Setup,
+    cell: PixelRect,
+    b: &UvtBox,
+    method: Method,
+    effort: [Effort; 2],
+    seed: u64,
+    ops: &mut Ops,
+) -> ([Option<TileBox>; 2], [u64; 2]) {
+    let area = u32::from(cell.x1 - cell.x0) * u32::from(cell.y1 - cell.y0);
+    let uvt_lo = [b.u.lo(), b.v.lo(), b.t.lo()];
+    let uvt_hi = [b.u.hi(), b.v.hi(), b.t.hi()];
+    // 1/256 px: x1, y1 ≤ 2^16, so 256·x1 ≤ 2^24 fits i32.
+    let (xy_lo, xy_hi) = match method {
+        Method::Clip3 => ([0, 0], [0, 0]),
+        Method::Points5 => (
+            [i32::from(cell.x0) * 256, i32::from(cell.y0) * 256],
+            [i32::from(cell.x1) * 256 - 1, i32::from(cell.y1) * 256 - 1],
+        ),
+    };
+    let lo: P5 = [xy_lo[0], xy_lo[1], uvt_lo[0], uvt_lo[1], uvt_lo[2]];
+    let hi: P5 = [xy_hi[0], xy_hi[1], uvt_hi[0], uvt_hi[1], uvt_hi[2]];
+    let class = s.class();
+    let (lens, time) = (class.defocus(), class.motion());
+    let active = match method {
+        Method::Clip3 => [false, false, lens, lens, time],
+        Method::Points5 => [true; 5],
+    };
+    let mut search = BoxSearch::new(lo, hi, 0x0ac1_e000_0000_0000 ^ seed).with_active(active);
+    let cover = TileCover::new(s, cell);
+    let tests = std::cell::Cell::new(0u64);
+    let uvt_of = |p: &P5| [p[2], p[3], p[4]];
+    let mut test = |p: &P5| {
+        tests.set(tests.get() + 1);
+        match method {
+            Method::Clip3 => cover.witness(uvt_of(p), ops).is_some(),
+            Method::Points5 => match (u32::try_from(p[0]), u32::try_from(p[1])) {
+                (Ok(x), Ok(y)) => core_covers(s, x, y, uvt_of(p), ops),
+                _ => false,
+            },
+        }
+    };
+    let mut found = [None, None];
+    let mut points = [0; 2];
+    for (k, e) in effort.iter().enumerate() {
+        // A static triangle's set is all of Laine's box or empty: one point decides.
+        let n = if active.iter().any(|&a| a) {
+            e.density.saturating_mul(area)
+        } else {
+            1
+        };
+        search.dense(n, &mut test);
+        search.push_faces(e.steps, &mut test);
+        found[k] = search.bounds().zip(search.faces());
+        points[k] = tests.get();
+    }
+    let mut boxes = [None, None];
+    for (k, f) in found.iter().enumerate() {
+        let Some((bb, ext)) = f else {
+            continue;
+        };
+        let mut faces = [[Witness {
+            xy: [0, 0],
+            uvt: [0; 3],
+        }; 2]; 3];
+        for d in 0..3 {
+            for side in 0..2 {
+                let p = ext[d + 2][side];
+                let xy = match method {
+                    // Deterministic: the same (u, v, t) finds the same witness again.
+                    Method::Clip3 => cover
+                        .witness(uvt_of(&p), ops)
+                        .map_or([u32::MAX; 2], |(x, y)| [x, y]),
+                    Method::Points5 => [p[0], p[1]].map(|x| u32::try_from(x).unwrap_or(u32::MAX)),
+                };
+                faces[d][side] = Witness {
+                    xy,
+                    uvt: uvt_of(&p),
+                };
+            }
+        }
+        boxes[k] = Some(TileBox {
+            uvt: [bb[2], bb[3], bb[4]],
+            faces,
+        });
+    }
+    (boxes, points)
 }
 
 /// The axis-aligned limit of a frame for bounds tiles of `tile` pixels at two efforts (the
 /// second continues the first; `effort[1].density` ≥ `effort[0].density`, and at most 2^16 per
-/// pixel so a tile's points stay within one Sobol sequence).
+/// pixel so a tile's points stay within one Sobol sequence), searched by `method`.
 pub fn axis_aligned_limit(
     tris: &[Triangle],
     vp: Viewport,
     pattern: &Pattern,
     tile: u8,
     effort: [Effort; 2],
+    method: Method,
 ) -> Limit {
     let mut total = tris
         .par_iter()
@@ -110,37 +251,10 @@ pub fn axis_aligned_limit(
                     continue;
                 };
                 out.tiles += 1;
-                let area = u32::from(cell.x1 - cell.x0) * u32::from(cell.y1 - cell.y0);
-                // 1/256 px: x1, y1 ≤ 2^16, so 256·x1 ≤ 2^24 fits i32.
-                let lo = [
-                    i32::from(cell.x0) * 256,
-                    i32::from(cell.y0) * 256,
-                    b.u.lo(),
-                    b.v.lo(),
-                    b.t.lo(),
-                ];
-                let hi = [
-                    i32::from(cell.x1) * 256 - 1,
-                    i32::from(cell.y1) * 256 - 1,
-                    b.u.hi(),
-                    b.v.hi(),
-                    b.t.hi(),
-                ];
                 let seed = (ti as u64) << 32 ^ u64::from(cell.x0) << 16 ^ u64::from(cell.y0);
-                let mut search = BoxSearch::new(lo, hi, 0x0ac1_e000_0000_0000 ^ seed);
-                let tests = std::cell::Cell::new(0u64);
-                let mut test = |p: &P5| {
-                    tests.set(tests.get() + 1);
-                    to_sample(p).is_some_and(|(px, py, smp)| {
-                        sample_test(&s, ScreenPos::of(px, py, &smp), &smp, &mut ops).is_some()
-                    })
-                };
-                let mut found = [search.clone(), search.clone()];
-                for (k, e) in effort.iter().enumerate() {
-                    search.dense(e.density.saturating_mul(area), &mut test);
-                    search.push_faces(e.steps, &mut test);
-                    found[k] = search.clone();
-                    out.points[k] += tests.get();
+                let (found, points) = tile_limit(&s, cell, &b, method, effort, seed, &mut ops);
+                for (o, p) in out.points.iter_mut().zip(points) {
+                    *o += p;
                 }
                 for py in cell.y0..cell.y1 {
                     for px in cell.x0..cell.x1 {
@@ -152,7 +266,7 @@ pub fn axis_aligned_limit(
                                     .is_some();
                             out.covered += hit as u64;
                             for (k, f) in found.iter().enumerate() {
-                                let inside = f.contains_uvt(uvt);
+                                let inside = f.is_some_and(|f| f.contains(uvt));
                                 out.tested[k] += (inside || hit) as u64;
                                 out.missed[k] += (hit && !inside) as u64;
                             }
@@ -167,5 +281,6 @@ pub fn axis_aligned_limit(
             a
         });
     total.effort = effort;
+    total.method = method;
     total
 }

@@ -126,9 +126,9 @@ fn box_search_finds_the_exact_box_of_a_thin_simplex() {
     }
 }
 
-/// On a subset of the quick 'dense both ×2' triangles (the row whose limit did not converge
+/// `Method::Points5` (the 5D point search): on a subset of the quick 'dense both ×2' triangles (the row whose limit did not converge
 /// with dense points alone: 20.33 → 14.29 STE from 64 to 256 points per pixel, 3.7% of the
-/// covered samples outside the box), the face search tightens the estimate: at the benchmark's
+/// covered samples outside the box), the face search tightens the estimate: at 64:64,256:256
 /// efforts the limit STE is at least 20% (relative) below that of the same dense points without
 /// the search, never above it (the search only adds covered points), and the box misses at most
 /// 1% of the covered pattern samples (dense points alone: several %). Every 16th triangle (the
@@ -144,11 +144,26 @@ fn face_search_tightens_the_limit_on_dense_both_x2() {
         .into_iter()
         .step_by(16)
         .collect();
-    let effort: [Effort; 2] = uvt_host::bench::ORACLE_EFFORT;
+    // The efforts the 5D limit was benchmarked at (the bench's default before the clip search).
+    let effort: [Effort; 2] = uvt_host::bench::parse_effort("64:64,256:256").expect("valid");
     let dense_only = effort.map(|e| Effort { steps: 0, ..e });
     let vp = s.core_viewport();
-    let l = uvt_host::oracle::axis_aligned_limit(&tris, vp, &pattern, 1, effort);
-    let d = uvt_host::oracle::axis_aligned_limit(&tris, vp, &pattern, 1, dense_only);
+    let l = uvt_host::oracle::axis_aligned_limit(
+        &tris,
+        vp,
+        &pattern,
+        1,
+        effort,
+        uvt_host::oracle::Method::Points5,
+    );
+    let d = uvt_host::oracle::axis_aligned_limit(
+        &tris,
+        vp,
+        &pattern,
+        1,
+        dense_only,
+        uvt_host::oracle::Method::Points5,
+    );
     println!("with search {l:?}\ndense only {d:?}");
     assert!(l.covered > 1000 && l.covered == d.covered, "{l:?} {d:?}");
     for k in 0..2 {
@@ -205,5 +220,178 @@ fn limit_effort_parses_and_refuses_bad_values() {
     ] {
         let err = uvt_host::bench::parse_effort(bad).expect_err(bad);
         assert!(err.contains(needle), "{bad:?}: {err:?} lacks {needle:?}");
+    }
+}
+
+/// The f64 edge model of `oracle::clip` agrees with the core's sample test at random points of
+/// the Laine boxes of quick 'dense both ×2' tiles wherever the f64 point is farther than 1/64 px
+/// from every edge.
+#[test]
+fn clip_edge_model_agrees_with_the_core() {
+    use rand::{Rng, SeedableRng};
+    use uvt_core::bounds::BoundsStrategy;
+    use uvt_host::oracle::clip::{core_covers, TileCover};
+    use uvt_host::scenes::{bench, Bench, Row};
+    let seed: u64 = std::env::var("UVT_SEED")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(11);
+    let mut rng = rand_pcg::Pcg64::seed_from_u64(seed);
+    let s = bench(Bench::Dense, Row::Both2, true);
+    let vp = s.core_viewport();
+    let (mut agree, mut inside, mut near) = (0u64, 0u64, 0u64);
+    for tri in s.core_tris().expect("converts").into_iter().step_by(64) {
+        let mut ops = uvt_core::Ops::default();
+        let uvt_core::Outcome::Visible(st) = uvt_core::setup(&tri, vp, &mut ops) else {
+            continue;
+        };
+        let co = uvt_core::Laine2011.prepare(&st, &mut ops);
+        for cell in st.footprint().cells(1) {
+            let Some(b) = uvt_core::Laine2011.tile(&st, &co, cell, &mut ops) else {
+                continue;
+            };
+            let cover = TileCover::new(&st, cell);
+            for _ in 0..200 {
+                let xs = u32::from(cell.x0) * 256 + rng.gen_range(0..256);
+                let ys = u32::from(cell.y0) * 256 + rng.gen_range(0..256);
+                let uvt = [
+                    rng.gen_range(b.u.lo()..=b.u.hi()),
+                    rng.gen_range(b.v.lo()..=b.v.hi()),
+                    rng.gen_range(b.t.lo()..=b.t.hi()),
+                ];
+                let core = core_covers(&st, xs, ys, uvt, &mut ops);
+                let Some(e) = cover.edge_values(xs, ys, uvt) else {
+                    assert!(!core, "degenerate in f64 but covered: {xs} {ys} {uvt:?}");
+                    continue;
+                };
+                if e.iter().any(|x| x.abs() < 1.0 / 64.0) {
+                    near += 1;
+                    continue;
+                }
+                let f = e.iter().all(|&x| x > 0.0);
+                inside += f as u64;
+                assert_eq!(
+                    f, core,
+                    "seed {seed}: f64 {e:?} vs core at xs {xs} ({xs:#x}) ys {ys} ({ys:#x}) uvt {uvt:?}"
+                );
+                agree += 1;
+            }
+        }
+    }
+    println!("agree {agree} (inside {inside}), near an edge {near}");
+    assert!(
+        agree > 1000 && inside > 100,
+        "agree {agree}, inside {inside}"
+    );
+}
+
+/// Every 16th triangle of a quick benchmark row with its frame's pattern.
+fn subset(
+    scene: uvt_host::scenes::Bench,
+    row: uvt_host::scenes::Row,
+) -> (
+    Vec<uvt_core::Triangle>,
+    uvt_core::Viewport,
+    uvt_host::pattern::Pattern,
+) {
+    let s = uvt_host::scenes::bench(scene, row, true);
+    let pattern = uvt_host::pattern::Pattern::new(s.pattern, s.spp, s.seed);
+    let tris = s
+        .core_tris()
+        .expect("built-in scene converts")
+        .into_iter()
+        .step_by(16)
+        .collect();
+    (tris, s.core_viewport(), pattern)
+}
+
+/// The (u, v, t) search with the 2D clip (`Method::Clip3`) finds, at the same effort, a box the
+/// 5D point search (`Method::Points5`, the limit before it) does not: on every 16th triangle of
+/// quick 'dense both ×2' its limit STE is at least 10% (relative) lower at both efforts, and its
+/// box misses at most 0.05% of the covered pattern samples at the higher effort (measured:
+/// Points5 at 16:32,64:128 misses several tenths of a percent).
+#[test]
+fn clip_search_finds_boxes_the_5d_points_miss() {
+    use uvt_host::oracle::{axis_aligned_limit, Method};
+    use uvt_host::scenes::{Bench, Row};
+    let (tris, vp, pattern) = subset(Bench::Dense, Row::Both2);
+    let effort = uvt_host::bench::parse_effort("16:32,64:128").expect("valid");
+    let c = axis_aligned_limit(&tris, vp, &pattern, 1, effort, Method::Clip3);
+    let p = axis_aligned_limit(&tris, vp, &pattern, 1, effort, Method::Points5);
+    println!("clip {c:?}\npoints {p:?}");
+    assert!(c.covered > 1000 && c.covered == p.covered, "{c:?} {p:?}");
+    for k in 0..2 {
+        assert!(
+            c.ste(k) <= 0.9 * p.ste(k),
+            "effort {k}: clip STE {} not 10% below 5D-points STE {} ({c:?}, {p:?})",
+            c.ste(k),
+            p.ste(k)
+        );
+    }
+    assert!(
+        c.missed[1] * 2000 <= c.covered,
+        "clip box misses {} of {} covered samples ({c:?})",
+        c.missed[1],
+        c.covered
+    );
+}
+
+/// Every face of every estimated box (both efforts, `Method::Clip3`) is attained by a point the
+/// core's sample test covers: its witness lies in the tile, carries the face's coordinate, lies
+/// in the box, and is covered — on subsets of the quick motion-only, defocus-only and both ×2
+/// rows (the 1D, 2D and 3D searches) and the static row (no search).
+#[test]
+fn every_face_of_the_clip_box_is_attained_by_a_covered_point() {
+    use uvt_core::bounds::BoundsStrategy;
+    use uvt_host::oracle::{clip::core_covers, tile_limit, Method};
+    use uvt_host::scenes::{Bench, Row};
+    let effort = uvt_host::bench::parse_effort("8:16,16:32").expect("valid");
+    for (scene, row) in [
+        (Bench::Dense, Row::Static),
+        (Bench::Dense, Row::Motion2),
+        (Bench::Dense, Row::Defocus2),
+        (Bench::Dense, Row::Both2),
+        (Bench::Game, Row::Both2),
+    ] {
+        let (tris, vp, _) = subset(scene, row);
+        let mut faces = 0u64;
+        for (ti, tri) in tris.iter().enumerate().step_by(4) {
+            let mut ops = uvt_core::Ops::default();
+            let uvt_core::Outcome::Visible(s) = uvt_core::setup(tri, vp, &mut ops) else {
+                continue;
+            };
+            let co = uvt_core::Laine2011.prepare(&s, &mut ops);
+            for cell in s.footprint().cells(1) {
+                let Some(b) = uvt_core::Laine2011.tile(&s, &co, cell, &mut ops) else {
+                    continue;
+                };
+                let (boxes, _) =
+                    tile_limit(&s, cell, &b, Method::Clip3, effort, ti as u64, &mut ops);
+                for bx in boxes.iter().flatten() {
+                    for d in 0..3 {
+                        for side in 0..2 {
+                            let w = bx.faces[d][side];
+                            let [xs, ys] = w.xy;
+                            let ok = w.uvt[d] == bx.uvt[d][side]
+                                && bx.contains(w.uvt)
+                                && (u32::from(cell.x0) * 256..u32::from(cell.x1) * 256)
+                                    .contains(&xs)
+                                && (u32::from(cell.y0) * 256..u32::from(cell.y1) * 256)
+                                    .contains(&ys)
+                                && core_covers(&s, xs, ys, w.uvt, &mut ops);
+                            assert!(
+                                ok,
+                                "{scene:?} {row:?} triangle {ti} tile {cell:?}: face {d}/{side} of {:?} \
+                                 has witness x {xs} ({xs:#x}) y {ys} ({ys:#x}) uvt {:?}",
+                                bx.uvt, w.uvt
+                            );
+                            faces += 1;
+                        }
+                    }
+                }
+            }
+        }
+        println!("{scene:?} {row:?}: {faces} faces");
+        assert!(faces >= 60, "{scene:?} {row:?}: only {faces} faces checked");
     }
 }

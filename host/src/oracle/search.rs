@@ -19,6 +19,10 @@
 //!   sit at such tips (a vertex entering a tile corner at an interior lens position), which a
 //!   uniform density reaches only slowly.
 //!
+//! A set that does not depend on some dimensions (the oracle's (u, v, t) search of a motion-only
+//! or defocus-only triangle, or x, y collapsed to one point) marks only the others active
+//! ([`BoxSearch::with_active`]): dense points and random moves then vary only those.
+//!
 //! Deterministic: the Sobol seed and the step generator's seed are arguments.
 
 use rand::{Rng, SeedableRng};
@@ -51,6 +55,8 @@ pub struct BoxSearch {
     found: Option<(Bounds5, [[P5; 2]; 5])>,
     /// dense points drawn so far (the next index of the Sobol sequence)
     drawn: u32,
+    /// dimensions the dense points vary (the others stay at `lo`)
+    active: [bool; 5],
 }
 
 impl BoxSearch {
@@ -64,7 +70,22 @@ impl BoxSearch {
             rng: Pcg64::seed_from_u64(seed),
             found: None,
             drawn: 0,
+            active: [true; 5],
         }
+    }
+
+    /// The same search with dense points varying only the `active` dimensions (the others stay
+    /// at their `lo`; Sobol dimensions are assigned in order to the active ones, so a 1D or 2D
+    /// set gets the sequence's best-stratified first dimensions). For a set that does not depend
+    /// on a dimension; the face search still pushes every face of dimensions 2..5.
+    pub fn with_active(mut self, active: [bool; 5]) -> BoxSearch {
+        self.active = active;
+        self
+    }
+
+    /// The covered point found on each face (dimension, side: 0 low, 1 high).
+    pub fn faces(&self) -> Option<[[P5; 2]; 5]> {
+        self.found.map(|f| f.1)
     }
 
     /// The box of the covered points found so far (`None`: none found).
@@ -107,9 +128,14 @@ impl BoxSearch {
             let i = self.drawn;
             self.drawn += 1;
             let mut p = self.lo;
+            let mut sd = 0u32;
             for (d, x) in p.iter_mut().enumerate() {
+                if !self.active[d] {
+                    continue;
+                }
                 let span = (self.hi[d] - self.lo[d]) as f64 + 1.0;
-                let r = sobol_burley::sample(i, d as u32, self.sobol_seed) as f64;
+                let r = sobol_burley::sample(i, sd, self.sobol_seed) as f64;
+                sd += 1;
                 *x = (self.lo[d] + (r * span).floor() as i32).min(self.hi[d]);
             }
             if covered(&p) {
@@ -154,7 +180,7 @@ impl BoxSearch {
             return;
         };
         let mut p = ext[k][side];
-        let (lo, hi) = (self.lo, self.hi);
+        let (lo, hi, active) = (self.lo, self.hi, self.active);
         let range = |d: usize| ((hi[d] - lo[d]) as f64).max(1.0);
         let mut sigma: [f64; 5] = core::array::from_fn(|d| range(d) / 4.0);
         // The evolution path: a decaying sum of successful displacements (the direction of
@@ -170,7 +196,7 @@ impl BoxSearch {
             if use_path {
                 // Along the path (a random length), with a little noise in every coordinate.
                 let g = along * self.gauss().abs();
-                for j in 0..5 {
+                for j in (0..5).filter(|&j| j == k || active[j]) {
                     let n = 0.1 * sigma[j] * self.gauss();
                     q[j] = (p[j] as f64 + (g * path[j] + n).round())
                         .clamp(lo[j] as f64, hi[j] as f64) as i32;
@@ -182,7 +208,7 @@ impl BoxSearch {
                 let g = self.gauss().abs();
                 q[k] = (p[k] as f64 + dir as f64 * (sigma[k] * g).round())
                     .clamp(lo[k] as f64, hi[k] as f64) as i32;
-                for j in (0..5).filter(|&j| j != k) {
+                for j in (0..5).filter(|&j| j != k && active[j]) {
                     if self.rng.gen::<bool>() {
                         moved[j] = true;
                         let g = self.gauss();
