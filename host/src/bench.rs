@@ -1,14 +1,16 @@
 //! `uvt bench-ste`: the STE table in the layout of Laine 2011 Table 1 for the 'game' and 'dense'
 //! scenes in seven rows each — columns bbox scan, every bounds strategy of the core (Laine 2011,
 //! swept-hull culling, lens-slab time bounds, bilinear (u, t)/(v, t) surfaces, hull + lens slabs,
-//! the combined best = hull + surfaces), the f64 reference and the
+//! hull + edge-direction time bounds, the combined best = hull + edge-direction t + surfaces),
+//! the f64 reference and the
 //! axis-aligned limit ([`crate::oracle`]) at two efforts — plus the cost of each strategy
 //! (ops per tile, per-sample predicate ops, wall time without the oracle) and a second table over
 //! bounds-tile sizes 1, 2, 4, 8. The core runs at one precision per table (`--precision`, one of
 //! [`PRECISIONS`]; default: the core's default precision): the scene rounded to its position
 //! grid, the pattern to its t/u/v grid; a `bounded-…` precision runs the bounded sample test with
-//! every strategy widened by its conservative epsilon. The f64 reference and the axis-aligned
-//! limit stay on the exact inputs and the exact core.
+//! every strategy widened by its conservative epsilon. The f64 reference stays on the exact
+//! inputs; the axis-aligned limit runs on the scene at 16 position fraction bits with the core's
+//! default sample test (`uvt_core::setup`, `uvt_core::sample_test`).
 
 use serde::Serialize;
 use std::time::Duration;
@@ -347,12 +349,13 @@ pub fn run_table_at(
     )
 }
 
-/// Frames timed per strategy (at bounds tile 1) and for the reference, the fastest kept: 3 at the
-/// quick size, whose frames take tens of milliseconds, 2 at full size (up to ~25 s per frame):
-/// one frame alone is at the mercy of the scheduler.
+/// Frames timed per strategy (at bounds tile 1) and for the reference, the fastest kept: 5 at the
+/// quick size, whose frames take tens of milliseconds (with 3, one row's fastest core frame came
+/// out 1.06× the reference's where 10 frames each gave 0.85×), 2 at full size (up to ~25 s per
+/// frame): one frame alone is at the mercy of the scheduler.
 pub fn timing_runs(quick: bool) -> usize {
     if quick {
-        3
+        5
     } else {
         2
     }
@@ -534,8 +537,10 @@ pub fn table_md(rows: &[BenchRow]) -> String {
         );
     }
     s += &format!(
-        "\nCost per strategy (bounds tile 1×1, core {}): setup ops per triangle / ops per tile / predicate ops per tested sample / all tile + predicate + sample-test ops per covered sample / core wall ms (no oracle; after one untimed warm-up frame per row, the fastest of 3 frames at the quick size, 2 at full size); Laine f64 ms = the f64 reference's frame, timed alike\n\n| Scene |",
-        rows.first().map_or("-", |r| r.precision.as_str())
+        "\nCost per strategy (bounds tile 1×1, core {}): setup ops per triangle / ops per tile / predicate ops per tested sample / all tile + predicate + sample-test ops per covered sample / core wall ms (no oracle; after one untimed warm-up frame per row, the fastest of {} frames at the quick size, {} at full size); Laine f64 ms = the f64 reference's frame, timed alike\n\n| Scene |",
+        rows.first().map_or("-", |r| r.precision.as_str()),
+        timing_runs(true),
+        timing_runs(false)
     );
     for n in STRATEGIES {
         s += &format!(" {n} |");

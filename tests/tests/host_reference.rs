@@ -234,11 +234,12 @@ fn bench_rows_fixed_and_f64_ste_within_two_percent() {
     }
 }
 
-/// The axis-aligned limit (dense points and face search in every tile Laine 2011 keeps) on the
-/// quick 'game both x2' row: it has converged (the two efforts agree within 8% relative STE, and the
-/// limit box misses at most 0.5% of the covered pattern samples), it saw exactly the frame's
-/// covered samples, and no axis-aligned strategy (Laine 2011, swept-hull culling) tests fewer
-/// samples than it — which would mean the strategy culled coverage that the search found.
+/// The axis-aligned limit ((u, v, t) search with a 2D clip per point, in every tile Laine 2011
+/// keeps) on the quick 'game both x2' row: it has converged (the two efforts agree within 5%
+/// relative STE — 2.9% measured — and the limit box misses at most 0.05% of the covered pattern
+/// samples — 0.002% measured), it saw exactly the frame's covered samples, and no axis-aligned
+/// strategy (Laine 2011, swept-hull culling, hull + edge-direction t) tests fewer samples than it —
+/// which would mean the strategy culled coverage that the search found.
 #[test]
 fn axis_aligned_limit_converged_and_below_axis_aligned_strategies() {
     let rows = uvt_host::bench::run_table(
@@ -255,18 +256,18 @@ fn axis_aligned_limit_converged_and_below_axis_aligned_strategies() {
     assert_eq!(l.covered, laine.stats.samples_covered, "{l:?}");
     let (s0, s1) = (l.ste(0), l.ste(1));
     assert!(
-        s1 > 0.0 && (s0 - s1).abs() / s1 <= 0.08,
+        s1 > 0.0 && (s0 - s1).abs() / s1 <= 0.05,
         "limit not converged: STE {s0} at {:?}, {s1} at {:?} ({l:?})",
         l.effort[0],
         l.effort[1]
     );
     assert!(
-        l.missed[1] * 200 <= l.covered,
+        l.missed[1] * 2000 <= l.covered,
         "limit box misses {} of {} covered samples ({l:?})",
         l.missed[1],
         l.covered
     );
-    for name in ["laine2011", "hull"] {
+    for name in ["laine2011", "hull", "hull+edge-t"] {
         let s = r.strat(name).expect("axis-aligned strategy");
         assert!(
             s.stats.samples_tested >= l.tested[1],
