@@ -10,7 +10,9 @@
 //! fixed-capacity `heapless::Vec` (no heap; memory is `N` setups plus one tile buffer), then walks
 //! the screen tile by tile; per screen tile, per triangle whose footprint meets it, per bounds
 //! tile (aligned to the bounds-tile grid, clipped to footprint and screen tile) it asks the bounds
-//! strategy for (u, v, t) intervals and runs the sample test on the samples inside them.
+//! strategy for (u, v, t) intervals and runs the sample test on the samples inside them; the
+//! tiles are walked row by row, each row first narrowed by the strategy's row span
+//! ([`crate::bounds::walk_tiles`]).
 
 use embedded_graphics_core::draw_target::DrawTarget;
 use embedded_graphics_core::pixelcolor::{Rgb888, RgbColor};

@@ -63,6 +63,13 @@
 //! footprint, so the decisions are unchanged. The kept faces are tested in a greedy order (the
 //! face culling most of an up to 8 × 8 pixel grid over the footprint not culled by an earlier
 //! one first), stopping at the first that culls; the order changes only the op count.
+//!
+//! **Row spans** ([`HullTiles::span`], [`HullCull`]'s `row_span`). In one row of tiles ye is
+//! fixed, so each face keeps the cells with `a'·xe + r ≥ 0` (r = b'·ye + c'): a run of
+//! consecutive cells found by one exact floor division per face and row. Their intersection is
+//! the row's span; inside it the face test is skipped and outside no tile is visited — exactly
+//! the tiles the per-tile test keeps (clipped first and last cells included; proof at
+//! [`TileFace`]'s `span`). Counted in `ops.rows`.
 #![warn(
     clippy::arithmetic_side_effects,
     clippy::indexing_slicing,
