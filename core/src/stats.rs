@@ -63,9 +63,10 @@ pub struct Stats {
     pub culled_degenerate: u64,
     /// visible triangles by class: static, motion, defocus, motion+defocus
     pub by_class: [u64; 4],
-    /// bounds tiles whose bounds were computed
+    /// bounds tiles of the footprints walked: those whose bounds were computed and those its
+    /// row's span skipped ([`crate::BoundsStrategy::row_span`])
     pub tiles_visited: u64,
-    /// bounds tiles whose bounds were empty (skipped without a sample test)
+    /// bounds tiles whose bounds were empty or that a row span skipped (no sample test)
     pub tiles_skipped: u64,
     /// samples inside their tile's intervals (= sample tests run)
     pub samples_tested: u64,
