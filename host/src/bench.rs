@@ -176,6 +176,11 @@ impl StratResult {
     pub fn ops_tile(&self) -> f64 {
         per(self.stats.ops_bounds, self.stats.tiles_visited)
     }
+    /// Row-span ops (`BoundsStrategy::row_span`) per footprint tile (the same divisor as
+    /// [`Self::ops_tile`], so tile + row is the strategy's whole tile-walk cost per tile).
+    pub fn ops_row(&self) -> f64 {
+        per(self.stats.ops_rows, self.stats.tiles_visited)
+    }
     /// Setup ops (incl. the strategy's preparation) per submitted triangle.
     pub fn ops_setup(&self) -> f64 {
         per(self.stats.ops_setup, self.stats.triangles)
@@ -184,11 +189,11 @@ impl StratResult {
     pub fn ops_predicate(&self) -> f64 {
         per(self.stats.ops_predicate, self.stats.samples_tested)
     }
-    /// All per-tile, predicate and sample-test ops per covered sample.
+    /// All per-tile, per-row, predicate and sample-test ops per covered sample.
     pub fn ops_per_covered(&self) -> f64 {
         let s = &self.stats;
         per(
-            s.ops_bounds + s.ops_predicate + s.ops_sample,
+            s.ops_bounds + s.ops_rows + s.ops_predicate + s.ops_sample,
             s.samples_covered,
         )
     }
@@ -539,7 +544,7 @@ pub fn table_md(rows: &[BenchRow]) -> String {
         );
     }
     s += &format!(
-        "\nCost per strategy (bounds tile 1×1, core {}): setup ops per triangle / ops per tile / predicate ops per tested sample / all tile + predicate + sample-test ops per covered sample / core wall ms (no oracle; after one untimed warm-up frame per row, the fastest of {} frames at the quick size, {} at full size); Laine f64 ms = the f64 reference's frame, timed alike\n\n| Scene |",
+        "\nCost per strategy (bounds tile 1×1, core {}): setup ops per triangle / ops per tile / row-span ops per tile / predicate ops per tested sample / all tile + row + predicate + sample-test ops per covered sample / core wall ms (\"per tile\": per bounds tile of the footprints, including the tiles a row span skips; the row-span ops of a row are spread over its tiles; core wall ms with no oracle, after one untimed warm-up frame per row, the fastest of {} frames at the quick size, {} at full size); Laine f64 ms = the f64 reference's frame, timed alike\n\n| Scene |",
         rows.first().map_or("-", |r| r.precision.as_str()),
         timing_runs(true),
         timing_runs(false)
@@ -559,9 +564,10 @@ pub fn table_md(rows: &[BenchRow]) -> String {
         s += &format!("| {} |", name_of(r));
         for x in &r.strategies {
             s += &format!(
-                " {:.0} / {:.0} / {:.1} / {:.0} / {:.0} |",
+                " {:.0} / {:.1} / {:.1} / {:.1} / {:.0} / {:.0} |",
                 x.ops_setup(),
                 x.ops_tile(),
+                x.ops_row(),
                 x.ops_predicate(),
                 x.ops_per_covered(),
                 x.ms

@@ -233,7 +233,18 @@ pub fn check_conservative_scaled<B: BoundsStrategy, P: uvt_core::Precision>(
                     if cell.is_empty() {
                         None
                     } else {
-                        strat.tile(s, co, cell, &mut ops)
+                        // Row → span → tile, as the renderer walks (`uvt_core::walk_tiles`).
+                        let row = PixelRect {
+                            x0: s.footprint().x0,
+                            x1: s.footprint().x1,
+                            ..cell
+                        };
+                        let span = strat.row_span(s, co, row, bt, &mut ops);
+                        if span.admits(&cell) {
+                            strat.span_tile_unit::<uvt_core::Full>(s, co, &span, cell, &mut ops)
+                        } else {
+                            None
+                        }
                     },
                 )
             });
