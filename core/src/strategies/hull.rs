@@ -66,7 +66,8 @@
 //!
 //! **Row spans** ([`HullTiles::span`], [`HullCull`]'s `row_span`). In one row of tiles ye is
 //! fixed, so each face keeps the cells with `a'·xe + r ≥ 0` (r = b'·ye + c'): a run of
-//! consecutive cells found by one exact floor division per face and row. Their intersection is
+//! consecutive cells, decided by the row's two end cells or, when the face crosses the row, by
+//! one exact floor division whose quotient is below the row's width. Their intersection is
 //! the row's span; inside it the face test is skipped and outside no tile is visited — exactly
 //! the tiles the per-tile test keeps (clipped first and last cells included; proof at
 //! [`TileFace`]'s `span`). Counted in `ops.rows`.
@@ -424,45 +425,85 @@ impl TileFace {
         lim(self.a, 81) && lim(self.b, 81) && lim(self.c, 125)
     }
 
-    /// The pixel columns `[lo, hi)` (unclamped; the caller clamps to the row) of the cells of
-    /// `row` that this face keeps, i.e. whose stored end `xe` has `a'·xe + r ≥ 0` with
-    /// `r = b'·ye + c'` (ye: the row's shared y end). Cells of the row are aligned to the
-    /// `b`-grid and clipped to `[x0, x1)`: cell k has `x0 = max(k·b, row.x0)`,
-    /// `x1 = min((k+1)·b, row.x1)`.
-    /// - `a' > 0` (xe = the cell's x1): kept iff `x1 ≥ X = ⌈−r/a'⌉ = −⌊r/a'⌋` — if `X > row.x1`
-    ///   no cell (the clipped last cell ends at row.x1 < X); else the cells with
-    ///   `(k+1)·b ≥ X`, i.e. from `k = ⌊(X−1)/b⌋`, columns from `b·⌊(X−1)/b⌋`.
-    /// - `a' < 0` (xe = the cell's x0): kept iff `x0 ≤ Y = ⌊r/(−a')⌋` — if `Y < row.x0` no cell
-    ///   (the clipped first cell starts at row.x0 > Y); else the cells with `k·b ≤ Y`, columns
-    ///   up to `b·⌊Y/b⌋ + b`.
-    /// - `a' = 0`: all cells if `r ≥ 0`, else none.
+    /// The pixel columns `[lo, hi)` (unclamped; the caller clamps to the row; `lo ≥ hi`: none)
+    /// of the cells of `row` that this face keeps, i.e. whose stored end `xe` has
+    /// `a'·xe + r ≥ 0` with `r = b'·ye + c'` (ye: the row's shared y end). Cells of the row are
+    /// aligned to the `b`-grid and clipped to `[x0, x1)`: cell k has `x0_k = max(first + k·b,
+    /// row.x0)`, `x1_k = min(first + (k+1)·b, row.x1)` (`first = b·⌊row.x0/b⌋`); `xe_k` is
+    /// `x1_k` if `a' > 0`, else `x0_k`, as in [`Self::culls`]. `v(k) = a'·xe_k + r` is monotone
+    /// in k (`xe_k` increases), so the kept cells are a suffix (`a' > 0`), a prefix (`a' < 0`),
+    /// all or none (`a' = 0`: the sign of r).
+    /// - The two end cells decide all-or-none without a division: `a' > 0`: none if
+    ///   `v(last) < 0`, all if `v(first) ≥ 0`; `a' < 0`: none if `v(first) < 0`, all if
+    ///   `v(last) ≥ 0`.
+    /// - Otherwise the sign changes inside the row and one exact floor division finds where,
+    ///   relative to the first cell's end `xf = xe_first` (with `vf = v(first)`):
+    ///   `a' > 0` (vf < 0): kept iff `xe ≥ X = xf − ⌊vf/a'⌋` (= `⌈−r/a'⌉`, since
+    ///   `⌊(a'·xf + r)/a'⌋ = xf + ⌊r/a'⌋`), the cells from `k` with `first + (k+1)·b ≥ X`:
+    ///   columns from `b·⌊(X − 1)/b⌋`. The quotient `−⌊vf/a'⌋` is in `(0, row.x1 − xf]`
+    ///   (`v(last) = a'·row.x1 + r ≥ 0`).
+    ///   `a' < 0` (vf ≥ 0): kept iff `x0_k ≤ Y = xf + ⌊vf/(−a')⌋` (= `⌊r/(−a')⌋`), the cells
+    ///   with `first + k·b ≤ Y`: columns up to `b·⌊Y/b⌋ + b`. The quotient is in
+    ///   `[0, xe_last − xf)` (`v(last) < 0`).
     ///
-    /// The divisions are exact integer floor divisions (`div_euclid`, divisor > 0): the
-    /// dividend `r` is < 2^126 in magnitude (b'·ye < 2^97, c' < 2^125), the divisor |a'| <
-    /// 2^81 (an up to 127-bit by 82-bit signed division; only a quotient within the row,
-    /// < 2^12 with the 2048-pixel viewport, matters, anything beyond saturates). `None` on
-    /// overflow (outside the documented ranges; [`HullTiles::span`] then falls back).
+    ///   Either way the quotient is below the row's width `n_px = row.x1 − row.x0 < 2^16`: the
+    ///   division needs only `q = bitlen(n_px)` quotient bits (a q-step restoring divider on the
+    ///   ~83-bit operands; ≤ 12 steps in a 2048-pixel viewport), and it is counted as q ops.
+    ///
+    /// Ops (in `ops.rows`, one per multiply, add, compare, negation, min/max, alignment and
+    /// quotient bit): `a' = 0`: 3 (r: mul, add; the compare); else r (2) and 3 per end cell
+    /// evaluated (mul, add, compare; the second end only if the first does not decide); a
+    /// crossing adds the division's q and 3 (the subtraction from xf, the `−1`/`+b` and the
+    /// alignment to the `b` grid, a mask since b is a power of two).
+    /// Ranges: `r`, `v` < 2^126 (b'·ye < 2^97, c' < 2^125, a'·xe < 2^97); `None` on overflow
+    /// (outside the documented ranges; [`HullTiles::span`] then falls back).
     fn span(&self, row: PixelRect, b: i128, ops: &mut Ops) -> Option<(i128, i128)> {
         let ye = i128::from(if self.hi_y { row.y1 } else { row.y0 });
         let r = self.b.checked_mul(ye)?.checked_add(self.c)?;
         let (x0, x1) = (i128::from(row.x0), i128::from(row.x1));
+        let none = Some((x1, x0));
+        let all = Some((x0, x1));
         if self.a == 0 {
             ops.add_rows(3);
-            return Some(if r >= 0 { (x0, x1) } else { (x1, x0) });
+            return if r >= 0 { all } else { none };
         }
-        ops.add_rows(8);
+        let v = |xe: i128| self.a.checked_mul(xe)?.checked_add(r);
+        // Cell ends: the first cell starts at row.x0 and ends at min(first + b, x1); the last
+        // starts at max(first + (n−1)·b, x0) and ends at x1.
+        let first = x0.checked_sub(x0.checked_rem_euclid(b)?)?;
+        let first_end = first.checked_add(b)?.min(x1);
+        let last_start = x1
+            .checked_sub(1)?
+            .checked_div_euclid(b)?
+            .checked_mul(b)?
+            .max(x0);
+        let q_bits =
+            u64::from(u16::BITS.saturating_sub(row.x1.saturating_sub(row.x0).leading_zeros()));
+        ops.add_rows(2 + 3);
         if self.a > 0 {
-            let x = r.checked_div_euclid(self.a)?.checked_neg()?;
-            if x > x1 {
-                return Some((x1, x0));
+            if v(x1)? < 0 {
+                return none;
             }
+            ops.add_rows(3);
+            let vf = v(first_end)?;
+            if vf >= 0 {
+                return all;
+            }
+            ops.add_rows(q_bits + 3);
+            let x = first_end.checked_sub(vf.checked_div_euclid(self.a)?)?;
             let lo = x.checked_sub(1)?.checked_div_euclid(b)?.checked_mul(b)?;
             Some((lo, x1))
         } else {
-            let y = r.checked_div_euclid(self.a.checked_neg()?)?;
-            if y < x0 {
-                return Some((x1, x0));
+            let vf = v(x0)?;
+            if vf < 0 {
+                return none;
             }
+            ops.add_rows(3);
+            if v(last_start)? >= 0 {
+                return all;
+            }
+            ops.add_rows(q_bits + 3);
+            let y = x0.checked_add(vf.checked_div_euclid(self.a.checked_neg()?)?)?;
             let hi = y.checked_div_euclid(b)?.checked_mul(b)?.checked_add(b)?;
             Some((x0, hi))
         }
@@ -601,13 +642,10 @@ impl HullTiles {
     /// start and the least end, clamped to the row.
     ///
     /// Used when there is a face, the kept faces lie in the documented ranges, and the row has
-    /// at least [`SPAN_MIN_CELLS`] cells (1 op, the width compare). Ops, in `ops.rows`, each
-    /// multiply, add, negation, division, compare, min and max one op: per face 8 (mul and add
-    /// for r, the floor division, the negation of the quotient (a' > 0) or of the divisor
-    /// (a' < 0), the clipped-end compare, the `−1` or `+bt` of the alignment, the alignment to
-    /// the `bt` grid (a mask: bt is a power of two) and the max/min with the running span),
-    /// 3 for an `a' = 0` face (mul, add, compare), and 3 per row (the clamp to the row, min
-    /// and max, and the empty test).
+    /// at least [`SPAN_MIN_CELLS`] cells (1 op, the width compare). Ops, in `ops.rows`: per
+    /// face [`TileFace::span`]'s (3 to 11 + q, q = bitlen of the row's width) and 2 (the
+    /// max/min with the running span, and the empty test: the faces stop at the first that
+    /// leaves the span empty), and 2 per row (the clamp to the row).
     pub fn span(&self, row: PixelRect, bt: u16, ops: &mut Ops) -> Option<(u16, u16)> {
         if self.len == 0 || !self.spans {
             return None;
@@ -625,8 +663,12 @@ impl HullTiles {
             let (l, h) = f.span(row, i128::from(b), ops)?;
             lo = lo.max(l);
             hi = hi.min(h);
+            ops.add_rows(2);
+            if lo >= hi {
+                break;
+            }
         }
-        ops.add_rows(3);
+        ops.add_rows(2);
         let lo = lo.clamp(i128::from(row.x0), i128::from(row.x1));
         let hi = hi.clamp(lo, i128::from(row.x1));
         Some((u16::try_from(lo).ok()?, u16::try_from(hi).ok()?))
@@ -634,8 +676,8 @@ impl HullTiles {
 }
 
 /// Least number of bounds tiles in a row for [`HullTiles::span`] to be used: on a one-tile row
-/// the span costs every face (7 ops each) where the per-tile test stops at the first face that
-/// culls (5 ops each), so such rows keep the per-tile test.
+/// the span costs each face at least 7 ops (r, an end cell, the running span) where the per-tile
+/// test costs 5 per face and stops at the first that culls, so such rows keep the per-tile test.
 pub const SPAN_MIN_CELLS: u16 = 2;
 
 /// Tile culling by the swept cone's faces, in front of strategy `S`.
