@@ -11,7 +11,8 @@
 //!    ([`Laine2011`] dual-space bounds; [`BboxScan`] as the baseline; tighter, composable
 //!    strategies in [`strategies`]).
 //! 3. [`sample`] — the exact 5D sample test with a fill rule, and depth; [`bounded`] — the
-//!    bounded (hardware-width) sample test of a [`Bounded`] precision.
+//!    bounded (hardware-width) sample test of a [`Bounded`] precision; [`planar`] — the static
+//!    test of a [`Planar`] precision (edge planes rounded once per triangle).
 //! 4. [`tile`] — the tile framebuffer, resolve and the render loop.
 //!
 //! Number formats are all in [`formats`]; `core/README.md` has the full width table.
@@ -46,6 +47,7 @@ pub mod input;
 pub mod interval;
 #[cfg(test)]
 mod interval_corners;
+pub mod planar;
 pub mod sample;
 pub mod setup;
 pub mod stats;
@@ -64,8 +66,8 @@ pub use bounds::{BboxScan, BoundsStrategy, Laine2011, TileBounds, UvtBox};
 pub use embedded_graphics_core::pixelcolor::Rgb888;
 pub use error::{Error, Field, SampleField};
 pub use formats::{
-    Bounded, BoundedPrecision, Coord, DefaultPrecision, Depth, Exact, Lens, Prec, Precision,
-    PrecisionBits, SubPixel, Time,
+    Bounded, BoundedPrecision, Coord, DefaultPrecision, Depth, Exact, Lens, Planar,
+    PlanarPrecision, Prec, Precision, PrecisionBits, SubPixel, Time,
 };
 pub use input::{PixelRect, Sample, SamplePattern, Triangle, Vertex, Viewport};
 pub use interval::Interval;

@@ -345,6 +345,9 @@ pub fn sample_eval_unit<U: Unit>(
 /// [`crate::formats::Bounded`] precision runs the bounded test ([`crate::bounded`]); every other
 /// runs the exact test above.
 pub fn sample_test(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> Option<Hit> {
+    if setup.prec.planar() && setup.class == Class::Static {
+        return crate::planar::planar_test(setup, pos, ops);
+    }
     if setup.prec.offset_shift().is_some() {
         return crate::bounded::bounded_test(setup, pos, s, ops);
     }
@@ -371,6 +374,11 @@ pub fn sample_test_unit<P: Precision, U: Unit>(
 ) -> Option<Hit> {
     if !U::accepts(setup.class) {
         return None;
+    }
+    // A `Planar` precision's static class (gated as in setup: a constant on the static-only
+    // unit, whose program then has no bounded datapath).
+    if P::PLANAR && !(U::MOTION && setup.class.motion()) && !(U::DEFOCUS && setup.class.defocus()) {
+        return crate::planar::planar_test(setup, pos, ops);
     }
     if P::OFFSET_SHIFT.is_some() {
         return crate::bounded::bounded_test_unit::<P, U>(setup, pos, s, ops);

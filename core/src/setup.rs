@@ -19,6 +19,7 @@ use crate::bounded::Eps;
 use crate::formats::{DefaultPrecision, PixelCoord, Precision, PrecisionBits};
 use crate::input::{PixelRect, Triangle, Viewport, C, W, X, Y, Z};
 use crate::interval::{solve_le64, Interval};
+use crate::planar::{planar_setup, PlanarEdges};
 use crate::stats::Ops;
 use crate::unit::{Full, Unit};
 
@@ -125,6 +126,9 @@ pub struct Setup {
     pub(crate) edges: Option<StaticEdges>,
     pub(crate) prec: PrecisionBits,
     pub(crate) eps: Eps,
+    /// The planar test's rounded planes (a static triangle of a [`crate::formats::Planar`]
+    /// precision only; `planar.rs`).
+    pub(crate) planar: Option<PlanarEdges>,
 }
 
 impl Setup {
@@ -173,6 +177,10 @@ impl Setup {
     /// The conservative epsilon setup and the bounds widened by (zero for the exact test).
     pub fn eps(&self) -> Eps {
         self.eps
+    }
+    /// The planar test's per-triangle data (a static triangle of a `Planar` precision).
+    pub fn planar(&self) -> Option<PlanarEdges> {
+        self.planar
     }
 }
 
@@ -647,6 +655,11 @@ impl Setup {
         };
         let exact = P::OFFSET_SHIFT.is_none();
         let edges = (exact && class == Class::Static).then(|| static_edges(tri));
+        let planar = if P::PLANAR && class == Class::Static {
+            planar_setup(tri, vp, &mut Ops::default())
+        } else {
+            None
+        };
         Setup {
             class,
             footprint,
@@ -657,7 +670,11 @@ impl Setup {
             viewport: vp,
             edges,
             prec,
-            eps: Eps::of(prec.offset_shift(), class, vp),
+            eps: match planar {
+                Some((_, e)) => e,
+                None => Eps::of(prec.offset_shift(), class, vp),
+            },
+            planar: planar.map(|(p, _)| p),
         }
     }
 }
@@ -763,8 +780,16 @@ fn setup_gated<P: Precision, U: Unit>(
     // Exact precisions decide on the type's constant: their instantiation carries no epsilon
     // code, so the exact setup compiles (and costs on the Cortex-M4F) as before the epsilon.
     let exact = P::OFFSET_SHIFT.is_none();
+    // A `Planar` precision's static triangles (the class gated as in every unit: a constant for
+    // the static-only unit) take the planar test, whose epsilon is per triangle (`planar.rs`);
+    // `None` inside: culled as degenerate after the frustum test.
+    let planar_class =
+        P::PLANAR && !(U::MOTION && class.motion()) && !(U::DEFOCUS && class.defocus());
+    let planar = planar_class.then(|| planar_setup(tri, vp, ops));
     let full = if exact {
         Eps::default()
+    } else if let Some(pl) = planar {
+        pl.map_or(Eps::default(), |(_, e)| e)
     } else {
         Eps::of(prec.offset_shift(), class, vp)
     };
@@ -777,10 +802,14 @@ fn setup_gated<P: Precision, U: Unit>(
             .unwrap_or(0)
     };
     // Without motion ε_w is 0 for every accepted class (`Eps::of`); stating it lets the unit
-    // drop the twelve-corner box code.
+    // drop the twelve-corner box code. The planar test's ε_w (camera-plane crossers) is kept.
     let eps = Eps {
         x: full.x.map(scale),
-        w: if U::MOTION { scale(full.w) } else { 0 },
+        w: if U::MOTION || P::PLANAR {
+            scale(full.w)
+        } else {
+            0
+        },
     };
     ops.add_setup(30);
     let span_eps = if exact { Eps::default() } else { eps };
@@ -791,6 +820,11 @@ fn setup_gated<P: Precision, U: Unit>(
     } {
         Some(s) => s.round_out(prec.tuv()),
         None => return Outcome::Culled(Cull::Outside),
+    };
+    let planar = match planar {
+        Some(None) => return Outcome::Culled(Cull::Degenerate),
+        Some(Some((p, _))) => Some(p),
+        None => None,
     };
     // A bounded test decides on a perturbed triangle, which need not be degenerate.
     let gated = (U::MOTION && class.motion(), U::DEFOCUS && class.defocus());
@@ -803,7 +837,7 @@ fn setup_gated<P: Precision, U: Unit>(
             exact_boxes(tri, 0, ew, prec.bnd(), ops),
             exact_boxes(tri, 1, eh, prec.bnd(), ops),
         ]
-    } else if U::MOTION {
+    } else if U::MOTION || P::PLANAR {
         [
             axis_boxes(tri, 0, ew, prec.bnd(), &eps, ops),
             axis_boxes(tri, 1, eh, prec.bnd(), &eps, ops),
@@ -841,6 +875,7 @@ fn setup_gated<P: Precision, U: Unit>(
         edges,
         prec,
         eps,
+        planar,
     })
 }
 

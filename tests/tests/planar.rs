@@ -1,0 +1,422 @@
+//! The planar static test (`uvt_core::planar`, configuration `PlanarPrecision` =
+//! `planar-16-16-16-20`): hand-picked cases bit for bit, the identity "coverage = the exact
+//! test on the triangle Q of the rounded planes" against a 192-bit exact test, agreement with
+//! the exact configuration except within the derived edge distance, watertightness of meshes,
+//! conservativeness of every strategy with the per-triangle epsilon, and every unit identical
+//! to the full unit. Seeded (`UVT_SEED`, printed on failure), more cases with `UVT_EXTENSIVE=1`.
+
+use uvt_core::planar::{planar_eval, PlanarEdges};
+use uvt_core::strategies::{best, hull, hull_edge, hull_lens, EdgeTime, Hyper, LensTime};
+use uvt_core::{
+    BboxScan, Class, Exact, Laine2011, Outcome, PlanarPrecision, Sample, SamplePattern, ScreenPos,
+    Setup, Triangle, Viewport, Wide,
+};
+use uvt_tests::kinds::{make, Kind, NP};
+use uvt_tests::*;
+
+type Pl = PlanarPrecision;
+
+/// The triangle with its t1 vertices replaced by t0 and every CoC 0: static, in focus.
+fn still(t: &Triangle) -> Triangle {
+    let mut v = t.vertices(0);
+    for x in v.iter_mut() {
+        x.coc = c(0.0);
+    }
+    Triangle::new_static(v).expect("static triangle in the domain")
+}
+
+fn params(rng: &mut Rng) -> [f64; NP] {
+    let mut p = [0.0; NP];
+    for x in p.iter_mut() {
+        *x = rng.range(-1.0, 1.0);
+    }
+    p
+}
+
+/// Seeded static triangles of every kind (regular, crossing the camera plane, one vertex at
+/// w = 0, slivers, domain extremes, huge).
+fn random_static(rng: &mut Rng, i: u32) -> Triangle {
+    let kinds = [
+        Kind::Static,
+        Kind::Crossing,
+        Kind::WZero,
+        Kind::Sliver,
+        Kind::Extreme,
+        Kind::Moving,
+    ];
+    let k = kinds[(i as usize) % kinds.len()];
+    still(&make(k, &params(rng)))
+}
+
+/// The direction of `sample::direction` (i64).
+fn dir(vp: Viewport, pos: ScreenPos) -> [i64; 3] {
+    uvt_core::sample::direction(vp, pos)
+}
+
+fn planar_of(s: &Setup) -> PlanarEdges {
+    s.planar().expect("a static planar setup has planar data")
+}
+
+fn cross128(a: [i128; 3], b: [i128; 3]) -> [i128; 3] {
+    [
+        a[1] * b[2] - a[2] * b[1],
+        a[2] * b[0] - a[0] * b[2],
+        a[0] * b[1] - a[1] * b[0],
+    ]
+}
+
+/// The exact test of `sample.rs` on the triangle `Q_k = τ·(n'_{k+1} × n'_{k+2})`, in 192-bit
+/// arithmetic (|Q| ≤ 2^61, normals of Q < 2^124): covered?
+fn exact_on_q(pl: &PlanarEdges, d: [i64; 3]) -> bool {
+    let n = pl.n().map(|v| v.map(i128::from));
+    let pp = [
+        cross128(n[1], n[2]),
+        cross128(n[2], n[0]),
+        cross128(n[0], n[1]),
+    ];
+    let detn: i128 = (0..3).map(|i| n[0][i] * pp[0][i]).sum();
+    let tau = pl.sigma() as i128 * detn.signum();
+    let q = pp.map(|v| v.map(|c| c * tau));
+    let qn = [
+        cross128(q[1], q[2]),
+        cross128(q[2], q[0]),
+        cross128(q[0], q[1]),
+    ];
+    let mut det = Wide::ZERO;
+    for i in 0..3 {
+        det.mul_add(qn[0][i], q[0][i] as i64);
+    }
+    let s = det.signum();
+    if s == 0 {
+        return false;
+    }
+    qn.iter().all(|nk| {
+        let mut e = Wide::ZERO;
+        for i in 0..3 {
+            e.mul_add(nk[i], d[i]);
+        }
+        match e.signum() {
+            0 => {
+                let (a, b) = if s > 0 {
+                    (nk[0], nk[1])
+                } else {
+                    (-nk[0], -nk[1])
+                };
+                a > 0 || (a == 0 && b > 0)
+            }
+            x => x == s,
+        }
+    })
+}
+
+fn setup_pl(t: &Triangle, vp: Viewport) -> Outcome {
+    uvt_core::setup_with::<Pl>(t, vp, &mut Default::default())
+}
+
+/// Hand-picked: the lower-left half of NDC (P = (−1,−1,1), (1,−1,1), (−1,1,1), z = ½) on a
+/// 4×4 viewport, every normal exact after its shift of 4 (ε = 0); its mirror (1,1,1) shares the
+/// diagonal. Bit for bit: normals, edge values, depth, the tie on the diagonal.
+#[test]
+fn hand_picked_cases_bit_for_bit() {
+    let vp = Viewport::new(4, 4).unwrap();
+    let a = tri(
+        [
+            [-1.0, -1.0, 0.5, 1.0, 0.0],
+            [1.0, -1.0, 0.5, 1.0, 0.0],
+            [-1.0, 1.0, 0.5, 1.0, 0.0],
+        ],
+        [
+            [-1.0, -1.0, 0.5, 1.0, 0.0],
+            [1.0, -1.0, 0.5, 1.0, 0.0],
+            [-1.0, 1.0, 0.5, 1.0, 0.0],
+        ],
+    );
+    let b = tri(
+        [
+            [1.0, -1.0, 0.5, 1.0, 0.0],
+            [1.0, 1.0, 0.5, 1.0, 0.0],
+            [-1.0, 1.0, 0.5, 1.0, 0.0],
+        ],
+        [
+            [1.0, -1.0, 0.5, 1.0, 0.0],
+            [1.0, 1.0, 0.5, 1.0, 0.0],
+            [-1.0, 1.0, 0.5, 1.0, 0.0],
+        ],
+    );
+    let (Outcome::Visible(sa), Outcome::Visible(sb)) = (setup_pl(&a, vp), setup_pl(&b, vp)) else {
+        panic!("hand-picked triangles culled");
+    };
+    let pa = planar_of(&sa);
+    let m = 1 << 29;
+    assert_eq!(pa.n(), [[-m, -m, 0], [m, 0, m], [0, m, m]], "normals n'");
+    assert_eq!(pa.shifts(), [4, 4, 4], "shifts");
+    assert_eq!(pa.sigma(), 1, "orientation");
+    assert_eq!((sa.eps().x(), sa.eps().w()), ([0, 0], 0), "epsilon");
+    let mut ops = Default::default();
+    let s = |xs: u32, ys: u32| ScreenPos { xs, ys };
+    // Pixel (0, 3) centre: d = (−3072, −3072, 4096).
+    let ev = planar_eval(&sa, s(128, 896), &mut ops).unwrap();
+    let k = 1i64 << 29;
+    assert_eq!(ev.e, [6144 * k, 1024 * k, 1024 * k], "E' at (0,3) centre");
+    assert_eq!(
+        ev.hit.map(|h| h.depth),
+        Some(1 << 23),
+        "depth 0.5 = 0x800000"
+    );
+    // On the diagonal (xs = ys = 512): E'_0 = 0; a' < 0 so A leaves it, B (−n') takes it.
+    let ev = planar_eval(&sa, s(512, 512), &mut ops).unwrap();
+    assert_eq!(ev.e[0], 0, "E'_0 on the diagonal");
+    assert_eq!(ev.hit, None, "A does not take the diagonal");
+    let evb = planar_eval(&sb, s(512, 512), &mut ops).unwrap();
+    assert_eq!(
+        evb.hit.map(|h| h.depth),
+        Some(1 << 23),
+        "B takes the diagonal"
+    );
+    // Outside the viewport: no answer.
+    assert!(planar_eval(&sa, s(1024, 0), &mut ops).is_none());
+    // A moving triangle has no planar data (bounded test).
+    assert!(sa.class() == Class::Static);
+}
+
+/// Coverage is exactly the exact test on Q (192-bit), for every sample of seeded static
+/// triangles of every kind.
+#[test]
+fn coverage_is_the_exact_test_on_q() {
+    let seed = seed();
+    let mut rng = Rng(seed ^ 0x91a7);
+    let vp = Viewport::new(24, 20).unwrap();
+    let samples = random_samples(&mut rng, 2, 8);
+    let pat = SamplePattern::new(2, 8, &samples).unwrap();
+    let mut checked = 0u64;
+    for i in 0..cases(60, 1200) {
+        let t = random_static(&mut rng, i);
+        let s = Setup::unculled_with::<Pl>(&t, vp);
+        let Some(pl) = s.planar() else { continue };
+        for py in 0..vp.height() {
+            for px in 0..vp.width() {
+                for smp in pat.pixel(px, py) {
+                    let pos = ScreenPos::of(px, py, smp);
+                    let got = planar_eval(&s, pos, &mut Default::default())
+                        .unwrap()
+                        .hit
+                        .is_some();
+                    let want = exact_on_q(&pl, dir(vp, pos));
+                    assert_eq!(
+                        got,
+                        want,
+                        "case {i}: pixel ({px}, {py}) xs {} ys {}: expected (exact on Q) {want}, observed {got}\n  n' {:?} (hex {:x?}) σ {}\n{}\n  UVT_SEED={seed}",
+                        pos.xs, pos.ys, pl.n(), pl.n(), pl.sigma(), dump(&t)
+                    );
+                    checked += 1;
+                }
+            }
+        }
+    }
+    assert!(checked > 0);
+}
+
+/// Agreement with the exact configuration: a sample decided differently has, for some edge k,
+/// `|E_k| ≤ 2^(sh_k − 1)·‖d‖₁` (the exact E_k = n_k·d, i128). Reports the largest such
+/// distance in pixels and the triangles the planar setup culls for an epsilon above the limit.
+#[test]
+fn agrees_with_exact_except_within_the_edge_distance() {
+    let seed = seed();
+    let mut rng = Rng(seed ^ 0x3e55);
+    let vp = Viewport::new(24, 20).unwrap();
+    let samples = random_samples(&mut rng, 2, 8);
+    let pat = SamplePattern::new(2, 8, &samples).unwrap();
+    let (mut differ, mut total, mut over_limit, mut lost) = (0u64, 0u64, 0u64, 0u64);
+    let mut max_px = 0f64;
+    for i in 0..cases(60, 1200) {
+        let t = random_static(&mut rng, i);
+        let ex = Setup::unculled_with::<Exact>(&t, vp);
+        let ps = Setup::unculled_with::<Pl>(&t, vp);
+        let n = ex.edges().expect("static").n();
+        for py in 0..vp.height() {
+            for px in 0..vp.width() {
+                for smp in pat.pixel(px, py) {
+                    let pos = ScreenPos::of(px, py, smp);
+                    let want = uvt_core::sample_test(&ex, pos, smp, &mut Default::default());
+                    total += 1;
+                    let Some(pl) = ps.planar() else {
+                        over_limit += u64::from(px == 0 && py == 0 && smp == &pat.pixel(0, 0)[0]);
+                        lost += u64::from(want.is_some());
+                        continue;
+                    };
+                    let got = uvt_core::sample_test(&ps, pos, smp, &mut Default::default());
+                    if got.is_some() == want.is_some() {
+                        continue;
+                    }
+                    differ += 1;
+                    let d = dir(vp, pos);
+                    let l1: i128 = d.iter().map(|x| (*x as i128).abs()).sum();
+                    let near = (0..3).find(|&k| {
+                        let e: i128 = (0..3).map(|j| n[k][j] * d[j] as i128).sum();
+                        e.abs() * 2 <= l1 << pl.shifts()[k]
+                    });
+                    let Some(k) = near else {
+                        panic!(
+                            "case {i}: pixel ({px}, {py}) xs {} ys {}: exact {want:?}, planar {got:?}, but no edge within the derived distance\n  n {n:?}\n  sh {:?}\n{}\n  UVT_SEED={seed}",
+                            pos.xs, pos.ys, pl.shifts(), dump(&t)
+                        );
+                    };
+                    let (a, b) = (n[k][0] as f64, n[k][1] as f64);
+                    let g = 2.0
+                        * ((a * vp.height() as f64).powi(2) + (b * vp.width() as f64).powi(2))
+                            .sqrt();
+                    let dist = (l1 as f64) * 2f64.powi(pl.shifts()[k] as i32 - 1) / g / 256.0;
+                    max_px = max_px.max(dist);
+                }
+            }
+        }
+    }
+    println!(
+        "planar vs exact: {differ} of {total} samples differ, all within the derived edge distance (largest bound among them {max_px:.3e} px); {over_limit} triangles culled for ε above the limit ({lost} exactly covered samples lost)"
+    );
+}
+
+/// Conservativeness with the per-triangle epsilon: every sample the planar test covers is
+/// inside setup's footprint and every strategy's tile bounds, brute force over the viewport,
+/// for seeded static triangles of every kind (slivers, camera-plane crossers, w = 0, extremes)
+/// and every bounds-tile size; both sample-pattern kinds.
+#[test]
+fn every_strategy_is_conservative_with_the_planar_epsilon() {
+    let seed = seed();
+    let mut rng = Rng(seed ^ 0xc0de);
+    let vp = Viewport::new(24, 20).unwrap();
+    let (mut covered, mut ew) = (0u64, 0u64);
+    for i in 0..cases(60, 1500) {
+        let t = random_static(&mut rng, i);
+        let samples = if i % 2 == 0 {
+            grid_samples(&mut rng, 2, 8)
+        } else {
+            random_samples(&mut rng, 2, 8)
+        };
+        let pat = SamplePattern::new(2, 8, &samples).unwrap();
+        if let Outcome::Visible(s) = setup_pl(&t, vp) {
+            ew += u64::from(s.eps().w() > 0);
+        }
+        let r = (|| -> Result<u64, String> {
+            let mut n = 0;
+            for bt in [1u16, 2, 4, 8] {
+                n += check_conservative_with::<_, Pl>(&Laine2011, &t, vp, &pat, bt)?;
+                check_conservative_with::<_, Pl>(&hull(), &t, vp, &pat, bt)?;
+                check_conservative_with::<_, Pl>(&hull_lens(), &t, vp, &pat, bt)?;
+                check_conservative_with::<_, Pl>(&hull_edge(), &t, vp, &pat, bt)?;
+                check_conservative_with::<_, Pl>(&best(), &t, vp, &pat, bt)?;
+                check_conservative_with::<_, Pl>(&Hyper, &t, vp, &pat, bt)?;
+                check_conservative_with::<_, Pl>(&LensTime::<4>, &t, vp, &pat, bt)?;
+                check_conservative_with::<_, Pl>(
+                    &EdgeTime::new(Laine2011, "edge-t"),
+                    &t,
+                    vp,
+                    &pat,
+                    bt,
+                )?;
+            }
+            check_conservative_with::<_, Pl>(&BboxScan, &t, vp, &pat, 1)?;
+            Ok(n)
+        })();
+        match r {
+            Ok(n) => covered += n,
+            Err(m) => panic!("case {i}: {m}\n  UVT_SEED={seed}"),
+        }
+    }
+    assert!(
+        covered > 1000,
+        "too few covered samples ({covered}) to mean anything"
+    );
+    println!("planar conservative: {covered} covered samples checked; {ew} setups with ε_w > 0");
+}
+
+/// Watertight meshes: a static jittered grid mesh (shared edges and vertices, both diagonal
+/// directions) covering the whole viewport: every sample covered exactly once, on random and
+/// grid sample patterns; and a pixel-grid mesh whose vertices and edges lie exactly on samples
+/// (ties everywhere): a sample on a shared edge goes to exactly one triangle. Samples exactly
+/// at a shared vertex are counted and reported separately (module docs of `planar.rs`).
+#[test]
+fn watertight_meshes() {
+    let seed = seed();
+    let vp = Viewport::new(16, 12).unwrap();
+    for case in 0..cases(40, 600) {
+        let mut rng = Rng(seed ^ (case as u64).wrapping_mul(0x9e37));
+        let tris = planar_mesh(&mut rng, 6, false, None);
+        let samples = if case % 2 == 0 {
+            grid_samples(&mut rng, 2, 4)
+        } else {
+            random_samples(&mut rng, 2, 4)
+        };
+        let pat = SamplePattern::new(2, 4, &samples).unwrap();
+        let counts = coverage_counts_with::<Pl>(&tris, vp, &pat);
+        if let Some(i) = counts.iter().position(|&n| n != 1) {
+            let (pix, s) = (i / 4, i % 4);
+            let (px, py) = ((pix % 16) as u16, (pix / 16) as u16);
+            panic!(
+                "mesh case {case}: sample covered {} times (expected 1): {}\n  UVT_SEED={seed}",
+                counts[i],
+                dump_sample(px, py, &pat.pixel(px, py)[s])
+            );
+        }
+    }
+    // Pixel-grid meshes: NDC step 1/8 = 1 pixel at 16 px; sub-pixel offsets 0 and ½ put
+    // samples exactly on edges and on vertices. w = 1 (raw 2^16: every normal exact after its
+    // shift) and w = 8·k raw with k = 2^25 + 1 (≈ 4096: normals of ~2^57, rounded), x = m·k raw.
+    for k in [1i32 << 13, (1 << 25) + 1] {
+        pixel_grid_mesh(k);
+    }
+}
+
+/// The pixel-grid mesh at w = 8·k raw (see [`watertight_meshes`]).
+fn pixel_grid_mesh(k: i32) {
+    use uvt_core::{Coord, Vertex};
+    let vp = Viewport::new(16, 16).unwrap();
+    // Vertex (i, j) at NDC (m_i/8, m_j/8), m = i − 12 ∈ −12..=12: |x| ≤ 12·k ≤ 2^29.
+    let v = |i: i32, j: i32| Vertex {
+        x: Coord::from_bits((i - 12) * k),
+        y: Coord::from_bits((j - 12) * k),
+        z: Coord::from_bits(4 * k),
+        w: Coord::from_bits(8 * k),
+        coc: Coord::from_bits(0),
+    };
+    let mut tris = Vec::new();
+    let mut vertex_px = std::collections::HashSet::new();
+    for j in 0..24 {
+        for i in 0..24 {
+            let q = [v(i, j), v(i + 1, j), v(i + 1, j + 1), v(i, j + 1)];
+            let quads = if (i + j) % 2 == 0 {
+                [[0, 1, 2], [0, 2, 3]]
+            } else {
+                [[0, 1, 3], [1, 2, 3]]
+            };
+            for t in quads {
+                tris.push(Triangle::new_static(t.map(|a| q[a])).unwrap());
+            }
+            // NDC (m_i/8, m_j/8) is pixel corner x = 8 + m_i, y = 8 − m_j.
+            vertex_px.insert((i as i64 - 4, 20 - j as i64));
+        }
+    }
+    let samples: Vec<Sample> = (0..4)
+        .map(|s| sample_raw([0, 128, 0, 128][s], [0, 0, 128, 128][s], 0, 0, 0))
+        .collect();
+    let pat = SamplePattern::new(1, 4, &samples).unwrap();
+    let counts = coverage_counts_with::<Pl>(&tris, vp, &pat);
+    let (mut at_vertex, mut bad_vertex) = (0u64, 0u64);
+    for (i, &n) in counts.iter().enumerate() {
+        let (pix, s) = (i / 4, i % 4);
+        let (px, py) = ((pix % 16) as i64, (pix / 16) as i64);
+        let on_vertex = s == 0 && vertex_px.contains(&(px, py));
+        at_vertex += u64::from(on_vertex);
+        if on_vertex {
+            bad_vertex += u64::from(n != 1);
+            continue;
+        }
+        assert_eq!(
+            n, 1,
+            "pixel-grid mesh (w = 8·{k} raw): pixel ({px}, {py}) sample {s} covered {n} times (expected 1)"
+        );
+    }
+    println!(
+        "pixel-grid mesh w = 8·{k} raw: every sample off the vertices covered once; samples exactly at a shared vertex: {bad_vertex} of {at_vertex} not covered exactly once"
+    );
+}
