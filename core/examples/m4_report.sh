@@ -17,6 +17,9 @@
 # to OUT.json (default host/report/m4_units.json); then the full unit on each narrower unit's
 # prims (UVT_M4_PRIMS; its checksum must equal that unit's), so the cost per call can be
 # compared on the same work ("full_on_unit_prims").
+# `m4_report.sh --units OUT.json PREC` does the same at configuration PREC (UVT_M4_PREC; the
+# default configuration or planar-16-16-16-20), e.g. `--units /tmp/m4_units_planar.json
+# planar-16-16-16-20`; without PREC the output is the default configuration's, as before.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 tdir=${CARGO_TARGET_DIR:-target}
@@ -27,6 +30,8 @@ publish() { mv "$1" "$2"; cat "$2"; exit 0; }
 sec() { printf '%d' "0x$(readelf -S -W "$1" | awk -v s="$2" '{for (i = 1; i <= NF; i++) if ($i == s) print $(i + 4)}')"; }
 if [[ "${1:-}" == "--units" ]]; then
   json=${2:-host/report/m4_units.json}
+  uprec=${3:-}
+  if [[ -n "$uprec" ]]; then export UVT_M4_PREC=$uprec; fi
   per() { echo "$1" | awk -v s="$2" '$1=="cost" && $2==s {split($3,a,"="); split($4,b,"="); printf "%.0f", b[2]/a[2]}'; }
   field() { echo "$1" | awk -v k="$2" '$1 == k {print $2}'; }
   rows=()
@@ -40,6 +45,7 @@ if [[ "${1:-}" == "--units" ]]; then
         -semihosting-config enable=on,target=native -icount shift=0 -kernel "$elf")
     got=$(field "$m4" unit)
     [[ "$got" == "$u" ]] || { echo "m4_render built for unit '$got', expected '$u'" >&2; exit 1; }
+    [[ -z "$uprec" || "$(field "$m4" unit_prec)" == "$uprec" ]] || { echo "m4_render not built at $uprec" >&2; exit 1; }
     cal=$(echo "$m4" | awk -F= '/^calibration/ {print $2}')
     [[ $cal -ge 7999922 && $cal -le 8000082 ]] || { echo "calibration $cal, expected 8000002 +- 80" >&2; exit 1; }
     text=$(sec "$elf" .text)
@@ -63,8 +69,11 @@ if [[ "${1:-}" == "--units" ]]; then
   tmp=$(mktemp "$json.XXXX")
   {
     echo "{"
-    echo "  \"command\": \"bash core/examples/m4_report.sh --units\","
-    echo "  \"target\": \"Cortex-M4F (thumbv7em-none-eabihf, QEMU mps2-an386, -icount shift=0): m4_render built with UVT_M4_UNIT; default configuration only; the demo prims the unit accepts; flash = .vector_table + .text + .rodata bytes, ram = .data + .bss bytes, stack = painted peak bytes; setup/bounds/sample = instructions per call\","
+    echo "  \"command\": \"bash core/examples/m4_report.sh --units${uprec:+ $json $uprec}\","
+    if [[ -n "$uprec" ]]; then
+      echo "  \"prec\": \"$uprec\","
+    fi
+    echo "  \"target\": \"Cortex-M4F (thumbv7em-none-eabihf, QEMU mps2-an386, -icount shift=0): m4_render built with UVT_M4_UNIT; ${uprec:-default} configuration only; the demo prims the unit accepts; flash = .vector_table + .text + .rodata bytes, ram = .data + .bss bytes, stack = painted peak bytes; setup/bounds/sample = instructions per call\","
     echo "  \"units\": ["
     json_items "${rows[@]}"
     echo "  ],"

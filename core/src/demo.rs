@@ -243,10 +243,16 @@ pub fn render_unit<U: Unit>() -> Result<DemoResult, Error> {
 /// once): out of line, its frame holds the renderer twice, 5–8 KB more peak stack.
 #[inline(always)]
 pub fn render_on<U: Unit, V: Unit>() -> Result<DemoResult, Error> {
+    render_on_with::<DefaultPrecision, U, V>()
+}
+
+/// [`render_on`] at precision `P` (e.g. the planar static configuration on each unit).
+#[inline(always)]
+pub fn render_on_with<P: crate::formats::Precision, U: Unit, V: Unit>() -> Result<DemoResult, Error>
+{
     let prims = unit_prims::<V>()?;
     let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLE_TABLE)?;
-    let mut r =
-        Renderer::<Laine2011, NTRIS, DefaultPrecision, U>::new(Laine2011, viewport()?, &prims)?;
+    let mut r = Renderer::<Laine2011, NTRIS, P, U>::new(Laine2011, viewport()?, &prims)?;
     let mut image = [[0u8; 3]; NPIXELS];
     r.render_with::<8, 8, SPP>(
         &pattern,
@@ -352,13 +358,20 @@ pub mod cost {
     /// [`setup_all_unit`] on unit `U` with the prims unit `V` accepts (`V`'s work on `U`, for `V`'s
     /// classes ⊆ `U`'s).
     pub fn setup_all_on<U: Unit, V: Unit>(reps: u32) -> Result<u64, Error> {
+        setup_all_on_with::<DefaultPrecision, U, V>(reps)
+    }
+
+    /// [`setup_all_on`] at precision `P`.
+    pub fn setup_all_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
+        reps: u32,
+    ) -> Result<u64, Error> {
         let prims = unit_prims::<V>()?;
         let vp = viewport()?;
         let mut ops = Ops::default();
         let mut calls = 0u64;
         for _ in 0..reps {
             for p in prims.iter() {
-                let out = setup_unit::<DefaultPrecision, U>(black_box(&p.tri), vp, &mut ops);
+                let out = setup_unit::<P, U>(black_box(&p.tri), vp, &mut ops);
                 if let Ok(Outcome::Visible(s)) = black_box(out) {
                     black_box(Laine2011.prepare_unit::<U>(&s, &mut ops));
                 }
@@ -376,13 +389,19 @@ pub mod cost {
     /// [`bounds_all_unit`] on unit `U` with the prims unit `V` accepts (`V`'s work on `U`, for `V`'s
     /// classes ⊆ `U`'s).
     pub fn bounds_all_on<U: Unit, V: Unit>(reps: u32) -> Result<u64, Error> {
+        bounds_all_on_with::<DefaultPrecision, U, V>(reps)
+    }
+
+    /// [`bounds_all_on`] at precision `P`.
+    pub fn bounds_all_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
+        reps: u32,
+    ) -> Result<u64, Error> {
         let prims = unit_prims::<V>()?;
         let vp = viewport()?;
         let mut ops = Ops::default();
         let mut calls = 0u64;
         for p in prims.iter() {
-            let Ok(Outcome::Visible(s)) = setup_unit::<DefaultPrecision, U>(&p.tri, vp, &mut ops)
-            else {
+            let Ok(Outcome::Visible(s)) = setup_unit::<P, U>(&p.tri, vp, &mut ops) else {
                 continue;
             };
             let c = Laine2011.prepare_unit::<U>(&s, &mut ops);
@@ -405,21 +424,27 @@ pub mod cost {
     /// [`samples_all_unit`] on unit `U` with the prims unit `V` accepts (`V`'s work on `U`, for `V`'s
     /// classes ⊆ `U`'s).
     pub fn samples_all_on<U: Unit, V: Unit>(reps: u32) -> Result<u64, Error> {
+        samples_all_on_with::<DefaultPrecision, U, V>(reps)
+    }
+
+    /// [`samples_all_on`] at precision `P`.
+    pub fn samples_all_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
+        reps: u32,
+    ) -> Result<u64, Error> {
         let prims = unit_prims::<V>()?;
         let vp = viewport()?;
         let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLE_TABLE)?;
         let mut ops = Ops::default();
         let mut calls = 0u64;
         for p in prims.iter() {
-            let Ok(Outcome::Visible(s)) = setup_unit::<DefaultPrecision, U>(&p.tri, vp, &mut ops)
-            else {
+            let Ok(Outcome::Visible(s)) = setup_unit::<P, U>(&p.tri, vp, &mut ops) else {
                 continue;
             };
             for _ in 0..reps.saturating_mul(SAMPLE_PASSES) {
                 for py in 12..20u16 {
                     for px in 12..20u16 {
                         for smp in pattern.pixel(px, py) {
-                            black_box(sample_test_unit::<DefaultPrecision, U>(
+                            black_box(sample_test_unit::<P, U>(
                                 black_box(&s),
                                 ScreenPos::of(px, py, smp),
                                 smp,

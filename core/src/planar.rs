@@ -9,10 +9,10 @@
 //!
 //! | signal | value | rounding | format |
 //! |---|---|---|---|
-//! | `n_k` | `P_{k+1} × P_{k+2}` | exact | i128, \|.\| < 2^59 (2·16 fraction bits) |
-//! | `sh_k` | `max(0, bitlen(max_i \|n_k,i\|) − 30)` | — | 0..=29 |
+//! | `n_k` | `P_{k+1} × P_{k+2}` | exact | i64, \|.\| ≤ 2^59 (2·16 fraction bits) |
+//! | `sh_k` | `max(0, bitlen(max_i \|n_k,i\|) − 30)` | — | 0..=30 |
 //! | `n'_k` | `rnd(n_k / 2^sh_k)` per component, `rnd(x) = sign(x)·⌊(\|x\| + 2^(sh−1))/2^sh⌋` | nearest, ties away from 0, symmetric | i32, \|.\| ≤ 2^30 |
-//! | `σ` | `sign(det(P_0, P_1, P_2))` | exact (i128) | ±1 (0 culled) |
+//! | `σ` | `sign(det P)`, `det P = P_0 · n_0` | exact (i128, \|.\| < 2^90) | ±1 (0 culled) |
 //! | `P''_k` | `n'_{k+1} × n'_{k+2}` | exact | i64, \|.\| ≤ 2^61 |
 //! | `det(n')` | `n'_0 · P''_0` | exact | i128, \|.\| < 2^93 (0 culled) |
 //! | `G`, `f` | depth plane, below | floor | i32 ×3, exponent i32 |
@@ -52,11 +52,13 @@
 //! `ε_x` (x), `ε_y` (y), `ε_w` (w) of `P_k` (their proofs only use that vertex box; the exact
 //! test's coverage is the open cone of the vertices, invariant under positive per-vertex
 //! factors). Coverage here is the exact test on `Q`, so setup stores, rounded up, a bound on
-//! `min_μ |μ·Q_k − P_k|` for a chosen `μ > 0` per vertex: if `w_k > 0` and `Q_w > 0`,
-//! `μ = w_k/Q_w` (then `ε_w` = 0 and `ε_x ≥ ⌈|Q_x·w_k − x_k·Q_w| / Q_w⌉`, likewise y); else
+//! `|μ·Q_k − P_k|` for a chosen `μ > 0` per vertex:
+//! `μ = w_k/Q_w` when both are non-zero of one sign (then `ε_w` = 0 and
+//! `ε_x ≥ ⌈|Q_x·w_k − x_k·Q_w| / |Q_w|⌉`, likewise y); else
 //! `μ = 2^(sh_{k+1}+sh_{k+2})/|det P|` (`n_{k+1} × n_{k+2} = det(P)·P_k`, so this is `P_k` up to
-//! the roundings), every component `⌈|Q_c·2^s − |det P|·P_c| / |det P|⌉`. The maximum over the
-//! vertices is the setup's [`Eps`]. Any `μ > 0` gives a valid bound, so each vertex's `μ_k·Q_k`
+//! the roundings), every component `⌈|Q_c·2^s − |det P|·P_c| / |det P|⌉` (`s = sh_{k+1} +
+//! sh_{k+2}`). Each ceiling is taken from above (`ceil_div_up`: numerator rounded up, divisor
+//! down to 32 bits, one 64-bit division). The maximum over the vertices is the setup's [`Eps`]. Any `μ > 0` gives a valid bound, so each vertex's `μ_k·Q_k`
 //! lies in the box and every covered sample (a ray in the open cone of `Q`) is inside every
 //! bound. A bound above [`PLANAR_EPS_LIMIT`] (the bounds' range proofs take ε < 2^24), or an
 //! overflow of the checked i128 arithmetic, culls the triangle (`Cull::Degenerate`): only a
@@ -67,18 +69,22 @@
 //! floor, saturated to [`DEPTH_NEAR`, `DEPTH_FAR`]): the hit of ray `d` on the triangle has
 //! `w = d_w` and `z = Σ_k z_k·E_k/det(P)`, so `z/w = Zv·d / (det(P)·d_w)` with the exact plane
 //! `Zv = Σ_k z_k·n_k` (i128, < 2^90) and `D = det(P)·d_w` (< 2^120): affine in the sample, no
-//! division per sample. Setup: `Zv` and `D` are floored to ≤ 62 bits (`Zv = Zv''·2^rz`,
-//! `D = D''·2^rd`, D'' oriented > 0), `G_i = ⌊Zv''_i·2^e / D''⌋` with `e = 30 + bitlen(D'') −
-//! bitlen(max|Zv''|)` (so |G_i| < 2^31, i32), `f = e − 24 − rz + rd`. Per hit:
-//! `acc = Σ G_i·d_i` (\|.\| < 3·2^61, i64 exact), depth = `⌊acc / 2^f⌋` (arithmetic shift,
-//! `f ≥ 63` gives 0 or −1) or `acc·2^(−f)` saturated for `f < 0`, then saturated to the depth
-//! range. Depth never influences coverage.
+//! division per sample. Setup (D oriented > 0 with Zv): `D32 = ⌊D / 2^rd⌋` with
+//! `rd = bitlen(D) − 32` (a left shift, exact, when negative: D ≥ 256), so D32 ∈ [2^31, 2^32);
+//! `Z62_i = ⌊Zv_i / 2^rz⌋` with `rz = bitlen(max|Zv_i|) − 62` (exact left shift when
+//! negative), |Z62| < 2^62; `G_i = ⌊Z62_i / D32⌋` ∈ [−2^31, 2^31) (i32; three 64-bit
+//! divisions per triangle), `f = rd − rz − 24`. Per hit: `acc = Σ G_i·d_i` (\|.\| < 3·2^61,
+//! i64 exact), depth = `⌊acc / 2^f⌋` (arithmetic shift; `f ≥ 63` gives 0 or −1) or
+//! `acc·2^(−f)` saturated for `f < 0`, then saturated to the depth range (`Zv = 0`: depth 0).
+//! Error: G_i is within 1 + 2^-30·|G_i| of `Zv_i·2^(−f−24)/D·2^24`, so the depth is within
+//! `(3·2^30 + Σ|G_i·d_i|·2^-30)/2^f + 1` raw of the exact z/w (floor of the exact value
+//! included). Depth never influences coverage.
 
 use crate::bounded::Eps;
 use crate::formats::{DEPTH_FAR, DEPTH_FRAC, DEPTH_NEAR, SUBPIXEL_BITS};
 use crate::input::{Triangle, Viewport, W, X, Y, Z};
 use crate::sample::{Hit, ScreenPos};
-use crate::setup::{det3, Setup};
+use crate::setup::Setup;
 use crate::stats::Ops;
 
 /// Largest conservative epsilon component the planar setup stores (raw clip units): the
@@ -123,17 +129,14 @@ fn bitlen(x: u128) -> u32 {
     u128::BITS.saturating_sub(x.leading_zeros())
 }
 
-/// `rnd(x / 2^sh)`: nearest, ties away from zero, `rnd(−x) = −rnd(x)`. For |x| < 2^(30 + sh)
-/// the result is ≤ 2^30 (i32); anything else (not produced by a checked triangle) saturates.
-fn rnd_sym(x: i128, sh: u32) -> i32 {
+/// `rnd(x / 2^sh)`: nearest, ties away from zero, `rnd(−x) = −rnd(x)` (module table). For
+/// |x| ≤ 2^59 and `sh` ≤ 30 with |x| < 2^(30 + sh) + 2^sh the result is ≤ 2^30 (i32).
+// |x| ≤ 2^59 and half ≤ 2^29: the sum < 2^60 (u64); sh ≤ 30 < 64.
+#[allow(clippy::arithmetic_side_effects)]
+fn rnd_sym(x: i64, sh: u32) -> i32 {
     let m = x.unsigned_abs();
-    let half = if sh == 0 {
-        0
-    } else {
-        1u128.checked_shl(sh.saturating_sub(1)).unwrap_or(0)
-    };
-    let q = m.saturating_add(half).checked_shr(sh).unwrap_or(0);
-    let q = i32::try_from(q).unwrap_or(i32::MAX);
+    let half = if sh == 0 { 0 } else { 1u64 << (sh - 1) };
+    let q = i32::try_from((m + half) >> sh).unwrap_or(i32::MAX);
     if x < 0 {
         q.saturating_neg()
     } else {
@@ -141,91 +144,111 @@ fn rnd_sym(x: i128, sh: u32) -> i32 {
     }
 }
 
-/// Round one exact normal: `(n', sh)` (module table).
-fn round_normal(n: &[i128; 3]) -> ([i32; 3], u32) {
+/// Round one exact normal (|n| ≤ 2^59): `(n', sh)`, `sh = max(0, bitlen(max|n_i|) − 30)` ≤ 30.
+fn round_normal(n: &[i64; 3]) -> ([i32; 3], u32) {
     let m = n.iter().map(|c| c.unsigned_abs()).max().unwrap_or(0);
-    let sh = bitlen(m).saturating_sub(NORMAL_BITS);
+    let sh = u64::BITS
+        .saturating_sub(m.leading_zeros())
+        .saturating_sub(NORMAL_BITS);
     (n.map(|c| rnd_sym(c, sh)), sh)
 }
 
-/// Cross product of two rounded normals, exact: |n'| ≤ 2^30, products ≤ 2^60, |.| ≤ 2^61.
+/// Cross product, exact in i64: `a` = rounded normals (|.| ≤ 2^30, products ≤ 2^60, |.| ≤
+/// 2^61), or vertices (|.| ≤ 2^29, products ≤ 2^58, |.| ≤ 2^59).
 #[allow(clippy::arithmetic_side_effects)] // ranges in the doc comment
-fn cross32(a: &[i32; 3], b: &[i32; 3]) -> [i64; 3] {
-    let [a0, a1, a2] = a.map(i64::from);
-    let [b0, b1, b2] = b.map(i64::from);
+fn cross(a: [i64; 3], b: [i64; 3]) -> [i64; 3] {
+    let [a0, a1, a2] = a;
+    let [b0, b1, b2] = b;
     [a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0]
 }
 
-/// `⌈|num| / den⌉` for `den > 0`, as an epsilon component; `None` above [`PLANAR_EPS_LIMIT`].
-fn eps_of(num: i128, den: i128) -> Option<i32> {
-    let q = crate::formats::ceil_div(num.checked_abs()?, den)?;
+/// `a · b` exact in i128 for |a_i·b_i| < 2^125 (callers: ≤ 2^91).
+#[allow(clippy::arithmetic_side_effects)]
+fn dot128(a: &[i64; 3], b: &[i64; 3]) -> i128 {
+    a.iter()
+        .zip(b.iter())
+        .map(|(&x, &y)| i128::from(x) * i128::from(y))
+        .sum()
+}
+
+/// An upper bound on `⌈num / den⌉` (`den > 0`) as an epsilon component: with `r =
+/// max(0, bitlen(den) − 32)`, `⌈⌈num/2^r⌉ / ⌊den/2^r⌋⌉` (≥ the exact ceiling: the numerator
+/// rounds up, the divisor down; one 64-bit division). `None` when `den = 0` or the bound is
+/// above [`PLANAR_EPS_LIMIT`].
+// r ≤ 96 < 128; ⌊den/2^r⌋ ∈ [1, 2^32); the rounded-up numerator + 1 cannot overflow u128
+// (num < 2^122 at every caller).
+#[inline(never)]
+#[allow(clippy::arithmetic_side_effects)]
+fn ceil_div_up(num: u128, den: u128) -> Option<i32> {
+    if den == 0 {
+        return None;
+    }
+    let r = bitlen(den).saturating_sub(32);
+    let d = u64::try_from(den >> r).ok()?;
+    let n = (num >> r) + u128::from(num & ((1u128 << r) - 1) != 0);
+    let n = u64::try_from(n).ok()?;
+    let q = n / d + u64::from(n % d != 0);
     i32::try_from(q).ok().filter(|&e| e <= PLANAR_EPS_LIMIT)
 }
 
 /// The epsilon of one vertex `p` = (x, y, w) for the corner `q` of `Q` (module docs), or
-/// `None` when it exceeds the limit or the checked arithmetic overflows.
-fn vertex_eps(p: [i128; 3], q: [i128; 3], s: u32, adet: i128) -> Option<[i32; 3]> {
-    let [x, y, w] = p;
-    let [qx, qy, qw] = q;
-    if w > 0 && qw > 0 {
-        // μ = w/Q_w: |Q·w| < 2^61·2^29, |x·Q_w| < 2^29·2^61, difference < 2^91.
-        let ex = eps_of(qx.checked_mul(w)?.checked_sub(x.checked_mul(qw)?)?, qw)?;
-        let ey = eps_of(qy.checked_mul(w)?.checked_sub(y.checked_mul(qw)?)?, qw)?;
-        return Some([ex, ey, 0]);
+/// `None` above the limit. `s` = sh_{k+1} + sh_{k+2} ≤ 60, `adet` = |det P| ∈ [1, 2^90).
+// |Q| ≤ 2^61, |p| ≤ 2^29: Q_c·w and x·Q_w ≤ 2^90, difference < 2^91; Q_c·2^s ≤ 2^121 (a shift
+// by s ≤ 60 of |Q| ≤ 2^61), |det|·|p_c| < 2^119, difference < 2^122: all in i128.
+#[inline(never)]
+#[allow(clippy::arithmetic_side_effects)]
+fn vertex_eps(p: [i64; 3], q: [i64; 3], s: u32, adet: u128) -> Option<[i32; 3]> {
+    let [x, y, w] = p.map(i128::from);
+    let [qx, qy, qw] = q.map(i128::from);
+    if w != 0 && qw != 0 && (w > 0) == (qw > 0) {
+        // μ = w/Q_w > 0: μ·Q_w = w exactly; |μ·Q_c − p_c| = |Q_c·w − p_c·Q_w| / |Q_w|.
+        let e =
+            |qc: i128, pc: i128| ceil_div_up((qc * w - pc * qw).unsigned_abs(), qw.unsigned_abs());
+        return Some([e(qx, x)?, e(qy, y)?, 0]);
     }
-    // μ = 2^s/|det P|: |Q·2^s| < 2^61·2^58, |det|·|P| < 2^90·2^29; checked regardless.
-    let scale = 2i128.checked_pow(s)?;
-    let c = |qc: i128, pc: i128| {
-        eps_of(
-            qc.checked_mul(scale)?.checked_sub(adet.checked_mul(pc)?)?,
-            adet,
-        )
-    };
-    Some([c(qx, x)?, c(qy, y)?, c(qw, w)?])
+    // μ = 2^s/|det P|: n_{k+1} × n_{k+2} = det·P_k, so μ·Q_k = P_k up to the roundings.
+    let a = i128::try_from(adet).ok()?; // < 2^90: always Some
+    let e = |qc: i128, pc: i128| ceil_div_up(((qc << s) - a * pc).unsigned_abs(), adet);
+    Some([e(qx, x)?, e(qy, y)?, e(qw, w)?])
 }
 
-/// The depth plane `(G, f)` from the exact `Zv` and `D ≠ 0` (module docs).
-#[allow(clippy::arithmetic_side_effects)] // ranges at each line
+/// The depth plane `(G, f)` from the exact `Zv` (< 2^90) and `D ≠ 0` (|D| < 2^120), module
+/// docs.
+// Shifts: rd = bitlen(D) − 32 ∈ [−23, 88] (D ≥ 256), rz = bitlen(max|Zv|) − 62 ∈ [−61, 28]:
+// every shifted value has ≤ 62 bits (Zv) or 32 bits (D) and the shift amounts are < 128.
+#[inline(never)]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_wrap)]
 fn depth_plane(zv: [i128; 3], d: i128) -> Option<([i32; 3], i32)> {
-    let bz = bitlen(zv.iter().map(|c| c.unsigned_abs()).max().unwrap_or(0));
-    let bd = bitlen(d.unsigned_abs());
-    // rz, rd ≤ 127 − 62: arithmetic right shifts, floor; results < 2^62 in magnitude.
-    let (rz, rd) = (bz.saturating_sub(62), bd.saturating_sub(62));
-    let zv = zv.map(|c| c >> rz);
-    let d = d >> rd;
     let (zv, d) = if d < 0 {
-        (zv.map(|c| -c), -d) // |.| < 2^62: exact negations
+        (zv.map(|c| -c), -d) // |.| < 2^120: exact negations
     } else {
         (zv, d)
     };
-    if d <= 0 {
+    let bd = bitlen(d.unsigned_abs()) as i32; // ≤ 120
+    let bz = bitlen(zv.iter().map(|c| c.unsigned_abs()).max().unwrap_or(0)) as i32;
+    if d < 256 {
         return None;
     }
-    let (bz, bd) = (
-        bitlen(zv.iter().map(|c| c.unsigned_abs()).max().unwrap_or(0)),
-        bitlen(d.unsigned_abs()),
-    );
-    // e ∈ [30 + 1 − 62, 30 + 62]: bz, bd ≤ 62, bd ≥ 1.
-    let e = 30 + i64::from(bd) - i64::from(bz);
+    if bz == 0 {
+        return Some(([0; 3], 0));
+    }
+    let shift = |v: i128, r: i32| {
+        if r >= 0 {
+            v >> r
+        } else {
+            v << -r
+        }
+    };
+    let (rd, rz) = (bd - 32, bz - 62);
+    let d32 = i64::try_from(shift(d, rd)).ok()?; // [2^31, 2^32)
     let mut g = [0i32; 3];
     for (gi, &z) in g.iter_mut().zip(zv.iter()) {
-        // |Zv''| < 2^bz, D'' ≥ 2^(bd−1): |Zv''·2^e / D''| < 2^(bz + e − bd + 1) = 2^31, and the
-        // floor stays ≥ −2^31: i32. Numerator < 2^(bz+e) ≤ 2^93 (e ≥ 0) or divisor
-        // D''·2^(−e) < 2^(bd−e) ≤ 2^93 (e < 0): exact in i128.
-        let q = if e >= 0 {
-            crate::formats::floor_div(
-                z.checked_mul(2i128.checked_pow(u32::try_from(e).ok()?)?)?,
-                d,
-            )?
-        } else {
-            let k = u32::try_from(-e).ok()?;
-            crate::formats::floor_div(z, d.checked_mul(2i128.checked_pow(k)?)?)?
-        };
-        *gi = i32::try_from(q).ok()?;
+        let z62 = i64::try_from(shift(z, rz)).ok()?; // |.| < 2^62
+                                                     // |z62| < 2^62, d32 ≥ 2^31: the floor quotient is in [−2^31, 2^31): i32.
+        *gi = i32::try_from(z62.div_euclid(d32)).ok()?;
     }
-    // |e − 24 − rz + rd| < 2^8: fits i32.
-    let f = e - i64::from(DEPTH_FRAC) - i64::from(rz) + i64::from(rd);
-    Some((g, i32::try_from(f).ok()?))
+    // Zv_i / D ≈ G_i·2^(rz − rd); depth·2^-24 = Σ Zv_i·d_i / D: f = rd − rz − 24.
+    Some((g, rd - rz - DEPTH_FRAC as i32))
 }
 
 /// Planar setup of a static triangle (its t0 vertices) in `vp`: the rounded planes and the
@@ -238,61 +261,56 @@ pub(crate) fn planar_setup(
     ops: &mut Ops,
 ) -> Option<(PlanarEdges, Eps)> {
     let [v0, _] = &tri.v;
-    // |P| ≤ 2^29 (checked triangle): det3 < 2^90, each normal component < 2^59.
-    let p = v0.map(|q| [q[X], q[Y], q[W]].map(i128::from));
-    let det = det3(&p);
+    // |P| ≤ 2^29 (checked triangle): each normal component ≤ 2^59 (i64), det < 2^90 (i128).
+    let p = v0.map(|q| [q[X], q[Y], q[W]].map(i64::from));
+    let [p0, p1, p2] = p;
+    let exact = [cross(p1, p2), cross(p2, p0), cross(p0, p1)];
+    let [e0, _, _] = exact;
+    let det = dot128(&p0, &e0);
     ops.add_setup(30);
     if det == 0 {
         return None;
     }
-    let [p0, p1, p2] = p;
-    let exact = [(p1, p2), (p2, p0), (p0, p1)].map(|(a, b)| {
-        [
-            a[1] * b[2] - a[2] * b[1],
-            a[2] * b[0] - a[0] * b[2],
-            a[0] * b[1] - a[1] * b[0],
-        ]
-    });
-    let r = exact.map(|n| round_normal(&n));
-    let n = r.map(|(n, _)| n);
-    let sh = r.map(|(_, s)| s);
-    let [n0, n1, n2] = n;
-    let pp = [cross32(&n1, &n2), cross32(&n2, &n0), cross32(&n0, &n1)];
+    let mut n = [[0i32; 3]; 3];
+    let mut sh = [0u32; 3];
+    for ((nk, sk), ek) in n.iter_mut().zip(sh.iter_mut()).zip(exact.iter()) {
+        (*nk, *sk) = round_normal(ek);
+    }
+    let [n0, n1, n2] = n.map(|v| v.map(i64::from));
+    let pp = [cross(n1, n2), cross(n2, n0), cross(n0, n1)];
+    let [q0, _, _] = pp;
     // |n'_0| ≤ 2^30, |P''_0| ≤ 2^61: each product ≤ 2^91, the sum < 2^93.
-    let detn: i128 = n0
-        .iter()
-        .zip(pp[0].iter())
-        .map(|(&a, &b)| i128::from(a) * i128::from(b))
-        .sum();
+    let detn = dot128(&n0, &q0);
     ops.add_setup(45);
     if detn == 0 {
         return None;
     }
     let sigma: i32 = if det > 0 { 1 } else { -1 };
-    let tau = if detn > 0 { sigma } else { -sigma };
-    let adet = det.abs(); // < 2^90
-    let mut eps = [0i32; 3];
+    let flip = (detn > 0) != (sigma > 0);
+    let adet = det.unsigned_abs();
     let [s0, s1, s2] = sh;
-    // sh ≤ 29 each: s ≤ 58.
+    // sh ≤ 30 each: s ≤ 60.
     let shifts = [s1 + s2, s2 + s0, s0 + s1];
+    let mut eps = [0i32; 3];
     for ((pk, qk), &s) in p.iter().zip(pp.iter()).zip(shifts.iter()) {
-        let q = qk.map(|c| i128::from(c) * i128::from(tau)); // |.| ≤ 2^61
+        // Q_k = τ·P''_k: |P''| ≤ 2^61, the negation is exact.
+        let q = if flip { qk.map(|c| -c) } else { *qk };
         let e = vertex_eps(*pk, q, s, adet)?;
         for (m, v) in eps.iter_mut().zip(e) {
             *m = (*m).max(v);
         }
         ops.add_setup(12);
     }
-    // Depth plane: Zv = Σ z_k·n_k (|z| ≤ 2^29, |n| < 2^59: < 3·2^88), D = det·256·W·H
+    // Depth plane: Zv = Σ z_k·n_k (|z| ≤ 2^29, |n| ≤ 2^59: < 3·2^88), D = det·256·W·H
     // (< 2^90·2^30).
     let mut zv = [0i128; 3];
     for (nk, q) in exact.iter().zip(v0.iter()) {
-        for (o, c) in zv.iter_mut().zip(nk.iter()) {
-            *o += c * i128::from(q[Z]);
+        for (o, &c) in zv.iter_mut().zip(nk.iter()) {
+            *o += i128::from(c) * i128::from(q[Z]);
         }
     }
-    let dw = (1i128 << SUBPIXEL_BITS) * i128::from(vp.w) * i128::from(vp.h);
-    let (g, f) = depth_plane(zv, det * dw)?;
+    let dw = i64::from(vp.w) * i64::from(vp.h) * (1i64 << SUBPIXEL_BITS);
+    let (g, f) = depth_plane(zv, det * i128::from(dw))?;
     ops.add_setup(20);
     Some((
         PlanarEdges { n, sh, sigma, g, f },
@@ -347,6 +365,8 @@ fn depth(g: &[i32; 3], f: i32, d: &[i32; 3]) -> i32 {
     let q = if f >= 0 {
         // An arithmetic shift by ≤ 63: the floor (0 or −1 past the magnitude).
         acc >> f.min(63)
+    } else if acc == 0 {
+        0
     } else {
         let k = f.unsigned_abs();
         match 2i64.checked_pow(k).and_then(|p| acc.checked_mul(p)) {
