@@ -145,6 +145,7 @@ fn rnd_sym(x: i64, sh: u32) -> i32 {
 }
 
 /// Round one exact normal (|n| ≤ 2^59): `(n', sh)`, `sh = max(0, bitlen(max|n_i|) − 30)` ≤ 30.
+#[inline(never)]
 fn round_normal(n: &[i64; 3]) -> ([i32; 3], u32) {
     let m = n.iter().map(|c| c.unsigned_abs()).max().unwrap_or(0);
     let sh = u64::BITS
@@ -155,6 +156,7 @@ fn round_normal(n: &[i64; 3]) -> ([i32; 3], u32) {
 
 /// Cross product, exact in i64: `a` = rounded normals (|.| ≤ 2^30, products ≤ 2^60, |.| ≤
 /// 2^61), or vertices (|.| ≤ 2^29, products ≤ 2^58, |.| ≤ 2^59).
+#[inline(never)]
 #[allow(clippy::arithmetic_side_effects)] // ranges in the doc comment
 fn cross(a: [i64; 3], b: [i64; 3]) -> [i64; 3] {
     let [a0, a1, a2] = a;
@@ -162,7 +164,9 @@ fn cross(a: [i64; 3], b: [i64; 3]) -> [i64; 3] {
     [a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0]
 }
 
-/// `a · b` exact in i128 for |a_i·b_i| < 2^125 (callers: ≤ 2^91).
+/// `a · b` exact in i128 for |a_i·b_i| < 2^125 (callers: ≤ 2^91, the depth plane's
+/// `n·z` ≤ 2^88).
+#[inline(never)]
 #[allow(clippy::arithmetic_side_effects)]
 fn dot128(a: &[i64; 3], b: &[i64; 3]) -> i128 {
     a.iter()
@@ -212,40 +216,42 @@ fn vertex_eps(p: [i64; 3], q: [i64; 3], s: u32, adet: u128) -> Option<[i32; 3]> 
     Some([e(qx, x)?, e(qy, y)?, e(qw, w)?])
 }
 
+/// `⌊v / 2^r⌋` for `r ≥ 0`, `v·2^(−r)` (exact) for `r < 0`, as i64: the caller picks `r` so
+/// that the result has at most 62 bits (`depth_plane`); anything else saturates (not reached).
+// |r| < 128: both shifts are in range for i128 and exact (left: the result has ≤ 62 bits).
+#[inline(never)]
+#[allow(clippy::arithmetic_side_effects)]
+fn shift_to_i64(v: i128, r: i32) -> i64 {
+    let x = if r >= 0 {
+        v >> r.min(127)
+    } else {
+        v << (-r).min(127)
+    };
+    i64::try_from(x).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX })
+}
+
 /// The depth plane `(G, f)` from the exact `Zv` (< 2^90) and `D ≠ 0` (|D| < 2^120), module
 /// docs.
-// Shifts: rd = bitlen(D) − 32 ∈ [−23, 88] (D ≥ 256), rz = bitlen(max|Zv|) − 62 ∈ [−61, 28]:
-// every shifted value has ≤ 62 bits (Zv) or 32 bits (D) and the shift amounts are < 128.
+// bitlen ≤ 120: rd = bitlen(D) − 32 ∈ [−23, 88] (D ≥ 256), rz = bitlen(max|Zv|) − 62 ∈
+// [−61, 28]; every shifted value has ≤ 32 bits (D) or ≤ 62 bits (Zv); f ∈ [−75, 125].
 #[inline(never)]
 #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_wrap)]
 fn depth_plane(zv: [i128; 3], d: i128) -> Option<([i32; 3], i32)> {
-    let (zv, d) = if d < 0 {
-        (zv.map(|c| -c), -d) // |.| < 2^120: exact negations
-    } else {
-        (zv, d)
-    };
-    let bd = bitlen(d.unsigned_abs()) as i32; // ≤ 120
-    let bz = bitlen(zv.iter().map(|c| c.unsigned_abs()).max().unwrap_or(0)) as i32;
+    // Orient D > 0: |D|, |Zv| < 2^120, the negations are exact.
+    let (zv, d) = if d < 0 { (zv.map(|c| -c), -d) } else { (zv, d) };
     if d < 256 {
         return None;
     }
+    let bz = bitlen(zv.iter().map(|c| c.unsigned_abs()).max().unwrap_or(0)) as i32;
     if bz == 0 {
         return Some(([0; 3], 0));
     }
-    let shift = |v: i128, r: i32| {
-        if r >= 0 {
-            v >> r
-        } else {
-            v << -r
-        }
-    };
-    let (rd, rz) = (bd - 32, bz - 62);
-    let d32 = i64::try_from(shift(d, rd)).ok()?; // [2^31, 2^32)
+    let (rd, rz) = (bitlen(d.unsigned_abs()) as i32 - 32, bz - 62);
+    let d32 = shift_to_i64(d, rd); // [2^31, 2^32)
     let mut g = [0i32; 3];
     for (gi, &z) in g.iter_mut().zip(zv.iter()) {
-        let z62 = i64::try_from(shift(z, rz)).ok()?; // |.| < 2^62
-                                                     // |z62| < 2^62, d32 ≥ 2^31: the floor quotient is in [−2^31, 2^31): i32.
-        *gi = i32::try_from(z62.div_euclid(d32)).ok()?;
+        // |Z62| < 2^62, D32 ≥ 2^31: the floor quotient is in [−2^31, 2^31): i32.
+        *gi = i32::try_from(shift_to_i64(z, rz).div_euclid(d32)).ok()?;
     }
     // Zv_i / D ≈ G_i·2^(rz − rd); depth·2^-24 = Σ Zv_i·d_i / D: f = rd − rz − 24.
     Some((g, rd - rz - DEPTH_FRAC as i32))
@@ -303,12 +309,12 @@ pub(crate) fn planar_setup(
     }
     // Depth plane: Zv = Σ z_k·n_k (|z| ≤ 2^29, |n| ≤ 2^59: < 3·2^88), D = det·256·W·H
     // (< 2^90·2^30).
-    let mut zv = [0i128; 3];
-    for (nk, q) in exact.iter().zip(v0.iter()) {
-        for (o, &c) in zv.iter_mut().zip(nk.iter()) {
-            *o += i128::from(c) * i128::from(q[Z]);
-        }
-    }
+    let z = v0.map(|q| i64::from(q[Z]));
+    let [x0, x1, x2] = exact;
+    let zv = [0, 1, 2].map(|i| {
+        let col = [x0, x1, x2].map(|nk| nk.get(i).copied().unwrap_or(0));
+        dot128(&col, &z)
+    });
     let dw = i64::from(vp.w) * i64::from(vp.h) * (1i64 << SUBPIXEL_BITS);
     let (g, f) = depth_plane(zv, det * i128::from(dw))?;
     ops.add_setup(20);
