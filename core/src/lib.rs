@@ -48,6 +48,8 @@ pub mod interval;
 #[cfg(test)]
 mod interval_corners;
 pub mod planar;
+#[cfg(test)]
+mod planar_frozen;
 pub mod sample;
 pub mod setup;
 pub mod stats;

@@ -390,7 +390,9 @@ fn depth(g: &[i32; 3], f: i32, d: &[i32; 3]) -> i32 {
 #[inline(always)]
 #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_wrap)]
 pub fn planar_eval(setup: &Setup, pos: ScreenPos, ops: &mut Ops) -> Option<PlanarEval> {
-    let pl = setup.planar.as_ref()?;
+    let crate::setup::Stored::Planar(pl) = &setup.edges else {
+        return None;
+    };
     let vp = setup.viewport;
     let (sw, sh) = (
         (u32::from(vp.w)) << SUBPIXEL_BITS,

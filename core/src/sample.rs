@@ -286,12 +286,13 @@ pub fn sample_eval_unit<U: Unit>(
     let d = direction(setup.viewport, pos);
     ops.add_sample(5);
     // A bounded setup does not store the normals (`Setup::edges`): computed here, same value.
-    let computed = if setup.edges.is_none() {
+    let stored = setup.edges.exact();
+    let computed = if stored.is_none() {
         setup.edges()
     } else {
         None
     };
-    if let (Class::Static, Some(st)) = (setup.class, setup.edges.as_ref().or(computed.as_ref())) {
+    if let (Class::Static, Some(st)) = (setup.class, stored.as_ref().or(computed.as_ref())) {
         // Plain 2D test: normals precomputed in setup (|n| < 2^61), |d| < 2^45: each product
         // < 2^106, the sum < 2^108.
         #[allow(clippy::arithmetic_side_effects)]

@@ -123,12 +123,33 @@ pub struct Setup {
     /// both ends |.| ≤ 2^29), the bounded sample test's lerp operand ([`Setup::dv`]).
     pub(crate) dv: [[i32; 5]; 3],
     pub(crate) viewport: Viewport,
-    pub(crate) edges: Option<StaticEdges>,
+    pub(crate) edges: Stored,
     pub(crate) prec: PrecisionBits,
     pub(crate) eps: Eps,
-    /// The planar test's rounded planes (a static triangle of a [`crate::formats::Planar`]
-    /// precision only; `planar.rs`).
-    pub(crate) planar: Option<PlanarEdges>,
+}
+
+/// The static-triangle data a setup stores for its sample test, in one slot (so a setup is no
+/// larger than with the exact normals alone): the exact normals (an exact precision), the
+/// planar test's rounded planes (a [`crate::formats::Planar`] precision, `planar.rs`), or
+/// nothing (every other class or precision).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Stored {
+    /// nothing stored
+    None,
+    /// the exact normals (`sample.rs`)
+    Exact(StaticEdges),
+    /// the planar test's data (`planar.rs`)
+    Planar(PlanarEdges),
+}
+
+impl Stored {
+    /// The stored exact normals, if any.
+    pub(crate) fn exact(&self) -> Option<StaticEdges> {
+        match self {
+            Stored::Exact(e) => Some(*e),
+            _ => None,
+        }
+    }
 }
 
 impl Setup {
@@ -166,8 +187,8 @@ impl Setup {
     /// value), so a bounded program does not contain the i128 normals unless it asks.
     pub fn edges(&self) -> Option<StaticEdges> {
         match self.edges {
-            Some(e) => Some(e),
-            None => (self.class == Class::Static).then(|| static_edges(&self.tri)),
+            Stored::Exact(e) => Some(e),
+            _ => (self.class == Class::Static).then(|| static_edges(&self.tri)),
         }
     }
     /// The precision this setup (and its bounds) use.
@@ -180,7 +201,10 @@ impl Setup {
     }
     /// The planar test's per-triangle data (a static triangle of a `Planar` precision).
     pub fn planar(&self) -> Option<PlanarEdges> {
-        self.planar
+        match self.edges {
+            Stored::Planar(p) => Some(p),
+            _ => None,
+        }
     }
 }
 
@@ -654,11 +678,15 @@ impl Setup {
             y1: vp.h,
         };
         let exact = P::OFFSET_SHIFT.is_none();
-        let edges = (exact && class == Class::Static).then(|| static_edges(tri));
         let planar = if P::PLANAR && class == Class::Static {
             planar_setup(tri, vp, &mut Ops::default())
         } else {
             None
+        };
+        let edges = match planar {
+            Some((p, _)) => Stored::Planar(p),
+            None if exact && class == Class::Static => Stored::Exact(static_edges(tri)),
+            None => Stored::None,
         };
         Setup {
             class,
@@ -674,7 +702,6 @@ impl Setup {
                 Some((_, e)) => e,
                 None => Eps::of(prec.offset_shift(), class, vp),
             },
-            planar: planar.map(|(p, _)| p),
         }
     }
 }
@@ -863,7 +890,11 @@ fn setup_gated<P: Precision, U: Unit>(
     if class == Class::Static {
         ops.add_setup(30);
     }
-    let edges = (exact && class == Class::Static).then(|| static_edges(tri));
+    let edges = match planar {
+        Some(p) => Stored::Planar(p),
+        None if exact && class == Class::Static => Stored::Exact(static_edges(tri)),
+        None => Stored::None,
+    };
     Outcome::Visible(Setup {
         class,
         footprint,
@@ -875,7 +906,6 @@ fn setup_gated<P: Precision, U: Unit>(
         edges,
         prec,
         eps,
-        planar,
     })
 }
 
@@ -936,8 +966,16 @@ mod tests {
             let bd = setup_with::<Bounded<16, 16, 16, 20>>(&p.tri, vp, &mut ops);
             if let (Outcome::Visible(ex), Outcome::Visible(bd)) = (ex, bd) {
                 let want = (ex.class == Class::Static).then(|| static_edges(&p.tri));
-                assert_eq!(ex.edges, want, "prim {i}: exact setup stores the normals");
-                assert_eq!(bd.edges, None, "prim {i}: bounded setup stores none");
+                assert_eq!(
+                    ex.edges.exact(),
+                    want,
+                    "prim {i}: exact setup stores the normals"
+                );
+                assert_eq!(
+                    bd.edges,
+                    Stored::None,
+                    "prim {i}: bounded setup stores none"
+                );
                 assert_eq!(bd.edges(), want, "prim {i}: bounded edges()");
                 assert_eq!(ex.edges(), want, "prim {i}: exact edges()");
             }
