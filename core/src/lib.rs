@@ -49,6 +49,8 @@ pub mod interval;
 mod interval_corners;
 pub mod planar;
 #[cfg(test)]
+mod planar_corners;
+#[cfg(test)]
 mod planar_frozen;
 pub mod sample;
 pub mod setup;
