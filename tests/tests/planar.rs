@@ -350,6 +350,7 @@ fn watertight_meshes() {
             random_samples(&mut rng, 2, 4)
         };
         let pat = SamplePattern::new(2, 4, &samples).unwrap();
+        shared_edges_negate(&tris, vp, &format!("mesh case {case}"));
         let counts = coverage_counts_with::<Pl>(&tris, vp, &pat);
         if let Some(i) = counts.iter().position(|&n| n != 1) {
             let (pix, s) = (i / 4, i % 4);
@@ -367,6 +368,35 @@ fn watertight_meshes() {
     for k in [1i32 << 13, (1 << 25) + 1] {
         pixel_grid_mesh(k);
     }
+}
+
+/// Every edge the mesh shares (seen as (i, j) by one triangle and (j, i) by another) has
+/// exactly negated rounded normals n' (the watertightness argument of `planar.rs`), checked
+/// bit for bit; returns how many shared edges were compared.
+fn shared_edges_negate(tris: &[Triangle], vp: Viewport, ctx: &str) -> usize {
+    use std::collections::HashMap;
+    let mut edges: HashMap<([i32; 5], [i32; 5]), [i32; 3]> = HashMap::new();
+    for t in tris {
+        let s = Setup::unculled_with::<Pl>(t, vp);
+        let Some(pl) = s.planar() else { continue };
+        let v = t.vertices(0).map(|x| x.bits());
+        for k in 0..3 {
+            edges.insert((v[(k + 1) % 3], v[(k + 2) % 3]), pl.n()[k]);
+        }
+    }
+    let mut shared = 0;
+    for ((a, b), n) in edges.iter() {
+        if let Some(m) = edges.get(&(*b, *a)) {
+            shared += 1;
+            assert_eq!(
+                *m,
+                n.map(|c| -c),
+                "{ctx}: shared edge {a:?} → {b:?}: n' {n:?} (hex {n:x?}), the neighbour's {m:?} (hex {m:x?}): not exact negatives"
+            );
+        }
+    }
+    assert!(shared > 0, "{ctx}: no shared edge found");
+    shared
 }
 
 /// The pixel-grid mesh at w = 8·k raw (see [`watertight_meshes`]).
@@ -402,6 +432,7 @@ fn pixel_grid_mesh(k: i32) {
         .map(|s| sample_raw([0, 128, 0, 128][s], [0, 0, 128, 128][s], 0, 0, 0))
         .collect();
     let pat = SamplePattern::new(1, 4, &samples).unwrap();
+    shared_edges_negate(&tris, vp, &format!("pixel-grid mesh w = 8·{k} raw"));
     let counts = coverage_counts_with::<Pl>(&tris, vp, &pat);
     let (mut at_vertex, mut bad_vertex) = (0u64, 0u64);
     for (i, &n) in counts.iter().enumerate() {
@@ -474,8 +505,18 @@ fn sliver(rng: &mut Rng) -> Triangle {
     use uvt_core::{Coord, Vertex};
     let w = |r: &mut Rng| r.range(0.2, 8000.0);
     let (w0, w1) = (w(rng), w(rng));
-    let p0 = [rng.range(-1.0, 1.0) * w0, rng.range(-1.0, 1.0) * w0, 0.5 * w0, w0];
-    let p1 = [rng.range(-1.5, 1.5) * w1, rng.range(-1.5, 1.5) * w1, 0.5 * w1, w1];
+    let p0 = [
+        rng.range(-1.0, 1.0) * w0,
+        rng.range(-1.0, 1.0) * w0,
+        0.5 * w0,
+        w0,
+    ];
+    let p1 = [
+        rng.range(-1.5, 1.5) * w1,
+        rng.range(-1.5, 1.5) * w1,
+        0.5 * w1,
+        w1,
+    ];
     let s = rng.range(0.05, 0.95);
     let raw = |x: f64| (x * 65536.0).round() as i64;
     let mut p2 = [0i64; 4];
