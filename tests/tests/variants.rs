@@ -12,7 +12,8 @@ use uvt_core::input::SamplePattern;
 use uvt_core::setup::classify;
 use uvt_core::{
     demo, DefaultPrecision, DefocusOnly, Error, Exact, Full, Laine2011, MotionOnly, PixelStats,
-    Precision, Prim, Renderer, Rgb888, StaticOnly, Stats, TileBuffer, Triangle, Unit, Viewport,
+    PlanarPrecision, Precision, Prim, Renderer, Rgb888, StaticOnly, Stats, TileBuffer, Triangle,
+    Unit, Viewport,
 };
 use uvt_host::pattern::Pattern;
 use uvt_host::scene::Scene;
