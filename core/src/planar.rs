@@ -1,84 +1,89 @@
-//! Stage 3, planar — the static sample test of a [`crate::formats::Planar`] precision: a static
-//! triangle's three edges are fixed planes through the eye, `E_k(d) = n_k·d` with
-//! `n_k = P_{k+1} × P_{k+2}` (`StaticEdges`, exact i128), and the sample direction `d` is affine
-//! in the sample position; so setup rounds each normal once to i32 and the test per sample is
-//! three 32 × 32 → 64 dot products.
+//! Stage 3, planar — the static sample test of a [`crate::formats::Planar`] precision. Setup
+//! rounds each **vertex** of a static triangle once to 15 bits; from then on everything is
+//! exact: the edge normals of the rounded triangle fit i32 and the test per sample is three
+//! 32 × 32 → 64 dot products — **exactly the exact test (`sample.rs`) on the rounded
+//! triangle**, so it inherits its watertightness at shared edges and shared vertices.
 //!
-//! **Setup, per triangle** (raw clip units, `P_k = (x_k, y_k, w_k)` at t0; no projection, so
-//! camera-plane crossers need no special case):
+//! **Setup, per triangle** (raw clip units, `P_k = (x_k, y_k, w_k)` at t0, each |.| ≤ 2^29; no
+//! projection, so camera-plane crossers and w = 0 vertices need no special case):
 //!
 //! | signal | value | rounding | format |
 //! |---|---|---|---|
-//! | `n_k` | `P_{k+1} × P_{k+2}` | exact | i64, \|.\| ≤ 2^59 (2·16 fraction bits) |
-//! | `sh_k` | `max(0, bitlen(max_i \|n_k,i\|) − 30)` | — | 0..=30 |
-//! | `n'_k` | `rnd(n_k / 2^sh_k)` per component, `rnd(x) = sign(x)·⌊(\|x\| + 2^(sh−1))/2^sh⌋` | nearest, ties away from 0, symmetric | i32, \|.\| ≤ 2^30 |
-//! | `σ` | `sign(det P)`, `det P = P_0 · n_0` | exact (i128, \|.\| < 2^90) | ±1 (0 culled) |
-//! | `P''_k` | `n'_{k+1} × n'_{k+2}` | exact | i64, \|.\| ≤ 2^61 |
-//! | `det(n')` | `n'_0 · P''_0` | exact | i128, \|.\| < 2^93 (0 culled) |
+//! | `m_k` | `max(\|x_k\|, \|y_k\|, \|w_k\|)` | exact | u32, ≤ 2^29 |
+//! | `s_k` | `max(0, bitlen(m_k) − 15)`, plus 1 if `rnd(m_k, s) > 2^15 − 1` | — | 0..=15 |
+//! | `P'_k` | `rnd(P_k, s_k)` per component, `rnd(v, s) = sign(v)·⌊(\|v\| + 2^(s−1))/2^s⌋` (0 for s = 0: exact) | nearest, ties away from 0 | i16, \|.\| ≤ 2^15 − 1 |
+//! | `z'_k` | `rnd(z_k, s_k)` | same | i32, \|.\| ≤ 2^29 |
+//! | `n_k` | `P'_{k+1} × P'_{k+2}` | exact | i32, \|.\| ≤ 2·(2^15 − 1)² < 2^31 |
+//! | `σ` | `sign(det P')`, `det P' = P'_0 · n_0` | exact | i64 (\|det\| < 3·2^45); ±1, 0 culled |
+//! | `ε_x, ε_y, ε_w` | `max_k \|c_k − 2^s_k·c'_k\|` per component c | exact | ≤ 2^14 |
 //! | `G`, `f` | depth plane, below | floor | i32 ×3, exponent i32 |
 //!
+//! `s_k` and `P'_k` are functions of vertex k's own (x, y, w): a vertex shared by several
+//! triangles has the same `P'` in each. `rnd(m_k) ≤ 2^15 − 1` bounds every component (rnd is
+//! monotone in |v|). `s_k ≤ 15`: `m_k = 2^29` gives s = 15 and `rnd = 2^14`; below, bitlen ≤ 29,
+//! s ≤ 14 before the increment, and after it `m_k < 2^(15+s)` gives `rnd(m_k, s + 1) ≤ 2^14`.
+//! No per-triangle division, no i128 (except the depth plane's `det·256·W·H` < 2^78).
+//!
 //! **Per sample** (`d` = [`crate::sample::direction`], each \|d_i\| ≤ 2^30 inside a viewport
-//! ≤ 2048, i32): `E'_k = n'_k · d` (three SMULL/SMLAL, \|E'\| ≤ 3·2^60 < 2^62, i64, exact).
-//! Covered iff for every k: `σ·E'_k > 0`, or `E'_k = 0` and the fill rule accepts:
-//! `σ·a'_k > 0`, or `a'_k = 0` and `σ·b'_k > 0` (`(a', b', c') = n'_k`; comparators only).
+//! ≤ 2048, i32): `E_k = n_k · d` (three SMULL/SMLAL, \|E\| < 3·2^61 < 2^63, i64, exact).
+//! Covered iff for every k: `σ·E_k > 0`, or `E_k = 0` and the fill rule accepts:
+//! `σ·a_k > 0`, or `a_k = 0` and `σ·b_k > 0` (`(a, b, c) = n_k`; comparators only).
 //!
-//! **What it decides: exactly the exact test on a triangle `Q`.** With `Q_k = τ·P''_k`,
-//! `τ = σ·sign(det n')`: the identity `(a×b)×(a×c) = (a·(b×c))·a` gives
-//! `Q_{k+1} × Q_{k+2} = det(n')·n'_k` and `det(Q) = τ·det(n')²`, so the exact test of
-//! `sample.rs` on `Q` (edge values `det(n')·E'_k`, orientation `sign(det Q) = τ`, fill rule on
-//! `det(n')·(a'_k, b'_k)`) is covered iff `σ·E'_k > 0` for all k or on ties `σ·a'_k > 0`, … —
-//! the test above, bit for bit (`tests/tests/planar.rs` compares with a 192-bit exact test on
-//! `Q`). A triangle with `det(P) = 0` or `det(n') = 0` is culled (`Cull::Degenerate`).
+//! **What it decides: exactly the exact test on `P'`.** These are the exact test's edge values,
+//! orientation and fill rule (`sample.rs`) for the triangle with vertices `P'_k`, bit for bit
+//! (`tests/tests/planar.rs` compares with an independent 192-bit evaluation). The open cone of
+//! a triangle is invariant under positive per-vertex factors: the triangle `2^s_k·P'_k` has
+//! normals `2^(s_{k+1}+s_{k+2})·n_k` and determinant `2^(s_0+s_1+s_2)·det P'` — the same signs,
+//! the same decision. A triangle with `det P' = 0` (a sliver that rounding makes degenerate)
+//! covers nothing in the exact test on `P'` and is culled (`Cull::Degenerate`).
 //!
-//! **Watertight.** `n'_k` is a function of `n_k` alone (its own shift, a rounding symmetric
-//! under negation), and an edge seen as `(i, j)` by one triangle and `(j, i)` by its neighbour
-//! has exactly negated `n`, hence exactly negated `n'`: the two rounded planes are one plane.
-//! With the same orientation σ (a consistently wound mesh), off the plane exactly one of the
-//! two has `σ·E' > 0`; on it (`E' = 0`) the fill rule's key `(a', b')` is negated too, so
-//! exactly one accepts (`(a', b') = (0, 0)` means the plane is `d_w = 0`, which no sample is
-//! on). **At a shared vertex** the rounded planes of the triangles around it need not meet in
-//! one point (each triangle's corner is `P''`, the meet of its own two rounded planes): a sample
-//! within the edge distance below of two of those planes can be covered twice or not at all.
-//! This is the one place the planar test is not watertight; `tests/tests/planar.rs` measures it.
+//! **Watertight, vertices included.** A consistently wound mesh of static triangles becomes,
+//! vertex by vertex, the mesh of the `P'` (shared vertices stay shared, since `P'` depends on
+//! the vertex alone); the planar test on each triangle is the exact test on that mesh, which is
+//! watertight at edges and vertices: an edge seen as `(i, j)` and `(j, i)` has exactly negated
+//! normals, so off the plane exactly one side has `σ·E > 0` and on it the fill rule's key
+//! `(a, b)` is negated too; at a shared vertex all the triangles' planes pass through the one
+//! point `P'`. No exemption.
 //!
-//! **Agreement with the exact test.** Per component `|n'_k − n_k/2^sh_k| ≤ 1/2`, so
-//! `|E'_k − E_k/2^sh_k| ≤ (|d_x| + |d_y| + |d_w|)/2`: a sample decided differently from the
-//! exact test has `|E_k| ≤ 2^(sh_k − 1)·‖d‖₁` for some k — within
-//! `2^(sh_k−1)·‖d‖₁ / (512·‖(a_k·H, b_k·W)‖)` px of edge k (the gradient of `E_k` is
-//! `(2a_k·H, −2b_k·W)` per 1/256 px). Checked exactly (integers) by the agreement test.
+//! **Agreement with the exact test.** `2^s_k·P'_k = P_k + δ_k` with `|δ_k,c| ≤ 2^(s_k − 1) ≤
+//! 2^-16·m_k·(1 + 2^-14)` (s_k ≥ 1; δ = 0 for s_k = 0): each vertex moves by at most 2^-16 of
+//! its largest component (relative). A vertex with `w_k > 0` projects to NDC `x_k/w_k`; the
+//! moved vertex projects within `(|δx| + |x/w|·|δw|)/(w_k − |δw|)` NDC of it, i.e. within
+//! `ρ_k = 2^(s_k−1)·(1 + max(|x_k|, |y_k|)/w_k) / (w_k − 2^(s_k−1))` NDC (per axis, ×E/2 px).
+//! A sample decided differently from the exact test lies in the symmetric difference of the two
+//! projected triangles, hence (all w > 0) within `max_k ρ_k·max(W, H)/2` px of an edge of the
+//! exact triangle; the agreement test checks it against that per-triangle figure (`fit`/`precision` style:
+//! from the nearest w; for crossers and off-screen vertices the figure is reported, not
+//! derived).
 //!
 //! **Conservative epsilon.** The bounds (`setup.rs` boxes and time span, `HullCull` faces, …)
-//! are conservative for every triangle whose vertices lie, up to a positive factor each, within
-//! `ε_x` (x), `ε_y` (y), `ε_w` (w) of `P_k` (their proofs only use that vertex box; the exact
-//! test's coverage is the open cone of the vertices, invariant under positive per-vertex
-//! factors). Coverage here is the exact test on `Q`, so setup stores, rounded up, a bound on
-//! `|μ·Q_k − P_k|` for a chosen `μ > 0` per vertex:
-//! `μ = w_k/Q_w` when both are non-zero of one sign (then `ε_w` = 0 and
-//! `ε_x ≥ ⌈|Q_x·w_k − x_k·Q_w| / |Q_w|⌉`, likewise y); else
-//! `μ = 2^(sh_{k+1}+sh_{k+2})/|det P|` (`n_{k+1} × n_{k+2} = det(P)·P_k`, so this is `P_k` up to
-//! the roundings), every component `⌈|Q_c·2^s − |det P|·P_c| / |det P|⌉` (`s = sh_{k+1} +
-//! sh_{k+2}`). Each ceiling is taken from above (`ceil_div_up`: numerator rounded up, divisor
-//! down to 32 bits, one 64-bit division). The maximum over the vertices is the setup's [`Eps`]. Any `μ > 0` gives a valid bound, so each vertex's `μ_k·Q_k`
-//! lies in the box and every covered sample (a ray in the open cone of `Q`) is inside every
-//! bound. A bound above [`PLANAR_EPS_LIMIT`] (the bounds' range proofs take ε < 2^24), or an
-//! overflow of the checked i128 arithmetic, culls the triangle (`Cull::Degenerate`): only a
-//! sliver whose rounded planes meet more than 256 clip units from its vertices, counted
-//! separately by the tests.
+//! are conservative for every triangle whose vertices lie within `ε_x` (x), `ε_y` (y), `ε_w`
+//! (w) of `P_k` — up to a positive factor per vertex, since coverage is the cone (their proofs
+//! only use that vertex box). Coverage here is the exact test on `2^s_k·P'_k`, whose distance
+//! from `P_k` per component is `|c_k − 2^s_k·c'_k|` ≤ 2^(s_k−1) ≤ 2^14: setup stores the
+//! maximum over the vertices, per component, as the setup's [`Eps`] — exact, no rounding, well
+//! inside the bounds' range proofs (ε < 2^24). No triangle is culled for its epsilon. With
+//! `ε_w > 0` the hull (`strategies/hull.rs`) keeps its faces only when every hull point has
+//! `w > ε_w` (its projected-perturbation proof needs `w_min − ε_w > 0`): a static triangle with
+//! a vertex within ε_w (≤ 0.25 clip units) of the camera plane, or crossing it, keeps no hull
+//! faces (the inner strategy's bounds, which carry ε, still apply — conservative, less tight).
 //!
 //! **Depth** (hits only), same format, saturation and direction as the bounded test (I8F24,
-//! floor, saturated to [`DEPTH_NEAR`, `DEPTH_FAR`]): the hit of ray `d` on the triangle has
-//! `w = d_w` and `z = Σ_k z_k·E_k/det(P)`, so `z/w = Zv·d / (det(P)·d_w)` with the exact plane
-//! `Zv = Σ_k z_k·n_k` (i128, < 2^90) and `D = det(P)·d_w` (< 2^120): affine in the sample, no
-//! division per sample. Setup (D oriented > 0 with Zv): `D32 = ⌊D / 2^rd⌋` with
-//! `rd = bitlen(D) − 32` (a left shift, exact, when negative: D ≥ 256), so D32 ∈ [2^31, 2^32);
-//! `Z62_i = ⌊Zv_i / 2^rz⌋` with `rz = bitlen(max|Zv_i|) − 62` (exact left shift when
-//! negative), |Z62| < 2^62; `G_i = ⌊Z62_i / D32⌋` ∈ [−2^31, 2^31) (i32; three 64-bit
-//! divisions per triangle), `f = rd − rz − 24`. Per hit: `acc = Σ G_i·d_i` (\|.\| < 3·2^61,
-//! i64 exact), depth = `⌊acc / 2^f⌋` (arithmetic shift; `f ≥ 63` gives 0 or −1) or
+//! floor, saturated to [`DEPTH_NEAR`, `DEPTH_FAR`]): the depth of the exact test on the
+//! rounded triangle `2^s_k·P'_k` with depths `2^s_k·z'_k` (`|2^s_k·z'_k − z_k| ≤ 2^(s_k−1)`).
+//! The hit of ray `d` has `z/w = Σ_k z'_k·E_k / (det P'·d_w)` (the factors 2^s_k cancel), so
+//! `z/w = Zv·d / D` with `Zv = Σ_k z'_k·n_k` (i64, \|.\| < 3·2^60) and `D = det P'·256·W·H`
+//! (i128, < 2^78): affine in the sample, no division per sample. Setup (D oriented > 0 with
+//! Zv): `D32 = ⌊D / 2^rd⌋` with `rd = bitlen(D) − 32` (a left shift, exact, when negative:
+//! D ≥ 256), so D32 ∈ [2^31, 2^32); `Z62_i = ⌊Zv_i / 2^rz⌋` with `rz = bitlen(max|Zv_i|) − 62`
+//! (≤ 0: an exact left shift), |Z62| < 2^62; `G_i = ⌊Z62_i / D32⌋` ∈ [−2^31, 2^31) (i32; three
+//! 64-bit divisions per triangle), `f = rd − rz − 24`. Per hit: `acc = Σ G_i·d_i` (\|.\| <
+//! 3·2^61, i64 exact), depth = `⌊acc / 2^f⌋` (arithmetic shift; `f ≥ 63` gives 0 or −1) or
 //! `acc·2^(−f)` saturated for `f < 0`, then saturated to the depth range (`Zv = 0`: depth 0).
-//! Error: G_i is within 1 + 2^-30·|G_i| of `Zv_i·2^(−f−24)/D·2^24`, so the depth is within
-//! `(3·2^30 + Σ|G_i·d_i|·2^-30)/2^f + 1` raw of the exact z/w (floor of the exact value
-//! included). Depth never influences coverage.
+//! Error against the exact z/w of the rounded triangle: `(3·2^30 + Σ|G_i·d_i|·2^-30)/2^f + 1`
+//! raw (floor included; checked per hit by the tests). Against the exact depth of the
+//! unrounded triangle the vertices' and z's relative 2^-16 perturbations add a geometry-dependent
+//! term (measured and reported by the agreement test). Depth never influences coverage.
 
 use crate::bounded::Eps;
 use crate::formats::{DEPTH_FAR, DEPTH_FRAC, DEPTH_NEAR, SUBPIXEL_BITS};
@@ -87,34 +92,35 @@ use crate::sample::{Hit, ScreenPos};
 use crate::setup::Setup;
 use crate::stats::Ops;
 
-/// Largest conservative epsilon component the planar setup stores (raw clip units): the
-/// bounds' range proofs take ε_x + ε_w < 2^25. A triangle needing more is culled (module docs).
-pub const PLANAR_EPS_LIMIT: i32 = (1 << 24) - 1;
-
-/// Magnitude limit of the rounded normals: |n'| ≤ 2^30 (bit length of |n| above 30 is shifted).
-const NORMAL_BITS: u32 = 30;
+/// Bits of a rounded vertex component: |P'| ≤ 2^15 − 1 (i16).
+pub const VERTEX_BITS: u32 = 15;
 
 /// The planar test's per-triangle data. Built only by the planar setup from a checked
 /// [`Triangle`], so every field is in the range the module table states.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct PlanarEdges {
+    pub(crate) pv: [[i16; 3]; 3],
+    pub(crate) s: [u8; 3],
     pub(crate) n: [[i32; 3]; 3],
-    pub(crate) sh: [u32; 3],
     pub(crate) sigma: i32,
     pub(crate) g: [i32; 3],
     pub(crate) f: i32,
 }
 
 impl PlanarEdges {
-    /// The rounded edge normals `n'_k = (a', b', c')`, |.| ≤ 2^30.
+    /// The rounded vertices `P'_k = (x', y', w')`, |.| ≤ 2^15 − 1.
+    pub fn vertices(&self) -> [[i32; 3]; 3] {
+        self.pv.map(|p| p.map(i32::from))
+    }
+    /// The per-vertex shifts `s_k` (0..=15): `P'_k ≈ P_k / 2^s_k`.
+    pub fn shifts(&self) -> [u32; 3] {
+        self.s.map(u32::from)
+    }
+    /// The edge normals `n_k = P'_{k+1} × P'_{k+2} = (a, b, c)`, exact, |.| < 2^31.
     pub fn n(&self) -> [[i32; 3]; 3] {
         self.n
     }
-    /// The per-edge shifts `sh_k` (0..=29): `n'_k ≈ n_k / 2^sh_k`.
-    pub fn shifts(&self) -> [u32; 3] {
-        self.sh
-    }
-    /// The orientation σ = sign(det P): −1 or 1.
+    /// The orientation σ = sign(det P'): −1 or 1.
     pub fn sigma(&self) -> i32 {
         self.sigma
     }
@@ -129,91 +135,54 @@ fn bitlen(x: u128) -> u32 {
     u128::BITS.saturating_sub(x.leading_zeros())
 }
 
-/// `rnd(x / 2^sh)`: nearest, ties away from zero, `rnd(−x) = −rnd(x)` (module table). For
-/// |x| ≤ 2^59 and `sh` ≤ 30 with |x| < 2^(30 + sh) + 2^sh the result is ≤ 2^30 (i32).
-// |x| ≤ 2^59 and half ≤ 2^29: the sum < 2^60 (u64); sh ≤ 30 < 64.
-#[allow(clippy::arithmetic_side_effects)]
-fn rnd_sym(x: i64, sh: u32) -> i32 {
-    let m = x.unsigned_abs();
-    let half = if sh == 0 { 0 } else { 1u64 << (sh - 1) };
-    let q = i32::try_from((m + half) >> sh).unwrap_or(i32::MAX);
-    if x < 0 {
-        q.saturating_neg()
+/// `rnd(v, s) = sign(v)·⌊(|v| + 2^(s−1)) / 2^s⌋` (module table; exact for s = 0): nearest, ties
+/// away from zero. For |v| ≤ 2^29 and s ≤ 15 the sum is < 2^30 (u32) and the result ≤ 2^29.
+// s ≤ 15 (callers): the shifts are in range; |v| + half < 2^30 in u32; the result ≤ 2^29 fits
+// i32 and its negation is exact.
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_wrap)]
+fn rnd(v: i32, s: u32) -> i32 {
+    let half = if s == 0 { 0 } else { 1u32 << (s - 1) };
+    let q = ((v.unsigned_abs() + half) >> s) as i32;
+    if v < 0 {
+        -q
     } else {
         q
     }
 }
 
-/// Round one exact normal (|n| ≤ 2^59): `(n', sh)`, `sh = max(0, bitlen(max|n_i|) − 30)` ≤ 30.
-#[inline(never)]
-fn round_normal(n: &[i64; 3]) -> ([i32; 3], u32) {
-    let m = n.iter().map(|c| c.unsigned_abs()).max().unwrap_or(0);
-    let sh = u64::BITS
+/// The shift `s` (0..=15) of one vertex from `m = max(|x|, |y|, |w|)` ≤ 2^29 (module table):
+/// the least of `bitlen(m) − 15` and one more, such that `rnd(m, s) ≤ 2^15 − 1`.
+// bitlen(m) ≤ 30: s ≤ 15; the increment happens only for bitlen ≤ 29 (s ≤ 14), module docs.
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_wrap)]
+fn vertex_shift(m: u32) -> u32 {
+    let s = u32::BITS
         .saturating_sub(m.leading_zeros())
-        .saturating_sub(NORMAL_BITS);
-    (n.map(|c| rnd_sym(c, sh)), sh)
+        .saturating_sub(VERTEX_BITS);
+    if rnd(m as i32, s) > (1 << VERTEX_BITS) - 1 {
+        s + 1
+    } else {
+        s
+    }
 }
 
-/// Cross product, exact in i64: `a` = rounded normals (|.| ≤ 2^30, products ≤ 2^60, |.| ≤
-/// 2^61), or vertices (|.| ≤ 2^29, products ≤ 2^58, |.| ≤ 2^59).
+/// Cross product of rounded vertices (|.| ≤ 2^15 − 1): each product ≤ (2^15 − 1)² < 2^30, each
+/// difference ≤ 2·(2^15 − 1)² < 2^31: exact in i32.
 #[inline(never)]
 #[allow(clippy::arithmetic_side_effects)] // ranges in the doc comment
-fn cross(a: [i64; 3], b: [i64; 3]) -> [i64; 3] {
+fn cross(a: [i32; 3], b: [i32; 3]) -> [i32; 3] {
     let [a0, a1, a2] = a;
     let [b0, b1, b2] = b;
     [a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0]
 }
 
-/// `a · b` exact in i128 for |a_i·b_i| < 2^125 (callers: ≤ 2^91, the depth plane's
-/// `n·z` ≤ 2^88).
+/// `a · b` in i64 for |a_i| < 2^31, |b_i| ≤ 2^29: each product < 2^60, the sum < 2^62.
 #[inline(never)]
 #[allow(clippy::arithmetic_side_effects)]
-fn dot128(a: &[i64; 3], b: &[i64; 3]) -> i128 {
+fn dot64(a: &[i32; 3], b: &[i32; 3]) -> i64 {
     a.iter()
         .zip(b.iter())
-        .map(|(&x, &y)| i128::from(x) * i128::from(y))
+        .map(|(&x, &y)| i64::from(x) * i64::from(y))
         .sum()
-}
-
-/// An upper bound on `⌈num / den⌉` (`den > 0`) as an epsilon component: with `r =
-/// max(0, bitlen(den) − 32)`, `⌈⌈num/2^r⌉ / ⌊den/2^r⌋⌉` (≥ the exact ceiling: the numerator
-/// rounds up, the divisor down; one 64-bit division). `None` when `den = 0` or the bound is
-/// above [`PLANAR_EPS_LIMIT`].
-// r ≤ 96 < 128; ⌊den/2^r⌋ ∈ [1, 2^32); the rounded-up numerator + 1 cannot overflow u128
-// (num < 2^122 at every caller).
-#[inline(never)]
-#[allow(clippy::arithmetic_side_effects)]
-fn ceil_div_up(num: u128, den: u128) -> Option<i32> {
-    if den == 0 {
-        return None;
-    }
-    let r = bitlen(den).saturating_sub(32);
-    let d = u64::try_from(den >> r).ok()?;
-    let n = (num >> r) + u128::from(num & ((1u128 << r) - 1) != 0);
-    let n = u64::try_from(n).ok()?;
-    let q = n / d + u64::from(n % d != 0);
-    i32::try_from(q).ok().filter(|&e| e <= PLANAR_EPS_LIMIT)
-}
-
-/// The epsilon of one vertex `p` = (x, y, w) for the corner `q` of `Q` (module docs), or
-/// `None` above the limit. `s` = sh_{k+1} + sh_{k+2} ≤ 60, `adet` = |det P| ∈ [1, 2^90).
-// |Q| ≤ 2^61, |p| ≤ 2^29: Q_c·w and x·Q_w ≤ 2^90, difference < 2^91; Q_c·2^s ≤ 2^121 (a shift
-// by s ≤ 60 of |Q| ≤ 2^61), |det|·|p_c| < 2^119, difference < 2^122: all in i128.
-#[inline(never)]
-#[allow(clippy::arithmetic_side_effects)]
-fn vertex_eps(p: [i64; 3], q: [i64; 3], s: u32, adet: u128) -> Option<[i32; 3]> {
-    let [x, y, w] = p.map(i128::from);
-    let [qx, qy, qw] = q.map(i128::from);
-    if w != 0 && qw != 0 && (w > 0) == (qw > 0) {
-        // μ = w/Q_w > 0: μ·Q_w = w exactly; |μ·Q_c − p_c| = |Q_c·w − p_c·Q_w| / |Q_w|.
-        let e =
-            |qc: i128, pc: i128| ceil_div_up((qc * w - pc * qw).unsigned_abs(), qw.unsigned_abs());
-        return Some([e(qx, x)?, e(qy, y)?, 0]);
-    }
-    // μ = 2^s/|det P|: n_{k+1} × n_{k+2} = det·P_k, so μ·Q_k = P_k up to the roundings.
-    let a = i128::try_from(adet).ok()?; // < 2^90: always Some
-    let e = |qc: i128, pc: i128| ceil_div_up(((qc << s) - a * pc).unsigned_abs(), adet);
-    Some([e(qx, x)?, e(qy, y)?, e(qw, w)?])
 }
 
 /// `⌊v / 2^r⌋` for `r ≥ 0`, `v·2^(−r)` (exact) for `r < 0`, as i64: the caller picks `r` so
@@ -230,10 +199,10 @@ fn shift_to_i64(v: i128, r: i32) -> i64 {
     i64::try_from(x).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX })
 }
 
-/// The depth plane `(G, f)` from the exact `Zv` (< 2^90) and `D ≠ 0` (|D| < 2^120), module
+/// The depth plane `(G, f)` from the exact `Zv` (< 2^62) and `D ≠ 0` (|D| < 2^78), module
 /// docs.
-// bitlen ≤ 120: rd = bitlen(D) − 32 ∈ [−23, 88] (D ≥ 256), rz = bitlen(max|Zv|) − 62 ∈
-// [−61, 28]; every shifted value has ≤ 32 bits (D) or ≤ 62 bits (Zv); f ∈ [−75, 125].
+// bitlen(D) ≤ 78: rd = bitlen(D) − 32 ∈ [−23, 46] (D ≥ 256), rz = bitlen(max|Zv|) − 62 ∈
+// [−61, 0]; every shifted value has ≤ 32 bits (D) or ≤ 62 bits (Zv); f ∈ [−47, 83].
 #[inline(never)]
 #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_wrap)]
 fn depth_plane(zv: [i128; 3], d: i128) -> Option<([i32; 3], i32)> {
@@ -257,9 +226,8 @@ fn depth_plane(zv: [i128; 3], d: i128) -> Option<([i32; 3], i32)> {
     Some((g, rd - rz - DEPTH_FRAC as i32))
 }
 
-/// Planar setup of a static triangle (its t0 vertices) in `vp`: the rounded planes and the
-/// conservative epsilon, or `None` (culled as degenerate: det(P) = 0, det(n') = 0, or an
-/// epsilon above [`PLANAR_EPS_LIMIT`]).
+/// Planar setup of a static triangle (its t0 vertices) in `vp`: the rounded vertices, their
+/// exact normals, the epsilon and the depth plane, or `None` (culled as degenerate: det P' = 0).
 #[allow(clippy::arithmetic_side_effects)] // ranges at each line
 pub(crate) fn planar_setup(
     tri: &Triangle,
@@ -267,59 +235,55 @@ pub(crate) fn planar_setup(
     ops: &mut Ops,
 ) -> Option<(PlanarEdges, Eps)> {
     let [v0, _] = &tri.v;
-    // |P| ≤ 2^29 (checked triangle): each normal component ≤ 2^59 (i64), det < 2^90 (i128).
-    let p = v0.map(|q| [q[X], q[Y], q[W]].map(i64::from));
-    let [p0, p1, p2] = p;
-    let exact = [cross(p1, p2), cross(p2, p0), cross(p0, p1)];
-    let [e0, _, _] = exact;
-    let det = dot128(&p0, &e0);
-    ops.add_setup(30);
-    if det == 0 {
-        return None;
-    }
-    let mut n = [[0i32; 3]; 3];
-    let mut sh = [0u32; 3];
-    for ((nk, sk), ek) in n.iter_mut().zip(sh.iter_mut()).zip(exact.iter()) {
-        (*nk, *sk) = round_normal(ek);
-    }
-    let [n0, n1, n2] = n.map(|v| v.map(i64::from));
-    let pp = [cross(n1, n2), cross(n2, n0), cross(n0, n1)];
-    let [q0, _, _] = pp;
-    // |n'_0| ≤ 2^30, |P''_0| ≤ 2^61: each product ≤ 2^91, the sum < 2^93.
-    let detn = dot128(&n0, &q0);
-    ops.add_setup(45);
-    if detn == 0 {
-        return None;
-    }
-    let sigma: i32 = if det > 0 { 1 } else { -1 };
-    let flip = (detn > 0) != (sigma > 0);
-    let adet = det.unsigned_abs();
-    let [s0, s1, s2] = sh;
-    // sh ≤ 30 each: s ≤ 60.
-    let shifts = [s1 + s2, s2 + s0, s0 + s1];
+    let mut pv = [[0i32; 3]; 3];
+    let mut s = [0u32; 3];
+    let mut z = [0i32; 3];
     let mut eps = [0i32; 3];
-    for ((pk, qk), &s) in p.iter().zip(pp.iter()).zip(shifts.iter()) {
-        // Q_k = τ·P''_k: |P''| ≤ 2^61, the negation is exact.
-        let q = if flip { qk.map(|c| -c) } else { *qk };
-        let e = vertex_eps(*pk, q, s, adet)?;
-        for (m, v) in eps.iter_mut().zip(e) {
-            *m = (*m).max(v);
+    for (k, q) in v0.iter().enumerate() {
+        // Checked triangle: |x|, |y|, |z|, |w| ≤ 2^29.
+        let p = [q[X], q[Y], q[W]];
+        let m = p.iter().map(|c| c.unsigned_abs()).max().unwrap_or(0);
+        let sk = vertex_shift(m);
+        let r = p.map(|c| rnd(c, sk));
+        for ((e, &c), &cr) in eps.iter_mut().zip(p.iter()).zip(r.iter()) {
+            // |c'| ≤ 2^15 − 1, s ≤ 15: c'·2^s < 2^30; the residual ≤ 2^(s−1) ≤ 2^14.
+            *e = (*e).max((c - (cr << sk)).abs());
+        }
+        if let (Some(pk), Some(sl), Some(zk)) = (pv.get_mut(k), s.get_mut(k), z.get_mut(k)) {
+            (*pk, *sl, *zk) = (r, sk, rnd(q[Z], sk));
         }
         ops.add_setup(12);
     }
-    // Depth plane: Zv = Σ z_k·n_k (|z| ≤ 2^29, |n| ≤ 2^59: < 3·2^88), D = det·256·W·H
-    // (< 2^90·2^30).
-    let z = v0.map(|q| i64::from(q[Z]));
-    let [x0, x1, x2] = exact;
+    let [p0, p1, p2] = pv;
+    let n = [cross(p1, p2), cross(p2, p0), cross(p0, p1)];
+    let [n0, n1, n2] = n;
+    // |P'| < 2^15, |n| < 2^31: |det P'| < 3·2^46.
+    let det = dot64(&p0, &n0);
+    ops.add_setup(21);
+    if det == 0 {
+        return None;
+    }
+    // Depth plane: Zv_i = Σ_k z'_k·n_k,i (|z'| ≤ 2^29, |n| < 2^31: < 3·2^60, i64), D =
+    // det·256·W·H (< 2^48·2^30, i128).
     let zv = [0, 1, 2].map(|i| {
-        let col = [x0, x1, x2].map(|nk| nk.get(i).copied().unwrap_or(0));
-        dot128(&col, &z)
+        let col = [n0, n1, n2].map(|nk| nk.get(i).copied().unwrap_or(0));
+        i128::from(dot64(&col, &z))
     });
     let dw = i64::from(vp.w) * i64::from(vp.h) * (1i64 << SUBPIXEL_BITS);
-    let (g, f) = depth_plane(zv, det * i128::from(dw))?;
+    let (g, f) = depth_plane(zv, i128::from(det) * i128::from(dw))?;
     ops.add_setup(20);
+    // |P'| ≤ 2^15 − 1 and s ≤ 15 (module table): the conversions are exact.
+    let pv = pv.map(|p| p.map(|c| i16::try_from(c).unwrap_or(0)));
+    let s = s.map(|c| u8::try_from(c).unwrap_or(0));
     Some((
-        PlanarEdges { n, sh, sigma, g, f },
+        PlanarEdges {
+            pv,
+            s,
+            n,
+            sigma: if det > 0 { 1 } else { -1 },
+            g,
+            f,
+        },
         Eps {
             x: [eps[0], eps[1]],
             w: eps[2],
@@ -330,7 +294,7 @@ pub(crate) fn planar_setup(
 /// The planar test's intermediates of one sample (for tests).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct PlanarEval {
-    /// edge values `E'_k = n'_k · d` (exact)
+    /// edge values `E_k = n_k · d` (exact)
     pub e: [i64; 3],
     /// coverage and depth
     pub hit: Option<Hit>,
@@ -347,7 +311,7 @@ fn direction32(vp: Viewport, xs: i32, ys: i32) -> [i32; 3] {
     [(2 * xs - one * w) * h, (one * h - 2 * ys) * w, one * w * h]
 }
 
-/// Fill rule on `E'_k = 0` (module docs): `σ·a' > 0`, or `a' = 0` and `σ·b' > 0`.
+/// Fill rule on `E_k = 0` (module docs): `σ·a > 0`, or `a = 0` and `σ·b > 0`.
 #[inline]
 fn fill(n: &[i32; 3], sigma: i32) -> bool {
     let [a, b, _] = *n;
@@ -403,7 +367,7 @@ pub fn planar_eval(setup: &Setup, pos: ScreenPos, ops: &mut Ops) -> Option<Plana
     }
     // xs < 2^19, ys < 2^19: exact in i32.
     let d = direction32(vp, pos.xs as i32, pos.ys as i32);
-    // |n'| ≤ 2^30, |d| ≤ 2^30: three products ≤ 2^60, |E'| < 2^62 (i64).
+    // |n| < 2^31, |d| ≤ 2^30: three products < 2^61, |E| < 3·2^61 < 2^63 (i64).
     let e = pl.n.map(|nk| {
         nk.iter()
             .zip(d.iter())
@@ -413,7 +377,7 @@ pub fn planar_eval(setup: &Setup, pos: ScreenPos, ops: &mut Ops) -> Option<Plana
     let [e0, e1, e2] = e;
     let pos_side = pl.sigma > 0;
     let covered = if e0 != 0 && e1 != 0 && e2 != 0 {
-        // Every E' has the orientation's strict sign.
+        // Every E has the orientation's strict sign.
         if pos_side {
             e0 > 0 && e1 > 0 && e2 > 0
         } else {

@@ -1,11 +1,12 @@
 //! Domain-corner test of the planar static test (`planar.rs`): static triangles whose raw
 //! coordinates are taken from the domain's corners (±2^29, ±(2^29 − 1), ±1, 0, CoC 0), slivers
-//! (two vertices one raw unit apart, collinear up to one unit) and huge triangles, on 1×1,
-//! 1×2048, 2048×1 and 2048×2048 viewports, every screen corner and seeded positions — with
-//! overflow checks on (the test profile): no panic, every declared range asserted (|n'| ≤ 2^30,
-//! sh ≤ 30, ε ≤ `PLANAR_EPS_LIMIT`, |E'| < 2^62, depth in [DEPTH_NEAR, DEPTH_FAR]), the
-//! epsilon checked against an independent exact i128 inequality per vertex and component, and
-//! coverage against the exact test on Q in 192-bit arithmetic.
+//! (a vertex one raw unit off the midpoint of the other two), w = 0 vertices and camera-plane
+//! crossers, on 1×1, 1×2048, 2048×1 and 2048×2048 viewports, every screen corner and seeded
+//! positions — with overflow checks on (the test profile): no panic; the rounded vertices,
+//! shifts and normals equal an independent i128 computation (the shift found by search, not by
+//! bit length); every declared range asserted (|P'| ≤ 2^15 − 1, s ≤ 15, |n| < 2^31, ε ≤ 2^14
+//! and equal to the exact per-vertex residual, depth in [DEPTH_NEAR, DEPTH_FAR]); culled iff
+//! det P' = 0; coverage equal to the exact test on P' in 192-bit arithmetic.
 // Test code: plain i128 operators on values < 2^125; an overflow or a bad index panics, which is
 // the failure signal of a test.
 #![allow(
@@ -17,7 +18,7 @@
 
 use crate::formats::{PlanarPrecision, DEPTH_FAR, DEPTH_NEAR};
 use crate::input::{Triangle, Vertex, Viewport};
-use crate::planar::{planar_eval, PlanarEdges, PLANAR_EPS_LIMIT};
+use crate::planar::planar_eval;
 use crate::sample::{direction, ScreenPos};
 use crate::setup::Setup;
 use crate::stats::Ops;
@@ -35,18 +36,29 @@ fn cross(a: [i128; 3], b: [i128; 3]) -> [i128; 3] {
     ]
 }
 
-/// Q_k = τ·(n'_{k+1} × n'_{k+2}), τ = σ·sign(det n') (module docs of `planar.rs`).
-fn q_of(pl: &PlanarEdges) -> [[i128; 3]; 3] {
-    let n = pl.n().map(|v| v.map(i128::from));
-    let pp = [cross(n[1], n[2]), cross(n[2], n[0]), cross(n[0], n[1])];
-    let detn: i128 = (0..3).map(|i| n[0][i] * pp[0][i]).sum();
-    assert_ne!(detn, 0, "a visible planar setup has det(n') ≠ 0");
-    let tau = i128::from(pl.sigma()) * detn.signum();
-    pp.map(|v| v.map(|c| c * tau))
+/// Nearest, ties away from zero, of `v / 2^s` (i128; independent of `planar.rs`).
+fn round_away(v: i128, s: u32) -> i128 {
+    if s == 0 {
+        return v;
+    }
+    let q = (2 * v.abs() + (1 << s)) / (1 << (s + 1));
+    if v < 0 {
+        -q
+    } else {
+        q
+    }
 }
 
-/// The exact test of `sample.rs` on Q (192-bit): covered?
-fn exact_on_q(q: &[[i128; 3]; 3], d: [i64; 3]) -> bool {
+/// The rounded vertex `(P', s)` of (x, y, w): the least s with every |rnd| ≤ 2^15 − 1 (search).
+pub(crate) fn round_vertex(p: [i128; 3]) -> ([i128; 3], u32) {
+    (0..=40)
+        .map(|s| (p.map(|c| round_away(c, s)), s))
+        .find(|(r, _)| r.iter().all(|c| c.abs() < 1 << 15))
+        .expect("some shift fits")
+}
+
+/// The exact test of `sample.rs` on the triangle `q` (192-bit): covered?
+pub(crate) fn exact_on(q: &[[i128; 3]; 3], d: [i64; 3]) -> bool {
     let qn = [cross(q[1], q[2]), cross(q[2], q[0]), cross(q[0], q[1])];
     let mut det = Wide::ZERO;
     for i in 0..3 {
@@ -73,70 +85,51 @@ fn exact_on_q(q: &[[i128; 3]; 3], d: [i64; 3]) -> bool {
         })
 }
 
-/// The stored epsilon bounds |μ_k·Q_k − P_k| for the μ_k of the module docs (independent
-/// exact check: an integer inequality per component).
-fn check_eps(t: &Triangle, pl: &PlanarEdges, eps: [i128; 3], ctx: &str) {
-    let q = q_of(pl);
-    let p = t.v[0].map(|v| [v[0], v[1], v[3]].map(i128::from));
-    let det: i128 = {
-        let [a, b, c] = p;
-        let n0 = cross(b, c);
-        (0..3).map(|i| a[i] * n0[i]).sum()
-    };
-    let sh = pl.shifts();
-    for k in 0..3 {
-        let (pk, qk) = (p[k], q[k]);
-        let (w, qw) = (pk[2], qk[2]);
-        if w != 0 && qw != 0 && (w > 0) == (qw > 0) {
-            assert_eq!(eps[2].min(0), 0);
-            for c in 0..2 {
-                let lhs = (qk[c] * w - pk[c] * qw).abs();
-                assert!(
-                    lhs <= eps[c] * qw.abs(),
-                    "{ctx}: vertex {k} component {c}: |Q·w − p·Q_w| = {lhs} > ε·|Q_w| = {} (ε {})",
-                    eps[c] * qw.abs(),
-                    eps[c]
-                );
-            }
-        } else {
-            let s = sh[(k + 1) % 3] + sh[(k + 2) % 3];
-            for c in 0..3 {
-                let lhs = ((qk[c] << s) - det.abs() * pk[c]).abs();
-                assert!(
-                    lhs <= eps[c] * det.abs(),
-                    "{ctx}: vertex {k} component {c}: |Q·2^s − |det|·p| = {lhs} > ε·|det| (ε {})",
-                    eps[c]
-                );
-            }
-        }
-    }
-}
-
 fn viewports() -> [Viewport; 4] {
     [(1, 1), (1, 2048), (2048, 1), (2048, 2048)].map(|(w, h)| Viewport::new(w, h).unwrap())
 }
 
-/// One triangle on every viewport: ranges, epsilon and coverage at the screen corners and at
-/// seeded positions. Returns (visible setups, covered samples).
-fn check(t: &Triangle, r: &mut Rng, ctx: &str) -> (u64, u64) {
-    let (mut vis, mut cov) = (0, 0);
+/// One triangle on every viewport: rounding, ranges, epsilon and coverage at the screen
+/// corners and at seeded positions. Returns (visible setups, covered samples, culled with
+/// det P' ≠ 0).
+fn check(t: &Triangle, r: &mut Rng, ctx: &str) -> (u64, u64, u64) {
+    let (mut vis, mut cov, mut wrong_cull) = (0, 0, 0);
+    let p = t.v[0].map(|v| [v[0], v[1], v[3]].map(i128::from));
+    let rv = p.map(round_vertex);
+    let q = rv.map(|(v, _)| v);
+    let n = [cross(q[1], q[2]), cross(q[2], q[0]), cross(q[0], q[1])];
+    let det: i128 = (0..3).map(|i| q[0][i] * n[0][i]).sum();
+    let mut want_eps = [0i128; 3];
+    for k in 0..3 {
+        for c in 0..3 {
+            want_eps[c] = want_eps[c].max((p[k][c] - (q[k][c] << rv[k].1)).abs());
+        }
+    }
     for vp in viewports() {
         let s = Setup::unculled_with::<PlanarPrecision>(t, vp);
-        let Some(pl) = s.planar() else { continue };
+        let Some(pl) = s.planar() else {
+            wrong_cull += u64::from(det != 0);
+            continue;
+        };
         vis += 1;
-        assert!(
-            pl.n().iter().flatten().all(|c| c.abs() <= 1 << 30),
-            "{ctx}: |n'| > 2^30"
+        assert_ne!(det, 0, "{ctx}: det P' = 0 but not culled");
+        assert_eq!(
+            pl.vertices().map(|v| v.map(i128::from)),
+            q,
+            "{ctx}: rounded vertices P'"
         );
-        assert!(pl.shifts().iter().all(|&x| x <= 30), "{ctx}: shift > 30");
+        assert_eq!(pl.shifts(), rv.map(|(_, s)| s), "{ctx}: vertex shifts");
+        assert!(pl.shifts().iter().all(|&x| x <= 15), "{ctx}: shift > 15");
+        assert_eq!(pl.n().map(|v| v.map(i128::from)), n, "{ctx}: normals");
+        assert!(
+            n.iter().flatten().all(|c| c.abs() < 1 << 31),
+            "{ctx}: |n| ≥ 2^31"
+        );
+        assert_eq!(pl.sigma() as i128, det.signum(), "{ctx}: σ");
         let e = s.eps();
-        let eps = [e.x()[0], e.x()[1], e.w()];
-        assert!(
-            eps.iter().all(|&x| (0..=PLANAR_EPS_LIMIT).contains(&x)),
-            "{ctx}: ε {eps:?} outside [0, limit]"
-        );
-        check_eps(t, &pl, eps.map(i128::from), ctx);
-        let q = q_of(&pl);
+        let eps = [e.x()[0], e.x()[1], e.w()].map(i128::from);
+        assert_eq!(eps, want_eps, "{ctx}: ε is the largest residual |P − 2^s·P'|");
+        assert!(eps.iter().all(|&x| x <= 1 << 14), "{ctx}: ε {eps:?} > 2^14");
         let (sw, sh) = (u32::from(vp.w) * 256, u32::from(vp.h) * 256);
         for k in 0..12u64 {
             let xs = match k % 3 {
@@ -151,15 +144,11 @@ fn check(t: &Triangle, r: &mut Rng, ctx: &str) -> (u64, u64) {
             };
             let pos = ScreenPos { xs, ys };
             let ev = planar_eval(&s, pos, &mut Ops::default()).expect("inside the viewport");
-            assert!(
-                ev.e.iter().all(|x| x.unsigned_abs() < 1 << 62),
-                "{ctx}: |E'| ≥ 2^62"
-            );
-            let want = exact_on_q(&q, direction(vp, pos));
+            let want = exact_on(&q, direction(vp, pos));
             assert_eq!(
                 ev.hit.is_some(),
                 want,
-                "{ctx}: vp {vp:?} xs {xs} ys {ys}: expected (exact on Q) {want}, observed {:?}",
+                "{ctx}: vp {vp:?} xs {xs} ys {ys}: expected (exact on P') {want}, observed {:?}",
                 ev.hit
             );
             if let Some(h) = ev.hit {
@@ -171,7 +160,7 @@ fn check(t: &Triangle, r: &mut Rng, ctx: &str) -> (u64, u64) {
             }
         }
     }
-    (vis, cov)
+    (vis, cov, wrong_cull)
 }
 
 fn mk(v: [[i32; 4]; 3]) -> Option<Triangle> {
@@ -182,17 +171,13 @@ fn mk(v: [[i32; 4]; 3]) -> Option<Triangle> {
 fn planar_at_the_domain_corners() {
     let seed = seed();
     let mut r = Rng(seed ^ 0xc02e);
-    let (mut vis, mut cov, mut culled, mut limit) = (0u64, 0u64, 0u64, 0u64);
+    let (mut vis, mut cov, mut culled, mut wrong) = (0u64, 0u64, 0u64, 0u64);
     let mut run = |t: Option<Triangle>, r: &mut Rng, what: &str| {
         let Some(t) = t else { return };
         let ctx = format!("{what} (UVT_SEED={seed}) {t:?}");
-        let (v, c) = check(&t, r, &ctx);
+        let (v, c, w) = check(&t, r, &ctx);
         culled += u64::from(v == 0);
-        // Culled with det(P) ≠ 0: det(n') = 0 or ε above the limit (reported separately).
-        let p = t.v[0].map(|v| [v[0], v[1], v[3]].map(i128::from));
-        let n0 = cross(p[1], p[2]);
-        let det: i128 = (0..3).map(|i| p[0][i] * n0[i]).sum();
-        limit += u64::from(v == 0 && det != 0);
+        wrong += w;
         vis += v;
         cov += c;
     };
@@ -217,6 +202,13 @@ fn planar_at_the_domain_corners() {
         [[-LIM, -LIM, 0, LIM], [LIM, LIM - 1, 0, LIM], [0, 0, 0, LIM]],
         [[1, 0, 0, 1], [0, 1, 0, 1], [0, 0, 0, 1]],
         [[LIM, 0, 0, 0], [-LIM, -LIM, 0, LIM], [-LIM, LIM, 0, LIM]],
+        // rounding corners: m = 2^29 − 1 (rounds to 2^15: one more shift), ties at 2^14 and
+        // 2^13 (away from zero), m = 2^15 − 1 and 2^15 (shift 0 and 1)
+        [
+            [LIM - 1, (1 << 14) + (1 << 15), 0, LIM - 1],
+            [-(1 << 13) - (3 << 14), LIM - 1, 0, (1 << 28) + (1 << 13)],
+            [(1 << 15) - 1, -(1 << 15), 5, 1 << 15],
+        ],
         [
             [LIM, LIM, LIM, -LIM],
             [-LIM, -LIM, 0, LIM],
@@ -244,7 +236,8 @@ fn planar_at_the_domain_corners() {
         }
         run(mk(v), &mut r, &format!("corner case {i}"));
     }
-    println!("planar corners: {vis} visible setups, {cov} covered samples; {culled} triangles culled on every viewport, {limit} of them with det(P) ≠ 0 (det(n') = 0 or ε above the limit)");
+    println!("planar corners: {vis} visible setups, {cov} covered samples; {culled} triangles culled on every viewport (det P' = 0)");
+    assert_eq!(wrong, 0, "setups culled with det P' ≠ 0");
     assert!(
         vis > 1000 && cov > 100,
         "too little exercised: {vis} setups, {cov} hits"
