@@ -45,16 +45,19 @@
 //! `(a, b)` is negated too; at a shared vertex all the triangles' planes pass through the one
 //! point `P'`. No exemption.
 //!
-//! **Agreement with the exact test.** `2^s_k·P'_k = P_k + δ_k` with `|δ_k,c| ≤ 2^(s_k − 1) ≤
-//! 2^-16·m_k·(1 + 2^-14)` (s_k ≥ 1; δ = 0 for s_k = 0): each vertex moves by at most 2^-16 of
-//! its largest component (relative). A vertex with `w_k > 0` projects to NDC `x_k/w_k`; the
-//! moved vertex projects within `(|δx| + |x/w|·|δw|)/(w_k − |δw|)` NDC of it, i.e. within
-//! `ρ_k = 2^(s_k−1)·(1 + max(|x_k|, |y_k|)/w_k) / (w_k − 2^(s_k−1))` NDC (per axis, ×E/2 px).
-//! A sample decided differently from the exact test lies in the symmetric difference of the two
-//! projected triangles, hence (all w > 0) within `max_k ρ_k·max(W, H)/2` px of an edge of the
-//! exact triangle; the agreement test checks it against that per-triangle figure (`fit`/`precision` style:
-//! from the nearest w; for crossers and off-screen vertices the figure is reported, not
-//! derived).
+//! **Agreement with the exact test.** `2^s_k·P'_k = P_k + δ_k` with `|δ_k,c| ≤ h_k =
+//! 2^(s_k − 1)` (0 for s_k = 0; `h_k ≤ 2^-16·m_k·(1 + 2^-14)`): each vertex moves by at most
+//! 2^-16 of its largest component. The rounded triangle's edge value (up to its positive factor)
+//! is `(P_{k+1} + δ_{k+1}) × (P_{k+2} + δ_{k+2}) · d`, which differs from the exact `E_k =
+//! n_k·d` by at most `B_k(d) = h_{k+1}·‖P_{k+2} × d‖₁ + h_{k+2}·‖P_{k+1} × d‖₁ +
+//! 2·h_{k+1}·h_{k+2}·‖d‖₁`. If every `|E_k| > B_k` the signs agree edge by edge, so a sample
+//! decided differently has `|E_k| ≤ B_k` for some k — it lies within `B_k / |∇E_k|` px of edge k
+//! (`∇E_k = (2a_k·H, −2b_k·W)` per 1/256 px) — unless the rounding flips the triangle's
+//! orientation (a crosser within the rounding of degenerate). Per primitive (the `fit` style):
+//! a vertex with `w_k > h_k` projects within `ρ_k = h_k·(1 + max(|x_k|, |y_k|)/w_k)/(w_k − h_k)`
+//! NDC of its exact projection — 2^-16·(1 + guard-band ratio) relative to the nearest w; far
+//! off-screen vertices at small w (guard band ≈ 2^13) move up to ¼ NDC. The agreement test
+//! checks `|E_k| ≤ B_k` exactly (integers) on every differing sample, guard-band cases included.
 //!
 //! **Conservative epsilon.** The bounds (`setup.rs` boxes and time span, `HullCull` faces, …)
 //! are conservative for every triangle whose vertices lie within `ε_x` (x), `ε_y` (y), `ε_w`
