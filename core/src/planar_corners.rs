@@ -128,7 +128,10 @@ fn check(t: &Triangle, r: &mut Rng, ctx: &str) -> (u64, u64, u64) {
         assert_eq!(pl.sigma() as i128, det.signum(), "{ctx}: σ");
         let e = s.eps();
         let eps = [e.x()[0], e.x()[1], e.w()].map(i128::from);
-        assert_eq!(eps, want_eps, "{ctx}: ε is the largest residual |P − 2^s·P'|");
+        assert_eq!(
+            eps, want_eps,
+            "{ctx}: ε is the largest residual |P − 2^s·P'|"
+        );
         assert!(eps.iter().all(|&x| x <= 1 << 14), "{ctx}: ε {eps:?} > 2^14");
         let (sw, sh) = (u32::from(vp.w) * 256, u32::from(vp.h) * 256);
         for k in 0..12u64 {
