@@ -101,8 +101,9 @@ pub trait Precision: sealed::Sealed + Copy + Default + core::fmt::Debug + 'stati
     /// bounded test (`bounded.rs`) whose sample-relative offsets are rounded to a grid of `2^s`
     /// (s ∈ [`OFFSET_SHIFT_MIN`]..=[`OFFSET_SHIFT_MAX`]).
     const OFFSET_SHIFT: Option<u32> = None;
-    /// Whether static triangles (class `Static`) take the planar test (`planar.rs`: edge
-    /// normals rounded once per triangle to i32) instead of `OFFSET_SHIFT`'s test. Only a
+    /// Whether static triangles (class `Static`) take the planar test (`planar.rs`: each
+    /// vertex rounded once to 15 bits, then the exact test on the rounded triangle) instead of
+    /// `OFFSET_SHIFT`'s test. Only a
     /// [`Planar`] precision sets it; its other classes run the bounded test.
     const PLANAR: bool = false;
 }
@@ -171,9 +172,10 @@ impl<const POS: u32, const TUV: u32, const BND: u32, const OFF: u32> Precision
 
 /// A precision with the **planar static** test (`planar.rs`, name `planar-POS-TUV-BND-OFF`):
 /// exactly [`Bounded<POS, TUV, BND, OFF>`] for the moving and defocused classes, and for static
-/// triangles (class `Static`, camera-plane crossers included) the planar test — the three edge
-/// normals rounded once per triangle to i32, three 32 × 32 dot products per sample — with a
-/// per-triangle conservative epsilon ([`crate::planar`]). An addition: the default
+/// triangles (class `Static`, camera-plane crossers included) the planar test — each vertex
+/// rounded once to 15 bits (per-vertex shift), the exact i32 edge normals of the rounded
+/// triangle, three 32 × 32 dot products per sample: watertight at edges and vertices — with a
+/// per-triangle conservative epsilon (the rounding residual, [`crate::planar`]). An addition: the default
 /// configuration is unchanged.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Planar<const POS: u32, const TUV: u32, const BND: u32, const OFF: u32>;

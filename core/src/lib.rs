@@ -12,7 +12,7 @@
 //!    strategies in [`strategies`]).
 //! 3. [`sample`] — the exact 5D sample test with a fill rule, and depth; [`bounded`] — the
 //!    bounded (hardware-width) sample test of a [`Bounded`] precision; [`planar`] — the static
-//!    test of a [`Planar`] precision (edge planes rounded once per triangle).
+//!    test of a [`Planar`] precision (vertices rounded once to 15 bits).
 //! 4. [`tile`] — the tile framebuffer, resolve and the render loop.
 //!
 //! Number formats are all in [`formats`]; `core/README.md` has the full width table.

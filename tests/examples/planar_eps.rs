@@ -1,7 +1,7 @@
 //! How many static triangles of the bench scenes (`host/src/scenes.rs`, full and quick size)
 //! get a larger conservative epsilon at the planar static configuration (`planar.rs`,
 //! per triangle) than at the default configuration (`Eps::of`, per viewport), and how many the
-//! planar setup culls for an epsilon above its limit or det(n') = 0 (the exact configuration
+//! planar setup culls because rounding made them degenerate (det P' = 0; the exact configuration
 //! keeps them). Every triangle is made static (its t0 vertices, CoC 0), so every row counts.
 //! Run: `cargo run --release -p uvt-tests --example planar_eps`.
 

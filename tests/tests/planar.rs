@@ -395,7 +395,7 @@ fn agrees_with_exact_within_the_derived_distance() {
                         flipped += 1;
                         continue;
                     };
-                    let nk = n[k].map(|c| c as i128);
+                    let nk = n[k];
                     let (a, b) = (nk[0] as f64, nk[1] as f64);
                     let g = 2.0
                         * ((a * vp.height() as f64).powi(2) + (b * vp.width() as f64).powi(2))
