@@ -421,7 +421,11 @@ mod target {
         o.s("stack_peak_bytes ").n(peak() as u64).s("\n");
         o.s("calibration delay(4000000) insn=").n(cal).s("\n");
         o.s("unit ").s(crate::UNIT.unwrap_or("")).s("\n");
-        o.s("unit_prec ").s(crate::PREC).s("\n");
+        // Only the planar programs name their configuration: the default's program stays as
+        // small as before the planar configuration (a constant condition, compiled out).
+        if crate::UNIT_PLANAR {
+            o.s("unit_prec ").s(crate::PREC).s("\n");
+        }
         o.s("prims ")
             .s(uvt_core::unit::UNIT_NAMES[crate::PRIMS_SEL])
             .s("\n");
