@@ -14,7 +14,7 @@
 //! | `P'_k` | `rnd(P_k, s_k)` per component, `rnd(v, s) = sign(v)·⌊(\|v\| + 2^(s−1))/2^s⌋` (0 for s = 0: exact) | nearest, ties away from 0 | i16, \|.\| ≤ 2^15 − 1 |
 //! | `z'_k` | `rnd(z_k, s_k)` | same | i32, \|.\| ≤ 2^29 |
 //! | `n_k` | `P'_{k+1} × P'_{k+2}` | exact | i32, \|.\| ≤ 2·(2^15 − 1)² < 2^31 |
-//! | `σ` | `sign(det P')`, `det P' = P'_0 · n_0` | exact | i64 (\|det\| < 3·2^45); ±1, 0 culled |
+//! | `σ` | `sign(det P')`, `det P' = P'_0 · n_0` | exact | i64 (\|det\| < 3·2^46); ±1, 0 culled |
 //! | `ε_x, ε_y, ε_w` | `max_k \|c_k − 2^s_k·c'_k\|` per component c | exact | ≤ 2^14 |
 //! | `G`, `f` | depth plane, below | floor | i32 ×3, exponent i32 |
 //!
@@ -22,7 +22,8 @@
 //! triangles has the same `P'` in each. `rnd(m_k) ≤ 2^15 − 1` bounds every component (rnd is
 //! monotone in |v|). `s_k ≤ 15`: `m_k = 2^29` gives s = 15 and `rnd = 2^14`; below, bitlen ≤ 29,
 //! s ≤ 14 before the increment, and after it `m_k < 2^(15+s)` gives `rnd(m_k, s + 1) ≤ 2^14`.
-//! No per-triangle division, no i128 (except the depth plane's `det·256·W·H` < 2^78).
+//! Coverage and ε need no division and no i128 (the depth plane needs `det·256·W·H` < 2^78 in
+//! i128 and three 64-bit divisions).
 //!
 //! **Per sample** (`d` = [`crate::sample::direction`], each \|d_i\| ≤ 2^30 inside a viewport
 //! ≤ 2048, i32): `E_k = n_k · d` (three SMULL/SMLAL, \|E\| < 3·2^61 < 2^63, i64, exact).

@@ -13,8 +13,8 @@ use uvt_core::{
 use uvt_host::scenes::{self, Bench, Row};
 
 fn main() {
-    println!("| scene | size | static triangles visible (exact) | planar ε > default ε | planar culled (exact visible) | largest planar ε (raw) | default ε (raw) |");
-    println!("|---|---|---|---|---|---|---|");
+    println!("| scene | size | static triangles visible (exact) | planar ε > default ε | planar culled (exact visible) | largest planar ε (raw) | default ε (raw) | planar ε_w > 0 | hull faces dropped (a vertex w ≤ ε_w) |");
+    println!("|---|---|---|---|---|---|---|---|---|");
     for quick in [false, true] {
         for bench in [Bench::Game, Bench::Dense] {
             let scene = scenes::bench(bench, Row::Static, quick);
@@ -26,6 +26,7 @@ fn main() {
                 vp,
             );
             let (mut vis, mut larger, mut culled, mut max) = (0u64, 0u64, 0u64, 0i32);
+            let (mut ew, mut nohull) = (0u64, 0u64);
             for t in tris.iter() {
                 let mut v = t.vertices(0);
                 for x in v.iter_mut() {
@@ -42,6 +43,13 @@ fn main() {
                     Outcome::Visible(s) => {
                         let e = s.eps();
                         let m = e.x()[0].max(e.x()[1]).max(e.w());
+                        ew += u64::from(e.w() > 0);
+                        // `HullCull` keeps faces only when every hull point has w > ε_w
+                        // (`strategies::hull::eps_margin`); a static triangle's hull points
+                        // are its vertices.
+                        nohull += u64::from(
+                            e.w() > 0 && t.vertices(0).iter().any(|v| v.bits()[3] <= e.w()),
+                        );
                         max = max.max(m);
                         larger += u64::from(
                             e.x()[0] > dflt.x()[0] || e.x()[1] > dflt.x()[1] || e.w() > dflt.w(),
@@ -51,7 +59,7 @@ fn main() {
                 }
             }
             println!(
-                "| {:?} | {} {}x{} | {vis} | {larger} | {culled} | {max} | x {:?}, w {} |",
+                "| {:?} | {} {}x{} | {vis} | {larger} | {culled} | {max} | x {:?}, w {} | {ew} | {nohull} |",
                 bench,
                 if quick { "quick" } else { "full" },
                 vp.width(),
