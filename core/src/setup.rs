@@ -130,7 +130,7 @@ pub struct Setup {
 
 /// The static-triangle data a setup stores for its sample test, in one slot (so a setup is no
 /// larger than with the exact normals alone): the exact normals (an exact precision), the
-/// planar test's rounded planes (a [`crate::formats::Planar`] precision, `planar.rs`), or
+/// planar test's rounded vertices and exact normals (a [`crate::formats::Planar`] precision, `planar.rs`), or
 /// nothing (every other class or precision).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Stored {
@@ -829,7 +829,7 @@ fn setup_gated<P: Precision, U: Unit>(
             .unwrap_or(0)
     };
     // Without motion ε_w is 0 for every accepted class (`Eps::of`); stating it lets the unit
-    // drop the twelve-corner box code. The planar test's ε_w (camera-plane crossers) is kept.
+    // drop the twelve-corner box code. The planar test's ε_w (the w rounding residual) is kept.
     let eps = Eps {
         x: full.x.map(scale),
         w: if U::MOTION || P::PLANAR {
