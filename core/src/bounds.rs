@@ -136,6 +136,103 @@ pub trait BoundsStrategy {
     ) -> Option<Self::Tile> {
         self.tile(setup, c, tile, ops)
     }
+    /// The run of one row's bounds tiles to visit (counted in `ops.rows`, never in
+    /// `ops.bounds`). `row` is one row of cells of the footprint region: its columns `[x0, x1)`
+    /// and the rows `[y0, y1)` that every cell of it shares (cells are aligned to the `bt` grid
+    /// and clipped to `row`). Contract: a tile outside the span would have been culled by
+    /// [`Self::tile`]. Default: the whole row, not pruned, at 0 ops.
+    fn row_span(
+        &self,
+        _setup: &Setup,
+        _c: &Self::Coeffs,
+        row: PixelRect,
+        _bt: u16,
+        _ops: &mut Ops,
+    ) -> RowSpan {
+        RowSpan::whole(row)
+    }
+    /// Bounds of a tile inside the span `span` of its row: the same value as
+    /// [`Self::tile_unit`] (a strategy may skip there the part of its test that the span has
+    /// already decided). Default: [`Self::tile_unit`].
+    fn span_tile_unit<U: Unit>(
+        &self,
+        setup: &Setup,
+        c: &Self::Coeffs,
+        _span: &RowSpan,
+        tile: PixelRect,
+        ops: &mut Ops,
+    ) -> Option<Self::Tile> {
+        self.tile_unit::<U>(setup, c, tile, ops)
+    }
+}
+
+/// The columns `[x0, x1)` of one row of bounds tiles that a strategy's row step keeps
+/// ([`BoundsStrategy::row_span`]), and whether the strategy's own per-tile cull test was decided
+/// by it (`pruned`). Always inside its row (the constructors clamp); may be empty.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct RowSpan {
+    cols: PixelRect,
+    pruned: bool,
+}
+
+impl RowSpan {
+    /// The whole row, not pruned (the per-tile test runs on every tile).
+    pub fn whole(row: PixelRect) -> RowSpan {
+        RowSpan {
+            cols: row,
+            pruned: false,
+        }
+    }
+    /// Columns `[x0, x1)` of `row` (clamped to it), pruned: every tile inside passes the
+    /// strategy's cull test, every tile of the row outside fails it.
+    pub fn pruned(row: PixelRect, x0: u16, x1: u16) -> RowSpan {
+        let x0 = x0.clamp(row.x0, row.x1);
+        let x1 = x1.clamp(x0, row.x1);
+        RowSpan {
+            cols: PixelRect { x0, x1, ..row },
+            pruned: true,
+        }
+    }
+    /// The kept columns (and the row's rows).
+    pub fn cols(&self) -> PixelRect {
+        self.cols
+    }
+    /// Whether the row step decided the strategy's cull test.
+    pub fn is_pruned(&self) -> bool {
+        self.pruned
+    }
+    /// Whether `cell` (a cell of the row) is visited.
+    #[inline]
+    pub fn admits(&self, cell: &PixelRect) -> bool {
+        cell.x0 >= self.cols.x0 && cell.x1 <= self.cols.x1 && cell.x0 < cell.x1
+    }
+}
+
+/// The renderer's bounds-tile walk of `region` with strategy `b` on unit `U`: row by row
+/// ([`PixelRect::rows`]), the row's span ([`BoundsStrategy::row_span`]), then every cell of the
+/// row in order ([`PixelRect::cells`]: the same cells in the same raster order as
+/// `region.cells(bt)`), handing `f` each cell with its bounds, `None` for a cell outside the span
+/// or culled by [`BoundsStrategy::span_tile_unit`].
+pub fn walk_tiles<B: BoundsStrategy, U: Unit>(
+    b: &B,
+    setup: &Setup,
+    c: &B::Coeffs,
+    region: PixelRect,
+    bt: u16,
+    ops: &mut Ops,
+    mut f: impl FnMut(PixelRect, Option<B::Tile>, &mut Ops),
+) {
+    for row in region.rows(bt) {
+        let span = b.row_span(setup, c, row, bt, ops);
+        for cell in row.cells(bt) {
+            let t = if span.admits(&cell) {
+                b.span_tile_unit::<U>(setup, c, &span, cell, ops)
+            } else {
+                None
+            };
+            f(cell, t, ops);
+        }
+    }
 }
 
 /// The bounding-box scan: every sample of the footprint is tested, whatever its (u, v, t)

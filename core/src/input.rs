@@ -193,6 +193,27 @@ impl PixelRect {
     }
 }
 
+impl PixelRect {
+    /// The rows of the `b`-pixel grid (`b = 0` is taken as 1) that meet this rectangle, clipped
+    /// to it, top to bottom: each is `[x0, x1) × [row start, row end)`; `row.cells(b)` over them
+    /// yields exactly `self.cells(b)`, in the same order.
+    pub fn rows(self, b: u16) -> impl Iterator<Item = PixelRect> {
+        let r = self;
+        PixelRect {
+            x0: 0,
+            x1: 1,
+            ..self
+        }
+        .cells(b)
+        .filter(move |_| !r.is_empty())
+        .map(move |c| PixelRect {
+            x0: r.x0,
+            x1: r.x1,
+            ..c
+        })
+    }
+}
+
 /// `x` rounded down to a multiple of `b ≥ 1` (`x − x mod b`, never below 0).
 #[inline]
 fn align_down(x: u16, b: u16) -> u16 {

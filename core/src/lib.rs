@@ -66,7 +66,7 @@ mod width_corners;
 pub mod widths;
 
 pub use bounded::{bounded_eval, bounded_test, BoundedEval, Eps};
-pub use bounds::{BboxScan, BoundsStrategy, Laine2011, TileBounds, UvtBox};
+pub use bounds::{walk_tiles, BboxScan, BoundsStrategy, Laine2011, RowSpan, TileBounds, UvtBox};
 pub use embedded_graphics_core::pixelcolor::Rgb888;
 pub use error::{Error, Field, SampleField};
 pub use formats::{

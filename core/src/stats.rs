@@ -16,6 +16,9 @@ pub struct Ops {
     /// per-sample predicates of a bounds strategy, run on every sample inside its tile's box
     /// before the sample test (0 for box-only strategies)
     pub predicate: u64,
+    /// per-row span steps of a bounds strategy ([`crate::BoundsStrategy::row_span`]; 0 for
+    /// strategies without one)
+    pub rows: u64,
 }
 
 impl Ops {
@@ -25,6 +28,12 @@ impl Ops {
         self.bounds = self.bounds.saturating_add(o.bounds);
         self.sample = self.sample.saturating_add(o.sample);
         self.predicate = self.predicate.saturating_add(o.predicate);
+        self.rows = self.rows.saturating_add(o.rows);
+    }
+    /// Count `n` row-span operations (saturating).
+    #[inline]
+    pub fn add_rows(&mut self, n: u64) {
+        self.rows = self.rows.saturating_add(n);
     }
     /// Count `n` setup operations (saturating).
     #[inline]
@@ -54,9 +63,10 @@ pub struct Stats {
     pub culled_degenerate: u64,
     /// visible triangles by class: static, motion, defocus, motion+defocus
     pub by_class: [u64; 4],
-    /// bounds tiles whose bounds were computed
+    /// bounds tiles of the footprints walked: those whose bounds were computed and those its
+    /// row's span skipped ([`crate::BoundsStrategy::row_span`])
     pub tiles_visited: u64,
-    /// bounds tiles whose bounds were empty (skipped without a sample test)
+    /// bounds tiles whose bounds were empty or that a row span skipped (no sample test)
     pub tiles_skipped: u64,
     /// samples inside their tile's intervals (= sample tests run)
     pub samples_tested: u64,

@@ -10,13 +10,15 @@
 //! fixed-capacity `heapless::Vec` (no heap; memory is `N` setups plus one tile buffer), then walks
 //! the screen tile by tile; per screen tile, per triangle whose footprint meets it, per bounds
 //! tile (aligned to the bounds-tile grid, clipped to footprint and screen tile) it asks the bounds
-//! strategy for (u, v, t) intervals and runs the sample test on the samples inside them.
+//! strategy for (u, v, t) intervals and runs the sample test on the samples inside them; the
+//! tiles are walked row by row, each row first narrowed by the strategy's row span
+//! ([`crate::bounds::walk_tiles`]).
 
 use embedded_graphics_core::draw_target::DrawTarget;
 use embedded_graphics_core::pixelcolor::{Rgb888, RgbColor};
 use embedded_graphics_core::prelude::{Pixel, Point};
 
-use crate::bounds::{BoundsStrategy, TileBounds};
+use crate::bounds::{walk_tiles, BoundsStrategy, TileBounds};
 use crate::error::Error;
 use crate::formats::{DefaultPrecision, Precision, DEPTH_EMPTY, MAX_VIEWPORT};
 use crate::input::{PixelRect, SamplePattern, Triangle, Viewport, MAX_PATTERN};
@@ -295,31 +297,31 @@ impl<B: BoundsStrategy, const N: usize, P: Precision, U: Unit> Renderer<B, N, P,
             y1: y0.saturating_add(th).min(self.vp.h),
         };
         let b = u16::from(bounds_tile);
-        for (setup, coeffs, color) in self.setups.iter() {
+        let Renderer {
+            bounds,
+            setups,
+            stats,
+            ..
+        } = self;
+        for (setup, coeffs, color) in setups.iter() {
             let region = setup.footprint().intersect(&screen);
             if region.is_empty() {
                 continue;
             }
-            for cell in region.cells(b) {
-                Stats::inc(&mut self.stats.tiles_visited);
-                let bounds = self
-                    .bounds
-                    .tile_unit::<U>(setup, coeffs, cell, &mut self.stats.ops);
-                let Some(uvt) = bounds else {
-                    Stats::inc(&mut self.stats.tiles_skipped);
-                    continue;
+            // Row → span → tiles; a cell outside its row's span counts as visited and skipped,
+            // like a cell the per-tile test culls (the same counters either way).
+            let mut ops = Ops::default();
+            walk_tiles::<B, U>(bounds, setup, coeffs, region, b, &mut ops, |cell, t, _| {
+                Stats::inc(&mut stats.tiles_visited);
+                let Some(uvt) = t else {
+                    Stats::inc(&mut stats.tiles_skipped);
+                    return;
                 };
                 shade_cell::<_, P, U, TW, TH, S>(
-                    setup,
-                    &uvt,
-                    cell,
-                    screen,
-                    pattern,
-                    *color,
-                    fb,
-                    &mut self.stats,
+                    setup, &uvt, cell, screen, pattern, *color, fb, stats,
                 );
-            }
+            });
+            stats.ops.add(&ops);
         }
         Ok(())
     }

@@ -416,7 +416,17 @@ where
                             y1: py - py % bt + bt,
                         }
                         .intersect(&fp);
-                        strat.tile(x, k, cell, &mut ops)
+                        // Row → span → tile, as the renderer walks (ops here are not reported).
+                        let row = PixelRect {
+                            x0: fp.x0,
+                            x1: fp.x1,
+                            ..cell
+                        };
+                        let span = strat.row_span(x, k, row, bt, &mut ops);
+                        if !span.admits(&cell) {
+                            return None;
+                        }
+                        strat.span_tile_unit::<uvt_core::Full>(x, k, &span, cell, &mut ops)
                     });
                     for si in 0..usize::from(pat.spp) {
                         let idx = pat.index(px, py, si);

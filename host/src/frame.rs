@@ -20,7 +20,8 @@ use std::time::{Duration, Instant};
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
-use uvt_core::bounds::{BoundsStrategy, TileBounds};
+use uvt_core::bounds::{BoundsStrategy, RowSpan, TileBounds};
+use uvt_core::unit::Full;
 use uvt_core::{Class, Cull, Ops, Outcome, PixelRect, Triangle, Viewport};
 
 use crate::pattern::Pattern;
@@ -45,8 +46,19 @@ pub trait Pipeline: Sync {
     fn setup(&self, i: usize, ops: &mut Ops) -> SetupOut<Self::Setup>;
     /// footprint of a setup
     fn footprint(&self, s: &Self::Setup) -> PixelRect;
-    /// bounds of one tile
-    fn bounds(&self, s: &Self::Setup, cell: PixelRect, ops: &mut Ops) -> Option<Self::Bounds>;
+    /// the run of one row of bounds tiles to visit (`BoundsStrategy::row_span`; default: the
+    /// whole row, no ops)
+    fn row(&self, _s: &Self::Setup, row: PixelRect, _bt: u16, _ops: &mut Ops) -> RowSpan {
+        RowSpan::whole(row)
+    }
+    /// bounds of one tile inside its row's span
+    fn bounds(
+        &self,
+        s: &Self::Setup,
+        span: &RowSpan,
+        cell: PixelRect,
+        ops: &mut Ops,
+    ) -> Option<Self::Bounds>;
     /// whether sample `idx` of the table lies inside the bounds (box, then the strategy's
     /// per-sample predicate, counted in `ops.predicate`)
     fn inside(&self, b: &Self::Bounds, idx: usize, ops: &mut Ops) -> bool;
@@ -118,8 +130,18 @@ where
     fn footprint(&self, s: &Self::Setup) -> PixelRect {
         s.0.footprint()
     }
-    fn bounds(&self, s: &Self::Setup, cell: PixelRect, ops: &mut Ops) -> Option<Self::Bounds> {
-        self.strat.tile(&s.0, &s.1, cell, ops)
+    fn row(&self, s: &Self::Setup, row: PixelRect, bt: u16, ops: &mut Ops) -> RowSpan {
+        self.strat.row_span(&s.0, &s.1, row, bt, ops)
+    }
+    fn bounds(
+        &self,
+        s: &Self::Setup,
+        span: &RowSpan,
+        cell: PixelRect,
+        ops: &mut Ops,
+    ) -> Option<Self::Bounds> {
+        self.strat
+            .span_tile_unit::<Full>(&s.0, &s.1, span, cell, ops)
     }
     fn inside(&self, b: &Self::Bounds, idx: usize, ops: &mut Ops) -> bool {
         let q = &self.pattern.quant[idx];
@@ -173,7 +195,13 @@ impl Pipeline for Reference<'_> {
     fn footprint(&self, s: &Self::Setup) -> PixelRect {
         s.footprint
     }
-    fn bounds(&self, s: &Self::Setup, cell: PixelRect, _: &mut Ops) -> Option<Self::Bounds> {
+    fn bounds(
+        &self,
+        s: &Self::Setup,
+        _: &RowSpan,
+        cell: PixelRect,
+        _: &mut Ops,
+    ) -> Option<Self::Bounds> {
         reference::bounds::tile(s, cell)
     }
     fn inside(&self, b: &Self::Bounds, idx: usize, _: &mut Ops) -> bool {
@@ -236,6 +264,8 @@ pub struct FrameStats {
     pub ops_sample: u64,
     /// per-sample predicate ops of the bounds strategy
     pub ops_predicate: u64,
+    /// per-row span ops of the bounds strategy
+    pub ops_rows: u64,
 }
 
 impl FrameStats {
@@ -254,6 +284,7 @@ impl FrameStats {
             &mut self.ops_bounds,
             &mut self.ops_sample,
             &mut self.ops_predicate,
+            &mut self.ops_rows,
         ];
         let b = [
             o.triangles,
@@ -269,6 +300,7 @@ impl FrameStats {
             o.ops_bounds,
             o.ops_sample,
             o.ops_predicate,
+            o.ops_rows,
         ];
         for (x, y) in a.into_iter().zip(b) {
             *x += y;
@@ -282,6 +314,7 @@ impl FrameStats {
         self.ops_bounds += o.bounds;
         self.ops_sample += o.sample;
         self.ops_predicate += o.predicate;
+        self.ops_rows += o.rows;
     }
     /// STE of the pipeline's bounds (covered / tested), in [0, 1].
     pub fn ste(&self) -> f64 {
@@ -499,9 +532,31 @@ fn band<P: Pipeline>(
         };
         let setup = &setup;
         let col = o.colors[i as usize];
+        // Row → span → tiles (`uvt_core::walk_tiles`): the same cells in the same order as
+        // `region.cells(bt)`; a cell outside its row's span counts as visited and skipped.
+        // A row starts where a cell's y0 changes; its span is computed once, at its first cell.
+        let mut row_span: Option<RowSpan> = None;
         for cell in region.cells(bt) {
+            let span = match row_span {
+                Some(sp) if sp.cols().y0 == cell.y0 => sp,
+                _ => {
+                    let row = PixelRect {
+                        x0: region.x0,
+                        x1: region.x1,
+                        ..cell
+                    };
+                    let sp = p.row(setup, row, bt, &mut ops);
+                    row_span = Some(sp);
+                    sp
+                }
+            };
             st.tiles_visited += 1;
-            let Some(bounds) = p.bounds(setup, cell, &mut ops) else {
+            let bounds = if span.admits(&cell) {
+                p.bounds(setup, &span, cell, &mut ops)
+            } else {
+                None
+            };
+            let Some(bounds) = bounds else {
                 st.tiles_skipped += 1;
                 continue;
             };

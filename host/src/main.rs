@@ -78,8 +78,9 @@ enum Cmd {
         #[arg(long)]
         no_limit: bool,
         /// the axis-aligned limit's two efforts, low and high, each dense points per pixel and
-        /// face-search proposals per face: `D0:S0,D1:S1` (default 16:32,64:128); the search runs
-        /// in (u, v, t) with a 2D clip per point (host/src/oracle.rs)
+        /// face-search proposals per face: `D0:S0,D1:S1` (default 16:16,64:64); the search runs
+        /// in (u, v, t) with a 2D clip per point, seeds on the tile's centre line and line pushes
+        /// of every face (host/src/oracle.rs)
         #[arg(long)]
         limit_effort: Option<String>,
         /// the core's configuration: default, exact-16-16-16, bounded-16-16-16-20,

@@ -7,22 +7,13 @@
 //! uvt-tests --example bounded_margin [cases]`.
 
 use uvt_core::{Bounded, Laine2011, Precision, SamplePattern, Viewport};
-use uvt_tests::kinds::{make, Kind, NP};
+use uvt_tests::kinds::{make, ALL_KINDS, NP};
 use uvt_tests::*;
 
 const SCALES: [(u32, u32); 6] = [(1, 1), (1, 2), (1, 4), (1, 8), (1, 16), (0, 1)];
 
 fn sweep<P: Precision>(cases: u32, seed: u64) {
-    let kinds = [
-        Kind::Static,
-        Kind::Moving,
-        Kind::Defocus,
-        Kind::Both,
-        Kind::Crossing,
-        Kind::Extreme,
-        Kind::Sliver,
-        Kind::WZero,
-    ];
+    let kinds = ALL_KINDS;
     let vp = Viewport::new(24, 20).unwrap();
     let mut bad = [[0u32; SCALES.len()]; 8];
     let mut rng = Rng(seed);

@@ -26,6 +26,18 @@ pub enum Kind {
     WZero,
 }
 
+/// Every kind, in declaration order (the conservativeness tests pick from it by index).
+pub const ALL_KINDS: [Kind; 8] = [
+    Kind::Static,
+    Kind::Moving,
+    Kind::Defocus,
+    Kind::Both,
+    Kind::Crossing,
+    Kind::Extreme,
+    Kind::Sliver,
+    Kind::WZero,
+];
+
 /// Parameters per triangle.
 pub const NP: usize = 48;
 

@@ -7,18 +7,13 @@
 use proptest::prelude::*;
 use uvt_core::strategies::{best, hull, hull_lens, Hyper, LensTime};
 use uvt_core::{BboxScan, Laine2011, SamplePattern, Viewport};
-use uvt_tests::kinds::{make, Kind, NP};
+use uvt_tests::kinds::{make, Kind, ALL_KINDS, NP};
 use uvt_tests::*;
 
 fn check_all(kind: Kind, p: &[f64; NP], pat_seed: u64) -> Result<u64, String> {
     let t = make(kind, p);
     let vp = Viewport::new(24, 20).unwrap();
-    let mut rng = Rng(pat_seed);
-    let samples = if pat_seed % 3 == 0 {
-        grid_samples(&mut rng, 2, 8)
-    } else {
-        random_samples(&mut rng, 2, 8)
-    };
+    let samples = mixed_samples(pat_seed);
     let pat = SamplePattern::new(2, 8, &samples).unwrap();
     let mut covered = 0;
     for bt in [1u16, 2, 4, 8] {
@@ -70,12 +65,7 @@ fn check_bounded(kind: Kind, p: &[f64; NP], pat_seed: u64) -> Result<u64, String
     use uvt_core::Bounded;
     let t = make(kind, p);
     let vp = Viewport::new(24, 20).unwrap();
-    let mut rng = Rng(pat_seed);
-    let samples = if pat_seed % 3 == 0 {
-        grid_samples(&mut rng, 2, 8)
-    } else {
-        random_samples(&mut rng, 2, 8)
-    };
+    let samples = mixed_samples(pat_seed);
     let pat = SamplePattern::new(2, 8, &samples).unwrap();
     let mut covered = 0;
     macro_rules! at {
@@ -142,17 +132,6 @@ kind_test!(conservative_camera_plane_crossing, Kind::Crossing);
 kind_test!(conservative_domain_extremes, Kind::Extreme);
 kind_test!(conservative_slivers_and_flips, Kind::Sliver);
 kind_test!(conservative_w_zero_vertex, Kind::WZero);
-
-const ALL_KINDS: [Kind; 8] = [
-    Kind::Static,
-    Kind::Moving,
-    Kind::Defocus,
-    Kind::Both,
-    Kind::Crossing,
-    Kind::Extreme,
-    Kind::Sliver,
-    Kind::WZero,
-];
 
 proptest! {
     #![proptest_config(ProptestConfig { cases: cases(64, 1500), failure_persistence: None, ..ProptestConfig::default() })]

@@ -13,19 +13,8 @@ use uvt_core::{
     setup_with, Bounded, BoundsStrategy, Exact, Laine2011, Outcome, PixelRect, SamplePattern,
     TileBounds, Triangle, Vertex, Viewport,
 };
-use uvt_tests::kinds::{make, Kind, NP};
+use uvt_tests::kinds::{make, Kind, ALL_KINDS, NP};
 use uvt_tests::*;
-
-const ALL_KINDS: [Kind; 8] = [
-    Kind::Static,
-    Kind::Moving,
-    Kind::Defocus,
-    Kind::Both,
-    Kind::Crossing,
-    Kind::Extreme,
-    Kind::Sliver,
-    Kind::WZero,
-];
 
 /// The triangle without its CoC: motion-only (or static) whatever the kind.
 fn no_coc(t: &Triangle) -> Triangle {
@@ -66,19 +55,10 @@ fn check_at<P: uvt_core::Precision>(
     Ok((covered, active::<P>(t, vp)))
 }
 
-fn pattern_samples(pat_seed: u64) -> Vec<uvt_core::Sample> {
-    let mut rng = Rng(pat_seed);
-    if pat_seed % 3 == 0 {
-        grid_samples(&mut rng, 2, 8)
-    } else {
-        random_samples(&mut rng, 2, 8)
-    }
-}
-
 /// One case: the motion-only version of the kind's triangle at the exact and the bounded
 /// precisions, and the unmodified triangle at the default; (covered, edge-bound-active count).
 fn check_case(kind: Kind, p: &[f64; NP], pat_seed: u64) -> Result<(u64, u64), String> {
-    let samples = pattern_samples(pat_seed);
+    let samples = mixed_samples(pat_seed);
     let pat = SamplePattern::new(2, 8, &samples).unwrap();
     let m = no_coc(&make(kind, p));
     let mut covered = 0;

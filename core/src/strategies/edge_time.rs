@@ -63,7 +63,7 @@
     clippy::cast_possible_wrap
 )]
 
-use crate::bounds::{BoundsStrategy, TileBounds, UvtBox};
+use crate::bounds::{BoundsStrategy, RowSpan, TileBounds, UvtBox};
 use crate::formats::floor_div;
 use crate::input::{PixelRect, Triangle, Viewport, C, W, X, Y};
 use crate::interval::{solve_le, Interval};
@@ -355,12 +355,53 @@ impl<S: BoundsStrategy> BoundsStrategy for EdgeTime<S> {
         tile: PixelRect,
         ops: &mut Ops,
     ) -> Option<Self::Tile> {
+        self.edge_tile::<U>(setup, c, tile, ops, |ops| {
+            self.inner.tile_unit::<U>(setup, &c.inner, tile, ops)
+        })
+    }
+    /// The inner strategy's span (the edge bound has no row step).
+    fn row_span(
+        &self,
+        setup: &Setup,
+        c: &Self::Coeffs,
+        row: PixelRect,
+        bt: u16,
+        ops: &mut Ops,
+    ) -> RowSpan {
+        self.inner.row_span(setup, &c.inner, row, bt, ops)
+    }
+    /// As [`Self::tile_unit`], with the inner strategy's span tile.
+    fn span_tile_unit<U: Unit>(
+        &self,
+        setup: &Setup,
+        c: &Self::Coeffs,
+        span: &RowSpan,
+        tile: PixelRect,
+        ops: &mut Ops,
+    ) -> Option<Self::Tile> {
+        self.edge_tile::<U>(setup, c, tile, ops, |ops| {
+            self.inner
+                .span_tile_unit::<U>(setup, &c.inner, span, tile, ops)
+        })
+    }
+}
+
+impl<S: BoundsStrategy> EdgeTime<S> {
+    /// The edge interval, then the inner bounds from `inner`, met.
+    fn edge_tile<U: Unit>(
+        &self,
+        setup: &Setup,
+        c: &EdgeCoeffs<S::Coeffs>,
+        tile: PixelRect,
+        ops: &mut Ops,
+        inner: impl FnOnce(&mut Ops) -> Option<S::Tile>,
+    ) -> Option<EdgeTile<S::Tile>> {
         // The edge interval first: a tile it culls costs no inner bounds.
         let t = match (U::MOTION, c.edge.as_ref()) {
             (true, Some(e)) => Some(e.t(tile, ops)?.round_out(setup.prec.tuv())),
             _ => None,
         };
-        let inner = self.inner.tile_unit::<U>(setup, &c.inner, tile, ops)?;
+        let inner = inner(ops)?;
         let mut b = *inner.uvt_box();
         if let Some(t) = t {
             ops.add_bounds(2);

@@ -63,6 +63,13 @@
 //! footprint, so the decisions are unchanged. The kept faces are tested in a greedy order (the
 //! face culling most of an up to 8 × 8 pixel grid over the footprint not culled by an earlier
 //! one first), stopping at the first that culls; the order changes only the op count.
+//!
+//! **Row spans** ([`HullTiles::span`], [`HullCull`]'s `row_span`). In one row of tiles ye is
+//! fixed, so each face keeps the cells with `a'·xe + r ≥ 0` (r = b'·ye + c'): a run of
+//! consecutive cells found by one exact floor division per face and row. Their intersection is
+//! the row's span; inside it the face test is skipped and outside no tile is visited — exactly
+//! the tiles the per-tile test keeps (clipped first and last cells included; proof at
+//! [`TileFace`]'s `span`). Counted in `ops.rows`.
 #![warn(
     clippy::arithmetic_side_effects,
     clippy::indexing_slicing,
@@ -71,8 +78,9 @@
     clippy::cast_possible_wrap
 )]
 
-use crate::bounds::BoundsStrategy;
+use crate::bounds::{BoundsStrategy, RowSpan};
 use crate::formats::SUBPIXEL_BITS;
+use crate::unit::Unit;
 
 /// One pixel in sub-pixel units, 2^SUBPIXEL_BITS = 2^8 (a constant shift, checked by the compiler).
 const SUBPIXEL_ONE: i128 = 1i128 << SUBPIXEL_BITS;
@@ -408,6 +416,58 @@ impl TileFace {
             .and_then(|x| x.checked_add(self.c));
         matches!(v, Some(m) if m < 0)
     }
+
+    /// Whether the coefficients lie in the documented ranges (|a'|, |b'| < 2^81,
+    /// |c'| < 2^125): then `a'·xe + b'·ye + c'` with xe, ye < 2^16 is < 2^126 and nothing
+    /// overflows in [`Self::culls`] or [`Self::span`].
+    fn in_range(&self) -> bool {
+        let lim = |v: i128, bits: u32| v.unsigned_abs() < 1u128.checked_shl(bits).unwrap_or(0);
+        lim(self.a, 81) && lim(self.b, 81) && lim(self.c, 125)
+    }
+
+    /// The pixel columns `[lo, hi)` (unclamped; the caller clamps to the row) of the cells of
+    /// `row` that this face keeps, i.e. whose stored end `xe` has `a'·xe + r ≥ 0` with
+    /// `r = b'·ye + c'` (ye: the row's shared y end). Cells of the row are aligned to the
+    /// `b`-grid and clipped to `[x0, x1)`: cell k has `x0 = max(k·b, row.x0)`,
+    /// `x1 = min((k+1)·b, row.x1)`.
+    /// - `a' > 0` (xe = the cell's x1): kept iff `x1 ≥ X = ⌈−r/a'⌉ = −⌊r/a'⌋` — if `X > row.x1`
+    ///   no cell (the clipped last cell ends at row.x1 < X); else the cells with
+    ///   `(k+1)·b ≥ X`, i.e. from `k = ⌊(X−1)/b⌋`, columns from `b·⌊(X−1)/b⌋`.
+    /// - `a' < 0` (xe = the cell's x0): kept iff `x0 ≤ Y = ⌊r/(−a')⌋` — if `Y < row.x0` no cell
+    ///   (the clipped first cell starts at row.x0 > Y); else the cells with `k·b ≤ Y`, columns
+    ///   up to `b·⌊Y/b⌋ + b`.
+    /// - `a' = 0`: all cells if `r ≥ 0`, else none.
+    ///
+    /// The divisions are exact integer floor divisions (`div_euclid`, divisor > 0): the
+    /// dividend `r` is < 2^126 in magnitude (b'·ye < 2^97, c' < 2^125), the divisor |a'| <
+    /// 2^81 (an up to 127-bit by 82-bit signed division; only a quotient within the row,
+    /// < 2^12 with the 2048-pixel viewport, matters, anything beyond saturates). `None` on
+    /// overflow (outside the documented ranges; [`HullTiles::span`] then falls back).
+    fn span(&self, row: PixelRect, b: i128, ops: &mut Ops) -> Option<(i128, i128)> {
+        let ye = i128::from(if self.hi_y { row.y1 } else { row.y0 });
+        let r = self.b.checked_mul(ye)?.checked_add(self.c)?;
+        let (x0, x1) = (i128::from(row.x0), i128::from(row.x1));
+        if self.a == 0 {
+            ops.add_rows(3);
+            return Some(if r >= 0 { (x0, x1) } else { (x1, x0) });
+        }
+        ops.add_rows(8);
+        if self.a > 0 {
+            let x = r.checked_div_euclid(self.a)?.checked_neg()?;
+            if x > x1 {
+                return Some((x1, x0));
+            }
+            let lo = x.checked_sub(1)?.checked_div_euclid(b)?.checked_mul(b)?;
+            Some((lo, x1))
+        } else {
+            let y = r.checked_div_euclid(self.a.checked_neg()?)?;
+            if y < x0 {
+                return Some((x1, x0));
+            }
+            let hi = y.checked_div_euclid(b)?.checked_mul(b)?.checked_add(b)?;
+            Some((x0, hi))
+        }
+    }
 }
 
 /// Per-triangle faces in per-tile form, kept only if they can cull a tile of the footprint, and
@@ -416,6 +476,9 @@ impl TileFace {
 pub struct HullTiles {
     faces: [TileFace; MAX_FACES],
     len: usize,
+    /// every kept face lies in the documented ranges (|a'|, |b'| < 2^81, |c'| < 2^125), so no
+    /// per-tile or per-row evaluation overflows and row spans are exact ([`HullTiles::span`])
+    spans: bool,
 }
 
 impl HullTiles {
@@ -429,6 +492,7 @@ impl HullTiles {
             hi_y: false,
         }; MAX_FACES],
         len: 0,
+        spans: true,
     };
 
     /// The kept faces, in test order.
@@ -494,6 +558,7 @@ impl HullTiles {
                 }
             }
             if let (Some(slot), Some(m)) = (out.faces.get_mut(n), masks.get_mut(n)) {
+                out.spans &= t.in_range();
                 *slot = t;
                 *m = mask;
                 n = n.saturating_add(1);
@@ -528,7 +593,51 @@ impl HullTiles {
             f.culls(tile)
         })
     }
+
+    /// The columns `[x0, x1)` of `row` (one row of `bt`-grid cells clipped to the footprint)
+    /// whose cells no face culls, or `None` when the span is not used on this row (then every
+    /// tile is tested by [`Self::culls`]). Exactly the cells [`Self::culls`] keeps: see
+    /// [`TileFace::span`] per face; the kept set of each face is a run of consecutive cells (a
+    /// prefix, a suffix, all or none), so their intersection is the run between the largest
+    /// start and the least end, clamped to the row.
+    ///
+    /// Used when there is a face, the kept faces lie in the documented ranges, and the row has
+    /// at least [`SPAN_MIN_CELLS`] cells (1 op, the width compare). Ops, in `ops.rows`, each
+    /// multiply, add, negation, division, compare, min and max one op: per face 8 (mul and add
+    /// for r, the floor division, the negation of the quotient (a' > 0) or of the divisor
+    /// (a' < 0), the clipped-end compare, the `−1` or `+bt` of the alignment, the alignment to
+    /// the `bt` grid (a mask: bt is a power of two) and the max/min with the running span),
+    /// 3 for an `a' = 0` face (mul, add, compare), and 3 per row (the clamp to the row, min
+    /// and max, and the empty test).
+    pub fn span(&self, row: PixelRect, bt: u16, ops: &mut Ops) -> Option<(u16, u16)> {
+        if self.len == 0 || !self.spans {
+            return None;
+        }
+        ops.add_rows(1);
+        let b = bt.max(1);
+        // Cells of the row: from align_down(x0) in steps of b up to x1 (x1 > x0 ≥ 0).
+        let first = row.x0.checked_sub(row.x0.checked_rem(b)?)?;
+        let n = row.x1.saturating_sub(first).div_ceil(b);
+        if n < SPAN_MIN_CELLS {
+            return None;
+        }
+        let (mut lo, mut hi) = (i128::from(row.x0), i128::from(row.x1));
+        for f in self.faces() {
+            let (l, h) = f.span(row, i128::from(b), ops)?;
+            lo = lo.max(l);
+            hi = hi.min(h);
+        }
+        ops.add_rows(3);
+        let lo = lo.clamp(i128::from(row.x0), i128::from(row.x1));
+        let hi = hi.clamp(lo, i128::from(row.x1));
+        Some((u16::try_from(lo).ok()?, u16::try_from(hi).ok()?))
+    }
 }
+
+/// Least number of bounds tiles in a row for [`HullTiles::span`] to be used: on a one-tile row
+/// the span costs every face (7 ops each) where the per-tile test stops at the first face that
+/// culls (5 ops each), so such rows keep the per-tile test.
+pub const SPAN_MIN_CELLS: u16 = 2;
 
 /// Tile culling by the swept cone's faces, in front of strategy `S`.
 #[derive(Clone, Copy, Debug, Default)]
@@ -577,5 +686,38 @@ impl<S: BoundsStrategy> BoundsStrategy for HullCull<S> {
             return None;
         }
         self.inner.tile(setup, &c.1, tile, ops)
+    }
+    /// The run of the row's cells no face culls ([`HullTiles::span`]), pruned; the whole row,
+    /// not pruned, where spans are not used. The inner strategy's own span is not consulted
+    /// (its tiles run through `tile`, as in [`Self::tile`]).
+    fn row_span(
+        &self,
+        _setup: &Setup,
+        c: &Self::Coeffs,
+        row: PixelRect,
+        bt: u16,
+        ops: &mut Ops,
+    ) -> RowSpan {
+        match c.0.span(row, bt, ops) {
+            Some((x0, x1)) => RowSpan::pruned(row, x0, x1),
+            None => RowSpan::whole(row),
+        }
+    }
+    /// Inside a pruned span no face culls the tile: only the inner bounds (what [`Self::tile`]
+    /// returns for a tile no face culls); else [`Self::tile`] itself (as `tile_unit`, which is
+    /// `tile` for this strategy).
+    fn span_tile_unit<U: Unit>(
+        &self,
+        setup: &Setup,
+        c: &Self::Coeffs,
+        span: &RowSpan,
+        tile: PixelRect,
+        ops: &mut Ops,
+    ) -> Option<S::Tile> {
+        if span.is_pruned() {
+            self.inner.tile(setup, &c.1, tile, ops)
+        } else {
+            self.tile_unit::<U>(setup, c, tile, ops)
+        }
     }
 }

@@ -85,6 +85,29 @@ impl<'a> TileCover<'a> {
         }
     }
 
+    /// The lens point (u, v raw, unclamped) at which the triangle's homogeneous vertex centroid
+    /// projects to the tile's centre at time `t` (raw), if the summed circle of confusion is not
+    /// zero there: the centre line of the tile's covered (u, v, t) set, a seed for the search.
+    /// With the vertices (x_i, y_i, w_i, c_i) linear in t, the centroid's screen position at lens
+    /// (u, v) is ((X + uC)/W, (Y + vC)/W) (sums over the vertices), so u = (n_x·W − X)/C and v =
+    /// (n_y·W − Y)/C with (n_x, n_y) the tile centre in NDC. Only chooses where to look (f64):
+    /// every point kept is confirmed by the core.
+    pub fn centre_line(&self, t: i32) -> Option<[f64; 2]> {
+        let t = f64::from(t) / 65536.0;
+        let sum = |f: usize| (0..3).map(|i| self.q[i][f] + t * self.d[i][f]).sum::<f64>();
+        let (x, y, w, c) = (sum(0), sum(1), sum(2), sum(3));
+        if c.abs() < 1e-9 || !c.is_finite() {
+            return None;
+        }
+        let (vw, vh) = self.vp;
+        // Tile centre in px (the grid range is inclusive, 1/256 px) and in NDC.
+        let cx = (self.g[0][0] + self.g[0][1] + 1) as f64 / 512.0;
+        let cy = (self.g[1][0] + self.g[1][1] + 1) as f64 / 512.0;
+        let (nx, ny) = (2.0 * cx / vw - 1.0, 1.0 - 2.0 * cy / vh);
+        let uv = [(nx * w - x) / c * 65536.0, (ny * w - y) / c * 65536.0];
+        uv.iter().all(|z| z.is_finite()).then_some(uv)
+    }
+
     /// The three edge half-planes `a·X + b·Y + c > 0` (X, Y in 1/256 px), normalised so
     /// `max(|a|, |b|) = 1/256` (values in px); `None` if the triangle is degenerate at (u, v, t).
     fn edges(&self, uvt: [i32; 3]) -> Option<[[f64; 3]; 3]> {

@@ -251,20 +251,34 @@ impl BoxSearch {
                 };
             }
         }
-        self.bisect(p, k, end, covered);
+        self.bisect(p, k, end, 1, covered);
     }
 
-    /// Bisect along axis `k` from covered `p` toward `target`; the farthest covered point found
-    /// is added to the box.
-    fn bisect(&mut self, p: P5, k: usize, target: i32, covered: &mut impl FnMut(&P5) -> bool) {
+    /// Bisect along axis `k` from covered `p` toward `target` until the covered and uncovered
+    /// ends are at most `tol` apart; every covered point found is added to the box, and the
+    /// farthest one is returned (`p` itself if none beyond it is found). It finds *a* boundary
+    /// of the covered set on that line (the set need not be an interval there), so the result
+    /// is covered but not necessarily the farthest covered point of the line.
+    fn bisect(
+        &mut self,
+        p: P5,
+        k: usize,
+        target: i32,
+        tol: i32,
+        covered: &mut impl FnMut(&P5) -> bool,
+    ) -> P5 {
         let mut far = p;
         far[k] = target;
+        if far == p {
+            return p;
+        }
         if covered(&far) {
             self.grow(far);
-            return;
+            return far;
         }
         let (mut inside, mut out) = (p[k], target);
-        while (out - inside).abs() > 1 {
+        // |out − inside| ≤ 2^17 + 1 (raw u, v, t) or 2^25 (x, y in 1/256 px): no overflow.
+        while (out - inside).abs() > tol.max(1) {
             let mid = inside + (out - inside) / 2;
             let mut q = p;
             q[k] = mid;
@@ -273,6 +287,76 @@ impl BoxSearch {
                 inside = mid;
             } else {
                 out = mid;
+            }
+        }
+        let mut q = p;
+        q[k] = inside;
+        q
+    }
+
+    /// Test the points `pts` (clamped into the domain; inactive dimensions set to their `lo`)
+    /// and add the covered ones to the box: seeds from outside knowledge of the set (the
+    /// oracle's centre line of the tile's coverage), which only choose where to look.
+    pub fn seed(
+        &mut self,
+        pts: impl IntoIterator<Item = P5>,
+        covered: &mut impl FnMut(&P5) -> bool,
+    ) {
+        for p in pts {
+            let q: P5 = core::array::from_fn(|d| {
+                if self.active[d] {
+                    p[d].clamp(self.lo[d], self.hi[d])
+                } else {
+                    self.lo[d]
+                }
+            });
+            if covered(&q) {
+                self.grow(q);
+            }
+        }
+    }
+
+    /// Push each face of dimensions 2..5 by line searches from its covered point: for every
+    /// other active dimension `j` and each end of the domain in `j`, bisect along `j` toward
+    /// that end (to 1/256 of the domain), then along the face's axis toward the domain's end
+    /// (to the grid step); the farthest point reached becomes the face's point. The extremes of
+    /// a thin slanted tube (a small triangle moving while defocused) lie where the tube leaves
+    /// the domain through another dimension's end, a wedge tip that these two moves reach
+    /// directly and a random walk only slowly.
+    pub fn push_lines(&mut self, covered: &mut impl FnMut(&P5) -> bool) {
+        for k in 2..5 {
+            for side in 0..2 {
+                self.push_line(k, side, covered);
+            }
+        }
+    }
+
+    fn push_line(&mut self, k: usize, side: usize, covered: &mut impl FnMut(&P5) -> bool) {
+        let Some((_, ext)) = self.found else {
+            return;
+        };
+        let (end, dir) = if side == 0 {
+            (self.lo[k], -1)
+        } else {
+            (self.hi[k], 1)
+        };
+        let mut p = ext[k][side];
+        let active = self.active;
+        let tol_k = (self.hi[k] - self.lo[k]) / 4096;
+        for j in (0..5).filter(|&j| j != k && active[j]) {
+            for target in [self.lo[j], self.hi[j]] {
+                if p[k] == end {
+                    return;
+                }
+                let tol = (self.hi[j] - self.lo[j]) / 256;
+                let q = self.bisect(p, j, target, tol, covered);
+                if q == p {
+                    continue;
+                }
+                let r = self.bisect(q, k, end, tol_k, covered);
+                if dir * (r[k] - p[k]) > 0 {
+                    p = r;
+                }
             }
         }
     }
