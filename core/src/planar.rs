@@ -12,7 +12,7 @@
 //! | `m_k` | `max(\|x_k\|, \|y_k\|, \|w_k\|)` | exact | u32, ≤ 2^29 |
 //! | `s_k` | `max(0, bitlen(m_k) − 15)`, plus 1 if `rnd(m_k, s) > 2^15 − 1` | — | 0..=15 |
 //! | `P'_k` | `rnd(P_k, s_k)` per component, `rnd(v, s) = sign(v)·⌊(\|v\| + 2^(s−1))/2^s⌋` (0 for s = 0: exact) | nearest, ties away from 0 | i16, \|.\| ≤ 2^15 − 1 |
-//! | `z'_k` | `rnd(z_k, s_k)` | same | i32, \|.\| ≤ 2^29 |
+//! | `z_k` | kept unrounded (the depth plane scales it by `2^(S − s_k)`, `S = max s_k`) | exact | i32, \|.\| ≤ 2^29 |
 //! | `n_k` | `P'_{k+1} × P'_{k+2}` | exact | i32, \|.\| ≤ 2·(2^15 − 1)² < 2^31 |
 //! | `σ` | `sign(det P')`, `det P' = P'_0 · n_0` | exact | i64 (\|det\| < 3·2^46); ±1, 0 culled |
 //! | `ε_x, ε_y, ε_w` | `max_k \|c_k − 2^s_k·c'_k\|` per component c | exact | ≤ 2^14 |
@@ -74,20 +74,36 @@
 //!
 //! **Depth** (hits only), same format, saturation and direction as the bounded test (I8F24,
 //! floor, saturated to [`DEPTH_NEAR`, `DEPTH_FAR`]): the depth of the exact test on the
-//! rounded triangle `2^s_k·P'_k` with depths `2^s_k·z'_k` (`|2^s_k·z'_k − z_k| ≤ 2^(s_k−1)`).
-//! The hit of ray `d` has `z/w = Σ_k z'_k·E_k / (det P'·d_w)` (the factors 2^s_k cancel), so
-//! `z/w = Zv·d / D` with `Zv = Σ_k z'_k·n_k` (i64, \|.\| < 3·2^60) and `D = det P'·256·W·H`
-//! (i128, < 2^78): affine in the sample, no division per sample. Setup (D oriented > 0 with
-//! Zv): `D32 = ⌊D / 2^rd⌋` with `rd = bitlen(D) − 32` (a left shift, exact, when negative:
-//! D ≥ 256), so D32 ∈ [2^31, 2^32); `Z62_i = ⌊Zv_i / 2^rz⌋` with `rz = bitlen(max|Zv_i|) − 62`
-//! (≤ 0: an exact left shift), |Z62| < 2^62; `G_i = ⌊Z62_i / D32⌋` ∈ [−2^31, 2^31) (i32; three
-//! 64-bit divisions per triangle), `f = rd − rz − 24`. Per hit: `acc = Σ G_i·d_i` (\|.\| <
-//! 3·2^61, i64 exact), depth = `⌊acc / 2^f⌋` (arithmetic shift; `f ≥ 63` gives 0 or −1) or
-//! `acc·2^(−f)` saturated for `f < 0`, then saturated to the depth range (`Zv = 0`: depth 0).
-//! Error against the exact z/w of the rounded triangle: `(3·2^30 + Σ|G_i·d_i|·2^-30)/2^f + 1`
-//! raw (floor included; checked per hit by the tests). Against the exact depth of the
-//! unrounded triangle the vertices' and z's relative 2^-16 perturbations add a geometry-dependent
-//! term (measured and reported by the agreement test). Depth never influences coverage.
+//! rounded triangle `Q_k = 2^s_k·P'_k` with the **unrounded** depths `z_k`. The hit of ray `d`
+//! is `Σ_k α_k·Q_k = d` with `α_k = E_k(Q)/det Q = 2^(−s_k)·E_k/det P'` (`E_k(Q) =
+//! 2^(s_{k+1}+s_{k+2})·E_k`, `det Q = 2^(s_0+s_1+s_2)·det P'`), so `z/w = Σ_k z_k·α_k / d_w =
+//! Zv·d / D` with `S = max s_k`, `Zv = Σ_k z_k·2^(S − s_k)·n_k` (i128, \|.\| < 2^77) and `D =
+//! det P'·2^S·256·W·H` (i128, < 2^93): affine in the sample, no division per sample. (Until
+//! this version z was rounded with its vertex's shift, `z'_k = rnd(z_k, s_k)`, an extra error
+//! of up to `Σ_k |α_k|·2^(s_k−1)/d_w` — up to ~0.06 in z/w on the tests' triangles.) Setup (D
+//! oriented > 0 with Zv): `D32 = ⌊D / 2^rd⌋` with `rd = bitlen(D) − 32` (a left shift, exact,
+//! when negative: D ≥ 256), so D32 ∈ [2^31, 2^32); `Z62_i = ⌊Zv_i / 2^rz⌋` with `rz =
+//! bitlen(max|Zv_i|) − 62`, |Z62| < 2^62; `G_i = ⌊Z62_i / D32⌋` ∈ [−2^31, 2^31) (i32; three
+//! 64-bit divisions per triangle), `f = rd − rz − 24` ∈ [−62, 98]. Per hit: `acc = Σ G_i·d_i`
+//! (\|.\| < 3·2^61, i64 exact), depth = `⌊acc / 2^f⌋` (arithmetic shift; `f ≥ 63` gives 0 or
+//! −1) or `acc·2^(−f)` saturated for `f < 0`, then saturated to the depth range (`Zv = 0`:
+//! depth 0).
+//!
+//! *Error against the exact z/w of the rounded triangle* (raw LSBs of 2^-24): at most
+//! `(3·2^30 + Σ|G_i·d_i|·2^-30)/2^f + 1` (the floors of G and of the depth, D32's truncation;
+//! checked on every hit by `tests/tests/planar.rs`).
+//!
+//! *Error against the exact depth of the unrounded triangle* (what `Exact` computes, before its
+//! own floor): on the triangle's plane z is linear in `X = (x, y, w)`, `z = ζ·X` with `P·ζ = z`
+//! (rows `P_k`) exactly and `(P + Δ)·ζ' = z` rounded (`Δ` rows `δ_k`, `|δ_k,c| ≤ h_k`), so
+//! `P·(ζ' − ζ) = −Δ·ζ'` and, with `P^(−1) = [n_0 n_1 n_2]/det P`, `(ζ' − ζ)·d = −Σ_k
+//! λ_k·(δ_k·ζ')` where `λ_k = E_k/det P` are the exact triangle's ray barycentrics (`Σ λ_k·P_k =
+//! d`). Hence `|Δ(z/w)| ≤ Σ_k |λ_k|·h_k·‖ζ'‖₁ / d_w` — the vertex move times the rounded
+//! plane's depth slope; for a hit with every `w_k > 0` (`λ_k ≥ 0`, `Σ λ_k·w_k = d_w`) at most
+//! `max_k h_k·‖ζ'‖₁ / min_k w_k`. In LSBs: that × 2^24, plus the error above and Exact's own
+//! floor (1). Checked per hit, exactly as stated, by `tests/tests/planar.rs`
+//! (`depth_within_the_derived_bound_of_exact`), which fails on the old z rounding. Depth never
+//! influences coverage.
 
 use crate::bounded::Eps;
 use crate::formats::{DEPTH_FAR, DEPTH_FRAC, DEPTH_NEAR, SUBPIXEL_BITS};
@@ -203,10 +219,10 @@ fn shift_to_i64(v: i128, r: i32) -> i64 {
     i64::try_from(x).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX })
 }
 
-/// The depth plane `(G, f)` from the exact `Zv` (< 2^62) and `D ≠ 0` (|D| < 2^78), module
+/// The depth plane `(G, f)` from the exact `Zv` (< 2^77) and `D ≠ 0` (|D| < 2^93), module
 /// docs.
-// bitlen(D) ≤ 78: rd = bitlen(D) − 32 ∈ [−23, 46] (D ≥ 256), rz = bitlen(max|Zv|) − 62 ∈
-// [−61, 0]; every shifted value has ≤ 32 bits (D) or ≤ 62 bits (Zv); f ∈ [−47, 83].
+// bitlen(D) ≤ 93: rd = bitlen(D) − 32 ∈ [−23, 61] (D ≥ 256), rz = bitlen(max|Zv|) − 62 ∈
+// [−61, 15]; every shifted value has ≤ 32 bits (D) or ≤ 62 bits (Zv); f ∈ [−62, 98].
 #[inline(never)]
 #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_wrap)]
 fn depth_plane(zv: [i128; 3], d: i128) -> Option<([i32; 3], i32)> {
@@ -254,7 +270,7 @@ pub(crate) fn planar_setup(
             *e = (*e).max((c - (cr << sk)).abs());
         }
         if let (Some(pk), Some(sl), Some(zk)) = (pv.get_mut(k), s.get_mut(k), z.get_mut(k)) {
-            (*pk, *sl, *zk) = (r, sk, rnd(q[Z], sk));
+            (*pk, *sl, *zk) = (r, sk, q[Z]);
         }
         ops.add_setup(12);
     }
@@ -267,14 +283,24 @@ pub(crate) fn planar_setup(
     if det == 0 {
         return None;
     }
-    // Depth plane: Zv_i = Σ_k z'_k·n_k,i (|z'| ≤ 2^29, |n| < 2^31: < 3·2^60, i64), D =
-    // det·256·W·H (< 2^48·2^30, i128).
+    // Depth plane of the rounded triangle with the unrounded depths (module docs): with S =
+    // max s_k, Zv_i = Σ_k z_k·2^(S − s_k)·n_k,i (|z| ≤ 2^29, 2^(S − s_k) ≤ 2^15, |n| < 2^31:
+    // each term < 2^75, |Zv| < 2^77, i128) and D = det·2^S·256·W·H (< 3·2^46·2^15·2^30 <
+    // 2^93, i128); S − s_k ∈ [0, 15]: the shifts are in range and exact.
+    let smax = s.iter().copied().max().unwrap_or(0);
+    let zs = [0, 1, 2].map(|k| {
+        let (zk, sk) = (z.get(k).copied().unwrap_or(0), s.get(k).copied().unwrap_or(0));
+        i128::from(zk) << (smax - sk)
+    });
     let zv = [0, 1, 2].map(|i| {
-        let col = [n0, n1, n2].map(|nk| nk.get(i).copied().unwrap_or(0));
-        i128::from(dot64(&col, &z))
+        [n0, n1, n2]
+            .iter()
+            .zip(zs.iter())
+            .map(|(nk, &zk)| zk * i128::from(nk.get(i).copied().unwrap_or(0)))
+            .sum::<i128>()
     });
     let dw = i64::from(vp.w) * i64::from(vp.h) * (1i64 << SUBPIXEL_BITS);
-    let (g, f) = depth_plane(zv, i128::from(det) * i128::from(dw))?;
+    let (g, f) = depth_plane(zv, (i128::from(det) << smax) * i128::from(dw))?;
     ops.add_setup(20);
     // |P'| ≤ 2^15 − 1 and s ≤ 15 (module table): the conversions are exact.
     let pv = pv.map(|p| p.map(|c| i16::try_from(c).unwrap_or(0)));

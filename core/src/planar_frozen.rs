@@ -1,5 +1,7 @@
 //! A frozen copy of the planar static test (`planar.rs`) as of the vertex-rounding redesign
-//! (branch wip-st, ST2), kept verbatim (test-only; `frozen_eval` takes the planar data instead
+//! (branch wip-st, ST2) with the full-precision depth plane (branch wip-pa: z is no longer
+//! rounded with its vertex's shift; the depth plane is the rounded triangle's with the
+//! unrounded z, `planar.rs` "Depth"), kept verbatim (test-only; `frozen_eval` takes the planar data instead
 //! of a `Setup`, the inline and lint attributes dropped) as the contract of the
 //! `planar-16-16-16-20` configuration: `planar_frozen_tests` checks that setup (rounded
 //! vertices, shifts, normals, σ, depth plane, epsilon) and the per-sample test (E, coverage,
@@ -86,10 +88,10 @@ fn shift_to_i64(v: i128, r: i32) -> i64 {
     i64::try_from(x).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX })
 }
 
-/// The depth plane `(G, f)` from the exact `Zv` (< 2^62) and `D ≠ 0` (|D| < 2^78), module
+/// The depth plane `(G, f)` from the exact `Zv` (< 2^77) and `D ≠ 0` (|D| < 2^93), module
 /// docs.
-// bitlen(D) ≤ 78: rd = bitlen(D) − 32 ∈ [−23, 46] (D ≥ 256), rz = bitlen(max|Zv|) − 62 ∈
-// [−61, 0]; every shifted value has ≤ 32 bits (D) or ≤ 62 bits (Zv); f ∈ [−47, 83].
+// bitlen(D) ≤ 93: rd = bitlen(D) − 32 ∈ [−23, 61] (D ≥ 256), rz = bitlen(max|Zv|) − 62 ∈
+// [−61, 15]; every shifted value has ≤ 32 bits (D) or ≤ 62 bits (Zv); f ∈ [−62, 98].
 fn depth_plane(zv: [i128; 3], d: i128) -> Option<([i32; 3], i32)> {
     // Orient D > 0: |D|, |Zv| < 2^120, the negations are exact.
     let (zv, d) = if d < 0 { (zv.map(|c| -c), -d) } else { (zv, d) };
@@ -134,7 +136,7 @@ pub(crate) fn frozen_setup(
             *e = (*e).max((c - (cr << sk)).abs());
         }
         if let (Some(pk), Some(sl), Some(zk)) = (pv.get_mut(k), s.get_mut(k), z.get_mut(k)) {
-            (*pk, *sl, *zk) = (r, sk, rnd(q[Z], sk));
+            (*pk, *sl, *zk) = (r, sk, q[Z]);
         }
         ops.add_setup(12);
     }
@@ -147,14 +149,24 @@ pub(crate) fn frozen_setup(
     if det == 0 {
         return None;
     }
-    // Depth plane: Zv_i = Σ_k z'_k·n_k,i (|z'| ≤ 2^29, |n| < 2^31: < 3·2^60, i64), D =
-    // det·256·W·H (< 2^48·2^30, i128).
+    // Depth plane of the rounded triangle with the unrounded depths (module docs): with S =
+    // max s_k, Zv_i = Σ_k z_k·2^(S − s_k)·n_k,i (|z| ≤ 2^29, 2^(S − s_k) ≤ 2^15, |n| < 2^31:
+    // each term < 2^75, |Zv| < 2^77, i128) and D = det·2^S·256·W·H (< 3·2^46·2^15·2^30 <
+    // 2^93, i128); S − s_k ∈ [0, 15]: the shifts are in range and exact.
+    let smax = s.iter().copied().max().unwrap_or(0);
+    let zs = [0, 1, 2].map(|k| {
+        let (zk, sk) = (z.get(k).copied().unwrap_or(0), s.get(k).copied().unwrap_or(0));
+        i128::from(zk) << (smax - sk)
+    });
     let zv = [0, 1, 2].map(|i| {
-        let col = [n0, n1, n2].map(|nk| nk.get(i).copied().unwrap_or(0));
-        i128::from(dot64(&col, &z))
+        [n0, n1, n2]
+            .iter()
+            .zip(zs.iter())
+            .map(|(nk, &zk)| zk * i128::from(nk.get(i).copied().unwrap_or(0)))
+            .sum::<i128>()
     });
     let dw = i64::from(vp.w) * i64::from(vp.h) * (1i64 << SUBPIXEL_BITS);
-    let (g, f) = depth_plane(zv, i128::from(det) * i128::from(dw))?;
+    let (g, f) = depth_plane(zv, (i128::from(det) << smax) * i128::from(dw))?;
     ops.add_setup(20);
     // |P'| ≤ 2^15 − 1 and s ≤ 15 (module table): the conversions are exact.
     let pv = pv.map(|p| p.map(|c| i16::try_from(c).unwrap_or(0)));
@@ -405,5 +417,5 @@ mod planar_frozen_tests {
         compare(s ^ 0x51a7, cases(2000, 100_000));
     }
 
-    const PINNED: u64 = 0x9037_95cd_28e4_a9e9;
+    const PINNED: u64 = 0xc841_45eb_b6a9_4e44;
 }

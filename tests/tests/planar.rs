@@ -749,9 +749,9 @@ fn sliver(rng: &mut Rng) -> Triangle {
     Triangle::new_static([v(p0.map(raw)), v(p1.map(raw)), v(p2)]).expect("sliver in the domain")
 }
 
-/// The planar depth of a hit against the exact z/w of the rounded triangle,
-/// `Σ z'_k·E_k / (det P'·d_w)` (z' rounded independently with the vertex's shift; f64 of exact
-/// i128 values, relative error < 2^-50), saturated to the depth range: within the documented
+/// The planar depth of a hit against the exact z/w of the rounded triangle with the unrounded
+/// depths, `Σ z_k·2^(−s_k)·E_k / (det P'·d_w)` (f64 of exact i128 values, relative error <
+/// 2^-50), saturated to the depth range: within the documented
 /// bound `(3·2^30 + Σ|G_i·d_i|·2^-30)/2^f + 1` raw (`planar.rs`), plus 1 for the f64. Returns
 /// the error.
 fn check_depth(
@@ -764,7 +764,8 @@ fn check_depth(
 ) -> f64 {
     let (q, sh) = rounded(t);
     let z = raw(t);
-    let zq: Vec<i128> = (0..3).map(|k| round_away(z[k][2], sh[k])).collect();
+    let smax = sh.iter().copied().max().unwrap_or(0);
+    let zq: Vec<i128> = (0..3).map(|k| z[k][2] << (smax - sh[k])).collect();
     let n = [
         cross128(q[1], q[2]),
         cross128(q[2], q[0]),
@@ -775,7 +776,7 @@ fn check_depth(
     let num: i128 = (0..3)
         .map(|k| (0..3).map(|i| n[k][i] * d[i] as i128).sum::<i128>() * zq[k])
         .sum();
-    let den = det * d[2] as i128;
+    let den = (det << smax) * d[2] as i128;
     let want = (num as f64 / den as f64 * 16777216.0).clamp(i32::MIN as f64, (i32::MAX - 1) as f64);
     let (g, f) = pl.depth_plane();
     let gd: f64 = (0..3).map(|i| (g[i] as f64 * d[i] as f64).abs()).sum();
@@ -783,10 +784,134 @@ fn check_depth(
     let err = (got as f64 - want).abs();
     assert!(
         err <= bound,
-        "case {case}: xs {} ys {}: depth expected {want:.3} (exact z/w of P'·2^24), observed {got} ({got:#010x}); |error| {err:.3} > bound {bound:.3}; G {g:?} f {f}\n{}",
+        "case {case}: xs {} ys {}: depth expected {want:.3} (exact z/w of 2^s·P' with z·2^24), observed {got} ({got:#010x}); |error| {err:.3} > bound {bound:.3}; G {g:?} f {f}\n{}",
         pos.xs,
         pos.ys,
         dump(t)
     );
     err
+}
+
+/// A static triangle in view whose depth is nearly constant in z/w (`z_k = c·w_k + noise`,
+/// c in [0.001, 0.1]): a flat depth slope ‖ζ'‖₁, where rounding z with the vertex's shift (the
+/// old setup) errs by far more than the derived bound allows.
+fn flat_depth(rng: &mut Rng) -> Triangle {
+    let o = 65536.0;
+    let c = rng.range(0.001, 0.1);
+    let v = |rng: &mut Rng| {
+        let w = rng.range(0.5, 6.0);
+        [
+            rng.range(-1.0, 1.0) * w,
+            rng.range(-1.0, 1.0) * w,
+            c * w + rng.range(-1e-4, 1e-4),
+            w,
+        ]
+    };
+    let q = |v: [f64; 4]| v.map(|x| (x * o).round() as i32);
+    raw_tri([q(v(rng)), q(v(rng)), q(v(rng))])
+}
+
+/// Depth against the exact depth of the **unrounded** triangle (`planar.rs` module docs,
+/// "Error against the exact depth of the unrounded triangle"): on every planar hit,
+/// `|depth − 2^24·z/w(P)| ≤ plane error + 2^24·Σ_k |λ_k|·h_k·‖ζ'‖₁ / d_w + 2` with `λ_k =
+/// E_k/det P` (exact triangle), `h_k = 2^(s_k−1)`, `ζ'` the rounded triangle's depth gradient
+/// (`z = ζ'·(x, y, w)` through `2^s_k·P'_k` with the unrounded z) and the plane error of
+/// [`check_depth`]; the 2 covers the f64 evaluation. Fails on the old setup, which rounded z
+/// with the vertex's shift (flat-depth triangles: thousands of LSBs against a bound of tens).
+/// Reports the largest difference from the `Exact` configuration's depth output.
+#[test]
+fn depth_within_the_derived_bound_of_exact() {
+    let seed = seed();
+    let mut rng = Rng(seed ^ 0xde97);
+    let vp = Viewport::new(24, 20).unwrap();
+    let samples = random_samples(&mut rng, 2, 8);
+    let pat = SamplePattern::new(2, 8, &samples).unwrap();
+    let (mut hits, mut max_ratio, mut max_vs_exact, mut max_err) = (0u64, 0f64, 0i64, 0f64);
+    for i in 0..cases(120, 2400) {
+        let t = match i % 3 {
+            0 => flat_depth(&mut rng),
+            1 => guard_band(&mut rng),
+            _ => random_static(&mut rng, i),
+        };
+        let ps = Setup::unculled_with::<Pl>(&t, vp);
+        let Some(pl) = ps.planar() else { continue };
+        let ex = Setup::unculled_with::<Exact>(&t, vp);
+        let r = raw(&t);
+        let p = r.map(|v| [v[0], v[1], v[3]]);
+        let z = r.map(|v| v[2]);
+        let n = [
+            cross128(p[1], p[2]),
+            cross128(p[2], p[0]),
+            cross128(p[0], p[1]),
+        ];
+        let det: i128 = (0..3).map(|j| p[0][j] * n[0][j]).sum();
+        if det == 0 {
+            continue;
+        }
+        // ζ' of the rounded triangle Q_k = 2^s_k·P'_k: Σ_k z_k·n_k(Q)/det Q =
+        // Σ_k z_k·2^(−s_k)·n_k(P')/det P'.
+        let (q, sh) = rounded(&t);
+        let nq = [
+            cross128(q[1], q[2]),
+            cross128(q[2], q[0]),
+            cross128(q[0], q[1]),
+        ];
+        let detq: i128 = (0..3).map(|j| q[0][j] * nq[0][j]).sum();
+        let zeta1: f64 = (0..3)
+            .map(|j| {
+                let num: f64 = (0..3)
+                    .map(|k| z[k] as f64 * 2f64.powi(-(sh[k] as i32)) * nq[k][j] as f64)
+                    .sum();
+                (num / detq as f64).abs()
+            })
+            .sum();
+        let h = sh.map(|s| if s == 0 { 0.0 } else { 2f64.powi(s as i32 - 1) });
+        for py in 0..vp.height() {
+            for px in 0..vp.width() {
+                for smp in pat.pixel(px, py) {
+                    let pos = ScreenPos::of(px, py, smp);
+                    let Some(g) = uvt_core::sample_test(&ps, pos, smp, &mut Default::default())
+                    else {
+                        continue;
+                    };
+                    hits += 1;
+                    let d = dir(vp, pos);
+                    let e: Vec<i128> = (0..3)
+                        .map(|k| (0..3).map(|j| n[k][j] * d[j] as i128).sum())
+                        .collect();
+                    let num: i128 = (0..3).map(|k| z[k] * e[k]).sum();
+                    let dw = d[2] as f64;
+                    let want = (num as f64 / (det as f64 * dw) * 16777216.0)
+                        .clamp(i32::MIN as f64, (i32::MAX - 1) as f64);
+                    let (gp, f) = pl.depth_plane();
+                    let gd: f64 = (0..3).map(|j| (gp[j] as f64 * d[j] as f64).abs()).sum();
+                    let plane = (3.0 * 2f64.powi(30) + gd * 2f64.powi(-30)) * 2f64.powi(-f) + 1.0;
+                    let lam: f64 = (0..3)
+                        .map(|k| (e[k] as f64 / det as f64).abs() * h[k])
+                        .sum();
+                    let derived = lam * zeta1 / dw * 16777216.0;
+                    let bound = plane + derived + 2.0;
+                    let err = (g.depth as f64 - want).abs();
+                    assert!(
+                        err <= bound,
+                        "case {i}: pixel ({px}, {py}) xs {} ys {}: depth expected {want:.3} (2^24·z/w of the unrounded triangle), observed {} ({:#010x}); |error| {err:.3} > bound {bound:.3} (plane {plane:.3} + derived {derived:.3} + 2); shifts {sh:?} ‖ζ'‖₁ {zeta1:.6e}\n{}\n  UVT_SEED={seed}",
+                        pos.xs,
+                        pos.ys,
+                        g.depth,
+                        g.depth,
+                        dump(&t)
+                    );
+                    max_err = max_err.max(err);
+                    max_ratio = max_ratio.max(err / bound);
+                    if let Some(w) = uvt_core::sample_test(&ex, pos, smp, &mut Default::default()) {
+                        max_vs_exact = max_vs_exact.max((g.depth as i64 - w.depth as i64).abs());
+                    }
+                }
+            }
+        }
+    }
+    assert!(hits > 10_000, "too few hits: {hits}");
+    println!(
+        "planar depth vs the unrounded triangle: {hits} hits, largest error {max_err:.1} raw (2^-24), largest error ÷ derived bound {max_ratio:.3}; largest |planar − Exact| depth output {max_vs_exact} raw"
+    );
 }
