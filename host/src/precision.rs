@@ -315,12 +315,21 @@ fn one<P: Precision + Sync>(s: &Scene, accs: &mut [PrecRow]) {
         acc.counts[2] += r.stats.samples_tested;
         acc.counts[3] += r.stats.samples_covered;
     }
-    errors::<P>(s, &core, &pat, accs);
+    errors::<P>(s, &core, &pat, accs, 1.0);
 }
 
 /// Per-triangle brute force over the union of both footprints: coverage, distance and depth
 /// once; bounds slack, violations and epsilon for every tile size of `accs`.
-fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, accs: &mut [PrecRow]) {
+///
+/// `dq_scale` scales the planar configuration's per-primitive d_q (1 in every report; tests
+/// halve it to show that a measured difference beyond it is caught).
+fn errors<P: Precision + Sync>(
+    s: &Scene,
+    core: &[Triangle],
+    pat: &Pattern,
+    accs: &mut [PrecRow],
+    dq_scale: f64,
+) {
     let vp = s.core_viewport();
     let v = s.viewport;
     let tiles: Vec<u16> = accs.iter().map(|a| a.tile as u16).collect();
@@ -356,7 +365,7 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, accs
             // the configuration's d_q at w = 1 for triangles with every w ≥ 1.
             let (d_q, front) = if P::PLANAR {
                 match prim_dq.get(i).copied().flatten() {
-                    Some(d) => (d, true),
+                    Some(d) => (d * dq_scale, true),
                     None => (0.0, false),
                 }
             } else {
@@ -625,10 +634,38 @@ pub fn decisions<P: Precision + Sync>(scene: &Scene, core: &[Triangle], pat: &Pa
         tile: scene.tile,
         ..Default::default()
     }];
-    errors::<P>(scene, core, pat, &mut acc);
+    errors::<P>(scene, core, pat, &mut acc, 1.0);
     let [mut row] = acc;
     finish(&mut row);
     row
+}
+
+/// [`decisions`] at the planar static configuration with its per-primitive d_q scaled by
+/// `dq_scale` (1: the documented d_q; `beyond_dq` counts the differing decisions of primitives
+/// with a d_q farther than the scaled d_q from the nearest edge), and the degenerate count.
+pub fn planar_decisions(scene: &Scene, dq_scale: f64) -> anyhow::Result<PrecRow> {
+    type P = uvt_core::PlanarPrecision;
+    let pat = Pattern::new(scene.pattern, scene.spp, scene.seed).with_tuv(P::TUV_FRAC);
+    let core = scene
+        .tris
+        .iter()
+        .enumerate()
+        .map(|(i, t)| {
+            t.to_core_with::<P>()
+                .map_err(|e| anyhow::anyhow!("triangles[{i}]: {e}"))
+        })
+        .collect::<anyhow::Result<Vec<_>>>()?;
+    let mut acc = [PrecRow {
+        config: crate::planar::NAME.to_string(),
+        tile: scene.tile,
+        d_q: [planar_dq(scene).0, 0.0],
+        degenerate: crate::planar::degenerate(scene).0,
+        ..Default::default()
+    }];
+    errors::<P>(scene, &core, &pat, &mut acc, dq_scale);
+    let [mut row] = acc;
+    finish(&mut row);
+    Ok(row)
 }
 
 /// Markdown table of stress cases.
