@@ -289,7 +289,10 @@ pub(crate) fn planar_setup(
     // 2^93, i128); S − s_k ∈ [0, 15]: the shifts are in range and exact.
     let smax = s.iter().copied().max().unwrap_or(0);
     let zs = [0, 1, 2].map(|k| {
-        let (zk, sk) = (z.get(k).copied().unwrap_or(0), s.get(k).copied().unwrap_or(0));
+        let (zk, sk) = (
+            z.get(k).copied().unwrap_or(0),
+            s.get(k).copied().unwrap_or(0),
+        );
         i128::from(zk) << (smax - sk)
     });
     let zv = [0, 1, 2].map(|i| {

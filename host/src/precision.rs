@@ -41,7 +41,16 @@ use crate::scenes::{bench, Bench, Row};
 /// (`crate::planar::NAME`).
 pub const CONFIGS: [&str; 8] = {
     let s = crate::cost::SWEEP;
-    [s[0], s[1], s[2], s[3], s[4], s[5], s[6], crate::planar::NAME]
+    [
+        s[0],
+        s[1],
+        s[2],
+        s[3],
+        s[4],
+        s[5],
+        s[6],
+        crate::planar::NAME,
+    ]
 };
 
 /// Run `one::<P>` for configuration `ci` of [`CONFIGS`].

@@ -85,7 +85,10 @@ fn planar_dq_bounds_every_difference_and_a_halved_dq_is_caught() {
         r.differ, r.compared, r.max_differ_px, r.beyond_dq, r.beyond_bound, r.max_ratio, r.violations, r.degenerate
     );
     assert!(r.differ > 0, "the guard-band scene exercises no difference");
-    assert_eq!(r.beyond_dq, 0, "a difference beyond the documented d_q: {r:?}");
+    assert_eq!(
+        r.beyond_dq, 0,
+        "a difference beyond the documented d_q: {r:?}"
+    );
     assert_eq!(r.beyond_bound, 0, "{r:?}");
     assert_eq!(r.violations, 0, "{r:?}");
     assert!(
@@ -108,11 +111,9 @@ fn fit_never_picks_planar_beyond_the_tolerance() {
     let cls = classes(&s).unwrap();
     let planar = |tol: f64| {
         let (fits, _) = config_fits(&s, &cls, (false, false), tol);
-        let pl = fits
-            .into_iter()
+        fits.into_iter()
             .find(|f| f.config == uvt_host::planar::NAME)
-            .expect("fit lists the planar configuration");
-        pl
+            .expect("fit lists the planar configuration")
     };
     // The exact configuration reaches ≈ 1.96 px here (w's input rounding times the guard-band
     // ratio 8000), the planar one ≈ 3.84 px (the vertex rounding): at 2.5 px only the former.
