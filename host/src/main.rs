@@ -85,7 +85,8 @@ enum Cmd {
         limit_effort: Option<String>,
         /// the core's configuration: default, exact-16-16-16, bounded-16-16-16-20,
         /// bounded-16-16-16-22, bounded-16-16-16-24, bounded-12-12-12-24, bounded-12-12-12-26,
-        /// bounded-8-8-8-28 (the f64 reference and the axis-aligned limit stay exact)
+        /// bounded-8-8-8-28, planar-16-16-16-20 (the f64 reference and the axis-aligned limit
+        /// stay exact)
         #[arg(long, default_value = "default")]
         precision: String,
     },

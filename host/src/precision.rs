@@ -257,6 +257,13 @@ fn one<P: Precision + Sync>(s: &Scene, accs: &mut [PrecRow]) {
         .collect();
     let vp = s.core_viewport();
     let colors = s.colors();
+    if P::PLANAR {
+        let (n, stat) = crate::planar::degenerate(s);
+        eprintln!(
+            "precision: {}: {n} of {stat} static triangles degenerate after the planar rounding",
+            s.name
+        );
+    }
     let eps = uvt_core::Eps::of(P::OFFSET_SHIFT, uvt_core::Class::MotionDefocus, vp);
     let e3 = [eps.x()[0], eps.x()[1], eps.w()].map(i32::unsigned_abs);
     for acc in accs.iter_mut() {
