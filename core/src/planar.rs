@@ -308,7 +308,7 @@ pub struct PlanarEval {
 /// ≤ 2^30 in magnitude (`sample::direction`).
 #[inline(always)]
 #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_wrap)]
-fn direction32(vp: Viewport, xs: i32, ys: i32) -> [i32; 3] {
+pub(crate) fn direction32(vp: Viewport, xs: i32, ys: i32) -> [i32; 3] {
     let (w, h) = (i32::from(vp.w), i32::from(vp.h));
     let one = 1i32 << SUBPIXEL_BITS;
     // |2xs − 256W| ≤ 256W ≤ 2^19, ×H ≤ 2^11: ≤ 2^30; 256·W·H ≤ 2^30.
@@ -329,7 +329,7 @@ fn fill(n: &[i32; 3], sigma: i32) -> bool {
 /// Depth of a hit from the plane `(G, f)` (module docs).
 #[inline(never)]
 #[allow(clippy::arithmetic_side_effects)]
-fn depth(g: &[i32; 3], f: i32, d: &[i32; 3]) -> i32 {
+pub(crate) fn depth(g: &[i32; 3], f: i32, d: &[i32; 3]) -> i32 {
     // |G| ≤ 2^31, |d| ≤ 2^30: each product ≤ 2^61, the sum < 2^63.
     let acc: i64 = g
         .iter()

@@ -167,6 +167,22 @@ impl<const TW: usize, const TH: usize, const S: usize> TileBuffer<TW, TH, S> {
             .unwrap_or_default()
     }
 
+    /// Count one sample test of pixel (x, y) in its counters (the static-only unit's renderer,
+    /// `static_unit.rs`); nothing for out-of-range indices.
+    pub(crate) fn count(&mut self, x: usize, y: usize, covered: bool) {
+        if let Some(ps) = self.stats.get_mut(y).and_then(|r| r.get_mut(x)) {
+            ps.tested = ps.tested.saturating_add(1);
+            ps.covered = ps.covered.saturating_add(u32::from(covered));
+        }
+    }
+
+    /// Count one written sample of pixel (x, y) (as [`Self::count`]).
+    pub(crate) fn count_written(&mut self, x: usize, y: usize) {
+        if let Some(ps) = self.stats.get_mut(y).and_then(|r| r.get_mut(x)) {
+            ps.written = ps.written.saturating_add(1);
+        }
+    }
+
     /// Resolved color: per channel `(Σ + S/2) / S` (round half up), see [`resolve_colors`].
     pub fn resolve(&self, x: usize, y: usize) -> Rgb888 {
         match self.color.get(y).and_then(|r| r.get(x)) {
