@@ -133,7 +133,8 @@ const UNIT_SEL: usize = match UNIT {
 const HARNESS: bool = option_env!("UVT_M4_HARNESS").is_some();
 
 /// `UVT_M4_EMPTY` (with `UVT_M4_UNIT`): also measure the sample-test loop with the test
-/// replaced by `black_box` (`cost sample_empty`, the harness's own cost per call).
+/// replaced by `black_box` (`cost sample_empty`, the harness's own cost per call), and the
+/// tile-bounds loop the same way (`cost bounds_empty`).
 #[cfg_attr(not(target_os = "none"), allow(dead_code))]
 const EMPTY: bool = option_env!("UVT_M4_EMPTY").is_some();
 
@@ -461,6 +462,10 @@ mod target {
                 with_unit!(demo::cost::samples_empty_on_with, 2).unwrap_or(0)
             });
             o.cost("sample_empty", c);
+            let c = ticks(syst, || {
+                with_unit!(demo::cost::bounds_empty_on_with, 5).unwrap_or(0)
+            });
+            o.cost("bounds_empty", c);
         }
         debug::exit(debug::EXIT_SUCCESS);
         loop {

@@ -439,7 +439,7 @@ pub mod cost {
         reps: u32,
     ) -> Result<u64, Error> {
         if crate::static_unit::specialised::<P, U>() {
-            return static_cost::bounds::<V>(reps);
+            return static_cost::bounds::<V, false>(reps);
         }
         let prims = unit_prims::<V>()?;
         let vp = viewport()?;
@@ -507,6 +507,33 @@ pub mod cost {
         Ok(calls)
     }
 
+    /// The harness alone: [`bounds_all_on_with`]'s loop (the same setups, cells and call
+    /// count) with the tile bounds replaced by handing their arguments to `black_box`.
+    pub fn bounds_empty_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
+        reps: u32,
+    ) -> Result<u64, Error> {
+        if crate::static_unit::specialised::<P, U>() {
+            return static_cost::bounds::<V, true>(reps);
+        }
+        let prims = unit_prims::<V>()?;
+        let vp = viewport()?;
+        let mut ops = Ops::default();
+        let mut calls = 0u64;
+        for p in prims.iter() {
+            let Ok(Outcome::Visible(s)) = setup_unit::<P, U>(&p.tri, vp, &mut ops) else {
+                continue;
+            };
+            let c = Laine2011.prepare_unit::<U>(&s, &mut ops);
+            for _ in 0..reps {
+                for cell in s.footprint().cells(2) {
+                    black_box((black_box(&s), &c, cell));
+                    calls = calls.saturating_add(1);
+                }
+            }
+        }
+        Ok(calls)
+    }
+
     /// The harness alone: [`samples_all_on_with`]'s loop (the same setups, window, passes and
     /// call count) with the sample test replaced by handing its arguments to `black_box` — the
     /// measuring loop's own cost per call, to subtract from the sample test's (the same loop
@@ -561,8 +588,9 @@ pub mod cost {
             Ok(calls)
         }
 
-        /// The 2×2 tile cull over every visible prim's footprint, `reps` times.
-        pub(super) fn bounds<V: Unit>(reps: u32) -> Result<u64, Error> {
+        /// The 2×2 tile cull over every visible prim's footprint, `reps` times (`EMPTY`: the
+        /// harness alone, as [`bounds_empty_on_with`]).
+        pub(super) fn bounds<V: Unit, const EMPTY: bool>(reps: u32) -> Result<u64, Error> {
             let prims = unit_prims::<V>()?;
             let vp = viewport()?;
             let mut ops = Ops::default();
@@ -573,7 +601,11 @@ pub mod cost {
                 };
                 for _ in 0..reps {
                     for cell in s.footprint().cells(2) {
-                        black_box(static_tile(black_box(&s), cell, &mut ops));
+                        if EMPTY {
+                            black_box((black_box(&s), cell));
+                        } else {
+                            black_box(static_tile(black_box(&s), cell, &mut ops));
+                        }
                         calls = calls.saturating_add(1);
                     }
                 }

@@ -308,7 +308,7 @@ pub struct PlanarEval {
 /// ≤ 2^30 in magnitude (`sample::direction`).
 #[inline(always)]
 #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_wrap)]
-pub(crate) fn direction32(vp: Viewport, xs: i32, ys: i32) -> [i32; 3] {
+fn direction32(vp: Viewport, xs: i32, ys: i32) -> [i32; 3] {
     let (w, h) = (i32::from(vp.w), i32::from(vp.h));
     let one = 1i32 << SUBPIXEL_BITS;
     // |2xs − 256W| ≤ 256W ≤ 2^19, ×H ≤ 2^11: ≤ 2^30; 256·W·H ≤ 2^30.

@@ -60,9 +60,9 @@
 use embedded_graphics_core::pixelcolor::Rgb888;
 
 use crate::error::Error;
-use crate::formats::{Precision, MAX_VIEWPORT, SUBPIXEL_BITS};
+use crate::formats::{Precision, DEPTH_FAR, DEPTH_NEAR, MAX_VIEWPORT, SUBPIXEL_BITS};
 use crate::input::{PixelRect, SamplePattern, Triangle, Viewport};
-use crate::planar::{depth, direction32, planar_setup};
+use crate::planar::{depth, planar_setup};
 use crate::sample::{Hit, ScreenPos};
 use crate::setup::{classify, Class, Cull};
 use crate::stats::{Ops, Stats};
@@ -83,13 +83,20 @@ pub const fn specialised<P: Precision, U: Unit>() -> bool {
 pub struct StaticSetup {
     /// oriented normals `σa_k`, `σb_k` (|.| < 2^31)
     ab: [[i32; 2]; 3],
-    /// `σ·c_k·d_w` (|.| < 2^61)
+    /// `σ·c_k·d_w`, minus 1 where the fill rule refuses `E_k = 0` (|.| < 2^61 + 1): a sample
+    /// passes edge k iff `c_k + σa_k·d_x + σb_k·d_y ≥ 0`
     c: [i64; 3],
-    /// fill-rule key per edge: a sample with `E_k = 0` passes edge k iff set
-    tie: [bool; 3],
     /// the planar depth plane `G` and exponent `f`
     g: [i32; 3],
     f: i32,
+    /// `G_2·d_w` (|.| < 2^61): the depth's constant term
+    gw: i64,
+    /// `2H`, `2W`, `256·W·H`: `d_x = 2H·xs − 256WH`, `d_y = 256WH − 2W·ys`
+    h2: i32,
+    w2: i32,
+    wh: i32,
+    /// `256·W`, `256·H`: positions inside the viewport are below these
+    end: [u32; 2],
     footprint: PixelRect,
     vp: Viewport,
 }
@@ -169,58 +176,82 @@ pub fn static_setup(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> Result<Stati
         return Ok(StaticOutcome::Culled(Cull::Outside));
     }
     let sigma = pl.sigma();
-    // d_w = 256·W·H ≤ 2^30.
-    let dw = i64::from(vp.w) * i64::from(vp.h) * (1i64 << SUBPIXEL_BITS);
+    // 256·W·H ≤ 2^30, 2W, 2H ≤ 2^12, 256·W, 256·H ≤ 2^19.
+    let (w, h) = (i32::from(vp.w), i32::from(vp.h));
+    let one = 1i32 << SUBPIXEL_BITS;
+    let wh = one * w * h;
     let n = pl.n();
     // |a|, |b|, |c| ≤ 2·(2^15 − 1)² < 2^31 (`planar.rs`), σ = ±1: the negations are exact;
-    // |c·d_w| < 2^61.
+    // |c·d_w| < 2^61, and minus 1 stays far inside i64.
     let ab = n.map(|[a, b, _]| [sigma * a, sigma * b]);
-    let c = n.map(|[_, _, ck]| i64::from(sigma) * i64::from(ck) * dw);
-    let tie = ab.map(|[a, b]| a > 0 || (a == 0 && b > 0));
+    let mut c = [0i64; 3];
+    for ((ck, nk), [a, b]) in c.iter_mut().zip(n.iter()).zip(ab.iter()) {
+        // The fill rule on E_k = 0 (`planar.rs`, on the oriented normal): σa > 0, or a = 0
+        // and σb > 0. Refused: the edge needs σE_k > 0, i.e. σE_k − 1 ≥ 0 (integers).
+        let tie = *a > 0 || (*a == 0 && *b > 0);
+        *ck = i64::from(sigma) * i64::from(nk[2]) * i64::from(wh) - i64::from(!tie);
+    }
     let (g, f) = pl.depth_plane();
+    // |G| ≤ 2^31, d_w ≤ 2^30.
+    let gw = i64::from(g[2]) * i64::from(wh);
     ops.add_setup(12);
     Ok(StaticOutcome::Visible(StaticSetup {
         ab,
         c,
-        tie,
         g,
         f,
+        gw,
+        h2: 2 * h,
+        w2: 2 * w,
+        wh,
+        end: [
+            u32::from(vp.w) << SUBPIXEL_BITS,
+            u32::from(vp.h) << SUBPIXEL_BITS,
+        ],
         footprint,
         vp,
     }))
 }
 
-/// `σE_k` at direction components `(dx, dy)`: |σa|, |σb| < 2^31, |d| ≤ 2^30, |C| < 2^61: each
-/// product < 2^61, the sum < 3·2^61 < 2^63 (exact i64).
+/// `σE_k` (fill-adjusted, module docs) at direction components `(dx, dy)`: |σa|, |σb| < 2^31,
+/// |d| ≤ 2^30, |c| ≤ 2^61: each product < 2^61, the sum < 3·2^61 + 1 < 2^63 (exact i64).
 #[inline(always)]
 #[allow(clippy::arithmetic_side_effects)]
 fn edge(ab: &[i32; 2], c: i64, dx: i32, dy: i32) -> i64 {
     c + i64::from(ab[0]) * i64::from(dx) + i64::from(ab[1]) * i64::from(dy)
 }
 
-/// Whether bounds tile `cell` (inside the viewport) may hold a covered sample: `false` only if
-/// some edge's largest `σE_k` over the tile's sample rectangle is negative (module docs; exact
-/// and conservative). Counts its operations in `ops.bounds`.
+/// `(d_x, d_y)` of the sample position `(xs, ys)`, both below `256·(W, H)` (checked by the
+/// callers): |2H·xs − 256WH| ≤ 256WH ≤ 2^30, the same for y (`sample::direction`).
+#[inline(always)]
+#[allow(clippy::arithmetic_side_effects)]
+fn dxy(s: &StaticSetup, xs: i32, ys: i32) -> (i32, i32) {
+    (s.h2 * xs - s.wh, s.wh - s.w2 * ys)
+}
+
+/// Whether bounds tile `cell` may hold a covered sample: `false` only if some edge's largest
+/// fill-adjusted `σE_k` over the tile's sample rectangle is negative (module docs; exact and
+/// conservative). Counts its operations in `ops.bounds`.
 #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_wrap)]
 pub fn static_tile(s: &StaticSetup, cell: PixelRect, ops: &mut Ops) -> bool {
-    let vp = s.vp;
     if cell.is_empty() {
         return false;
     }
-    if cell.x1 > vp.w || cell.y1 > vp.h {
+    if cell.x1 > s.vp.w || cell.y1 > s.vp.h {
         // Not a tile the renderer walks (it clips to the viewport): kept, and the sample test
         // refuses every position outside the viewport.
         return true;
     }
+    ops.add_bounds(4 + 3 * 4);
     // cell.x1 ≤ W ≤ 2048 and x1 > x0 ≥ 0: 256·x1 − 1 < 2^19, exact in i32 (the same for y).
     let one = 1i32 << SUBPIXEL_BITS;
-    let (xl, xh) = (i32::from(cell.x0) * one, i32::from(cell.x1) * one - 1);
-    let (yl, yh) = (i32::from(cell.y0) * one, i32::from(cell.y1) * one - 1);
-    let [dxl, dyl, _] = direction32(vp, xl, yl);
-    let [dxh, dyh, _] = direction32(vp, xh, yh);
-    ops.add_bounds(4);
+    let (dxl, dyl) = dxy(s, i32::from(cell.x0) * one, i32::from(cell.y0) * one);
+    let (dxh, dyh) = dxy(
+        s,
+        i32::from(cell.x1) * one - 1,
+        i32::from(cell.y1) * one - 1,
+    );
     s.ab.iter().zip(s.c.iter()).all(|(ab, &c)| {
-        ops.add_bounds(4);
         // d_x grows with xs, d_y falls with ys: the corner of the largest σE_k.
         let dx = if ab[0] > 0 { dxh } else { dxl };
         let dy = if ab[1] > 0 { dyl } else { dyh };
@@ -233,26 +264,38 @@ pub fn static_tile(s: &StaticSetup, cell: PixelRect, ops: &mut Ops) -> bool {
 #[inline(always)]
 #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_wrap)]
 pub fn static_test(s: &StaticSetup, pos: ScreenPos) -> Option<Hit> {
-    let vp = s.vp;
-    let (sw, sh) = (
-        u32::from(vp.w) << SUBPIXEL_BITS,
-        u32::from(vp.h) << SUBPIXEL_BITS,
-    );
-    if pos.xs >= sw || pos.ys >= sh {
+    let [ew, eh] = s.end;
+    if pos.xs >= ew || pos.ys >= eh {
         return None;
     }
     // xs, ys < 2^19: exact in i32.
-    let d = direction32(vp, pos.xs as i32, pos.ys as i32);
-    let [dx, dy, _] = d;
-    for ((ab, &c), &tie) in s.ab.iter().zip(s.c.iter()).zip(s.tie.iter()) {
-        let e = edge(ab, c, dx, dy);
-        if e < 0 || (e == 0 && !tie) {
+    let (dx, dy) = dxy(s, pos.xs as i32, pos.ys as i32);
+    for (ab, &c) in s.ab.iter().zip(s.c.iter()) {
+        if edge(ab, c, dx, dy) < 0 {
             return None;
         }
     }
     Some(Hit {
-        depth: depth(&s.g, s.f, &d),
+        depth: static_depth(s, dx, dy),
     })
+}
+
+/// The planar test's depth ([`crate::planar`]: `⌊Σ G_i·d_i / 2^f⌋` saturated) with the
+/// constant term `G_2·d_w` from setup: the same sum, the same bits. `f < 0` (a left shift, a
+/// deep triangle in a tiny viewport) takes the planar test's own function.
+#[inline(always)]
+#[allow(clippy::arithmetic_side_effects)]
+fn static_depth(s: &StaticSetup, dx: i32, dy: i32) -> i32 {
+    if s.f < 0 {
+        return depth(&s.g, s.f, &[dx, dy, s.wh]);
+    }
+    let [g0, g1, _] = s.g;
+    // |G·d| ≤ 2^61 each, three terms < 2^63 (`planar.rs`); f ≥ 0: an arithmetic shift by
+    // at most 63, the floor.
+    let acc = s.gw + i64::from(g0) * i64::from(dx) + i64::from(g1) * i64::from(dy);
+    let q = acc >> s.f.min(63);
+    // Clamped to [DEPTH_NEAR, DEPTH_FAR]: the conversion is exact.
+    i32::try_from(q.clamp(i64::from(DEPTH_NEAR), i64::from(DEPTH_FAR))).unwrap_or(DEPTH_FAR)
 }
 
 /// Operations counted per sample test (direction 2, three edges × (2 multiply-adds, 1 add,
