@@ -13,16 +13,18 @@
 //!
 //! | stage | computes | reads |
 //! |---|---|---|
-//! | [`static_setup`] | the planar setup (`planar.rs`: rounded vertices `P'`, exact normals `n_k = (a, b, c)`, σ, depth plane `(G, f)`); oriented normals `a' = σa`, `b' = σb`, `C_k = σ·c_k·d_w` (i64, \|.\| < 2^61); the fill-rule key per edge; the 2D footprint | x, y, z, w of the t0 vertices |
-//! | [`static_tile`] | per bounds tile: the largest `σE_k` of each edge over the tile's sample rectangle (one corner per edge, 2 multiply-adds) | the tile's pixel rectangle |
-//! | [`static_test`] | `σE_k = C_k + a'_k·d_x + b'_k·d_y` (six 32 × 32 → 64 multiply-adds), fill rule, depth on a hit | the sample's (x, y) |
+//! | [`static_setup`] | [`classify`] (acceptance); the planar setup (`planar.rs`: rounded vertices `P'`, exact normals `n_k = (a, b, c)`, σ, depth plane `(G, f)`); oriented normals `a' = σa`, `b' = σb`; `C_k = σ·c_k·d_w − [edge k's fill rule refuses E_k = 0]` (i64, \|.\| < 2^61 + 1); `G_2·d_w`; the 2D footprint | x, y, z, w of the t0 vertices (classify: all fields) |
+//! | [`static_tile`] | per bounds tile: the largest `C_k + a'_k·d_x + b'_k·d_y` of each edge over the tile's sample rectangle (one corner per edge, 2 multiply-adds) | the tile's pixel rectangle |
+//! | [`static_test`] | `C_k + a'_k·d_x + b'_k·d_y ≥ 0` for k = 0, 1, 2 (six 32 × 32 → 64 multiply-adds), depth on a hit | the sample's (x, y) |
 //!
 //! **Exactly the planar test.** `d = (d_x, d_y, d_w)` is [`crate::sample::direction`] (d_w =
 //! 256·W·H is a constant of the viewport), so `σE_k = σ(a_k d_x + b_k d_y + c_k d_w)` is the
 //! planar test's edge value times σ, in exact i64 (each product < 2^61, the sum < 3·2^61). The
 //! planar test covers iff, per edge, `σE_k > 0`, or `E_k = 0` and the fill rule (σa > 0, or
-//! a = 0 and σb > 0) accepts — here the same predicate on the oriented values, the key
-//! precomputed per edge. The depth is the planar test's own function on the same `d`. So
+//! a = 0 and σb > 0) accepts, i.e. `σE_k ≥ 0` where the rule accepts and `σE_k ≥ 1` where it
+//! refuses (integers): `C_k` carries the 1, so one sign test per edge decides. The depth is the
+//! planar test's sum `Σ G_i·d_i` with its constant term `G_2·d_w` from setup, floored and
+//! saturated the same way (`f < 0` calls the planar test's own function). So
 //! [`static_test`] returns bit for bit what [`crate::planar::planar_test`] returns on the same
 //! triangle and position (`tests/tests/static_unit.rs`).
 //!
@@ -37,12 +39,13 @@
 //! viewport and the tile cull alone prunes.
 //!
 //! **Tile cull** (exact, conservative). A bounds tile `[x0, x1) × [y0, y1)` holds sample
-//! positions `xs ∈ [256·x0, 256·x1 − 1]`, `ys ∈ [256·y0, 256·y1 − 1]`. `σE_k` is affine in
-//! (xs, ys) with slopes of the signs of `a'_k` (in xs) and `−b'_k` (in ys), so its maximum over
-//! the rectangle is at the corner `(a' > 0 ? xs_hi : xs_lo, b' > 0 ? ys_lo : ys_hi)`. A covered
-//! sample has `σE_k ≥ 0` for every k, so a tile where some edge's maximum is < 0 holds no
-//! covered sample and is skipped. This is the planar ε made unnecessary: the decision the bound
-//! protects is taken on the very integers the bound evaluates.
+//! positions `xs ∈ [256·x0, 256·x1 − 1]`, `ys ∈ [256·y0, 256·y1 − 1]`. The fill-adjusted edge
+//! value `C_k + a'_k·d_x + b'_k·d_y` is affine in (xs, ys) with slopes of the signs of `a'_k`
+//! (in xs) and `−b'_k` (in ys), so its maximum over the rectangle is at the corner
+//! `(a' > 0 ? xs_hi : xs_lo, b' > 0 ? ys_lo : ys_hi)`. A covered sample has it ≥ 0 for every
+//! k, so a tile where some edge's maximum is < 0 holds no covered sample and is skipped. This
+//! is the planar ε made unnecessary: the decision the bound protects is taken on the very
+//! integers the bound evaluates.
 //!
 //! **Left out, and why that is exact**: the t span and lens-corner boxes (a static in-focus
 //! triangle's samples do not depend on (u, v, t)); the per-tile (u, v, t) intervals (the same
@@ -315,20 +318,11 @@ pub struct StaticRenderer<const N: usize> {
 }
 
 impl<const N: usize> StaticRenderer<N> {
-    /// Set every triangle up once. Fails with [`Error::ClassNotInUnit`] naming the first
-    /// primitive that is not static and in focus (before any setup), or if more than `N`
-    /// triangles are visible.
+    /// Set every triangle up once, in order. Fails with [`Error::ClassNotInUnit`] naming the
+    /// first primitive that is not static and in focus ([`static_setup`] classifies each before
+    /// computing anything for it), or with [`Error::TooManyTriangles`] if more than `N`
+    /// triangles before it are visible. No renderer is returned on an error.
     pub fn new(vp: Viewport, prims: &[Prim]) -> Result<Self, Error> {
-        for (index, p) in prims.iter().enumerate() {
-            let class = classify(&p.tri);
-            if !StaticOnly::accepts(class) {
-                return Err(Error::ClassNotInUnit {
-                    index,
-                    class,
-                    unit: StaticOnly::NAME,
-                });
-            }
-        }
         let mut r = StaticRenderer {
             vp,
             setups: heapless::Vec::new(),
@@ -391,7 +385,7 @@ impl<const N: usize> StaticRenderer<N> {
         if x0 >= self.vp.w || y0 >= self.vp.h {
             return Err(Error::PixelOutOfRange);
         }
-        fb.clear(clear);
+        fb.clear_fill(clear);
         let (tw, th) = tile_size::<TW, TH>();
         let screen = PixelRect {
             x0,
@@ -425,7 +419,7 @@ impl<const N: usize> StaticRenderer<N> {
         clear: Rgb888,
         mut out: impl FnMut(u16, u16, Rgb888, PixelStats),
     ) -> Result<(), Error> {
-        let mut fb = TileBuffer::<TW, TH, S>::new(clear);
+        let mut fb = TileBuffer::<TW, TH, S>::new_fill(clear);
         let (tw, th) = tile_size::<TW, TH>();
         let mut y0 = 0u16;
         while y0 < self.vp.h {

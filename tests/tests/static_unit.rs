@@ -87,7 +87,7 @@ fn grid_pair(rng: &mut Rng, vp: Viewport) -> [Triangle; 2] {
 
 /// A sample pattern (4×4 block, 4 spp) whose sub-pixel offsets are 0 or random per axis.
 fn corner_samples(rng: &mut Rng) -> Vec<uvt_core::Sample> {
-    let mut off = |rng: &mut Rng| {
+    let off = |rng: &mut Rng| {
         if rng.below(2) == 0 {
             0
         } else {
