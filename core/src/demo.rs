@@ -251,7 +251,7 @@ pub fn render_on<U: Unit, V: Unit>() -> Result<DemoResult, Error> {
 #[inline(always)]
 pub fn render_on_with<P: crate::formats::Precision, U: Unit, V: Unit>() -> Result<DemoResult, Error>
 {
-    if crate::static_unit::specialised::<P, U>() {
+    if const { crate::static_unit::specialised::<P, U>() } {
         return render_static::<V>();
     }
     let prims = unit_prims::<V>()?;
@@ -404,7 +404,7 @@ pub mod cost {
     pub fn setup_all_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
         reps: u32,
     ) -> Result<u64, Error> {
-        if crate::static_unit::specialised::<P, U>() {
+        if const { crate::static_unit::specialised::<P, U>() } {
             return static_cost::setup::<V>(reps);
         }
         let prims = unit_prims::<V>()?;
@@ -438,7 +438,7 @@ pub mod cost {
     pub fn bounds_all_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
         reps: u32,
     ) -> Result<u64, Error> {
-        if crate::static_unit::specialised::<P, U>() {
+        if const { crate::static_unit::specialised::<P, U>() } {
             return static_cost::bounds::<V, false>(reps);
         }
         let prims = unit_prims::<V>()?;
@@ -476,7 +476,7 @@ pub mod cost {
     pub fn samples_all_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
         reps: u32,
     ) -> Result<u64, Error> {
-        if crate::static_unit::specialised::<P, U>() {
+        if const { crate::static_unit::specialised::<P, U>() } {
             return static_cost::samples::<V, false>(reps);
         }
         let prims = unit_prims::<V>()?;
@@ -512,7 +512,7 @@ pub mod cost {
     pub fn bounds_empty_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
         reps: u32,
     ) -> Result<u64, Error> {
-        if crate::static_unit::specialised::<P, U>() {
+        if const { crate::static_unit::specialised::<P, U>() } {
             return static_cost::bounds::<V, true>(reps);
         }
         let prims = unit_prims::<V>()?;
@@ -541,7 +541,7 @@ pub mod cost {
     pub fn samples_empty_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
         reps: u32,
     ) -> Result<u64, Error> {
-        if crate::static_unit::specialised::<P, U>() {
+        if const { crate::static_unit::specialised::<P, U>() } {
             return static_cost::samples::<V, true>(reps);
         }
         let prims = unit_prims::<V>()?;

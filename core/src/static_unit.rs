@@ -92,6 +92,8 @@ pub struct StaticSetup {
     /// the planar depth plane `G` and exponent `f`
     g: [i32; 3],
     f: i32,
+    /// no position of the viewport saturates the depth (`static_depth`)
+    fast: bool,
     /// `G_2·d_w` (|.| < 2^61): the depth's constant term
     gw: i64,
     /// `2H`, `2W`, `256·W·H`: `d_x = 2H·xs − 256WH`, `d_y = 256WH − 2W·ys`
@@ -197,12 +199,18 @@ pub fn static_setup(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> Result<Stati
     let (g, f) = pl.depth_plane();
     // |G| ≤ 2^31, d_w ≤ 2^30.
     let gw = i64::from(g[2]) * i64::from(wh);
-    ops.add_setup(12);
+    // The viewport's corner positions: 256·W − 1, 256·H − 1 < 2^19; the directions as in
+    // `dxy` (|.| ≤ 2^30).
+    let (xh, yh) = (one * w - 1, one * h - 1);
+    let (dx0, dx1, dy0, dy1) = (-wh, 2 * h * xh - wh, wh, wh - 2 * w * yh);
+    let fast = depth_fast(g, f, gw, [(dx0, dy0), (dx1, dy0), (dx0, dy1), (dx1, dy1)]);
+    ops.add_setup(12 + 4 * 3);
     Ok(StaticOutcome::Visible(StaticSetup {
         ab,
         c,
         g,
         f,
+        fast,
         gw,
         h2: 2 * h,
         w2: 2 * w,
@@ -283,22 +291,35 @@ pub fn static_test(s: &StaticSetup, pos: ScreenPos) -> Option<Hit> {
     })
 }
 
-/// The planar test's depth ([`crate::planar`]: `⌊Σ G_i·d_i / 2^f⌋` saturated) with the
-/// constant term `G_2·d_w` from setup: the same sum, the same bits. `f < 0` (a left shift, a
-/// deep triangle in a tiny viewport) takes the planar test's own function.
+/// The planar test's depth ([`crate::planar`]: `⌊Σ G_i·d_i / 2^min(f, 63)⌋` saturated to
+/// [`DEPTH_NEAR`, `DEPTH_FAR`]) with the constant term `G_2·d_w` from setup: the same sum, the
+/// same bits. When setup found that no position of the viewport saturates (`fast`: `0 ≤ f ≤ 63`
+/// and the quotient inside the depth range at the viewport's four corner positions — the sum
+/// is affine in the position and the floor monotone, so its extremes are at the corners) the
+/// quotient is the depth as it stands; otherwise the planar test's own function decides.
 #[inline(always)]
-#[allow(clippy::arithmetic_side_effects)]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
 fn static_depth(s: &StaticSetup, dx: i32, dy: i32) -> i32 {
-    if s.f < 0 {
+    if !s.fast {
         return depth(&s.g, s.f, &[dx, dy, s.wh]);
     }
     let [g0, g1, _] = s.g;
-    // |G·d| ≤ 2^61 each, three terms < 2^63 (`planar.rs`); f ≥ 0: an arithmetic shift by
-    // at most 63, the floor.
-    let acc = s.gw + i64::from(g0) * i64::from(dx) + i64::from(g1) * i64::from(dy);
-    let q = acc >> s.f.min(63);
-    // Clamped to [DEPTH_NEAR, DEPTH_FAR]: the conversion is exact.
-    i32::try_from(q.clamp(i64::from(DEPTH_NEAR), i64::from(DEPTH_FAR))).unwrap_or(DEPTH_FAR)
+    // |G·d| ≤ 2^61 each, three terms < 2^63 (`planar.rs`); `fast`: 0 ≤ f ≤ 63 and the
+    // quotient lies in [DEPTH_NEAR, DEPTH_FAR] (setup), so the truncation is exact.
+    ((s.gw + i64::from(g0) * i64::from(dx) + i64::from(g1) * i64::from(dy)) >> s.f) as i32
+}
+
+/// Whether no sample position of `vp` saturates the depth of plane `(g, f)` (`gw = G_2·d_w`):
+/// `0 ≤ f ≤ 63` and `⌊acc / 2^f⌋ ∈ [DEPTH_NEAR, DEPTH_FAR]` at the four corner positions.
+#[allow(clippy::arithmetic_side_effects)]
+#[inline(never)]
+fn depth_fast(g: [i32; 3], f: i32, gw: i64, corners: [(i32, i32); 4]) -> bool {
+    (0..=63).contains(&f)
+        && corners.iter().all(|&(dx, dy)| {
+            // The sum as in `static_depth` (< 2^63); f ∈ [0, 63]: the shift is in range.
+            let q = (gw + i64::from(g[0]) * i64::from(dx) + i64::from(g[1]) * i64::from(dy)) >> f;
+            (i64::from(DEPTH_NEAR)..=i64::from(DEPTH_FAR)).contains(&q)
+        })
 }
 
 /// Operations counted per sample test (direction 2, three edges × (2 multiply-adds, 1 add,
@@ -426,14 +447,13 @@ impl<const N: usize> StaticRenderer<N> {
             let mut x0 = 0u16;
             while x0 < self.vp.w {
                 self.render_tile(x0, y0, pattern, bounds_tile, clear, &mut fb)?;
-                for ty in 0..th {
-                    for tx in 0..tw {
-                        // x0 + tx < 2048 + 2048: no saturation happens.
-                        let (x, y) = (x0.saturating_add(tx), y0.saturating_add(ty));
-                        if x < self.vp.w && y < self.vp.h {
-                            let (tx, ty) = (usize::from(tx), usize::from(ty));
-                            out(x, y, fb.resolve(tx, ty), fb.pixel_stats(tx, ty));
-                        }
+                // The tile's pixels in raster order, one loop (not unrolled per column).
+                for (ty, tx) in (0..th).flat_map(|ty| (0..tw).map(move |tx| (ty, tx))) {
+                    // x0 + tx < 2048 + 2048: no saturation happens.
+                    let (x, y) = (x0.saturating_add(tx), y0.saturating_add(ty));
+                    if x < self.vp.w && y < self.vp.h {
+                        let (tx, ty) = (usize::from(tx), usize::from(ty));
+                        out(x, y, fb.resolve(tx, ty), fb.pixel_stats(tx, ty));
                     }
                 }
                 // tw ≥ 1 (TileBuffer's const assertion), so the walk advances.

@@ -184,17 +184,18 @@ impl<const TW: usize, const TH: usize, const S: usize> TileBuffer<TW, TH, S> {
         fb
     }
 
-    /// [`Self::clear`] as three fill loops (the static-only unit's renderer,
+    /// [`Self::clear`] as one loop over the pixels (the static-only unit's renderer,
     /// `static_unit.rs`: the same contents without `Self::new`'s unrolled stores, several KB of
     /// a small program's flash).
     #[inline(never)]
     pub(crate) fn clear_fill(&mut self, clear: Rgb888) {
-        self.color.as_flattened_mut().as_flattened_mut().fill(clear);
-        self.depth
-            .as_flattened_mut()
-            .as_flattened_mut()
-            .fill(DEPTH_EMPTY);
-        self.stats.as_flattened_mut().fill(PixelStats::default());
+        let pixels = self.color.iter_mut().flatten();
+        let pixels = pixels.zip(self.depth.iter_mut().flatten());
+        for ((c, d), st) in pixels.zip(self.stats.iter_mut().flatten()) {
+            *c = [clear; S];
+            *d = [DEPTH_EMPTY; S];
+            *st = PixelStats::default();
+        }
     }
 
     /// Count one sample test of pixel (x, y) in its counters (the static-only unit's renderer,
