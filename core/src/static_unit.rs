@@ -115,6 +115,12 @@ impl StaticSetup {
     pub fn viewport(&self) -> Viewport {
         self.vp
     }
+    /// Whether the depth takes the path without saturation (no position of the viewport
+    /// saturates; `static_depth`), else the planar test's own function: for tests that must
+    /// see both.
+    pub fn depth_unsaturated(&self) -> bool {
+        self.fast
+    }
 }
 
 /// Result of [`static_setup`].

@@ -314,6 +314,8 @@ fn static_test_is_the_planar_test_and_nothing_covered_is_culled() {
     let mut rng = Rng(seed());
     let mut mix = Mix::default();
     let mut covered = 0u64;
+    // Covered positions on setups whose depth takes the unsaturated path, and the others.
+    let mut depth_paths = [0u64; 2];
     let n = cases(6, 60);
     for case in 0..n {
         let vp = Viewport::new(8 + rng.below(30) as u16, 8 + rng.below(30) as u16).expect("vp");
@@ -350,6 +352,7 @@ fn static_test_is_the_planar_test_and_nothing_covered_is_culled() {
                             continue;
                         }
                         covered += 1;
+                        depth_paths[usize::from(s.depth_unsaturated())] += 1;
                         let f = s.footprint();
                         assert!(
                             (f.x0..f.x1).contains(&px) && (f.y0..f.y1).contains(&py),
@@ -376,6 +379,10 @@ fn static_test_is_the_planar_test_and_nothing_covered_is_culled() {
         }
     }
     assert!(covered > 1000, "only {covered} covered positions probed");
+    assert!(
+        depth_paths.iter().all(|&n| n > 0),
+        "covered positions per depth path (saturating, unsaturated): {depth_paths:?}"
+    );
     assert!(
         mix.crossing > 0 && mix.guard > 0 && mix.grid > 0,
         "the scenes lacked a case: {mix:?}"
