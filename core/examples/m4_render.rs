@@ -385,9 +385,8 @@ mod target {
             }
             self.b(&buf)
         }
-        /// The checksum and counters lines (as `report!` prints them). Inlined: the unit
-        /// programs' code is as before the harness program shared it.
-        #[inline(always)]
+        /// The checksum and counters lines as the unit program prints them (the harness
+        /// program's copy; the unit program keeps its own, so its code is as before).
         fn result(&mut self, checksum: u32, s: &uvt_core::Stats) {
             self.s("checksum ").x(checksum).s("\n");
             self.s("stats triangles=").n(s.triangles);
@@ -436,7 +435,28 @@ mod target {
                 cortex_m::asm::wfi();
             }
         };
-        o.result(r.checksum, &r.stats);
+        let s = r.stats;
+        o.s("checksum ").x(r.checksum).s("\n");
+        o.s("stats triangles=").n(s.triangles);
+        o.s(" culled_outside=").n(s.culled_outside);
+        o.s(" culled_degenerate=").n(s.culled_degenerate);
+        o.s(" static=")
+            .n(s.by_class[0])
+            .s(" motion=")
+            .n(s.by_class[1]);
+        o.s(" defocus=")
+            .n(s.by_class[2])
+            .s(" motion_defocus=")
+            .n(s.by_class[3]);
+        o.s(" tiles_visited=").n(s.tiles_visited);
+        o.s(" tiles_skipped=").n(s.tiles_skipped);
+        o.s(" samples_tested=").n(s.samples_tested);
+        o.s(" samples_covered=").n(s.samples_covered);
+        o.s(" ops_setup=")
+            .n(s.ops.setup)
+            .s(" ops_bounds=")
+            .n(s.ops.bounds);
+        o.s(" ops_sample=").n(s.ops.sample).s("\n");
         o.s("stack_peak_bytes ").n(peak() as u64).s("\n");
         o.s("calibration delay(4000000) insn=").n(cal).s("\n");
         o.s("unit ").s(crate::UNIT.unwrap_or("")).s("\n");

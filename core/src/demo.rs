@@ -272,14 +272,17 @@ pub fn render_on_with<P: crate::formats::Precision, U: Unit, V: Unit>() -> Resul
             }
         },
     )?;
+    let mut h = 0x811c_9dc5u32;
+    for b in image.iter().flatten() {
+        h = (h ^ *b as u32).wrapping_mul(0x0100_0193);
+    }
     Ok(DemoResult {
-        checksum: fnv1a(&image),
+        checksum: h,
         stats: r.stats,
     })
 }
 
-/// 32-bit FNV-1a over the image, row-major, bytes R, G, B.
-#[inline(always)]
+/// 32-bit FNV-1a over the image, row-major, bytes R, G, B (as [`render_on_with`] computes it).
 fn fnv1a(image: &[[u8; 3]]) -> u32 {
     let mut h = 0x811c_9dc5u32;
     for b in image.iter().flatten() {

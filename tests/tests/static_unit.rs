@@ -433,3 +433,66 @@ fn specialised_only_at_planar_on_the_static_only_unit() {
     assert!(!specialised::<Bounded<16, 16, 16, 20>, StaticOnly>());
     assert!(!specialised::<Exact, StaticOnly>());
 }
+
+/// Domain corners: vertex components at 0, ±1 and ±2^29 raw (the checked maximum) in
+/// viewports 1×1 … 2048×2048; setup, the tile cull over the whole viewport and its corner
+/// cells, and the test at the viewport's corner positions run without overflow (the tests are
+/// built with overflow checks) and the test equals the planar test there.
+#[test]
+fn domain_corners() {
+    let vals = [0, 1, -1, 1 << 29, -(1 << 29), (1 << 29) - 1, 12345];
+    let mut rng = Rng(seed());
+    let vps = [(1, 1), (2048, 2048), (2048, 1), (1, 2048), (37, 5)];
+    let mut visible = 0;
+    for _ in 0..cases(3000, 30000) {
+        let mut v = [uvt_core::Vertex::default(); 3];
+        for p in v.iter_mut() {
+            let mut pick =
+                || uvt_core::Coord::from_bits(vals[rng.below(vals.len() as u64) as usize]);
+            *p = uvt_core::Vertex {
+                x: pick(),
+                y: pick(),
+                z: pick(),
+                w: pick(),
+                coc: c(0.0),
+            };
+        }
+        let t = Triangle::new_static(v).expect("corner triangle in the domain");
+        let (w, h) = vps[rng.below(vps.len() as u64) as usize];
+        let vp = Viewport::new(w, h).expect("viewport");
+        let mut ops = uvt_core::Ops::default();
+        let StaticOutcome::Visible(s) = static_setup(&t, vp, &mut ops).expect("static") else {
+            continue;
+        };
+        visible += 1;
+        let planar = Setup::unculled_with::<PlanarPrecision>(&t, vp);
+        let (xe, ye) = (u32::from(w) * 256 - 1, u32::from(h) * 256 - 1);
+        for (xs, ys) in [(0, 0), (xe, 0), (0, ye), (xe, ye), (xe / 2, ye / 2)] {
+            let pos = ScreenPos { xs, ys };
+            let want = planar_test(&planar, pos, &mut uvt_core::Ops::default());
+            assert_eq!(
+                static_test(&s, pos),
+                want,
+                "viewport {w}x{h}, position ({xs}, {ys}) ({xs:#x}, {ys:#x}), UVT_SEED={}\n{}",
+                seed(),
+                dump(&t)
+            );
+        }
+        let whole = PixelRect {
+            x0: 0,
+            y0: 0,
+            x1: w,
+            y1: h,
+        };
+        let last = PixelRect {
+            x0: w - 1,
+            y0: h - 1,
+            x1: w,
+            y1: h,
+        };
+        for cell in [whole, last] {
+            let _ = static_tile(&s, cell, &mut ops);
+        }
+    }
+    assert!(visible > 100, "only {visible} visible corner triangles");
+}
