@@ -200,7 +200,7 @@ pub fn static_setup(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> Result<Stati
         // The fill rule on E_k = 0 (`planar.rs`, on the oriented normal): σa > 0, or a = 0
         // and σb > 0. Refused: the edge needs σE_k > 0, i.e. σE_k − 1 ≥ 0 (integers).
         let tie = *a > 0 || (*a == 0 && *b > 0);
-        *ck = i64::from(sigma) * i64::from(nk[2]) * i64::from(wh) - i64::from(!tie);
+        *ck = i64::from(sigma * nk[2]) * i64::from(wh) - i64::from(!tie);
     }
     let (g, f) = pl.depth_plane();
     // |G| ≤ 2^31, d_w ≤ 2^30.
