@@ -127,6 +127,17 @@ const UNIT_SEL: usize = match UNIT {
     }
 };
 
+/// `UVT_M4_HARNESS` (with `UVT_M4_UNIT`): build the harness program — the unit program with
+/// no unit code linked (`m4_report.sh --units` measures its flash beside the units').
+#[cfg_attr(not(target_os = "none"), allow(dead_code))]
+const HARNESS: bool = option_env!("UVT_M4_HARNESS").is_some();
+
+/// `UVT_M4_EMPTY` (with `UVT_M4_UNIT`): also measure the sample-test loop with the test
+/// replaced by `black_box` (`cost sample_empty`, the harness's own cost per call), and the
+/// tile-bounds loop the same way (`cost bounds_empty`).
+#[cfg_attr(not(target_os = "none"), allow(dead_code))]
+const EMPTY: bool = option_env!("UVT_M4_EMPTY").is_some();
+
 /// Optional `UVT_M4_PRIMS` (a unit name; default `UVT_M4_UNIT`): run the unit on the demo
 /// prims *this* unit accepts — e.g. the full unit on the static-only unit's prims, to compare
 /// the two on the same work. Its index in `UNIT_NAMES`; an unknown name is a build error.
@@ -374,6 +385,31 @@ mod target {
             }
             self.b(&buf)
         }
+        /// The checksum and counters lines as the unit program prints them (the harness
+        /// program's copy; the unit program keeps its own, so its code is as before).
+        fn result(&mut self, checksum: u32, s: &uvt_core::Stats) {
+            self.s("checksum ").x(checksum).s("\n");
+            self.s("stats triangles=").n(s.triangles);
+            self.s(" culled_outside=").n(s.culled_outside);
+            self.s(" culled_degenerate=").n(s.culled_degenerate);
+            self.s(" static=")
+                .n(s.by_class[0])
+                .s(" motion=")
+                .n(s.by_class[1]);
+            self.s(" defocus=")
+                .n(s.by_class[2])
+                .s(" motion_defocus=")
+                .n(s.by_class[3]);
+            self.s(" tiles_visited=").n(s.tiles_visited);
+            self.s(" tiles_skipped=").n(s.tiles_skipped);
+            self.s(" samples_tested=").n(s.samples_tested);
+            self.s(" samples_covered=").n(s.samples_covered);
+            self.s(" ops_setup=")
+                .n(s.ops.setup)
+                .s(" ops_bounds=")
+                .n(s.ops.bounds);
+            self.s(" ops_sample=").n(s.ops.sample).s("\n");
+        }
         fn cost(&mut self, name: &str, (calls, insn): (u64, u64)) {
             self.s("cost ")
                 .s(name)
@@ -389,6 +425,9 @@ mod target {
     /// default configuration only. Prints the same lines as the other programs.
     fn unit_program(syst: &mut cortex_m::peripheral::SYST, cal: u64) -> ! {
         let mut o = Plain(cortex_m_semihosting::hio::hstdout().ok());
+        if crate::HARNESS {
+            harness_program(o, cal);
+        }
         let Ok(r) = with_unit!(demo::render_on_with,) else {
             o.s("error rendering the unit's prims\n");
             debug::exit(debug::EXIT_FAILURE);
@@ -441,6 +480,40 @@ mod target {
             with_unit!(demo::cost::samples_all_on_with, 2).unwrap_or(0)
         });
         o.cost("sample_unit", c);
+        // The measuring loop alone (the same loop, the test replaced by `black_box`): only in
+        // the calibration build (`UVT_M4_EMPTY`), so the measured programs stay as they are.
+        if crate::EMPTY {
+            let c = ticks(syst, || {
+                with_unit!(demo::cost::samples_empty_on_with, 2).unwrap_or(0)
+            });
+            o.cost("sample_empty", c);
+            let c = ticks(syst, || {
+                with_unit!(demo::cost::bounds_empty_on_with, 5).unwrap_or(0)
+            });
+            o.cost("bounds_empty", c);
+        }
+        debug::exit(debug::EXIT_SUCCESS);
+        loop {
+            cortex_m::asm::wfi();
+        }
+    }
+
+    /// The harness program (`UVT_M4_HARNESS`): the unit program's output, stack painting and
+    /// timing code with no unit code linked (nothing rendered or measured), so its flash is
+    /// the part of every unit program that is not the unit.
+    fn harness_program(mut o: Plain, cal: u64) -> ! {
+        // The demo scene (its data and checked constructors), built and not rendered.
+        let scene = core::hint::black_box((demo::prims(), demo::viewport(), &demo::SAMPLES));
+        let r = core::hint::black_box(demo::DemoResult {
+            checksum: u32::from(scene.0.is_ok()),
+            stats: uvt_core::Stats::default(),
+        });
+        o.result(r.checksum, &r.stats);
+        o.s("stack_peak_bytes ").n(peak() as u64).s("\n");
+        o.s("calibration delay(4000000) insn=").n(cal).s("\n");
+        o.s("unit ").s(crate::UNIT.unwrap_or("")).s("\n");
+        o.s("harness\n");
+        o.cost("none", (0, 0));
         debug::exit(debug::EXIT_SUCCESS);
         loop {
             cortex_m::asm::wfi();

@@ -16,6 +16,7 @@ use crate::formats::{Coord, Lens, SubPixel, Time};
 use crate::input::{Sample, SamplePattern, Triangle, Vertex, Viewport};
 use crate::sample::{sample_test, sample_test_unit, ScreenPos};
 use crate::setup::{classify, setup_unit, Outcome};
+use crate::static_unit::{static_setup, static_test, static_tile, StaticOutcome, StaticRenderer};
 use crate::stats::{Ops, Stats};
 use crate::tile::{Prim, Renderer};
 use crate::unit::Unit;
@@ -250,6 +251,9 @@ pub fn render_on<U: Unit, V: Unit>() -> Result<DemoResult, Error> {
 #[inline(always)]
 pub fn render_on_with<P: crate::formats::Precision, U: Unit, V: Unit>() -> Result<DemoResult, Error>
 {
+    if const { crate::static_unit::specialised::<P, U>() } {
+        return render_static::<V>();
+    }
     let prims = unit_prims::<V>()?;
     let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLE_TABLE)?;
     let mut r = Renderer::<Laine2011, NTRIS, P, U>::new(Laine2011, viewport()?, &prims)?;
@@ -274,6 +278,44 @@ pub fn render_on_with<P: crate::formats::Precision, U: Unit, V: Unit>() -> Resul
     }
     Ok(DemoResult {
         checksum: h,
+        stats: r.stats,
+    })
+}
+
+/// 32-bit FNV-1a over the image, row-major, bytes R, G, B (as [`render_on_with`] computes it).
+fn fnv1a(image: &[[u8; 3]]) -> u32 {
+    let mut h = 0x811c_9dc5u32;
+    for b in image.iter().flatten() {
+        h = (h ^ *b as u32).wrapping_mul(0x0100_0193);
+    }
+    h
+}
+
+/// [`render_on_with`] on the static-only unit at a planar precision
+/// ([`crate::static_unit::specialised`]): the prims unit `V` accepts on the static-specialised
+/// [`StaticRenderer`] (`Err(ClassNotInUnit)` unless all are static and in focus).
+#[inline(always)]
+fn render_static<V: Unit>() -> Result<DemoResult, Error> {
+    let prims = unit_prims::<V>()?;
+    let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLE_TABLE)?;
+    let mut r = StaticRenderer::<NTRIS>::new(viewport()?, &prims)?;
+    let mut image = [[0u8; 3]; NPIXELS];
+    r.render_with::<8, 8, SPP>(
+        &pattern,
+        BOUNDS_TILE,
+        Rgb888::new(16, 16, 24),
+        |x, y, c, _| {
+            // x, y < SIZE = 32: the index < 1024.
+            let idx = usize::from(y)
+                .saturating_mul(usize::from(SIZE))
+                .saturating_add(usize::from(x));
+            if let Some(p) = image.get_mut(idx) {
+                *p = [c.r(), c.g(), c.b()];
+            }
+        },
+    )?;
+    Ok(DemoResult {
+        checksum: fnv1a(&image),
         stats: r.stats,
     })
 }
@@ -365,6 +407,9 @@ pub mod cost {
     pub fn setup_all_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
         reps: u32,
     ) -> Result<u64, Error> {
+        if const { crate::static_unit::specialised::<P, U>() } {
+            return static_cost::setup::<V>(reps);
+        }
         let prims = unit_prims::<V>()?;
         let vp = viewport()?;
         let mut ops = Ops::default();
@@ -396,6 +441,9 @@ pub mod cost {
     pub fn bounds_all_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
         reps: u32,
     ) -> Result<u64, Error> {
+        if const { crate::static_unit::specialised::<P, U>() } {
+            return static_cost::bounds::<V, false>(reps);
+        }
         let prims = unit_prims::<V>()?;
         let vp = viewport()?;
         let mut ops = Ops::default();
@@ -431,6 +479,9 @@ pub mod cost {
     pub fn samples_all_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
         reps: u32,
     ) -> Result<u64, Error> {
+        if const { crate::static_unit::specialised::<P, U>() } {
+            return static_cost::samples::<V, false>(reps);
+        }
         let prims = unit_prims::<V>()?;
         let vp = viewport()?;
         let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLE_TABLE)?;
@@ -457,6 +508,144 @@ pub mod cost {
             }
         }
         Ok(calls)
+    }
+
+    /// The harness alone: [`bounds_all_on_with`]'s loop (the same setups, cells and call
+    /// count) with the tile bounds replaced by handing their arguments to `black_box`.
+    pub fn bounds_empty_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
+        reps: u32,
+    ) -> Result<u64, Error> {
+        if const { crate::static_unit::specialised::<P, U>() } {
+            return static_cost::bounds::<V, true>(reps);
+        }
+        let prims = unit_prims::<V>()?;
+        let vp = viewport()?;
+        let mut ops = Ops::default();
+        let mut calls = 0u64;
+        for p in prims.iter() {
+            let Ok(Outcome::Visible(s)) = setup_unit::<P, U>(&p.tri, vp, &mut ops) else {
+                continue;
+            };
+            let c = Laine2011.prepare_unit::<U>(&s, &mut ops);
+            for _ in 0..reps {
+                for cell in s.footprint().cells(2) {
+                    black_box((black_box(&s), &c, cell));
+                    calls = calls.saturating_add(1);
+                }
+            }
+        }
+        Ok(calls)
+    }
+
+    /// The harness alone: [`samples_all_on_with`]'s loop (the same setups, window, passes and
+    /// call count) with the sample test replaced by handing its arguments to `black_box` — the
+    /// measuring loop's own cost per call, to subtract from the sample test's (the same loop
+    /// for every unit and path).
+    pub fn samples_empty_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
+        reps: u32,
+    ) -> Result<u64, Error> {
+        if const { crate::static_unit::specialised::<P, U>() } {
+            return static_cost::samples::<V, true>(reps);
+        }
+        let prims = unit_prims::<V>()?;
+        let vp = viewport()?;
+        let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLE_TABLE)?;
+        let mut ops = Ops::default();
+        let mut calls = 0u64;
+        for p in prims.iter() {
+            let Ok(Outcome::Visible(s)) = setup_unit::<P, U>(&p.tri, vp, &mut ops) else {
+                continue;
+            };
+            for _ in 0..reps.saturating_mul(SAMPLE_PASSES) {
+                for py in 12..20u16 {
+                    for px in 12..20u16 {
+                        for smp in pattern.pixel(px, py) {
+                            black_box((black_box(&s), ScreenPos::of(px, py, smp), smp));
+                            calls = calls.saturating_add(1);
+                        }
+                    }
+                }
+            }
+        }
+        Ok(calls)
+    }
+
+    /// The per-stage workloads on the static-specialised path
+    /// ([`crate::static_unit::specialised`]): the same prims, tiles, window and call counts as
+    /// the general ones, on [`static_setup`], [`static_tile`] and [`static_test`].
+    mod static_cost {
+        use super::*;
+
+        /// Setup of the prims unit `V` accepts, `reps` times.
+        pub(super) fn setup<V: Unit>(reps: u32) -> Result<u64, Error> {
+            let prims = unit_prims::<V>()?;
+            let vp = viewport()?;
+            let mut ops = Ops::default();
+            let mut calls = 0u64;
+            for _ in 0..reps {
+                for p in prims.iter() {
+                    black_box(static_setup(black_box(&p.tri), vp, &mut ops).ok());
+                    calls = calls.saturating_add(1);
+                }
+            }
+            Ok(calls)
+        }
+
+        /// The 2×2 tile cull over every visible prim's footprint, `reps` times (`EMPTY`: the
+        /// harness alone, as [`bounds_empty_on_with`]).
+        pub(super) fn bounds<V: Unit, const EMPTY: bool>(reps: u32) -> Result<u64, Error> {
+            let prims = unit_prims::<V>()?;
+            let vp = viewport()?;
+            let mut ops = Ops::default();
+            let mut calls = 0u64;
+            for p in prims.iter() {
+                let Ok(StaticOutcome::Visible(s)) = static_setup(&p.tri, vp, &mut ops) else {
+                    continue;
+                };
+                for _ in 0..reps {
+                    for cell in s.footprint().cells(2) {
+                        if EMPTY {
+                            black_box((black_box(&s), cell));
+                        } else {
+                            black_box(static_tile(black_box(&s), cell, &mut ops));
+                        }
+                        calls = calls.saturating_add(1);
+                    }
+                }
+            }
+            Ok(calls)
+        }
+
+        /// The sample window of every visible prim (`EMPTY`: the harness alone, as
+        /// [`samples_empty_on_with`]).
+        pub(super) fn samples<V: Unit, const EMPTY: bool>(reps: u32) -> Result<u64, Error> {
+            let prims = unit_prims::<V>()?;
+            let vp = viewport()?;
+            let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLE_TABLE)?;
+            let mut ops = Ops::default();
+            let mut calls = 0u64;
+            for p in prims.iter() {
+                let Ok(StaticOutcome::Visible(s)) = static_setup(&p.tri, vp, &mut ops) else {
+                    continue;
+                };
+                for _ in 0..reps.saturating_mul(SAMPLE_PASSES) {
+                    for py in 12..20u16 {
+                        for px in 12..20u16 {
+                            for smp in pattern.pixel(px, py) {
+                                let pos = ScreenPos::of(px, py, smp);
+                                if EMPTY {
+                                    black_box((black_box(&s), pos, smp));
+                                } else {
+                                    black_box(static_test(black_box(&s), pos));
+                                }
+                                calls = calls.saturating_add(1);
+                            }
+                        }
+                    }
+                }
+            }
+            Ok(calls)
+        }
     }
 
     /// Passes over the sample window per rep in [`samples_class_with`]: the triangles are set

@@ -13,7 +13,9 @@
 //! 3. [`sample`] — the exact 5D sample test with a fill rule, and depth; [`bounded`] — the
 //!    bounded (hardware-width) sample test of a [`Bounded`] precision; [`planar`] — the static
 //!    test of a [`Planar`] precision (vertices rounded once to 15 bits).
-//! 4. [`tile`] — the tile framebuffer, resolve and the render loop.
+//! 4. [`tile`] — the tile framebuffer, resolve and the render loop; [`static_unit`] — the
+//!    static-only unit's own setup, 2D tile cull, sample test and renderer at a [`Planar`]
+//!    precision.
 //!
 //! Number formats are all in [`formats`]; `core/README.md` has the full width table.
 #![cfg_attr(not(test), no_std)]
@@ -54,6 +56,7 @@ mod planar_corners;
 mod planar_frozen;
 pub mod sample;
 pub mod setup;
+pub mod static_unit;
 pub mod stats;
 pub mod strategies;
 #[cfg(test)]
@@ -77,6 +80,7 @@ pub use input::{PixelRect, Sample, SamplePattern, Triangle, Vertex, Viewport};
 pub use interval::Interval;
 pub use sample::{sample_eval, sample_test, Hit, SampleEval, ScreenPos};
 pub use setup::{setup, setup_scaled, setup_with, Class, Cull, Outcome, Setup};
+pub use static_unit::{StaticRenderer, StaticSetup};
 pub use stats::{Ops, Stats};
 pub use tile::{resolve_colors, DepthTest, PixelStats, Prim, RenderError, Renderer, TileBuffer};
 pub use unit::{DefocusOnly, Full, MotionOnly, StaticOnly, Unit};

@@ -358,7 +358,7 @@ fn fill(n: &[i32; 3], sigma: i32) -> bool {
 /// Depth of a hit from the plane `(G, f)` (module docs).
 #[inline(never)]
 #[allow(clippy::arithmetic_side_effects)]
-fn depth(g: &[i32; 3], f: i32, d: &[i32; 3]) -> i32 {
+pub(crate) fn depth(g: &[i32; 3], f: i32, d: &[i32; 3]) -> i32 {
     // |G| ≤ 2^31, |d| ≤ 2^30: each product ≤ 2^61, the sum < 2^63.
     let acc: i64 = g
         .iter()

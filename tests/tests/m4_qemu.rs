@@ -191,7 +191,8 @@ fn cortex_m4f_unit_programs_are_bit_exact_with_host() {
 
 /// The full and static-only Cortex-M4F programs at the planar static configuration
 /// (`planar-16-16-16-20`) against the host render of the same prims on the same unit at
-/// `PlanarPrecision`.
+/// `PlanarPrecision`; the static-only program (the static-specialised path) also against the
+/// host's full unit on the static prims (checksum and covered count).
 #[test]
 fn cortex_m4f_planar_unit_programs_are_bit_exact_with_host() {
     use uvt_core::demo::render_on_with;
@@ -219,5 +220,25 @@ fn cortex_m4f_planar_unit_programs_are_bit_exact_with_host() {
         );
         let cpu = format!("cortex-m4 (unit {name}, planar-16-16-16-20)");
         check_output(&text, lines(r), "thumbv7em-none-eabihf", "mps2-an386", &cpu);
+        if name == StaticOnly::NAME {
+            // The static-only program runs the static-specialised path (`static_unit.rs`):
+            // its image and covered count are the full unit's on the same prims.
+            let full = render_on_with::<PlanarPrecision, Full, StaticOnly>()
+                .unwrap_or_else(|e| panic!("full unit on the static prims (planar): {e}"));
+            let want = format!("checksum {:#010x}", full.checksum);
+            assert!(
+                text.lines().any(|l| l == want),
+                "static-only planar program against the full unit on its prims: expected \
+                 '{want}' ({}), program output:\n{text}",
+                full.checksum
+            );
+            let covered = format!(" samples_covered={} ", full.stats.samples_covered);
+            assert!(
+                text.lines()
+                    .any(|l| l.starts_with("stats ") && l.contains(&covered)),
+                "static-only planar program: expected '{covered}' (the full unit's), \
+                 program output:\n{text}"
+            );
+        }
     }
 }
