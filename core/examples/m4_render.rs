@@ -22,13 +22,15 @@
 //! demo prims the unit accepts, rendered with `Renderer<Laine2011, _, DefaultPrecision, U>`
 //! (checksum and counters) and the cost lines `setup_unit`, `bounds_unit`, `sample_unit` of
 //! those prims on `U`. Nothing of the precision sweep or the exact configuration is in it, so
-//! the `full` program is the same program with `U = Full`. `m4_report.sh --units` builds and
+//! the `full` program is the same program with `U = Full`. With `UVT_M4_PREC=planar-16-16-16-20`
+//! the unit program is built at the planar static configuration (`uvt_core::PlanarPrecision`)
+//! instead of the default (and prints `unit_prec NAME`). `m4_report.sh --units` builds and
 //! runs all four (and the full unit on each narrower unit's prims: `UVT_M4_PRIMS`).
 #![cfg_attr(target_os = "none", no_std)]
 #![cfg_attr(target_os = "none", no_main)]
 
 /// The precision sweep's configurations (names of `uvt precision`), in `SEL` order.
-const NAMES: [&str; 7] = [
+const NAMES: [&str; 8] = [
     "exact-16-16-16",
     "bounded-16-16-16-20",
     "bounded-16-16-16-22",
@@ -36,7 +38,13 @@ const NAMES: [&str; 7] = [
     "bounded-12-12-12-24",
     "bounded-12-12-12-26",
     "bounded-8-8-8-28",
+    "planar-16-16-16-20",
 ];
+
+/// Index of the planar static configuration (`uvt_core::PlanarPrecision`) in `NAMES`: not
+/// part of the sweep (`m4_report.sh --sweep` lists its own names); a unit program may be built
+/// at it (`UVT_M4_UNIT` with `UVT_M4_PREC=planar-16-16-16-20`).
+const PLANAR_SEL: usize = 7;
 
 /// The default configuration's name: the core's `DefaultPrecision` (exact or the bounded
 /// candidate).
@@ -83,7 +91,7 @@ const SEL: usize = {
 macro_rules! with_sel {
     ($f:ident, $reps:expr) => {{
         use uvt_core::demo::cost::$f as f;
-        use uvt_core::{Bounded, Prec};
+        use uvt_core::{Bounded, Planar, Prec};
         match crate::SEL {
             0 => f::<Prec<16, 16, 16>>($reps),
             1 => f::<Bounded<16, 16, 16, 20>>($reps),
@@ -91,7 +99,8 @@ macro_rules! with_sel {
             3 => f::<Bounded<16, 16, 16, 24>>($reps),
             4 => f::<Bounded<12, 12, 12, 24>>($reps),
             5 => f::<Bounded<12, 12, 12, 26>>($reps),
-            _ => f::<Bounded<8, 8, 8, 28>>($reps),
+            6 => f::<Bounded<8, 8, 8, 28>>($reps),
+            _ => f::<Planar<16, 16, 16, 20>>($reps),
         }
         .unwrap_or(0)
     }};
@@ -118,6 +127,17 @@ const UNIT_SEL: usize = match UNIT {
     }
 };
 
+/// `UVT_M4_HARNESS` (with `UVT_M4_UNIT`): build the harness program — the unit program with
+/// no unit code linked (`m4_report.sh --units` measures its flash beside the units').
+#[cfg_attr(not(target_os = "none"), allow(dead_code))]
+const HARNESS: bool = option_env!("UVT_M4_HARNESS").is_some();
+
+/// `UVT_M4_EMPTY` (with `UVT_M4_UNIT`): also measure the sample-test loop with the test
+/// replaced by `black_box` (`cost sample_empty`, the harness's own cost per call), and the
+/// tile-bounds loop the same way (`cost bounds_empty`).
+#[cfg_attr(not(target_os = "none"), allow(dead_code))]
+const EMPTY: bool = option_env!("UVT_M4_EMPTY").is_some();
+
 /// Optional `UVT_M4_PRIMS` (a unit name; default `UVT_M4_UNIT`): run the unit on the demo
 /// prims *this* unit accepts — e.g. the full unit on the static-only unit's prims, to compare
 /// the two on the same work. Its index in `UNIT_NAMES`; an unknown name is a build error.
@@ -137,24 +157,43 @@ const PRIMS_SEL: usize = match option_env!("UVT_M4_PRIMS") {
     }
 };
 
-/// `f::<U, V>(args)` for the selected unit `U` and prims unit `V` (constant matches: one
-/// instantiation kept).
+/// The unit programs' configuration: the default, or the planar static one
+/// (`UVT_M4_PREC=planar-16-16-16-20`); any other `UVT_M4_PREC` with `UVT_M4_UNIT` is a build
+/// error.
+const UNIT_PLANAR: bool = {
+    let planar = SEL == PLANAR_SEL;
+    assert!(
+        UNIT.is_none() || planar || same(PREC, DEFAULT),
+        "UVT_M4_UNIT builds the default configuration or planar-16-16-16-20 only"
+    );
+    planar
+};
+
+/// `f::<P, U, V>(args)` for the selected configuration `P` (the default or the planar one),
+/// unit `U` and prims unit `V` (constant matches: one instantiation kept).
 macro_rules! with_unit {
     ($($f:ident)::+, $($arg:expr),*) => {{
         use uvt_core::{DefocusOnly, Full, MotionOnly, StaticOnly};
         match crate::UNIT_SEL {
-            0 => with_unit!(@v Full, $($f)::+, $($arg),*),
-            1 => with_unit!(@v MotionOnly, $($f)::+, $($arg),*),
-            2 => with_unit!(@v DefocusOnly, $($f)::+, $($arg),*),
-            _ => with_unit!(@v StaticOnly, $($f)::+, $($arg),*),
+            0 => with_unit!(@p Full, $($f)::+, $($arg),*),
+            1 => with_unit!(@p MotionOnly, $($f)::+, $($arg),*),
+            2 => with_unit!(@p DefocusOnly, $($f)::+, $($arg),*),
+            _ => with_unit!(@p StaticOnly, $($f)::+, $($arg),*),
         }
     }};
-    (@v $u:ident, $($f:ident)::+, $($arg:expr),*) => {
+    (@p $u:ident, $($f:ident)::+, $($arg:expr),*) => {
+        if crate::UNIT_PLANAR {
+            with_unit!(@v uvt_core::PlanarPrecision, $u, $($f)::+, $($arg),*)
+        } else {
+            with_unit!(@v uvt_core::DefaultPrecision, $u, $($f)::+, $($arg),*)
+        }
+    };
+    (@v $p:ty, $u:ident, $($f:ident)::+, $($arg:expr),*) => {
         match crate::PRIMS_SEL {
-            0 => $($f)::+::<$u, Full>($($arg),*),
-            1 => $($f)::+::<$u, MotionOnly>($($arg),*),
-            2 => $($f)::+::<$u, DefocusOnly>($($arg),*),
-            _ => $($f)::+::<$u, StaticOnly>($($arg),*),
+            0 => $($f)::+::<$p, $u, Full>($($arg),*),
+            1 => $($f)::+::<$p, $u, MotionOnly>($($arg),*),
+            2 => $($f)::+::<$p, $u, DefocusOnly>($($arg),*),
+            _ => $($f)::+::<$p, $u, StaticOnly>($($arg),*),
         }
     };
 }
@@ -346,6 +385,31 @@ mod target {
             }
             self.b(&buf)
         }
+        /// The checksum and counters lines as the unit program prints them (the harness
+        /// program's copy; the unit program keeps its own, so its code is as before).
+        fn result(&mut self, checksum: u32, s: &uvt_core::Stats) {
+            self.s("checksum ").x(checksum).s("\n");
+            self.s("stats triangles=").n(s.triangles);
+            self.s(" culled_outside=").n(s.culled_outside);
+            self.s(" culled_degenerate=").n(s.culled_degenerate);
+            self.s(" static=")
+                .n(s.by_class[0])
+                .s(" motion=")
+                .n(s.by_class[1]);
+            self.s(" defocus=")
+                .n(s.by_class[2])
+                .s(" motion_defocus=")
+                .n(s.by_class[3]);
+            self.s(" tiles_visited=").n(s.tiles_visited);
+            self.s(" tiles_skipped=").n(s.tiles_skipped);
+            self.s(" samples_tested=").n(s.samples_tested);
+            self.s(" samples_covered=").n(s.samples_covered);
+            self.s(" ops_setup=")
+                .n(s.ops.setup)
+                .s(" ops_bounds=")
+                .n(s.ops.bounds);
+            self.s(" ops_sample=").n(s.ops.sample).s("\n");
+        }
         fn cost(&mut self, name: &str, (calls, insn): (u64, u64)) {
             self.s("cost ")
                 .s(name)
@@ -361,7 +425,10 @@ mod target {
     /// default configuration only. Prints the same lines as the other programs.
     fn unit_program(syst: &mut cortex_m::peripheral::SYST, cal: u64) -> ! {
         let mut o = Plain(cortex_m_semihosting::hio::hstdout().ok());
-        let Ok(r) = with_unit!(demo::render_on,) else {
+        if crate::HARNESS {
+            harness_program(o, cal);
+        }
+        let Ok(r) = with_unit!(demo::render_on_with,) else {
             o.s("error rendering the unit's prims\n");
             debug::exit(debug::EXIT_FAILURE);
             loop {
@@ -393,21 +460,60 @@ mod target {
         o.s("stack_peak_bytes ").n(peak() as u64).s("\n");
         o.s("calibration delay(4000000) insn=").n(cal).s("\n");
         o.s("unit ").s(crate::UNIT.unwrap_or("")).s("\n");
+        // Only the planar programs name their configuration: the default's program stays as
+        // small as before the planar configuration (a constant condition, compiled out).
+        if crate::UNIT_PLANAR {
+            o.s("unit_prec ").s(crate::PREC).s("\n");
+        }
         o.s("prims ")
             .s(uvt_core::unit::UNIT_NAMES[crate::PRIMS_SEL])
             .s("\n");
         let c = ticks(syst, || {
-            with_unit!(demo::cost::setup_all_on, 20).unwrap_or(0)
+            with_unit!(demo::cost::setup_all_on_with, 20).unwrap_or(0)
         });
         o.cost("setup_unit", c);
         let c = ticks(syst, || {
-            with_unit!(demo::cost::bounds_all_on, 5).unwrap_or(0)
+            with_unit!(demo::cost::bounds_all_on_with, 5).unwrap_or(0)
         });
         o.cost("bounds_unit", c);
         let c = ticks(syst, || {
-            with_unit!(demo::cost::samples_all_on, 2).unwrap_or(0)
+            with_unit!(demo::cost::samples_all_on_with, 2).unwrap_or(0)
         });
         o.cost("sample_unit", c);
+        // The measuring loop alone (the same loop, the test replaced by `black_box`): only in
+        // the calibration build (`UVT_M4_EMPTY`), so the measured programs stay as they are.
+        if crate::EMPTY {
+            let c = ticks(syst, || {
+                with_unit!(demo::cost::samples_empty_on_with, 2).unwrap_or(0)
+            });
+            o.cost("sample_empty", c);
+            let c = ticks(syst, || {
+                with_unit!(demo::cost::bounds_empty_on_with, 5).unwrap_or(0)
+            });
+            o.cost("bounds_empty", c);
+        }
+        debug::exit(debug::EXIT_SUCCESS);
+        loop {
+            cortex_m::asm::wfi();
+        }
+    }
+
+    /// The harness program (`UVT_M4_HARNESS`): the unit program's output, stack painting and
+    /// timing code with no unit code linked (nothing rendered or measured), so its flash is
+    /// the part of every unit program that is not the unit.
+    fn harness_program(mut o: Plain, cal: u64) -> ! {
+        // The demo scene (its data and checked constructors), built and not rendered.
+        let scene = core::hint::black_box((demo::prims(), demo::viewport(), &demo::SAMPLES));
+        let r = core::hint::black_box(demo::DemoResult {
+            checksum: u32::from(scene.0.is_ok()),
+            stats: uvt_core::Stats::default(),
+        });
+        o.result(r.checksum, &r.stats);
+        o.s("stack_peak_bytes ").n(peak() as u64).s("\n");
+        o.s("calibration delay(4000000) insn=").n(cal).s("\n");
+        o.s("unit ").s(crate::UNIT.unwrap_or("")).s("\n");
+        o.s("harness\n");
+        o.cost("none", (0, 0));
         debug::exit(debug::EXIT_SUCCESS);
         loop {
             cortex_m::asm::wfi();
@@ -428,7 +534,7 @@ mod target {
 fn main() {
     use uvt_core::demo;
     if let Some(name) = UNIT {
-        match with_unit!(demo::render_on,) {
+        match with_unit!(demo::render_on_with,) {
             Ok(r) => report!(println, r),
             Err(e) => {
                 eprintln!("error {e}");
@@ -436,6 +542,7 @@ fn main() {
             }
         }
         println!("unit {name}");
+        println!("unit_prec {PREC}");
         println!("prims {}", uvt_core::unit::UNIT_NAMES[PRIMS_SEL]);
         return;
     }

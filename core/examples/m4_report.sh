@@ -16,7 +16,14 @@
 # .bss), peak stack, instructions per setup / tile bounds / sample test and the image checksum
 # to OUT.json (default host/report/m4_units.json); then the full unit on each narrower unit's
 # prims (UVT_M4_PRIMS; its checksum must equal that unit's), so the cost per call can be
-# compared on the same work ("full_on_unit_prims").
+# compared on the same work ("full_on_unit_prims"). Beside them: the harness (the unit program
+# with no unit code linked, UVT_M4_HARNESS: "harness", and "unit_flash" = flash − its flash) and
+# the measuring loop's own cost per sample-test call (a second build with UVT_M4_EMPTY:
+# "sample_empty"; "sample_net" = "sample_raw" − "sample_empty"; "bounds_empty" the same for the
+# tile-bounds loop).
+# `m4_report.sh --units OUT.json PREC` does the same at configuration PREC (UVT_M4_PREC; the
+# default configuration or planar-16-16-16-20), e.g. `--units /tmp/m4_units_planar.json
+# planar-16-16-16-20`; without PREC the output is the default configuration's, as before.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 tdir=${CARGO_TARGET_DIR:-target}
@@ -27,44 +34,78 @@ publish() { mv "$1" "$2"; cat "$2"; exit 0; }
 sec() { printf '%d' "0x$(readelf -S -W "$1" | awk -v s="$2" '{for (i = 1; i <= NF; i++) if ($i == s) print $(i + 4)}')"; }
 if [[ "${1:-}" == "--units" ]]; then
   json=${2:-host/report/m4_units.json}
+  uprec=${3:-}
+  if [[ -n "$uprec" ]]; then export UVT_M4_PREC=$uprec; fi
   per() { echo "$1" | awk -v s="$2" '$1=="cost" && $2==s {split($3,a,"="); split($4,b,"="); printf "%.0f", b[2]/a[2]}'; }
+  per1() { echo "$1" | awk -v s="$2" '$1=="cost" && $2==s {split($3,a,"="); split($4,b,"="); printf "%.1f", b[2]/a[2]}'; }
   field() { echo "$1" | awk -v k="$2" '$1 == k {print $2}'; }
+  elf=$tdir/thumbv7em-none-eabihf/release/examples/m4_render
+  # Build m4_render with the given environment assignments and run it under QEMU (stdout).
+  m4run() {
+    env "$@" cargo build -q --release -p uvt-core --example m4_render --target thumbv7em-none-eabihf
+    local out
+    out=$(timeout 120 qemu-system-arm -machine mps2-an386 -cpu cortex-m4 -nographic -monitor none \
+        -semihosting-config enable=on,target=native -icount shift=0 -kernel "$elf")
+    local cal
+    cal=$(echo "$out" | awk -F= '/^calibration/ {print $2}')
+    [[ $cal -ge 7999922 && $cal -le 8000082 ]] || { echo "calibration $cal, expected 8000002 +- 80" >&2; exit 1; }
+    echo "$out"
+  }
+  # The measuring loop's own cost per sample-test call: the same program built with
+  # UVT_M4_EMPTY (the loop with the test replaced by black_box), one decimal.
+  empty_of() {
+    local out
+    out=$(m4run "$@" UVT_M4_EMPTY=1)
+    echo "$(per1 "$out" sample_empty) $(per1 "$out" bounds_empty)"
+  }
+  # The harness: the unit program with no unit code linked (UVT_M4_HARNESS).
+  echo "m4_report --units: harness" >&2
+  m4=$(m4run UVT_M4_UNIT=static-only UVT_M4_HARNESS=1)
+  [[ "$(echo "$m4" | awk '$1 == "harness"')" == "harness" ]] || { echo "m4_render not built as the harness" >&2; exit 1; }
+  htext=$(sec "$elf" .text)
+  hflash=$(( $(sec "$elf" .vector_table) + htext + $(sec "$elf" .rodata) ))
+  hram=$(( $(sec "$elf" .data) + $(sec "$elf" .bss) ))
+  harness="{\"flash\": $hflash, \"text\": $htext, \"ram\": $hram, \"stack\": $(field "$m4" stack_peak_bytes)}"
   rows=()
   same=()
   declare -A sums
   for u in full motion-only defocus-only static-only; do
     echo "m4_report --units: $u" >&2
-    UVT_M4_UNIT=$u cargo build -q --release -p uvt-core --example m4_render --target thumbv7em-none-eabihf
-    elf=$tdir/thumbv7em-none-eabihf/release/examples/m4_render
-    m4=$(timeout 120 qemu-system-arm -machine mps2-an386 -cpu cortex-m4 -nographic -monitor none \
-        -semihosting-config enable=on,target=native -icount shift=0 -kernel "$elf")
+    m4=$(m4run UVT_M4_UNIT=$u)
     got=$(field "$m4" unit)
     [[ "$got" == "$u" ]] || { echo "m4_render built for unit '$got', expected '$u'" >&2; exit 1; }
-    cal=$(echo "$m4" | awk -F= '/^calibration/ {print $2}')
-    [[ $cal -ge 7999922 && $cal -le 8000082 ]] || { echo "calibration $cal, expected 8000002 +- 80" >&2; exit 1; }
+    [[ -z "$uprec" || "$(field "$m4" unit_prec)" == "$uprec" ]] || { echo "m4_render not built at $uprec" >&2; exit 1; }
     text=$(sec "$elf" .text)
     flash=$(( $(sec "$elf" .vector_table) + text + $(sec "$elf" .rodata) ))
     ram=$(( $(sec "$elf" .data) + $(sec "$elf" .bss) ))
     sums[$u]=$(field "$m4" checksum)
-    rows+=("    {\"unit\": \"$u\", \"flash\": $flash, \"text\": $text, \"ram\": $ram, \"stack\": $(field "$m4" stack_peak_bytes), \"setup\": $(per "$m4" setup_unit), \"bounds\": $(per "$m4" bounds_unit), \"sample\": $(per "$m4" sample_unit), \"checksum\": \"$(field "$m4" checksum)\"}")
+    sample=$(per1 "$m4" sample_unit)
+    echo "m4_report --units: $u, harness loop" >&2
+    read -r empty bempty <<<"$(empty_of UVT_M4_UNIT=$u)"
+    net=$(awk -v a="$sample" -v b="$empty" 'BEGIN {printf "%.1f", a - b}')
+    rows+=("    {\"unit\": \"$u\", \"flash\": $flash, \"text\": $text, \"ram\": $ram, \"stack\": $(field "$m4" stack_peak_bytes), \"setup\": $(per "$m4" setup_unit), \"bounds\": $(per "$m4" bounds_unit), \"sample\": $(per "$m4" sample_unit), \"checksum\": \"$(field "$m4" checksum)\", \"unit_flash\": $((flash - hflash)), \"sample_raw\": $sample, \"sample_empty\": $empty, \"sample_net\": $net, \"bounds_raw\": $(per1 "$m4" bounds_unit), \"bounds_empty\": $bempty}")
   done
   # The full unit on each narrower unit's prims: the same work as that unit's row (its image
   # must be the same, bit for bit).
   for u in motion-only defocus-only static-only; do
     echo "m4_report --units: full on the $u prims" >&2
-    UVT_M4_UNIT=full UVT_M4_PRIMS=$u cargo build -q --release -p uvt-core --example m4_render --target thumbv7em-none-eabihf
-    elf=$tdir/thumbv7em-none-eabihf/release/examples/m4_render
-    m4=$(timeout 120 qemu-system-arm -machine mps2-an386 -cpu cortex-m4 -nographic -monitor none \
-        -semihosting-config enable=on,target=native -icount shift=0 -kernel "$elf")
+    m4=$(m4run UVT_M4_UNIT=full UVT_M4_PRIMS=$u)
     [[ "$(field "$m4" prims)" == "$u" ]] || { echo "m4_render not built for the $u prims" >&2; exit 1; }
     [[ "$(field "$m4" checksum)" == "${sums[$u]}" ]] || { echo "full on the $u prims: checksum $(field "$m4" checksum), the $u unit ${sums[$u]}" >&2; exit 1; }
-    same+=("    {\"prims\": \"$u\", \"setup\": $(per "$m4" setup_unit), \"bounds\": $(per "$m4" bounds_unit), \"sample\": $(per "$m4" sample_unit), \"checksum\": \"$(field "$m4" checksum)\"}")
+    sample=$(per1 "$m4" sample_unit)
+    read -r empty bempty <<<"$(empty_of UVT_M4_UNIT=full UVT_M4_PRIMS=$u)"
+    net=$(awk -v a="$sample" -v b="$empty" 'BEGIN {printf "%.1f", a - b}')
+    same+=("    {\"prims\": \"$u\", \"setup\": $(per "$m4" setup_unit), \"bounds\": $(per "$m4" bounds_unit), \"sample\": $(per "$m4" sample_unit), \"checksum\": \"$(field "$m4" checksum)\", \"sample_raw\": $sample, \"sample_empty\": $empty, \"sample_net\": $net, \"bounds_raw\": $(per1 "$m4" bounds_unit), \"bounds_empty\": $bempty}")
   done
   tmp=$(mktemp "$json.XXXX")
   {
     echo "{"
-    echo "  \"command\": \"bash core/examples/m4_report.sh --units\","
-    echo "  \"target\": \"Cortex-M4F (thumbv7em-none-eabihf, QEMU mps2-an386, -icount shift=0): m4_render built with UVT_M4_UNIT; default configuration only; the demo prims the unit accepts; flash = .vector_table + .text + .rodata bytes, ram = .data + .bss bytes, stack = painted peak bytes; setup/bounds/sample = instructions per call\","
+    echo "  \"command\": \"bash core/examples/m4_report.sh --units${uprec:+ $json $uprec}\","
+    if [[ -n "$uprec" ]]; then
+      echo "  \"prec\": \"$uprec\","
+    fi
+    echo "  \"target\": \"Cortex-M4F (thumbv7em-none-eabihf, QEMU mps2-an386, -icount shift=0): m4_render built with UVT_M4_UNIT; ${uprec:-default} configuration only; the demo prims the unit accepts; flash = .vector_table + .text + .rodata bytes, ram = .data + .bss bytes, stack = painted peak bytes; setup/bounds/sample = instructions per call; harness = the same program with no unit code linked (UVT_M4_HARNESS), unit_flash = flash - harness flash; sample_raw = sample with one decimal, sample_empty = the measuring loop alone per call (UVT_M4_EMPTY build: the test replaced by black_box), sample_net = sample_raw - sample_empty; bounds_raw, bounds_empty = the same for the tile bounds\","
+    echo "  \"harness\": $harness,"
     echo "  \"units\": ["
     json_items "${rows[@]}"
     echo "  ],"

@@ -16,6 +16,7 @@ use crate::formats::{Coord, Lens, SubPixel, Time};
 use crate::input::{Sample, SamplePattern, Triangle, Vertex, Viewport};
 use crate::sample::{sample_test, sample_test_unit, ScreenPos};
 use crate::setup::{classify, setup_unit, Outcome};
+use crate::static_unit::{static_setup, static_test, static_tile, StaticOutcome, StaticRenderer};
 use crate::stats::{Ops, Stats};
 use crate::tile::{Prim, Renderer};
 use crate::unit::Unit;
@@ -243,10 +244,19 @@ pub fn render_unit<U: Unit>() -> Result<DemoResult, Error> {
 /// once): out of line, its frame holds the renderer twice, 5–8 KB more peak stack.
 #[inline(always)]
 pub fn render_on<U: Unit, V: Unit>() -> Result<DemoResult, Error> {
+    render_on_with::<DefaultPrecision, U, V>()
+}
+
+/// [`render_on`] at precision `P` (e.g. the planar static configuration on each unit).
+#[inline(always)]
+pub fn render_on_with<P: crate::formats::Precision, U: Unit, V: Unit>() -> Result<DemoResult, Error>
+{
+    if const { crate::static_unit::specialised::<P, U>() } {
+        return render_static::<V>();
+    }
     let prims = unit_prims::<V>()?;
     let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLE_TABLE)?;
-    let mut r =
-        Renderer::<Laine2011, NTRIS, DefaultPrecision, U>::new(Laine2011, viewport()?, &prims)?;
+    let mut r = Renderer::<Laine2011, NTRIS, P, U>::new(Laine2011, viewport()?, &prims)?;
     let mut image = [[0u8; 3]; NPIXELS];
     r.render_with::<8, 8, SPP>(
         &pattern,
@@ -268,6 +278,44 @@ pub fn render_on<U: Unit, V: Unit>() -> Result<DemoResult, Error> {
     }
     Ok(DemoResult {
         checksum: h,
+        stats: r.stats,
+    })
+}
+
+/// 32-bit FNV-1a over the image, row-major, bytes R, G, B (as [`render_on_with`] computes it).
+fn fnv1a(image: &[[u8; 3]]) -> u32 {
+    let mut h = 0x811c_9dc5u32;
+    for b in image.iter().flatten() {
+        h = (h ^ *b as u32).wrapping_mul(0x0100_0193);
+    }
+    h
+}
+
+/// [`render_on_with`] on the static-only unit at a planar precision
+/// ([`crate::static_unit::specialised`]): the prims unit `V` accepts on the static-specialised
+/// [`StaticRenderer`] (`Err(ClassNotInUnit)` unless all are static and in focus).
+#[inline(always)]
+fn render_static<V: Unit>() -> Result<DemoResult, Error> {
+    let prims = unit_prims::<V>()?;
+    let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLE_TABLE)?;
+    let mut r = StaticRenderer::<NTRIS>::new(viewport()?, &prims)?;
+    let mut image = [[0u8; 3]; NPIXELS];
+    r.render_with::<8, 8, SPP>(
+        &pattern,
+        BOUNDS_TILE,
+        Rgb888::new(16, 16, 24),
+        |x, y, c, _| {
+            // x, y < SIZE = 32: the index < 1024.
+            let idx = usize::from(y)
+                .saturating_mul(usize::from(SIZE))
+                .saturating_add(usize::from(x));
+            if let Some(p) = image.get_mut(idx) {
+                *p = [c.r(), c.g(), c.b()];
+            }
+        },
+    )?;
+    Ok(DemoResult {
+        checksum: fnv1a(&image),
         stats: r.stats,
     })
 }
@@ -352,13 +400,23 @@ pub mod cost {
     /// [`setup_all_unit`] on unit `U` with the prims unit `V` accepts (`V`'s work on `U`, for `V`'s
     /// classes ⊆ `U`'s).
     pub fn setup_all_on<U: Unit, V: Unit>(reps: u32) -> Result<u64, Error> {
+        setup_all_on_with::<DefaultPrecision, U, V>(reps)
+    }
+
+    /// [`setup_all_on`] at precision `P`.
+    pub fn setup_all_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
+        reps: u32,
+    ) -> Result<u64, Error> {
+        if const { crate::static_unit::specialised::<P, U>() } {
+            return static_cost::setup::<V>(reps);
+        }
         let prims = unit_prims::<V>()?;
         let vp = viewport()?;
         let mut ops = Ops::default();
         let mut calls = 0u64;
         for _ in 0..reps {
             for p in prims.iter() {
-                let out = setup_unit::<DefaultPrecision, U>(black_box(&p.tri), vp, &mut ops);
+                let out = setup_unit::<P, U>(black_box(&p.tri), vp, &mut ops);
                 if let Ok(Outcome::Visible(s)) = black_box(out) {
                     black_box(Laine2011.prepare_unit::<U>(&s, &mut ops));
                 }
@@ -376,13 +434,22 @@ pub mod cost {
     /// [`bounds_all_unit`] on unit `U` with the prims unit `V` accepts (`V`'s work on `U`, for `V`'s
     /// classes ⊆ `U`'s).
     pub fn bounds_all_on<U: Unit, V: Unit>(reps: u32) -> Result<u64, Error> {
+        bounds_all_on_with::<DefaultPrecision, U, V>(reps)
+    }
+
+    /// [`bounds_all_on`] at precision `P`.
+    pub fn bounds_all_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
+        reps: u32,
+    ) -> Result<u64, Error> {
+        if const { crate::static_unit::specialised::<P, U>() } {
+            return static_cost::bounds::<V, false>(reps);
+        }
         let prims = unit_prims::<V>()?;
         let vp = viewport()?;
         let mut ops = Ops::default();
         let mut calls = 0u64;
         for p in prims.iter() {
-            let Ok(Outcome::Visible(s)) = setup_unit::<DefaultPrecision, U>(&p.tri, vp, &mut ops)
-            else {
+            let Ok(Outcome::Visible(s)) = setup_unit::<P, U>(&p.tri, vp, &mut ops) else {
                 continue;
             };
             let c = Laine2011.prepare_unit::<U>(&s, &mut ops);
@@ -405,21 +472,30 @@ pub mod cost {
     /// [`samples_all_unit`] on unit `U` with the prims unit `V` accepts (`V`'s work on `U`, for `V`'s
     /// classes ⊆ `U`'s).
     pub fn samples_all_on<U: Unit, V: Unit>(reps: u32) -> Result<u64, Error> {
+        samples_all_on_with::<DefaultPrecision, U, V>(reps)
+    }
+
+    /// [`samples_all_on`] at precision `P`.
+    pub fn samples_all_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
+        reps: u32,
+    ) -> Result<u64, Error> {
+        if const { crate::static_unit::specialised::<P, U>() } {
+            return static_cost::samples::<V, false>(reps);
+        }
         let prims = unit_prims::<V>()?;
         let vp = viewport()?;
         let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLE_TABLE)?;
         let mut ops = Ops::default();
         let mut calls = 0u64;
         for p in prims.iter() {
-            let Ok(Outcome::Visible(s)) = setup_unit::<DefaultPrecision, U>(&p.tri, vp, &mut ops)
-            else {
+            let Ok(Outcome::Visible(s)) = setup_unit::<P, U>(&p.tri, vp, &mut ops) else {
                 continue;
             };
             for _ in 0..reps.saturating_mul(SAMPLE_PASSES) {
                 for py in 12..20u16 {
                     for px in 12..20u16 {
                         for smp in pattern.pixel(px, py) {
-                            black_box(sample_test_unit::<DefaultPrecision, U>(
+                            black_box(sample_test_unit::<P, U>(
                                 black_box(&s),
                                 ScreenPos::of(px, py, smp),
                                 smp,
@@ -432,6 +508,144 @@ pub mod cost {
             }
         }
         Ok(calls)
+    }
+
+    /// The harness alone: [`bounds_all_on_with`]'s loop (the same setups, cells and call
+    /// count) with the tile bounds replaced by handing their arguments to `black_box`.
+    pub fn bounds_empty_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
+        reps: u32,
+    ) -> Result<u64, Error> {
+        if const { crate::static_unit::specialised::<P, U>() } {
+            return static_cost::bounds::<V, true>(reps);
+        }
+        let prims = unit_prims::<V>()?;
+        let vp = viewport()?;
+        let mut ops = Ops::default();
+        let mut calls = 0u64;
+        for p in prims.iter() {
+            let Ok(Outcome::Visible(s)) = setup_unit::<P, U>(&p.tri, vp, &mut ops) else {
+                continue;
+            };
+            let c = Laine2011.prepare_unit::<U>(&s, &mut ops);
+            for _ in 0..reps {
+                for cell in s.footprint().cells(2) {
+                    black_box((black_box(&s), &c, cell));
+                    calls = calls.saturating_add(1);
+                }
+            }
+        }
+        Ok(calls)
+    }
+
+    /// The harness alone: [`samples_all_on_with`]'s loop (the same setups, window, passes and
+    /// call count) with the sample test replaced by handing its arguments to `black_box` — the
+    /// measuring loop's own cost per call, to subtract from the sample test's (the same loop
+    /// for every unit and path).
+    pub fn samples_empty_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
+        reps: u32,
+    ) -> Result<u64, Error> {
+        if const { crate::static_unit::specialised::<P, U>() } {
+            return static_cost::samples::<V, true>(reps);
+        }
+        let prims = unit_prims::<V>()?;
+        let vp = viewport()?;
+        let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLE_TABLE)?;
+        let mut ops = Ops::default();
+        let mut calls = 0u64;
+        for p in prims.iter() {
+            let Ok(Outcome::Visible(s)) = setup_unit::<P, U>(&p.tri, vp, &mut ops) else {
+                continue;
+            };
+            for _ in 0..reps.saturating_mul(SAMPLE_PASSES) {
+                for py in 12..20u16 {
+                    for px in 12..20u16 {
+                        for smp in pattern.pixel(px, py) {
+                            black_box((black_box(&s), ScreenPos::of(px, py, smp), smp));
+                            calls = calls.saturating_add(1);
+                        }
+                    }
+                }
+            }
+        }
+        Ok(calls)
+    }
+
+    /// The per-stage workloads on the static-specialised path
+    /// ([`crate::static_unit::specialised`]): the same prims, tiles, window and call counts as
+    /// the general ones, on [`static_setup`], [`static_tile`] and [`static_test`].
+    mod static_cost {
+        use super::*;
+
+        /// Setup of the prims unit `V` accepts, `reps` times.
+        pub(super) fn setup<V: Unit>(reps: u32) -> Result<u64, Error> {
+            let prims = unit_prims::<V>()?;
+            let vp = viewport()?;
+            let mut ops = Ops::default();
+            let mut calls = 0u64;
+            for _ in 0..reps {
+                for p in prims.iter() {
+                    black_box(static_setup(black_box(&p.tri), vp, &mut ops).ok());
+                    calls = calls.saturating_add(1);
+                }
+            }
+            Ok(calls)
+        }
+
+        /// The 2×2 tile cull over every visible prim's footprint, `reps` times (`EMPTY`: the
+        /// harness alone, as [`bounds_empty_on_with`]).
+        pub(super) fn bounds<V: Unit, const EMPTY: bool>(reps: u32) -> Result<u64, Error> {
+            let prims = unit_prims::<V>()?;
+            let vp = viewport()?;
+            let mut ops = Ops::default();
+            let mut calls = 0u64;
+            for p in prims.iter() {
+                let Ok(StaticOutcome::Visible(s)) = static_setup(&p.tri, vp, &mut ops) else {
+                    continue;
+                };
+                for _ in 0..reps {
+                    for cell in s.footprint().cells(2) {
+                        if EMPTY {
+                            black_box((black_box(&s), cell));
+                        } else {
+                            black_box(static_tile(black_box(&s), cell, &mut ops));
+                        }
+                        calls = calls.saturating_add(1);
+                    }
+                }
+            }
+            Ok(calls)
+        }
+
+        /// The sample window of every visible prim (`EMPTY`: the harness alone, as
+        /// [`samples_empty_on_with`]).
+        pub(super) fn samples<V: Unit, const EMPTY: bool>(reps: u32) -> Result<u64, Error> {
+            let prims = unit_prims::<V>()?;
+            let vp = viewport()?;
+            let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLE_TABLE)?;
+            let mut ops = Ops::default();
+            let mut calls = 0u64;
+            for p in prims.iter() {
+                let Ok(StaticOutcome::Visible(s)) = static_setup(&p.tri, vp, &mut ops) else {
+                    continue;
+                };
+                for _ in 0..reps.saturating_mul(SAMPLE_PASSES) {
+                    for py in 12..20u16 {
+                        for px in 12..20u16 {
+                            for smp in pattern.pixel(px, py) {
+                                let pos = ScreenPos::of(px, py, smp);
+                                if EMPTY {
+                                    black_box((black_box(&s), pos, smp));
+                                } else {
+                                    black_box(static_test(black_box(&s), pos));
+                                }
+                                calls = calls.saturating_add(1);
+                            }
+                        }
+                    }
+                }
+            }
+            Ok(calls)
+        }
     }
 
     /// Passes over the sample window per rep in [`samples_class_with`]: the triangles are set

@@ -101,6 +101,11 @@ pub trait Precision: sealed::Sealed + Copy + Default + core::fmt::Debug + 'stati
     /// bounded test (`bounded.rs`) whose sample-relative offsets are rounded to a grid of `2^s`
     /// (s ∈ [`OFFSET_SHIFT_MIN`]..=[`OFFSET_SHIFT_MAX`]).
     const OFFSET_SHIFT: Option<u32> = None;
+    /// Whether static triangles (class `Static`) take the planar test (`planar.rs`: each
+    /// vertex rounded once to 15 bits, then the exact test on the rounded triangle) instead of
+    /// `OFFSET_SHIFT`'s test. Only a
+    /// [`Planar`] precision sets it; its other classes run the bounded test.
+    const PLANAR: bool = false;
 }
 
 mod sealed {
@@ -109,6 +114,10 @@ mod sealed {
     impl<const POS: u32, const TUV: u32, const BND: u32> Sealed for super::Prec<POS, TUV, BND> {}
     impl<const POS: u32, const TUV: u32, const BND: u32, const OFF: u32> Sealed
         for super::Bounded<POS, TUV, BND, OFF>
+    {
+    }
+    impl<const POS: u32, const TUV: u32, const BND: u32, const OFF: u32> Sealed
+        for super::Planar<POS, TUV, BND, OFF>
     {
     }
 }
@@ -161,6 +170,30 @@ impl<const POS: u32, const TUV: u32, const BND: u32, const OFF: u32> Precision
     };
 }
 
+/// A precision with the **planar static** test (`planar.rs`, name `planar-POS-TUV-BND-OFF`):
+/// exactly [`Bounded<POS, TUV, BND, OFF>`] for the moving and defocused classes, and for static
+/// triangles (class `Static`, camera-plane crossers included) the planar test — each vertex
+/// rounded once to 15 bits (per-vertex shift), the exact i32 edge normals of the rounded
+/// triangle, three 32 × 32 dot products per sample: watertight at edges and vertices — with a
+/// per-triangle conservative epsilon (the rounding residual, [`crate::planar`]). An addition: the default
+/// configuration is unchanged.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Planar<const POS: u32, const TUV: u32, const BND: u32, const OFF: u32>;
+
+impl<const POS: u32, const TUV: u32, const BND: u32, const OFF: u32> Precision
+    for Planar<POS, TUV, BND, OFF>
+{
+    const POS_FRAC: u32 = <Bounded<POS, TUV, BND, OFF> as Precision>::POS_FRAC;
+    const TUV_FRAC: u32 = <Bounded<POS, TUV, BND, OFF> as Precision>::TUV_FRAC;
+    const BOUND_FRAC: u32 = <Bounded<POS, TUV, BND, OFF> as Precision>::BOUND_FRAC;
+    const OFFSET_SHIFT: Option<u32> = <Bounded<POS, TUV, BND, OFF> as Precision>::OFFSET_SHIFT;
+    const PLANAR: bool = true;
+}
+
+/// The planar static configuration beside the default (`planar-16-16-16-20`): the default's
+/// bounded test for every moving or defocused class, the planar test for static triangles.
+pub type PlanarPrecision = Planar<16, 16, 16, 20>;
+
 /// The hardware-plausible bounded configuration (`bounded-16-16-16-20`): 16 fraction bits
 /// everywhere, offsets on a `2^20` grid (i32 multiplier operands, i64 products). The default.
 pub type BoundedPrecision = Bounded<16, 16, 16, 20>;
@@ -181,6 +214,7 @@ pub struct PrecisionBits {
     tuv: u32,
     bnd: u32,
     off: Option<u32>,
+    planar: bool,
 }
 
 impl PrecisionBits {
@@ -201,6 +235,10 @@ impl PrecisionBits {
     pub const fn offset_shift(&self) -> Option<u32> {
         self.off
     }
+    /// Whether static triangles take the planar test ([`Precision::PLANAR`]).
+    pub const fn planar(&self) -> bool {
+        self.planar
+    }
     /// The bits of `P`.
     pub const fn of<P: Precision>() -> PrecisionBits {
         PrecisionBits {
@@ -208,6 +246,7 @@ impl PrecisionBits {
             tuv: P::TUV_FRAC,
             bnd: P::BOUND_FRAC,
             off: P::OFFSET_SHIFT,
+            planar: P::PLANAR,
         }
     }
     /// The default's.

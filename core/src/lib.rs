@@ -11,8 +11,11 @@
 //!    ([`Laine2011`] dual-space bounds; [`BboxScan`] as the baseline; tighter, composable
 //!    strategies in [`strategies`]).
 //! 3. [`sample`] — the exact 5D sample test with a fill rule, and depth; [`bounded`] — the
-//!    bounded (hardware-width) sample test of a [`Bounded`] precision.
-//! 4. [`tile`] — the tile framebuffer, resolve and the render loop.
+//!    bounded (hardware-width) sample test of a [`Bounded`] precision; [`planar`] — the static
+//!    test of a [`Planar`] precision (vertices rounded once to 15 bits).
+//! 4. [`tile`] — the tile framebuffer, resolve and the render loop; [`static_unit`] — the
+//!    static-only unit's own setup, 2D tile cull, sample test and renderer at a [`Planar`]
+//!    precision.
 //!
 //! Number formats are all in [`formats`]; `core/README.md` has the full width table.
 #![cfg_attr(not(test), no_std)]
@@ -46,8 +49,14 @@ pub mod input;
 pub mod interval;
 #[cfg(test)]
 mod interval_corners;
+pub mod planar;
+#[cfg(test)]
+mod planar_corners;
+#[cfg(test)]
+mod planar_frozen;
 pub mod sample;
 pub mod setup;
+pub mod static_unit;
 pub mod stats;
 pub mod strategies;
 #[cfg(test)]
@@ -64,13 +73,14 @@ pub use bounds::{walk_tiles, BboxScan, BoundsStrategy, Laine2011, RowSpan, TileB
 pub use embedded_graphics_core::pixelcolor::Rgb888;
 pub use error::{Error, Field, SampleField};
 pub use formats::{
-    Bounded, BoundedPrecision, Coord, DefaultPrecision, Depth, Exact, Lens, Prec, Precision,
-    PrecisionBits, SubPixel, Time,
+    Bounded, BoundedPrecision, Coord, DefaultPrecision, Depth, Exact, Lens, Planar,
+    PlanarPrecision, Prec, Precision, PrecisionBits, SubPixel, Time,
 };
 pub use input::{PixelRect, Sample, SamplePattern, Triangle, Vertex, Viewport};
 pub use interval::Interval;
 pub use sample::{sample_eval, sample_test, Hit, SampleEval, ScreenPos};
 pub use setup::{setup, setup_scaled, setup_with, Class, Cull, Outcome, Setup};
+pub use static_unit::{StaticRenderer, StaticSetup};
 pub use stats::{Ops, Stats};
 pub use tile::{resolve_colors, DepthTest, PixelStats, Prim, RenderError, Renderer, TileBuffer};
 pub use unit::{DefocusOnly, Full, MotionOnly, StaticOnly, Unit};

@@ -286,12 +286,13 @@ pub fn sample_eval_unit<U: Unit>(
     let d = direction(setup.viewport, pos);
     ops.add_sample(5);
     // A bounded setup does not store the normals (`Setup::edges`): computed here, same value.
-    let computed = if setup.edges.is_none() {
+    let stored = setup.edges.exact();
+    let computed = if stored.is_none() {
         setup.edges()
     } else {
         None
     };
-    if let (Class::Static, Some(st)) = (setup.class, setup.edges.as_ref().or(computed.as_ref())) {
+    if let (Class::Static, Some(st)) = (setup.class, stored.as_ref().or(computed.as_ref())) {
         // Plain 2D test: normals precomputed in setup (|n| < 2^61), |d| < 2^45: each product
         // < 2^106, the sum < 2^108.
         #[allow(clippy::arithmetic_side_effects)]
@@ -345,6 +346,9 @@ pub fn sample_eval_unit<U: Unit>(
 /// [`crate::formats::Bounded`] precision runs the bounded test ([`crate::bounded`]); every other
 /// runs the exact test above.
 pub fn sample_test(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> Option<Hit> {
+    if setup.prec.planar() && setup.class == Class::Static {
+        return crate::planar::planar_test(setup, pos, ops);
+    }
     if setup.prec.offset_shift().is_some() {
         return crate::bounded::bounded_test(setup, pos, s, ops);
     }
@@ -371,6 +375,11 @@ pub fn sample_test_unit<P: Precision, U: Unit>(
 ) -> Option<Hit> {
     if !U::accepts(setup.class) {
         return None;
+    }
+    // A `Planar` precision's static class (gated as in setup: a constant on the static-only
+    // unit, whose program then has no bounded datapath).
+    if P::PLANAR && !(U::MOTION && setup.class.motion()) && !(U::DEFOCUS && setup.class.defocus()) {
+        return crate::planar::planar_test(setup, pos, ops);
     }
     if P::OFFSET_SHIFT.is_some() {
         return crate::bounded::bounded_test_unit::<P, U>(setup, pos, s, ops);

@@ -19,6 +19,7 @@ use crate::bounded::Eps;
 use crate::formats::{DefaultPrecision, PixelCoord, Precision, PrecisionBits};
 use crate::input::{PixelRect, Triangle, Viewport, C, W, X, Y, Z};
 use crate::interval::{solve_le64, Interval};
+use crate::planar::{planar_setup, PlanarEdges};
 use crate::stats::Ops;
 use crate::unit::{Full, Unit};
 
@@ -122,9 +123,33 @@ pub struct Setup {
     /// both ends |.| ≤ 2^29), the bounded sample test's lerp operand ([`Setup::dv`]).
     pub(crate) dv: [[i32; 5]; 3],
     pub(crate) viewport: Viewport,
-    pub(crate) edges: Option<StaticEdges>,
+    pub(crate) edges: Stored,
     pub(crate) prec: PrecisionBits,
     pub(crate) eps: Eps,
+}
+
+/// The static-triangle data a setup stores for its sample test, in one slot (so a setup is no
+/// larger than with the exact normals alone): the exact normals (an exact precision), the
+/// planar test's rounded vertices and exact normals (a [`crate::formats::Planar`] precision, `planar.rs`), or
+/// nothing (every other class or precision).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Stored {
+    /// nothing stored
+    None,
+    /// the exact normals (`sample.rs`)
+    Exact(StaticEdges),
+    /// the planar test's data (`planar.rs`)
+    Planar(PlanarEdges),
+}
+
+impl Stored {
+    /// The stored exact normals, if any.
+    pub(crate) fn exact(&self) -> Option<StaticEdges> {
+        match self {
+            Stored::Exact(e) => Some(*e),
+            _ => None,
+        }
+    }
 }
 
 impl Setup {
@@ -162,8 +187,8 @@ impl Setup {
     /// value), so a bounded program does not contain the i128 normals unless it asks.
     pub fn edges(&self) -> Option<StaticEdges> {
         match self.edges {
-            Some(e) => Some(e),
-            None => (self.class == Class::Static).then(|| static_edges(&self.tri)),
+            Stored::Exact(e) => Some(e),
+            _ => (self.class == Class::Static).then(|| static_edges(&self.tri)),
         }
     }
     /// The precision this setup (and its bounds) use.
@@ -173,6 +198,13 @@ impl Setup {
     /// The conservative epsilon setup and the bounds widened by (zero for the exact test).
     pub fn eps(&self) -> Eps {
         self.eps
+    }
+    /// The planar test's per-triangle data (a static triangle of a `Planar` precision).
+    pub fn planar(&self) -> Option<PlanarEdges> {
+        match self.edges {
+            Stored::Planar(p) => Some(p),
+            _ => None,
+        }
     }
 }
 
@@ -646,7 +678,16 @@ impl Setup {
             y1: vp.h,
         };
         let exact = P::OFFSET_SHIFT.is_none();
-        let edges = (exact && class == Class::Static).then(|| static_edges(tri));
+        let planar = if P::PLANAR && class == Class::Static {
+            planar_setup(tri, vp, &mut Ops::default())
+        } else {
+            None
+        };
+        let edges = match planar {
+            Some((p, _)) => Stored::Planar(p),
+            None if exact && class == Class::Static => Stored::Exact(static_edges(tri)),
+            None => Stored::None,
+        };
         Setup {
             class,
             footprint,
@@ -657,7 +698,10 @@ impl Setup {
             viewport: vp,
             edges,
             prec,
-            eps: Eps::of(prec.offset_shift(), class, vp),
+            eps: match planar {
+                Some((_, e)) => e,
+                None => Eps::of(prec.offset_shift(), class, vp),
+            },
         }
     }
 }
@@ -763,8 +807,16 @@ fn setup_gated<P: Precision, U: Unit>(
     // Exact precisions decide on the type's constant: their instantiation carries no epsilon
     // code, so the exact setup compiles (and costs on the Cortex-M4F) as before the epsilon.
     let exact = P::OFFSET_SHIFT.is_none();
+    // A `Planar` precision's static triangles (the class gated as in every unit: a constant for
+    // the static-only unit) take the planar test, whose epsilon is per triangle (`planar.rs`);
+    // `None` inside: culled as degenerate after the frustum test.
+    let planar_class =
+        P::PLANAR && !(U::MOTION && class.motion()) && !(U::DEFOCUS && class.defocus());
+    let planar = planar_class.then(|| planar_setup(tri, vp, ops));
     let full = if exact {
         Eps::default()
+    } else if let Some(pl) = planar {
+        pl.map_or(Eps::default(), |(_, e)| e)
     } else {
         Eps::of(prec.offset_shift(), class, vp)
     };
@@ -777,10 +829,14 @@ fn setup_gated<P: Precision, U: Unit>(
             .unwrap_or(0)
     };
     // Without motion ε_w is 0 for every accepted class (`Eps::of`); stating it lets the unit
-    // drop the twelve-corner box code.
+    // drop the twelve-corner box code. The planar test's ε_w (the w rounding residual) is kept.
     let eps = Eps {
         x: full.x.map(scale),
-        w: if U::MOTION { scale(full.w) } else { 0 },
+        w: if U::MOTION || P::PLANAR {
+            scale(full.w)
+        } else {
+            0
+        },
     };
     ops.add_setup(30);
     let span_eps = if exact { Eps::default() } else { eps };
@@ -791,6 +847,11 @@ fn setup_gated<P: Precision, U: Unit>(
     } {
         Some(s) => s.round_out(prec.tuv()),
         None => return Outcome::Culled(Cull::Outside),
+    };
+    let planar = match planar {
+        Some(None) => return Outcome::Culled(Cull::Degenerate),
+        Some(Some((p, _))) => Some(p),
+        None => None,
     };
     // A bounded test decides on a perturbed triangle, which need not be degenerate.
     let gated = (U::MOTION && class.motion(), U::DEFOCUS && class.defocus());
@@ -803,7 +864,7 @@ fn setup_gated<P: Precision, U: Unit>(
             exact_boxes(tri, 0, ew, prec.bnd(), ops),
             exact_boxes(tri, 1, eh, prec.bnd(), ops),
         ]
-    } else if U::MOTION {
+    } else if U::MOTION || P::PLANAR {
         [
             axis_boxes(tri, 0, ew, prec.bnd(), &eps, ops),
             axis_boxes(tri, 1, eh, prec.bnd(), &eps, ops),
@@ -829,7 +890,11 @@ fn setup_gated<P: Precision, U: Unit>(
     if class == Class::Static {
         ops.add_setup(30);
     }
-    let edges = (exact && class == Class::Static).then(|| static_edges(tri));
+    let edges = match planar {
+        Some(p) => Stored::Planar(p),
+        None if exact && class == Class::Static => Stored::Exact(static_edges(tri)),
+        None => Stored::None,
+    };
     Outcome::Visible(Setup {
         class,
         footprint,
@@ -901,8 +966,16 @@ mod tests {
             let bd = setup_with::<Bounded<16, 16, 16, 20>>(&p.tri, vp, &mut ops);
             if let (Outcome::Visible(ex), Outcome::Visible(bd)) = (ex, bd) {
                 let want = (ex.class == Class::Static).then(|| static_edges(&p.tri));
-                assert_eq!(ex.edges, want, "prim {i}: exact setup stores the normals");
-                assert_eq!(bd.edges, None, "prim {i}: bounded setup stores none");
+                assert_eq!(
+                    ex.edges.exact(),
+                    want,
+                    "prim {i}: exact setup stores the normals"
+                );
+                assert_eq!(
+                    bd.edges,
+                    Stored::None,
+                    "prim {i}: bounded setup stores none"
+                );
                 assert_eq!(bd.edges(), want, "prim {i}: bounded edges()");
                 assert_eq!(ex.edges(), want, "prim {i}: exact edges()");
             }

@@ -91,22 +91,26 @@ pub struct TileBuffer<const TW: usize, const TH: usize, const S: usize> {
 }
 
 impl<const TW: usize, const TH: usize, const S: usize> TileBuffer<TW, TH, S> {
+    /// The size check of every constructor: evaluating it fails the build unless
+    /// `1 ≤ TW, TH ≤ 2048` and `1 ≤ S ≤ 64`.
+    const SIZES: () = {
+        assert!(
+            TW >= 1 && TW <= MAX_VIEWPORT as usize,
+            "TileBuffer: TW must be 1..=2048"
+        );
+        assert!(
+            TH >= 1 && TH <= MAX_VIEWPORT as usize,
+            "TileBuffer: TH must be 1..=2048"
+        );
+        assert!(
+            S >= 1 && S <= MAX_PATTERN as usize,
+            "TileBuffer: S must be 1..=64"
+        );
+    };
+
     /// A cleared buffer. Fails to build unless `1 ≤ TW, TH ≤ 2048` and `1 ≤ S ≤ 64`.
     pub fn new(clear: Rgb888) -> Self {
-        const {
-            assert!(
-                TW >= 1 && TW <= MAX_VIEWPORT as usize,
-                "TileBuffer: TW must be 1..=2048"
-            );
-            assert!(
-                TH >= 1 && TH <= MAX_VIEWPORT as usize,
-                "TileBuffer: TH must be 1..=2048"
-            );
-            assert!(
-                S >= 1 && S <= MAX_PATTERN as usize,
-                "TileBuffer: S must be 1..=64"
-            );
-        }
+        let () = Self::SIZES;
         TileBuffer {
             color: [[[clear; S]; TW]; TH],
             depth: [[[DEPTH_EMPTY; S]; TW]; TH],
@@ -165,6 +169,49 @@ impl<const TW: usize, const TH: usize, const S: usize> TileBuffer<TW, TH, S> {
             .and_then(|r| r.get(x))
             .copied()
             .unwrap_or_default()
+    }
+
+    /// [`Self::new`] built from zeroed arrays (memclr calls) and [`Self::clear_fill`]: the same
+    /// buffer and size check without the unrolled stores (the static-only unit's renderer).
+    pub(crate) fn new_fill(clear: Rgb888) -> Self {
+        let () = Self::SIZES;
+        let mut fb = TileBuffer {
+            color: [[[Rgb888::BLACK; S]; TW]; TH],
+            depth: [[[0; S]; TW]; TH],
+            stats: [[PixelStats::default(); TW]; TH],
+        };
+        fb.clear_fill(clear);
+        fb
+    }
+
+    /// [`Self::clear`] as one loop over the pixels (the static-only unit's renderer,
+    /// `static_unit.rs`: the same contents without `Self::new`'s unrolled stores, several KB of
+    /// a small program's flash).
+    #[inline(never)]
+    pub(crate) fn clear_fill(&mut self, clear: Rgb888) {
+        let pixels = self.color.iter_mut().flatten();
+        let pixels = pixels.zip(self.depth.iter_mut().flatten());
+        for ((c, d), st) in pixels.zip(self.stats.iter_mut().flatten()) {
+            *c = [clear; S];
+            *d = [DEPTH_EMPTY; S];
+            *st = PixelStats::default();
+        }
+    }
+
+    /// Count one sample test of pixel (x, y) in its counters (the static-only unit's renderer,
+    /// `static_unit.rs`); nothing for out-of-range indices.
+    pub(crate) fn count(&mut self, x: usize, y: usize, covered: bool) {
+        if let Some(ps) = self.stats.get_mut(y).and_then(|r| r.get_mut(x)) {
+            ps.tested = ps.tested.saturating_add(1);
+            ps.covered = ps.covered.saturating_add(u32::from(covered));
+        }
+    }
+
+    /// Count one written sample of pixel (x, y) (as [`Self::count`]).
+    pub(crate) fn count_written(&mut self, x: usize, y: usize) {
+        if let Some(ps) = self.stats.get_mut(y).and_then(|r| r.get_mut(x)) {
+            ps.written = ps.written.saturating_add(1);
+        }
     }
 
     /// Resolved color: per channel `(Σ + S/2) / S` (round half up), see [`resolve_colors`].

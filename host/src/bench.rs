@@ -8,7 +8,9 @@
 //! bounds-tile sizes 1, 2, 4, 8. The core runs at one precision per table (`--precision`, one of
 //! [`PRECISIONS`]; default: the core's default precision): the scene rounded to its position
 //! grid, the pattern to its t/u/v grid; a `bounded-…` precision runs the bounded sample test with
-//! every strategy widened by its conservative epsilon. The f64 reference stays on the exact
+//! every strategy widened by its conservative epsilon; `planar-16-16-16-20` runs the planar
+//! static test on static triangles (`crate::planar`; the bounded test on the others) with the
+//! per-triangle epsilon. The f64 reference stays on the exact
 //! inputs; the axis-aligned limit runs on the scene at 16 position fraction bits with the core's
 //! default sample test (`uvt_core::setup`, `uvt_core::sample_test`).
 
@@ -37,7 +39,7 @@ pub const STRATEGIES: [&str; 7] = [
 
 /// The configurations `--precision` accepts (the session's names: `exact-P-T-B` is
 /// `Prec<P, T, B>`, `bounded-P-T-B-O` is `Bounded<P, T, B, O>`), plus `default`.
-pub const PRECISIONS: [&str; 7] = [
+pub const PRECISIONS: [&str; 8] = [
     "exact-16-16-16",
     "bounded-16-16-16-20",
     "bounded-16-16-16-22",
@@ -45,13 +47,16 @@ pub const PRECISIONS: [&str; 7] = [
     "bounded-12-12-12-24",
     "bounded-12-12-12-26",
     "bounded-8-8-8-28",
+    crate::planar::NAME,
 ];
 
-/// The configuration name of precision `P` (`exact-P-T-B` or `bounded-P-T-B-O`).
+/// The configuration name of precision `P` (`exact-P-T-B`, `bounded-P-T-B-O` or
+/// `planar-P-T-B-O`).
 pub fn precision_name<P: Precision>() -> String {
     let (p, t, b) = (P::POS_FRAC, P::TUV_FRAC, P::BOUND_FRAC);
     match P::OFFSET_SHIFT {
         None => format!("exact-{p}-{t}-{b}"),
+        Some(o) if P::PLANAR => format!("planar-{p}-{t}-{b}-{o}"),
         Some(o) => format!("bounded-{p}-{t}-{b}-{o}"),
     }
 }
@@ -91,6 +96,10 @@ macro_rules! with_precision {
             }
             "bounded-8-8-8-28" => {
                 type $P = Bounded<8, 8, 8, 28>;
+                Ok($body)
+            }
+            "planar-16-16-16-20" => {
+                type $P = uvt_core::PlanarPrecision;
                 Ok($body)
             }
             other => Err(anyhow::anyhow!(

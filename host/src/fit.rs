@@ -33,9 +33,13 @@
 //! differ from the exact image only within 1/32 px of an edge) and lets the geometry decide.
 //! A tolerance below the exact 16-fraction-bit configuration's d_q is unreachable (error).
 //!
-//! **Narrowest configuration**: the bounded configurations of the sweep ordered by their
-//! sample-test DSP48E1 estimate for the chosen unit, then Σ bit-products (cheapest first); the
-//! first whose d_q meets the tolerance; the exact configuration only when none does.
+//! **Narrowest configuration**: the bounded configurations of the sweep and the planar static
+//! configuration `planar-16-16-16-20` (`crate::planar`: its own per-primitive d_q, from each
+//! static triangle's rounding residual, nearest w and guard-band ratio; its cost per unit: the
+//! planar test alone in the static-only unit, the bounded unit's plus the planar test's in every
+//! other) ordered by their sample-test DSP48E1 estimate for the chosen unit, then Σ
+//! bit-products (cheapest first); the first whose d_q meets the tolerance; the exact
+//! configuration only when none does.
 //!
 //! **Cost of a bounds strategy and tile size** (from the bench machinery's counters, one frame
 //! of the scene at the chosen configuration): `setup ops + tile-bounds ops + per-sample predicate
@@ -344,6 +348,8 @@ pub struct ConfigFit {
     pub unit_cost: Option<UnitCost>,
     /// meets the tolerance
     pub meets: bool,
+    /// primitives without a screen-space bound at this configuration
+    pub unbounded: Vec<usize>,
 }
 
 /// Classes of the scene's primitives (at the default precision's grids; a coarser grid can only
@@ -361,8 +367,10 @@ pub fn classes(scene: &Scene) -> Result<Vec<Class>> {
         .collect()
 }
 
-/// d_q of every configuration of the sweep for the scene's primitives and their classes, and
-/// the primitives without a screen-space bound (same for every configuration up to ε).
+/// d_q of every configuration of the sweep and of the planar static configuration
+/// (`crate::planar`, last) for the scene's primitives and their classes, and the primitives
+/// without a screen-space bound in some configuration (the same for every configuration up to
+/// ε).
 pub fn config_fits(
     scene: &Scene,
     classes: &[Class],
@@ -390,7 +398,7 @@ pub fn config_fits(
             }
         }
         if unb.len() > unbounded.len() {
-            unbounded = unb;
+            unbounded = unb.clone();
         }
         out.push(ConfigFit {
             config: name.to_string(),
@@ -398,8 +406,37 @@ pub fn config_fits(
             worst_primitive: worst,
             unit_cost: unit_sample_cost(&cfg, unit.0, unit.1),
             meets: d <= tol,
+            unbounded: unb,
         });
     }
+    // The planar static configuration (`crate::planar`): per-primitive ε for static triangles.
+    let (mut d, mut worst) = (0.0f64, None);
+    let mut unb = Vec::new();
+    for (i, (t, c)) in scene.tris.iter().zip(classes).enumerate() {
+        let Ok(core) = t.to_core() else {
+            unb.push(i);
+            continue;
+        };
+        match crate::planar::prim_dq(t, &core, *c, scene.viewport, 1.0) {
+            Some(x) if x > d => {
+                d = x;
+                worst = Some(i);
+            }
+            Some(_) => {}
+            None => unb.push(i),
+        }
+    }
+    if unb.len() > unbounded.len() {
+        unbounded = unb.clone();
+    }
+    out.push(ConfigFit {
+        config: crate::planar::NAME.to_string(),
+        d_q_px: d,
+        worst_primitive: worst,
+        unit_cost: crate::planar::unit_cost(unit.0, unit.1),
+        meets: d <= tol,
+        unbounded: unb,
+    });
     (out, unbounded)
 }
 

@@ -25,7 +25,8 @@ use crate::scene::Scene;
 /// large stack); a scene with more is reported as not confirmed.
 pub const CAPACITY: usize = 4096;
 
-/// Calls `$body` with `$P` bound to the precision of sweep configuration `$name`.
+/// Calls `$body` with `$P` bound to the precision of sweep configuration `$name` or of the
+/// planar static configuration (`crate::planar::NAME`).
 macro_rules! with_config {
     ($name:expr, $P:ident, $body:expr) => {
         match $name {
@@ -55,6 +56,10 @@ macro_rules! with_config {
             }
             "bounded-8-8-8-28" => {
                 type $P = Bounded<8, 8, 8, 28>;
+                Some($body)
+            }
+            "planar-16-16-16-20" => {
+                type $P = uvt_core::PlanarPrecision;
                 Some($body)
             }
             _ => None,

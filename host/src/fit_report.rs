@@ -35,8 +35,12 @@ pub struct Fit {
     pub unit: String,
     /// d_q of every configuration
     pub configs: Vec<ConfigFit>,
-    /// primitives without a screen-space bound (a vertex can reach the camera plane)
+    /// primitives without a screen-space bound at the chosen configuration (a vertex can reach
+    /// the camera plane)
     pub unbounded_primitives: Vec<usize>,
+    /// static triangles that `planar-16-16-16-20`'s vertex rounding makes degenerate (culled;
+    /// the default does not cull them) and the static triangles: `crate::planar::degenerate`
+    pub planar_degenerate: (u64, u64),
     /// the chosen configuration
     pub config: String,
     /// every strategy and tile size tried
@@ -83,12 +87,16 @@ pub fn fit(
         cls.iter().any(|c| c.defocus()),
     );
     let terms = unit_terms(unit).ok_or_else(|| anyhow!("unknown unit {unit}"))?;
-    let (fits, unbounded) = config_fits(scene, &cls, terms, tol);
+    let (fits, _) = config_fits(scene, &cls, terms, tol);
     let chosen = narrowest(&fits, tol)?.clone();
-    let cfg = Config::parse(&chosen.config)
-        .ok_or_else(|| anyhow!("not a configuration: {}", chosen.config))?;
-    let sample_cost =
-        unit_sample_cost(&cfg, terms.0, terms.1).unwrap_or_else(|| full_sample_cost(&cfg));
+    let sample_cost = if chosen.config == crate::planar::NAME {
+        crate::planar::unit_cost(terms.0, terms.1)
+            .ok_or_else(|| anyhow!("no cost model for {}", chosen.config))?
+    } else {
+        let cfg = Config::parse(&chosen.config)
+            .ok_or_else(|| anyhow!("not a configuration: {}", chosen.config))?;
+        unit_sample_cost(&cfg, terms.0, terms.1).unwrap_or_else(|| full_sample_cost(&cfg))
+    };
     let width = sample_cost.bit_products as f64 / (sample_cost.products.max(1) as f64 * 1024.0);
     let strategies = search(scene, &chosen.config, width)
         .ok_or_else(|| anyhow!("configuration {} has no precision type", chosen.config))??;
@@ -101,8 +109,9 @@ pub fn fit(
         })
         .ok_or_else(|| anyhow!("no strategy ran"))?
         .clone();
+    // The chosen configuration's own primitives without a screen-space bound.
     let bounded: Vec<bool> = (0..scene.tris.len())
-        .map(|i| !unbounded.contains(&i))
+        .map(|i| !chosen.unbounded.contains(&i))
         .collect();
     let conf = confirm(
         scene,
@@ -135,7 +144,8 @@ pub fn fit(
         class_counts: counts,
         unit: unit.to_string(),
         configs: fits,
-        unbounded_primitives: unbounded,
+        unbounded_primitives: chosen.unbounded.clone(),
+        planar_degenerate: crate::planar::degenerate(scene),
         config: chosen.config,
         strategies,
         strategy: best.strategy,
@@ -205,6 +215,12 @@ pub fn fit_md(f: &Fit) -> String {
             f.unbounded_primitives
         );
     }
+    s += &format!(
+        "\n`{}`: {} of {} static triangles become degenerate after the vertex rounding (culled: they cover no sample at that configuration; the default configuration renders them).\n",
+        crate::planar::NAME,
+        f.planar_degenerate.0,
+        f.planar_degenerate.1
+    );
     s += &format!(
         "\nNarrowest configuration meeting the tolerance: **{}**.\n\n## Bounds strategy and tile size\n\nCost = setup ops + tile ops + predicate ops + sample tests × ops per test × width factor {:.3} (`host/src/fit.rs`); score = covered samples per unit of cost.\n\n| strategy | tile | STE | tested | covered | setup ops | tile ops | predicate ops | ops/test | cost | score |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
         f.config, f.width_factor

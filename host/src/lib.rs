@@ -20,6 +20,7 @@ pub mod json;
 pub mod mesh;
 pub mod oracle;
 pub mod pattern;
+pub mod planar;
 pub mod precision;
 pub mod precision_cost;
 pub mod reference;

@@ -85,7 +85,8 @@ enum Cmd {
         limit_effort: Option<String>,
         /// the core's configuration: default, exact-16-16-16, bounded-16-16-16-20,
         /// bounded-16-16-16-22, bounded-16-16-16-24, bounded-12-12-12-24, bounded-12-12-12-26,
-        /// bounded-8-8-8-28 (the f64 reference and the axis-aligned limit stay exact)
+        /// bounded-8-8-8-28, planar-16-16-16-20 (the f64 reference and the axis-aligned limit
+        /// stay exact)
         #[arg(long, default_value = "default")]
         precision: String,
     },
@@ -123,6 +124,10 @@ enum Cmd {
         /// synthesis results (vectors/rtl's synthesis script writes it); optional
         #[arg(long, default_value = "host/report/synth.json")]
         synth: PathBuf,
+        /// only these configurations (comma-separated names of the sweep, e.g.
+        /// exact-16-16-16,planar-16-16-16-20); default: all
+        #[arg(long)]
+        configs: Option<String>,
     },
     /// Print the derived bit-width table (Markdown) of a configuration; without --config the
     /// width section of core/README.md (exact-16-16-16 and bounded-16-16-16-20).
@@ -435,13 +440,30 @@ fn run(cli: Cli) -> Result<()> {
             shrink,
             m4,
             synth,
+            configs,
         } => {
             if shrink == Some(0) {
                 bail!("--shrink must be at least 1");
             }
+            let all = uvt_host::precision::CONFIGS;
+            let chosen: Vec<&'static str> = match configs {
+                None => all.to_vec(),
+                Some(list) => list
+                    .split(',')
+                    .map(|n| {
+                        all.iter().copied().find(|c| *c == n.trim()).ok_or_else(|| {
+                            anyhow!(
+                                "--configs: unknown configuration {:?} (one of {})",
+                                n.trim(),
+                                all.join(", ")
+                            )
+                        })
+                    })
+                    .collect::<Result<_>>()?,
+            };
             let sw = if quick {
                 uvt_host::precision::Sweep {
-                    configs: uvt_host::precision::CONFIGS.to_vec(),
+                    configs: chosen.clone(),
                     scenes: vec![scenes::Bench::Game, scenes::Bench::Dense],
                     rows: vec![scenes::Row::Static, scenes::Row::Both],
                     tiles: vec![1, 4],
@@ -449,7 +471,7 @@ fn run(cli: Cli) -> Result<()> {
                 }
             } else {
                 uvt_host::precision::Sweep {
-                    configs: uvt_host::precision::CONFIGS.to_vec(),
+                    configs: chosen.clone(),
                     scenes: vec![scenes::Bench::Game, scenes::Bench::Dense],
                     rows: scenes::Row::ALL.to_vec(),
                     tiles: vec![1, 2, 4, 8],

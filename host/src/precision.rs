@@ -37,8 +37,21 @@ use crate::scene::Scene;
 use crate::scenes::{bench, Bench, Row};
 
 /// The swept configurations (session names, `crate::cost::SWEEP`): exact, then bounded from the
-/// default candidate down to the narrowest.
-pub const CONFIGS: [&str; 7] = crate::cost::SWEEP;
+/// default candidate down to the narrowest; then the planar static configuration
+/// (`crate::planar::NAME`).
+pub const CONFIGS: [&str; 8] = {
+    let s = crate::cost::SWEEP;
+    [
+        s[0],
+        s[1],
+        s[2],
+        s[3],
+        s[4],
+        s[5],
+        s[6],
+        crate::planar::NAME,
+    ]
+};
 
 /// Run `one::<P>` for configuration `ci` of [`CONFIGS`].
 fn one_at(ci: usize, s: &Scene, accs: &mut [PrecRow]) {
@@ -49,7 +62,8 @@ fn one_at(ci: usize, s: &Scene, accs: &mut [PrecRow]) {
         3 => one::<Bounded<16, 16, 16, 24>>(s, accs),
         4 => one::<Bounded<12, 12, 12, 24>>(s, accs),
         5 => one::<Bounded<12, 12, 12, 26>>(s, accs),
-        _ => one::<Bounded<8, 8, 8, 28>>(s, accs),
+        6 => one::<Bounded<8, 8, 8, 28>>(s, accs),
+        _ => one::<uvt_core::PlanarPrecision>(s, accs),
     }
 }
 
@@ -109,8 +123,12 @@ pub struct PrecRow {
     pub eps_raw: [u32; 3],
     /// documented d_q (px at w = 1) at the scenes' viewports (largest) and at 960×540
     pub d_q: [f64; 2],
-    /// differing decisions of triangles with every w ≥ 1 farther than d_q from an edge
+    /// differing decisions of triangles with every w ≥ 1 farther than d_q from an edge (the
+    /// planar configuration: of triangles with a per-primitive d_q, farther than it)
     pub beyond_dq: u64,
+    /// triangles the configuration culls as degenerate that the default does not (the planar
+    /// configuration's vertex rounding: `crate::planar::degenerate`)
+    pub degenerate: u64,
     /// covered samples whose framebuffer slot was still empty and that were not written
     /// (counted by [`lost_samples`], independently of the core's counters; must be 0)
     pub lost: u64,
@@ -239,16 +257,30 @@ fn one<P: Precision + Sync>(s: &Scene, accs: &mut [PrecRow]) {
         .collect();
     let vp = s.core_viewport();
     let colors = s.colors();
+    if P::PLANAR {
+        let (n, stat) = crate::planar::degenerate(s);
+        eprintln!(
+            "precision: {}: {n} of {stat} static triangles degenerate after the planar rounding",
+            s.name
+        );
+    }
     let eps = uvt_core::Eps::of(P::OFFSET_SHIFT, uvt_core::Class::MotionDefocus, vp);
     let e3 = [eps.x()[0], eps.x()[1], eps.w()].map(i32::unsigned_abs);
     for acc in accs.iter_mut() {
         for (a, e) in acc.eps_raw.iter_mut().zip(e3) {
             *a = (*a).max(e);
         }
-        acc.d_q = [
-            acc.d_q[0].max(d_q_px(P::OFFSET_SHIFT, s.viewport.0, s.viewport.1)),
-            d_q_px(P::OFFSET_SHIFT, 960, 540),
-        ];
+        if P::PLANAR {
+            // Per primitive (`crate::planar`): the largest over the scenes' primitives with a
+            // bound; no single figure at 960×540 (0, shown as "per primitive").
+            acc.d_q = [acc.d_q[0].max(planar_dq(s).0), 0.0];
+            acc.degenerate += crate::planar::degenerate(s).0;
+        } else {
+            acc.d_q = [
+                acc.d_q[0].max(d_q_px(P::OFFSET_SHIFT, s.viewport.0, s.viewport.1)),
+                d_q_px(P::OFFSET_SHIFT, 960, 540),
+            ];
+        }
         let o = RunOpts {
             tile: acc.tile,
             ..RunOpts::for_scene(s, &colors)
@@ -299,20 +331,35 @@ fn one<P: Precision + Sync>(s: &Scene, accs: &mut [PrecRow]) {
         acc.counts[2] += r.stats.samples_tested;
         acc.counts[3] += r.stats.samples_covered;
     }
-    errors::<P>(s, &core, &pat, accs);
+    errors::<P>(s, &core, &pat, accs, 1.0);
 }
 
 /// Per-triangle brute force over the union of both footprints: coverage, distance and depth
 /// once; bounds slack, violations and epsilon for every tile size of `accs`.
-fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, accs: &mut [PrecRow]) {
+///
+/// `dq_scale` scales the planar configuration's per-primitive d_q (1 in every report; tests
+/// halve it to show that a measured difference beyond it is caught).
+fn errors<P: Precision + Sync>(
+    s: &Scene,
+    core: &[Triangle],
+    pat: &Pattern,
+    accs: &mut [PrecRow],
+    dq_scale: f64,
+) {
     let vp = s.core_viewport();
     let v = s.viewport;
     let tiles: Vec<u16> = accs.iter().map(|a| a.tile as u16).collect();
+    let prim_dq = if P::PLANAR {
+        planar_dq(s).1
+    } else {
+        Vec::new()
+    };
     let parts: Vec<Vec<PrecRow>> = s
         .tris
         .par_iter()
         .zip(core.par_iter())
-        .map(|(st, ct)| {
+        .enumerate()
+        .map(|(i, (st, ct))| {
             let mut a: Vec<PrecRow> = tiles.iter().map(|_| PrecRow::default()).collect();
             let mut ops = Ops::default();
             let fx = match uvt_core::setup_with::<P>(ct, vp, &mut ops) {
@@ -330,8 +377,19 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, accs
             let full = Setup::unculled_with::<P>(ct, vp);
             let eps = eps_of(&full);
             let rounding = Rounding::at(P::POS_FRAC, P::TUV_FRAC);
-            let d_q = d_q_px(P::OFFSET_SHIFT, v.0, v.1);
-            let front = st.t0.iter().chain(st.t1.iter()).all(|q| q[3] >= 1.0);
+            // The planar configuration: the primitive's own d_q (none: not counted); otherwise
+            // the configuration's d_q at w = 1 for triangles with every w ≥ 1.
+            let (d_q, front) = if P::PLANAR {
+                match prim_dq.get(i).copied().flatten() {
+                    Some(d) => (d * dq_scale, true),
+                    None => (0.0, false),
+                }
+            } else {
+                (
+                    d_q_px(P::OFFSET_SHIFT, v.0, v.1),
+                    st.t0.iter().chain(st.t1.iter()).all(|q| q[3] >= 1.0),
+                )
+            };
             let cell_of = |px: u16, py: u16, fp: PixelRect, bt: u16| {
                 PixelRect {
                     x0: px - px % bt,
@@ -455,10 +513,26 @@ fn errors<P: Precision + Sync>(s: &Scene, core: &[Triangle], pat: &Pattern, accs
     }
 }
 
+/// The planar configuration's d_q per primitive of `s` (`crate::planar::prim_dq`; `None`: no
+/// screen-space bound) and the largest of them.
+pub fn planar_dq(s: &Scene) -> (f64, Vec<Option<f64>>) {
+    let v: Vec<Option<f64>> = s
+        .tris
+        .iter()
+        .map(|t| {
+            let c = t.to_core().ok()?;
+            let class = uvt_core::setup::classify(&c);
+            crate::planar::prim_dq(t, &c, class, s.viewport, 1.0)
+        })
+        .collect();
+    let m = v.iter().flatten().fold(0.0f64, |a, &b| a.max(b));
+    (m, v)
+}
+
 /// Markdown table of a sweep, with the costs of each configuration (`crate::precision_cost`).
 pub fn table_md(rows: &[PrecRow], costs: &crate::precision_cost::Costs) -> String {
     let mut s = String::from(
-        "| configuration | tile | decisions ≠ f64 (rate, max px) | d_q px (scene / 960×540) | beyond d_q (w ≥ 1) | beyond bound (max ratio) | violations | ε x/y/w raw | STE core / f64 | STE loss vs exact | depth err LSB max (mean) | time ÷ f64 | host ns setup/tile/sample | M4F insn setup/tile/sample | sample test DSP48E1 / MULT18X18D (model) | sample test Σ bit-products | synthesized |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "| configuration | tile | decisions ≠ f64 (rate, max px) | d_q px (scene / 960×540) | beyond d_q (w ≥ 1; planar: per primitive) | degenerate after rounding | beyond bound (max ratio) | violations | ε x/y/w raw | STE core / f64 | STE loss vs exact | depth err LSB max (mean) | time ÷ f64 | host ns setup/tile/sample | M4F insn setup/tile/sample | sample test DSP48E1 / MULT18X18D (model) | sample test Σ bit-products | synthesized |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
     for r in rows {
         let exact = rows
@@ -474,9 +548,9 @@ pub fn table_md(rows: &[PrecRow], costs: &crate::precision_cost::Costs) -> Strin
             .unwrap_or_else(|| "–".into());
         let c = costs.of(&r.config);
         s += &format!(
-            "| {} | {} | {} ({:.1e}, {:.4}) | {:.4} / {:.4} | {} | {} ({:.2}) | {} | {}/{}/{} | {:.2}% / {:.2}% | {loss} | {:.0} ({:.1}) | {:.2} | {} | {} | {} | {} | {} |\n",
+            "| {} | {} | {} ({:.1e}, {:.4}) | {:.4} / {} | {} | {} | {} ({:.2}) | {} | {}/{}/{} | {:.2}% / {:.2}% | {loss} | {:.0} ({:.1}) | {:.2} | {} | {} | {} | {} | {} |\n",
             r.config, r.tile, r.differ, r.differ as f64 / r.compared.max(1) as f64, r.max_differ_px,
-            r.d_q[0], r.d_q[1], r.beyond_dq, r.beyond_bound, r.max_ratio, r.violations,
+            r.d_q[0], if r.config == crate::planar::NAME { "per primitive".to_string() } else { format!("{:.4}", r.d_q[1]) }, r.beyond_dq, r.degenerate, r.beyond_bound, r.max_ratio, r.violations,
             r.eps_raw[0], r.eps_raw[1], r.eps_raw[2], 100.0 * r.ste[0], 100.0 * r.ste[1],
             r.depth_lsb[0], r.depth_lsb[1], r.time_ratio_median,
             c.host_ns, c.m4, c.dsp, c.bit_products, c.synth
@@ -576,10 +650,38 @@ pub fn decisions<P: Precision + Sync>(scene: &Scene, core: &[Triangle], pat: &Pa
         tile: scene.tile,
         ..Default::default()
     }];
-    errors::<P>(scene, core, pat, &mut acc);
+    errors::<P>(scene, core, pat, &mut acc, 1.0);
     let [mut row] = acc;
     finish(&mut row);
     row
+}
+
+/// [`decisions`] at the planar static configuration with its per-primitive d_q scaled by
+/// `dq_scale` (1: the documented d_q; `beyond_dq` counts the differing decisions of primitives
+/// with a d_q farther than the scaled d_q from the nearest edge), and the degenerate count.
+pub fn planar_decisions(scene: &Scene, dq_scale: f64) -> anyhow::Result<PrecRow> {
+    type P = uvt_core::PlanarPrecision;
+    let pat = Pattern::new(scene.pattern, scene.spp, scene.seed).with_tuv(P::TUV_FRAC);
+    let core = scene
+        .tris
+        .iter()
+        .enumerate()
+        .map(|(i, t)| {
+            t.to_core_with::<P>()
+                .map_err(|e| anyhow::anyhow!("triangles[{i}]: {e}"))
+        })
+        .collect::<anyhow::Result<Vec<_>>>()?;
+    let mut acc = [PrecRow {
+        config: crate::planar::NAME.to_string(),
+        tile: scene.tile,
+        d_q: [planar_dq(scene).0, 0.0],
+        degenerate: crate::planar::degenerate(scene).0,
+        ..Default::default()
+    }];
+    errors::<P>(scene, &core, &pat, &mut acc, dq_scale);
+    let [mut row] = acc;
+    finish(&mut row);
+    Ok(row)
 }
 
 /// Markdown table of stress cases.

@@ -100,7 +100,17 @@ impl Costs {
     pub fn of(&self, name: &str) -> Cells {
         let dash = || "–".to_string();
         let m4 = self.m4_row(name);
-        let model = Config::parse(name).map(|c| crate::cost::sample_cost(&c));
+        // (DSP48E1, MULT18X18D, Σ bit-products) of the full unit's sample test; the planar
+        // configuration's full unit carries the bounded datapath and the planar test
+        // (`crate::planar::unit_cost`).
+        let model = if name == crate::planar::NAME {
+            crate::planar::unit_cost(true, true).map(|c| (c.dsp48e1, c.ecp5, c.bit_products))
+        } else {
+            Config::parse(name).map(|c| {
+                let c = crate::cost::sample_cost(&c);
+                (c.dsp48e1, c.ecp5, c.bit_products)
+            })
+        };
         let synth = self.synth.as_ref().and_then(|(_, v)| {
             let c = v["configs"]
                 .as_array()?
@@ -126,12 +136,8 @@ impl Costs {
             m4: m4.map_or_else(dash, |r| {
                 format!("{:.0}/{:.0}/{:.0}", r.setup, r.bounds, r.sample)
             }),
-            dsp: model
-                .as_ref()
-                .map_or_else(dash, |c| format!("{} / {}", c.dsp48e1, c.ecp5)),
-            bit_products: model
-                .as_ref()
-                .map_or_else(dash, |c| c.bit_products.to_string()),
+            dsp: model.map_or_else(dash, |c| format!("{} / {}", c.0, c.1)),
+            bit_products: model.map_or_else(dash, |c| c.2.to_string()),
             synth: synth.unwrap_or_else(dash),
         }
     }

@@ -3,7 +3,8 @@
 //! (Cortex-M3 without FPU, QEMU `mps2-an385`), run under `qemu-system-arm` with a time limit, and
 //! its checksum and counters must equal the host's for the same scene through the same core.
 //! Each unit variant's program (`UVT_M4_UNIT`, Cortex-M4F only) must equal the host render of
-//! the same prims on the same unit.
+//! the same prims on the same unit; so must the full and static-only programs at the planar
+//! static configuration (`UVT_M4_PREC=planar-16-16-16-20`).
 
 use std::path::PathBuf;
 use std::process::Command;
@@ -45,6 +46,17 @@ fn bit_exact_under_qemu(target: &str, machine: &str, cpu: &str) {
 /// Build `m4_render` for `target` (as unit `unit`'s program, or the default program) and run it
 /// on QEMU's `machine`; its standard output.
 fn build_and_run(target: &str, machine: &str, cpu: &str, unit: Option<&str>) -> String {
+    build_and_run_at(target, machine, cpu, unit, None)
+}
+
+/// [`build_and_run`] at configuration `prec` (`UVT_M4_PREC`; `None`: the default).
+fn build_and_run_at(
+    target: &str,
+    machine: &str,
+    cpu: &str,
+    unit: Option<&str>,
+    prec: Option<&str>,
+) -> String {
     // Build in a separate target directory so the outer `cargo test` lock is not contended.
     let tdir = root().join("target").join("m4-test");
     let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
@@ -52,6 +64,10 @@ fn build_and_run(target: &str, machine: &str, cpu: &str, unit: Option<&str>) -> 
     match unit {
         Some(u) => cmd.env("UVT_M4_UNIT", u),
         None => cmd.env_remove("UVT_M4_UNIT"),
+    };
+    match prec {
+        Some(p) => cmd.env("UVT_M4_PREC", p),
+        None => cmd.env_remove("UVT_M4_PREC"),
     };
     let st = cmd
         .current_dir(root())
@@ -170,5 +186,59 @@ fn cortex_m4f_unit_programs_are_bit_exact_with_host() {
         );
         let cpu = format!("cortex-m4 (unit {name})");
         check_output(&text, lines(r), "thumbv7em-none-eabihf", "mps2-an386", &cpu);
+    }
+}
+
+/// The full and static-only Cortex-M4F programs at the planar static configuration
+/// (`planar-16-16-16-20`) against the host render of the same prims on the same unit at
+/// `PlanarPrecision`; the static-only program (the static-specialised path) also against the
+/// host's full unit on the static prims (checksum and covered count).
+#[test]
+fn cortex_m4f_planar_unit_programs_are_bit_exact_with_host() {
+    use uvt_core::demo::render_on_with;
+    use uvt_core::{Full, PlanarPrecision, StaticOnly, Unit};
+    let _one = M4F.lock().unwrap_or_else(|e| e.into_inner());
+    let host = [
+        (Full::NAME, render_on_with::<PlanarPrecision, Full, Full>()),
+        (
+            StaticOnly::NAME,
+            render_on_with::<PlanarPrecision, StaticOnly, StaticOnly>(),
+        ),
+    ];
+    for (name, r) in host {
+        let r = r.unwrap_or_else(|e| panic!("unit {name} (planar): host render: {e}"));
+        let text = build_and_run_at(
+            "thumbv7em-none-eabihf",
+            "mps2-an386",
+            "cortex-m4",
+            Some(name),
+            Some("planar-16-16-16-20"),
+        );
+        assert!(
+            text.lines().any(|l| l == "unit_prec planar-16-16-16-20"),
+            "the program was not built at planar-16-16-16-20:\n{text}"
+        );
+        let cpu = format!("cortex-m4 (unit {name}, planar-16-16-16-20)");
+        check_output(&text, lines(r), "thumbv7em-none-eabihf", "mps2-an386", &cpu);
+        if name == StaticOnly::NAME {
+            // The static-only program runs the static-specialised path (`static_unit.rs`):
+            // its image and covered count are the full unit's on the same prims.
+            let full = render_on_with::<PlanarPrecision, Full, StaticOnly>()
+                .unwrap_or_else(|e| panic!("full unit on the static prims (planar): {e}"));
+            let want = format!("checksum {:#010x}", full.checksum);
+            assert!(
+                text.lines().any(|l| l == want),
+                "static-only planar program against the full unit on its prims: expected \
+                 '{want}' ({}), program output:\n{text}",
+                full.checksum
+            );
+            let covered = format!(" samples_covered={} ", full.stats.samples_covered);
+            assert!(
+                text.lines()
+                    .any(|l| l.starts_with("stats ") && l.contains(&covered)),
+                "static-only planar program: expected '{covered}' (the full unit's), \
+                 program output:\n{text}"
+            );
+        }
     }
 }

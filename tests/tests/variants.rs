@@ -1,7 +1,7 @@
 //! Unit variants (`uvt_core::unit`): each variant renders every primitive list it accepts
 //! bit-identically to the full unit at the same precision — every sample's colour and depth,
 //! every pixel's counters and the renderer's `Stats` (operation counts included) — at the
-//! default bounded precision and at `Exact`. Scenes: the built-in benchmark scenes (quick size)
+//! default bounded precision, at `Exact` and at `PlanarPrecision`. Scenes: the built-in benchmark scenes (quick size)
 //! and the default scene of `host/src/scenes.rs`, the demo scene, and seeded random triangles
 //! per class (`UVT_SEED`; more in `UVT_EXTENSIVE=1` mode), each filtered to the classes the
 //! variant accepts. And a primitive a variant cannot handle is refused with
@@ -12,7 +12,8 @@ use uvt_core::input::SamplePattern;
 use uvt_core::setup::classify;
 use uvt_core::{
     demo, DefaultPrecision, DefocusOnly, Error, Exact, Full, Laine2011, MotionOnly, PixelStats,
-    Precision, Prim, Renderer, Rgb888, StaticOnly, Stats, TileBuffer, Triangle, Unit, Viewport,
+    PlanarPrecision, Precision, Prim, Renderer, Rgb888, StaticOnly, Stats, TileBuffer, Triangle,
+    Unit, Viewport,
 };
 use uvt_host::pattern::Pattern;
 use uvt_host::scene::Scene;
@@ -139,6 +140,11 @@ fn all_variants<const S: usize>(
     run(same_as_full::<Exact, MotionOnly, S>);
     run(same_as_full::<Exact, DefocusOnly, S>);
     run(same_as_full::<Exact, StaticOnly, S>);
+    // The planar static configuration (issue 13): static triangles take the planar test on
+    // every unit.
+    run(same_as_full::<PlanarPrecision, MotionOnly, S>);
+    run(same_as_full::<PlanarPrecision, DefocusOnly, S>);
+    run(same_as_full::<PlanarPrecision, StaticOnly, S>);
     n
 }
 

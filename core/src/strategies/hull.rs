@@ -158,8 +158,9 @@ impl HullCoeffs {
 /// conservative epsilon): `ceil(128·E·(ε + R·ε_w)/(w_min − ε_w))` per axis, with `R` the largest
 /// `ceil(|coordinate|/w)` over the hull points. `None` when some hull point has `w ≤ ε_w` (the
 /// bound is not derived there) or on overflow (outside the domain); then no face may be kept.
-/// Ranges: |x ± c| ≤ 2^30, 1 ≤ w ≤ 2^29, ε < 2^24, ε_w ≤ 1, E ≤ 2^11: R ≤ 2^30,
-/// 128·E·(ε + R·ε_w) < 2^49; all in checked i128.
+/// Ranges: |x ± c| ≤ 2^30, 1 ≤ w ≤ 2^29, ε < 2^24, ε_w ≤ 2^14 (1 for the bounded test, the
+/// rounding residual for the planar one), E ≤ 2^11: R ≤ 2^30, 128·E·(ε + R·ε_w) < 2^63; all in
+/// checked i128.
 pub fn eps_margin(
     pts: &[[i64; 3]],
     eps: &crate::bounded::Eps,

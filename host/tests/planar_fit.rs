@@ -1,0 +1,178 @@
+//! The planar static configuration (`planar-16-16-16-20`) in the host tools: its documented
+//! per-primitive d_q bounds every measured decision difference against the f64 reference (and a
+//! deliberately halved d_q is caught on a guard-band scene); `uvt fit` never picks it where its
+//! d_q exceeds the tolerance, and picks it for a static-only scene it fits when it is the
+//! cheapest; the degenerate count is reported.
+
+use std::path::Path;
+
+use uvt_host::fit::{classes, config_fits, DEFAULT_TOLERANCE_PX};
+use uvt_host::precision::planar_decisions;
+use uvt_host::scene::Scene;
+
+/// A static scene from its triangles' t0 vertices `[x, y, z, w]`.
+fn scene(name: &str, vp: (u16, u16), spp: u16, tris: &[[[f64; 4]; 3]]) -> Scene {
+    let t: Vec<String> = tris
+        .iter()
+        .map(|v| {
+            let p: Vec<String> = v
+                .iter()
+                .map(|q| format!("[{},{},{},{}]", q[0], q[1], q[2], q[3]))
+                .collect();
+            format!("{{\"t0\":[{}]}}", p.join(","))
+        })
+        .collect();
+    let text = format!(
+        r#"{{"format":"uvt-scene","version":1,"viewport":[{},{}],"spp":{spp},"tile":1,"samples":{{"pattern":"sobol","seed":5}},"triangles":[{}]}}"#,
+        vp.0,
+        vp.1,
+        t.join(",")
+    );
+    Scene::parse(&text, name, Path::new(".")).expect("test scene parses")
+}
+
+/// Guard band: two vertices at x = ±8000 clip units, w = 1 (NDC ±8000), y = 0.37 — their
+/// largest component rounds with a step of 2^14 raw (¼ clip unit), so y = 0.37 moves by 0.12
+/// (0.12 NDC, ≈ 3.8 px on 64 px): the horizontal edge across the screen moves that far.
+fn guard_band() -> Scene {
+    scene(
+        "guard band",
+        (64, 64),
+        16,
+        &[
+            [
+                [-8000.0, 0.37, 0.5, 1.0],
+                [8000.0, 0.37, 0.5, 1.0],
+                [0.0, -0.9, 0.5, 1.0],
+            ],
+            [
+                [8000.0, -0.61, 0.3, 1.0],
+                [-8000.0, -0.61, 0.3, 1.0],
+                [0.1, 0.95, 0.3, 1.0],
+            ],
+        ],
+    )
+}
+
+/// In view, w from 1 to 3: planar d_q well below 1/32 px on 32 px.
+fn benign() -> Scene {
+    scene(
+        "benign",
+        (32, 32),
+        8,
+        &[
+            [
+                [-0.8, -0.7, 0.5, 1.0],
+                [0.9, -0.6, 0.6, 1.5],
+                [0.1, 2.1, 0.9, 3.0],
+            ],
+            [
+                [0.9, -0.6, 0.6, 1.5],
+                [-0.8, -0.7, 0.5, 1.0],
+                [-0.3, -2.5, 0.5, 2.7],
+            ],
+        ],
+    )
+}
+
+#[test]
+fn planar_dq_bounds_every_difference_and_a_halved_dq_is_caught() {
+    let s = guard_band();
+    let r = planar_decisions(&s, 1.0).unwrap();
+    let dq = r.d_q[0];
+    println!(
+        "guard band: {} of {} decisions differ, max {:.4} px; planar d_q {dq:.4} px; beyond d_q {}; beyond bound {} (ratio {:.3}); violations {}; degenerate {}",
+        r.differ, r.compared, r.max_differ_px, r.beyond_dq, r.beyond_bound, r.max_ratio, r.violations, r.degenerate
+    );
+    assert!(r.differ > 0, "the guard-band scene exercises no difference");
+    assert_eq!(
+        r.beyond_dq, 0,
+        "a difference beyond the documented d_q: {r:?}"
+    );
+    assert_eq!(r.beyond_bound, 0, "{r:?}");
+    assert_eq!(r.violations, 0, "{r:?}");
+    assert!(
+        r.max_differ_px > 1.0,
+        "the rounding moved the edge by less than 1 px: {r:?}"
+    );
+    let h = planar_decisions(&s, 0.5).unwrap();
+    assert!(
+        h.beyond_dq > 0,
+        "a halved d_q ({:.4} px) must be exceeded by the measured {:.4} px: {h:?}",
+        dq / 2.0,
+        h.max_differ_px
+    );
+    println!("halved d_q: {} differences beyond it", h.beyond_dq);
+}
+
+#[test]
+fn fit_never_picks_planar_beyond_the_tolerance() {
+    let s = guard_band();
+    let cls = classes(&s).unwrap();
+    let planar = |tol: f64| {
+        let (fits, _) = config_fits(&s, &cls, (false, false), tol);
+        fits.into_iter()
+            .find(|f| f.config == uvt_host::planar::NAME)
+            .expect("fit lists the planar configuration")
+    };
+    // The exact configuration reaches ≈ 1.96 px here (w's input rounding times the guard-band
+    // ratio 8000), the planar one ≈ 3.84 px (the vertex rounding): at 2.5 px only the former.
+    let tol = 2.5;
+    let pl = planar(tol);
+    assert!(
+        pl.d_q_px > tol && !pl.meets,
+        "planar d_q {} px on the guard-band scene",
+        pl.d_q_px
+    );
+    let f = uvt_host::fit_report::fit(&s, Some(tol), None, Path::new("/nonexistent")).unwrap();
+    assert_eq!(f.unit, "static-only");
+    assert_ne!(f.config, uvt_host::planar::NAME, "{}", f.config);
+    assert!(f.ok, "{:?}", f.confirm);
+    println!("guard band at {tol} px: fit picks {}", f.config);
+    // Above the planar d_q it meets and, the cheapest static-only sample test, is picked.
+    let tol = pl.d_q_px * 1.01;
+    assert!(planar(tol).meets);
+    let f = uvt_host::fit_report::fit(&s, Some(tol), None, Path::new("/nonexistent")).unwrap();
+    assert_eq!(f.config, uvt_host::planar::NAME);
+    assert!(f.ok, "{:?}", f.confirm);
+    println!("guard band at {tol:.4} px: fit picks {}", f.config);
+}
+
+#[test]
+fn fit_picks_planar_for_a_benign_static_scene_when_cheapest() {
+    let s = benign();
+    let cls = classes(&s).unwrap();
+    let (fits, _) = config_fits(&s, &cls, (false, false), DEFAULT_TOLERANCE_PX);
+    for f in &fits {
+        println!(
+            "{}: d_q {:.6} px, DSP48E1 {:?}, Σ bit-products {:?}",
+            f.config,
+            f.d_q_px,
+            f.unit_cost.as_ref().map(|c| c.dsp48e1),
+            f.unit_cost.as_ref().map(|c| c.bit_products)
+        );
+    }
+    let pl = fits
+        .iter()
+        .find(|f| f.config == uvt_host::planar::NAME)
+        .unwrap();
+    assert!(pl.meets, "planar d_q {} px", pl.d_q_px);
+    let key = |f: &uvt_host::fit::ConfigFit| {
+        f.unit_cost
+            .as_ref()
+            .map(|c| (c.dsp48e1, c.bit_products))
+            .unwrap_or((u64::MAX, u64::MAX))
+    };
+    let cheapest = fits
+        .iter()
+        .filter(|f| f.meets && f.unit_cost.is_some())
+        .min_by_key(|f| key(f))
+        .unwrap();
+    let f = uvt_host::fit_report::fit(&s, None, None, Path::new("/nonexistent")).unwrap();
+    assert_eq!(f.config, cheapest.config);
+    assert!(f.ok, "{:?}", f.confirm);
+    println!(
+        "benign static scene: fit picks {} (planar {} of {} static triangles degenerate)",
+        f.config, f.planar_degenerate.0, f.planar_degenerate.1
+    );
+}
