@@ -441,8 +441,24 @@ pub mod cost {
     pub fn bounds_all_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
         reps: u32,
     ) -> Result<u64, Error> {
+        bounds_loop::<P, U, V, false>(reps)
+    }
+
+    /// The harness alone: [`bounds_all_on_with`]'s loop (the same setups, cells and call
+    /// count) with the tile bounds replaced by handing their arguments to `black_box`.
+    pub fn bounds_empty_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
+        reps: u32,
+    ) -> Result<u64, Error> {
+        bounds_loop::<P, U, V, true>(reps)
+    }
+
+    /// The tile-bounds workload of [`bounds_all_on_with`]; `EMPTY`: the bounds replaced by
+    /// handing their arguments to `black_box` (the loop's own cost).
+    fn bounds_loop<P: crate::formats::Precision, U: Unit, V: Unit, const EMPTY: bool>(
+        reps: u32,
+    ) -> Result<u64, Error> {
         if const { crate::static_unit::specialised::<P, U>() } {
-            return static_cost::bounds::<V, false>(reps);
+            return static_cost::bounds::<V, EMPTY>(reps);
         }
         let prims = unit_prims::<V>()?;
         let vp = viewport()?;
@@ -455,7 +471,11 @@ pub mod cost {
             let c = Laine2011.prepare_unit::<U>(&s, &mut ops);
             for _ in 0..reps {
                 for cell in s.footprint().cells(2) {
-                    black_box(Laine2011.tile_unit::<U>(black_box(&s), &c, cell, &mut ops));
+                    if EMPTY {
+                        black_box((black_box(&s), &c, cell));
+                    } else {
+                        black_box(Laine2011.tile_unit::<U>(black_box(&s), &c, cell, &mut ops));
+                    }
                     calls = calls.saturating_add(1);
                 }
             }
@@ -479,62 +499,7 @@ pub mod cost {
     pub fn samples_all_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
         reps: u32,
     ) -> Result<u64, Error> {
-        if const { crate::static_unit::specialised::<P, U>() } {
-            return static_cost::samples::<V, false>(reps);
-        }
-        let prims = unit_prims::<V>()?;
-        let vp = viewport()?;
-        let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLE_TABLE)?;
-        let mut ops = Ops::default();
-        let mut calls = 0u64;
-        for p in prims.iter() {
-            let Ok(Outcome::Visible(s)) = setup_unit::<P, U>(&p.tri, vp, &mut ops) else {
-                continue;
-            };
-            for _ in 0..reps.saturating_mul(SAMPLE_PASSES) {
-                for py in 12..20u16 {
-                    for px in 12..20u16 {
-                        for smp in pattern.pixel(px, py) {
-                            black_box(sample_test_unit::<P, U>(
-                                black_box(&s),
-                                ScreenPos::of(px, py, smp),
-                                smp,
-                                &mut ops,
-                            ));
-                            calls = calls.saturating_add(1);
-                        }
-                    }
-                }
-            }
-        }
-        Ok(calls)
-    }
-
-    /// The harness alone: [`bounds_all_on_with`]'s loop (the same setups, cells and call
-    /// count) with the tile bounds replaced by handing their arguments to `black_box`.
-    pub fn bounds_empty_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
-        reps: u32,
-    ) -> Result<u64, Error> {
-        if const { crate::static_unit::specialised::<P, U>() } {
-            return static_cost::bounds::<V, true>(reps);
-        }
-        let prims = unit_prims::<V>()?;
-        let vp = viewport()?;
-        let mut ops = Ops::default();
-        let mut calls = 0u64;
-        for p in prims.iter() {
-            let Ok(Outcome::Visible(s)) = setup_unit::<P, U>(&p.tri, vp, &mut ops) else {
-                continue;
-            };
-            let c = Laine2011.prepare_unit::<U>(&s, &mut ops);
-            for _ in 0..reps {
-                for cell in s.footprint().cells(2) {
-                    black_box((black_box(&s), &c, cell));
-                    calls = calls.saturating_add(1);
-                }
-            }
-        }
-        Ok(calls)
+        samples_loop::<P, U, V, false>(reps)
     }
 
     /// The harness alone: [`samples_all_on_with`]'s loop (the same setups, window, passes and
@@ -544,8 +509,16 @@ pub mod cost {
     pub fn samples_empty_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
         reps: u32,
     ) -> Result<u64, Error> {
+        samples_loop::<P, U, V, true>(reps)
+    }
+
+    /// The sample-test workload of [`samples_all_on_with`]; `EMPTY`: the test replaced by
+    /// handing its arguments to `black_box` (the loop's own cost).
+    fn samples_loop<P: crate::formats::Precision, U: Unit, V: Unit, const EMPTY: bool>(
+        reps: u32,
+    ) -> Result<u64, Error> {
         if const { crate::static_unit::specialised::<P, U>() } {
-            return static_cost::samples::<V, true>(reps);
+            return static_cost::samples::<V, EMPTY>(reps);
         }
         let prims = unit_prims::<V>()?;
         let vp = viewport()?;
@@ -560,7 +533,17 @@ pub mod cost {
                 for py in 12..20u16 {
                     for px in 12..20u16 {
                         for smp in pattern.pixel(px, py) {
-                            black_box((black_box(&s), ScreenPos::of(px, py, smp), smp));
+                            let pos = ScreenPos::of(px, py, smp);
+                            if EMPTY {
+                                black_box((black_box(&s), pos, smp));
+                            } else {
+                                black_box(sample_test_unit::<P, U>(
+                                    black_box(&s),
+                                    pos,
+                                    smp,
+                                    &mut ops,
+                                ));
+                            }
                             calls = calls.saturating_add(1);
                         }
                     }

@@ -63,13 +63,15 @@
 use embedded_graphics_core::pixelcolor::Rgb888;
 
 use crate::error::Error;
-use crate::formats::{Precision, DEPTH_FAR, DEPTH_NEAR, MAX_VIEWPORT, SUBPIXEL_BITS};
+use crate::formats::{Precision, DEPTH_FAR, DEPTH_NEAR, SUBPIXEL_BITS};
 use crate::input::{PixelRect, SamplePattern, Triangle, Viewport};
 use crate::planar::{depth, planar_setup};
 use crate::sample::{Hit, ScreenPos};
 use crate::setup::{classify, Class, Cull};
 use crate::stats::{Ops, Stats};
-use crate::tile::{DepthTest, PixelStats, Prim, TileBuffer};
+use crate::tile::{
+    check_tile_args, tile_size, walk_screen, DepthTest, PixelStats, Prim, TileBuffer,
+};
 use crate::unit::{StaticOnly, Unit};
 
 /// Whether precision `P` on unit `U` renders on this module's path: a planar precision on the
@@ -398,20 +400,7 @@ impl<const N: usize> StaticRenderer<N> {
         clear: Rgb888,
         fb: &mut TileBuffer<TW, TH, S>,
     ) -> Result<(), Error> {
-        if usize::from(pattern.spp()) != S {
-            return Err(Error::SppMismatch {
-                tile: u16::try_from(S).unwrap_or(u16::MAX),
-                pattern: pattern.spp(),
-            });
-        }
-        let bt = usize::from(bounds_tile);
-        let divides = |n: usize| n.checked_rem(bt) == Some(0);
-        if !matches!(bounds_tile, 1 | 2 | 4 | 8) || !divides(TW) || !divides(TH) {
-            return Err(Error::BoundsTile { size: bounds_tile });
-        }
-        if x0 >= self.vp.w || y0 >= self.vp.h {
-            return Err(Error::PixelOutOfRange);
-        }
+        check_tile_args::<TW, TH, S>(pattern, bounds_tile, x0, y0, &self.vp)?;
         fb.clear_fill(clear);
         let (tw, th) = tile_size::<TW, TH>();
         let screen = PixelRect {
@@ -444,39 +433,17 @@ impl<const N: usize> StaticRenderer<N> {
         pattern: &SamplePattern<'_>,
         bounds_tile: u8,
         clear: Rgb888,
-        mut out: impl FnMut(u16, u16, Rgb888, PixelStats),
+        out: impl FnMut(u16, u16, Rgb888, PixelStats),
     ) -> Result<(), Error> {
         let mut fb = TileBuffer::<TW, TH, S>::new_fill(clear);
-        let (tw, th) = tile_size::<TW, TH>();
-        let mut y0 = 0u16;
-        while y0 < self.vp.h {
-            let mut x0 = 0u16;
-            while x0 < self.vp.w {
-                self.render_tile(x0, y0, pattern, bounds_tile, clear, &mut fb)?;
-                // The tile's pixels in raster order, one loop (not unrolled per column).
-                for (ty, tx) in (0..th).flat_map(|ty| (0..tw).map(move |tx| (ty, tx))) {
-                    // x0 + tx < 2048 + 2048: no saturation happens.
-                    let (x, y) = (x0.saturating_add(tx), y0.saturating_add(ty));
-                    if x < self.vp.w && y < self.vp.h {
-                        let (tx, ty) = (usize::from(tx), usize::from(ty));
-                        out(x, y, fb.resolve(tx, ty), fb.pixel_stats(tx, ty));
-                    }
-                }
-                // tw ≥ 1 (TileBuffer's const assertion), so the walk advances.
-                x0 = x0.saturating_add(tw);
-            }
-            y0 = y0.saturating_add(th);
-        }
-        Ok(())
+        let vp = self.vp;
+        walk_screen(
+            vp,
+            &mut fb,
+            |x0, y0, fb| self.render_tile(x0, y0, pattern, bounds_tile, clear, fb),
+            out,
+        )
     }
-}
-
-/// `(TW, TH)` as `u16`: both are 1..=2048 (asserted by [`TileBuffer::new`]).
-fn tile_size<const TW: usize, const TH: usize>() -> (u16, u16) {
-    (
-        u16::try_from(TW).unwrap_or(MAX_VIEWPORT),
-        u16::try_from(TH).unwrap_or(MAX_VIEWPORT),
-    )
 }
 
 /// Test every sample of one bounds tile (the counters as the general renderer keeps them).

@@ -223,6 +223,74 @@ impl<const TW: usize, const TH: usize, const S: usize> TileBuffer<TW, TH, S> {
     }
 }
 
+/// `(TW, TH)` as `u16`: both are 1..=2048 (asserted at compile time by [`TileBuffer::new`],
+/// the only way to obtain the buffer a tile walk uses), so the conversion is exact.
+pub(crate) fn tile_size<const TW: usize, const TH: usize>() -> (u16, u16) {
+    (
+        u16::try_from(TW).unwrap_or(MAX_VIEWPORT),
+        u16::try_from(TH).unwrap_or(MAX_VIEWPORT),
+    )
+}
+
+/// The screen walk of every renderer's `render_with`: for each screen tile of `vp` (raster
+/// order) `render(x0, y0, fb)` renders it into `fb`, then each of its pixels inside `vp` goes to
+/// `out(x, y, color, stats)` in raster order.
+pub(crate) fn walk_screen<const TW: usize, const TH: usize, const S: usize>(
+    vp: Viewport,
+    fb: &mut TileBuffer<TW, TH, S>,
+    mut render: impl FnMut(u16, u16, &mut TileBuffer<TW, TH, S>) -> Result<(), Error>,
+    mut out: impl FnMut(u16, u16, Rgb888, PixelStats),
+) -> Result<(), Error> {
+    let (tw, th) = tile_size::<TW, TH>();
+    let mut y0 = 0u16;
+    while y0 < vp.h {
+        let mut x0 = 0u16;
+        while x0 < vp.w {
+            render(x0, y0, fb)?;
+            // The tile's pixels in raster order, one loop (not unrolled per column).
+            for (ty, tx) in (0..th).flat_map(|ty| (0..tw).map(move |tx| (ty, tx))) {
+                // x0 + tx < 2048 + 2048: no saturation happens.
+                let (x, y) = (x0.saturating_add(tx), y0.saturating_add(ty));
+                if x < vp.w && y < vp.h {
+                    let (tx, ty) = (usize::from(tx), usize::from(ty));
+                    out(x, y, fb.resolve(tx, ty), fb.pixel_stats(tx, ty));
+                }
+            }
+            // tw ≥ 1 (TileBuffer's const assertion), so the walk advances.
+            x0 = x0.saturating_add(tw);
+        }
+        y0 = y0.saturating_add(th);
+    }
+    Ok(())
+}
+
+/// The argument checks of every renderer's `render_tile`: the pattern has `S` samples per
+/// pixel ([`Error::SppMismatch`]), the bounds tile is 1, 2, 4 or 8 and divides `TW` and `TH`
+/// ([`Error::BoundsTile`]), and (`x0`, `y0`) lies in `vp` ([`Error::PixelOutOfRange`]).
+pub(crate) fn check_tile_args<const TW: usize, const TH: usize, const S: usize>(
+    pattern: &SamplePattern<'_>,
+    bounds_tile: u8,
+    x0: u16,
+    y0: u16,
+    vp: &Viewport,
+) -> Result<(), Error> {
+    if usize::from(pattern.spp()) != S {
+        return Err(Error::SppMismatch {
+            tile: u16::try_from(S).unwrap_or(u16::MAX),
+            pattern: pattern.spp(),
+        });
+    }
+    let bt = usize::from(bounds_tile);
+    let divides = |n: usize| n.checked_rem(bt) == Some(0);
+    if !matches!(bounds_tile, 1 | 2 | 4 | 8) || !divides(TW) || !divides(TH) {
+        return Err(Error::BoundsTile { size: bounds_tile });
+    }
+    if x0 >= vp.w || y0 >= vp.h {
+        return Err(Error::PixelOutOfRange);
+    }
+    Ok(())
+}
+
 /// Resolve one pixel's sample colors: per channel `(Σ + S/2) / S` with S = `colors.len()`
 /// (round half up; S ≤ 64 keeps Σ + S/2 < 2^15, exact for any S < 2^24). Black for S = 0.
 pub fn resolve_colors(colors: &[Rgb888]) -> Rgb888 {
@@ -321,22 +389,9 @@ impl<B: BoundsStrategy, const N: usize, P: Precision, U: Unit> Renderer<B, N, P,
         clear: Rgb888,
         fb: &mut TileBuffer<TW, TH, S>,
     ) -> Result<(), Error> {
-        if usize::from(pattern.spp()) != S {
-            return Err(Error::SppMismatch {
-                tile: u16::try_from(S).unwrap_or(u16::MAX),
-                pattern: pattern.spp(),
-            });
-        }
-        let bt = usize::from(bounds_tile);
-        let divides = |n: usize| n.checked_rem(bt) == Some(0);
-        if !matches!(bounds_tile, 1 | 2 | 4 | 8) || !divides(TW) || !divides(TH) {
-            return Err(Error::BoundsTile { size: bounds_tile });
-        }
-        if x0 >= self.vp.w || y0 >= self.vp.h {
-            return Err(Error::PixelOutOfRange);
-        }
+        check_tile_args::<TW, TH, S>(pattern, bounds_tile, x0, y0, &self.vp)?;
         fb.clear(clear);
-        let (tw, th) = Self::tile_size::<TW, TH>();
+        let (tw, th) = tile_size::<TW, TH>();
         let screen = PixelRect {
             x0,
             y0,
@@ -380,39 +435,15 @@ impl<B: BoundsStrategy, const N: usize, P: Precision, U: Unit> Renderer<B, N, P,
         pattern: &SamplePattern<'_>,
         bounds_tile: u8,
         clear: Rgb888,
-        mut out: impl FnMut(u16, u16, Rgb888, PixelStats),
+        out: impl FnMut(u16, u16, Rgb888, PixelStats),
     ) -> Result<(), Error> {
         let mut fb = TileBuffer::<TW, TH, S>::new(clear);
-        let (tw, th) = Self::tile_size::<TW, TH>();
-        let mut y0 = 0u16;
-        while y0 < self.vp.h {
-            let mut x0 = 0u16;
-            while x0 < self.vp.w {
-                self.render_tile(x0, y0, pattern, bounds_tile, clear, &mut fb)?;
-                for ty in 0..th {
-                    for tx in 0..tw {
-                        // x0 + tx < 2048 + 2048: no saturation happens.
-                        let (x, y) = (x0.saturating_add(tx), y0.saturating_add(ty));
-                        if x < self.vp.w && y < self.vp.h {
-                            let (tx, ty) = (usize::from(tx), usize::from(ty));
-                            out(x, y, fb.resolve(tx, ty), fb.pixel_stats(tx, ty));
-                        }
-                    }
-                }
-                // tw ≥ 1 (TileBuffer's const assertion), so the walk advances.
-                x0 = x0.saturating_add(tw);
-            }
-            y0 = y0.saturating_add(th);
-        }
-        Ok(())
-    }
-
-    /// `(TW, TH)` as `u16`: both are 1..=2048 (asserted at compile time by [`TileBuffer::new`],
-    /// the only way to obtain the buffer the walk uses), so the conversion is exact.
-    fn tile_size<const TW: usize, const TH: usize>() -> (u16, u16) {
-        (
-            u16::try_from(TW).unwrap_or(MAX_VIEWPORT),
-            u16::try_from(TH).unwrap_or(MAX_VIEWPORT),
+        let vp = self.vp;
+        walk_screen(
+            vp,
+            &mut fb,
+            |x0, y0, fb| self.render_tile(x0, y0, pattern, bounds_tile, clear, fb),
+            out,
         )
     }
 

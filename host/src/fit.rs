@@ -380,44 +380,52 @@ pub fn config_fits(
     let vp = scene.core_viewport();
     let mut unbounded = Vec::new();
     let mut out = Vec::new();
+    let mut push = |config: &str, dqs: &mut dyn Iterator<Item = Option<f64>>, cost| {
+        let (d, worst, unb) = worst_dq(dqs);
+        if unb.len() > unbounded.len() {
+            unbounded = unb.clone();
+        }
+        out.push(ConfigFit {
+            config: config.to_string(),
+            d_q_px: d,
+            worst_primitive: worst,
+            unit_cost: cost,
+            meets: d <= tol,
+            unbounded: unb,
+        });
+    };
     for name in SWEEP {
         let Some(cfg) = Config::parse(name) else {
             continue;
         };
         let r = Rounding::at(cfg.pos(), cfg.tuv());
-        let (mut d, mut worst) = (0.0f64, None);
-        let mut unb = Vec::new();
-        for (i, (t, c)) in scene.tris.iter().zip(classes).enumerate() {
-            match prim_dq(t, scene.viewport, &r, eps_clip(&cfg, *c, vp)) {
-                Some(x) if x > d => {
-                    d = x;
-                    worst = Some(i);
-                }
-                Some(_) => {}
-                None => unb.push(i),
-            }
-        }
-        if unb.len() > unbounded.len() {
-            unbounded = unb.clone();
-        }
-        out.push(ConfigFit {
-            config: name.to_string(),
-            d_q_px: d,
-            worst_primitive: worst,
-            unit_cost: unit_sample_cost(&cfg, unit.0, unit.1),
-            meets: d <= tol,
-            unbounded: unb,
-        });
+        let mut dqs = scene
+            .tris
+            .iter()
+            .zip(classes)
+            .map(|(t, c)| prim_dq(t, scene.viewport, &r, eps_clip(&cfg, *c, vp)));
+        push(name, &mut dqs, unit_sample_cost(&cfg, unit.0, unit.1));
     }
     // The planar static configuration (`crate::planar`): per-primitive ε for static triangles.
+    let mut dqs = scene.tris.iter().zip(classes).map(|(t, c)| {
+        let core = t.to_core().ok()?;
+        crate::planar::prim_dq(t, &core, *c, scene.viewport, 1.0)
+    });
+    push(
+        crate::planar::NAME,
+        &mut dqs,
+        crate::planar::unit_cost(unit.0, unit.1),
+    );
+    (out, unbounded)
+}
+
+/// The largest of the primitives' d_q (`None`: no screen-space bound), the primitive it
+/// belongs to, and the primitives without a bound.
+fn worst_dq(dqs: &mut dyn Iterator<Item = Option<f64>>) -> (f64, Option<usize>, Vec<usize>) {
     let (mut d, mut worst) = (0.0f64, None);
     let mut unb = Vec::new();
-    for (i, (t, c)) in scene.tris.iter().zip(classes).enumerate() {
-        let Ok(core) = t.to_core() else {
-            unb.push(i);
-            continue;
-        };
-        match crate::planar::prim_dq(t, &core, *c, scene.viewport, 1.0) {
+    for (i, x) in dqs.enumerate() {
+        match x {
             Some(x) if x > d => {
                 d = x;
                 worst = Some(i);
@@ -426,18 +434,7 @@ pub fn config_fits(
             None => unb.push(i),
         }
     }
-    if unb.len() > unbounded.len() {
-        unbounded = unb.clone();
-    }
-    out.push(ConfigFit {
-        config: crate::planar::NAME.to_string(),
-        d_q_px: d,
-        worst_primitive: worst,
-        unit_cost: crate::planar::unit_cost(unit.0, unit.1),
-        meets: d <= tol,
-        unbounded: unb,
-    });
-    (out, unbounded)
+    (d, worst, unb)
 }
 
 /// The narrowest configuration meeting the tolerance (module docs), or the unreachable error.

@@ -172,7 +172,7 @@ fn search_at<P: Precision + Sync>(scene: &Scene, width: f64) -> anyhow::Result<V
 }
 
 /// The scene's core triangles and sample table on `P`'s grids.
-fn inputs<P: Precision>(scene: &Scene) -> anyhow::Result<(Vec<Triangle>, Pattern)> {
+pub(crate) fn inputs<P: Precision>(scene: &Scene) -> anyhow::Result<(Vec<Triangle>, Pattern)> {
     let core = scene
         .tris
         .iter()

@@ -67,11 +67,19 @@ pub struct Fit {
 
 /// Run `uvt fit` on a loaded scene. Errors: an unreachable tolerance, a scene outside the core's
 /// domain. A failed confirmation is not an error here: `ok` is false.
+///
+/// `m4`/`m4_path`: the unit programs at the default configuration (`m4_units.json`); the full
+/// unit's row always comes from it. `m4_planar`/`m4_planar_path`: the unit programs at the
+/// planar configuration (`m4_report.sh --units OUT planar-16-16-16-20`); the chosen unit's row
+/// comes from it when the planar configuration is chosen (not measured if absent), so the M4
+/// figures are always those of the configuration named beside them.
 pub fn fit(
     scene: &Scene,
     tolerance: Option<f64>,
     m4: Option<M4Data>,
     m4_path: &Path,
+    m4_planar: Option<M4Data>,
+    m4_planar_path: &Path,
 ) -> Result<Fit> {
     let (tol, source) = match tolerance {
         Some(t) => (t, "given (--tolerance)".to_string()),
@@ -127,14 +135,30 @@ pub fn fit(
         Config::parse(DEFAULT_CONFIG).ok_or_else(|| anyhow!("bad default configuration"))?;
     // The full unit's instructions on this unit's primitives when measured (same work), else
     // on the full demo; flash and RAM are the programs'.
+    let planar = chosen.config == crate::planar::NAME;
+    let find = |rows: &[M4Unit], n: &str| rows.iter().find(|r| r.unit == n).cloned();
+    let unit_row = if planar {
+        m4_planar.as_ref().and_then(|(rows, _)| find(rows, unit))
+    } else {
+        m4.as_ref().and_then(|(rows, _)| find(rows, unit))
+    };
     let m4 = m4.and_then(|(rows, on)| {
-        let find = |n: &str| rows.iter().find(|r| r.unit == n).cloned();
-        let mut full = find("full")?;
+        let mut full = find(&rows, "full")?;
         if let Some(o) = on.iter().find(|o| o.prims == unit) {
             (full.setup, full.bounds, full.sample) = (o.setup, o.bounds, o.sample);
         }
-        Some([find(unit)?, full])
+        Some([unit_row?, full])
     });
+    let m4_path = if planar {
+        format!(
+            "`{}` (this unit, at {}) and `{}` (the full unit, at {DEFAULT_CONFIG})",
+            m4_planar_path.display(),
+            crate::planar::NAME,
+            m4_path.display()
+        )
+    } else {
+        format!("`{}`", m4_path.display())
+    };
     let ok = conf.ok();
     Ok(Fit {
         scene: scene.name.clone(),
@@ -155,7 +179,7 @@ pub fn fit(
         sample_cost,
         sample_cost_full_default: full_sample_cost(&default_cfg),
         m4,
-        m4_path: m4_path.display().to_string(),
+        m4_path,
         ok,
     })
 }
@@ -314,13 +338,13 @@ pub fn fit_md(f: &Fit) -> String {
                 s += &format!("| {n} | {a:.0} | {b:.0} | {} |\n", saved(a, b));
             }
             s += &format!(
-                "\nM4F figures from `{}` (measured at the configuration named there; the full unit's instructions on the primitives this unit accepts where the file has them, `full_on_unit_prims`).\n",
+                "\nM4F figures from {} (measured at the configuration named there; the full unit's instructions on the primitives this unit accepts where the file has them, `full_on_unit_prims`).\n",
                 f.m4_path
             );
         }
         None => {
             s += &format!(
-                "| M4F instructions per setup / tile / sample, flash | not measured | not measured | – |\n\nM4F figures: not measured (`{}` absent or without these units; `bash core/examples/m4_report.sh --units` writes it).\n",
+                "| M4F instructions per setup / tile / sample, flash | not measured | not measured | – |\n\nM4F figures: not measured ({} absent or without these units; `bash core/examples/m4_report.sh --units [FILE planar-16-16-16-20]` writes it).\n",
                 f.m4_path
             )
         }

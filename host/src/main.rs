@@ -161,6 +161,10 @@ enum Cmd {
         /// "not measured" when absent
         #[arg(long, default_value = "host/report/m4_units.json")]
         m4_units: PathBuf,
+        /// Cortex-M4F figures per unit at the planar configuration (`bash
+        /// core/examples/m4_report.sh --units FILE planar-16-16-16-20`), used when fit picks it
+        #[arg(long, default_value = "host/report/m4_units_planar.json")]
+        m4_units_planar: PathBuf,
         /// memory budget of the scene, e.g. 512M or 8G
         #[arg(long, default_value = "4G")]
         mem_budget: String,
@@ -523,6 +527,7 @@ fn run(cli: Cli) -> Result<()> {
             tolerance,
             out,
             m4_units,
+            m4_units_planar,
             mem_budget,
         } => {
             let tol = tolerance
@@ -531,6 +536,7 @@ fn run(cli: Cli) -> Result<()> {
                 .transpose()?;
             render::check_out_dir(&out)?;
             let m4 = uvt_host::fit::load_m4_units(&m4_units)?;
+            let m4_planar = uvt_host::fit::load_m4_units(&m4_units_planar)?;
             let load = LoadOpts {
                 mem_budget: budget::parse_size(&mem_budget).context("--mem-budget")?,
                 ..LoadOpts::default()
@@ -539,8 +545,15 @@ fn run(cli: Cli) -> Result<()> {
             for w in &l.warnings {
                 eprintln!("uvt: warning: {}: {w}", scene.display());
             }
-            let f = uvt_host::fit_report::fit(&l.scene, tol, m4, &m4_units)
-                .with_context(|| format!("uvt fit {}", scene.display()))?;
+            let f = uvt_host::fit_report::fit(
+                &l.scene,
+                tol,
+                m4,
+                &m4_units,
+                m4_planar,
+                &m4_units_planar,
+            )
+            .with_context(|| format!("uvt fit {}", scene.display()))?;
             let md = uvt_host::fit_report::fit_md(&f);
             std::fs::create_dir_all(&out)
                 .with_context(|| format!("cannot create {}", out.display()))?;

@@ -661,16 +661,7 @@ pub fn decisions<P: Precision + Sync>(scene: &Scene, core: &[Triangle], pat: &Pa
 /// with a d_q farther than the scaled d_q from the nearest edge), and the degenerate count.
 pub fn planar_decisions(scene: &Scene, dq_scale: f64) -> anyhow::Result<PrecRow> {
     type P = uvt_core::PlanarPrecision;
-    let pat = Pattern::new(scene.pattern, scene.spp, scene.seed).with_tuv(P::TUV_FRAC);
-    let core = scene
-        .tris
-        .iter()
-        .enumerate()
-        .map(|(i, t)| {
-            t.to_core_with::<P>()
-                .map_err(|e| anyhow::anyhow!("triangles[{i}]: {e}"))
-        })
-        .collect::<anyhow::Result<Vec<_>>>()?;
+    let (core, pat) = crate::fit_confirm::inputs::<P>(scene)?;
     let mut acc = [PrecRow {
         config: crate::planar::NAME.to_string(),
         tile: scene.tile,

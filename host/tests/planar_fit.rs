@@ -124,7 +124,15 @@ fn fit_never_picks_planar_beyond_the_tolerance() {
         "planar d_q {} px on the guard-band scene",
         pl.d_q_px
     );
-    let f = uvt_host::fit_report::fit(&s, Some(tol), None, Path::new("/nonexistent")).unwrap();
+    let f = uvt_host::fit_report::fit(
+        &s,
+        Some(tol),
+        None,
+        Path::new("/nonexistent"),
+        None,
+        Path::new("/nonexistent"),
+    )
+    .unwrap();
     assert_eq!(f.unit, "static-only");
     assert_ne!(f.config, uvt_host::planar::NAME, "{}", f.config);
     assert!(f.ok, "{:?}", f.confirm);
@@ -132,7 +140,15 @@ fn fit_never_picks_planar_beyond_the_tolerance() {
     // Above the planar d_q it meets and, the cheapest static-only sample test, is picked.
     let tol = pl.d_q_px * 1.01;
     assert!(planar(tol).meets);
-    let f = uvt_host::fit_report::fit(&s, Some(tol), None, Path::new("/nonexistent")).unwrap();
+    let f = uvt_host::fit_report::fit(
+        &s,
+        Some(tol),
+        None,
+        Path::new("/nonexistent"),
+        None,
+        Path::new("/nonexistent"),
+    )
+    .unwrap();
     assert_eq!(f.config, uvt_host::planar::NAME);
     assert!(f.ok, "{:?}", f.confirm);
     println!("guard band at {tol:.4} px: fit picks {}", f.config);
@@ -168,7 +184,15 @@ fn fit_picks_planar_for_a_benign_static_scene_when_cheapest() {
         .filter(|f| f.meets && f.unit_cost.is_some())
         .min_by_key(|f| key(f))
         .unwrap();
-    let f = uvt_host::fit_report::fit(&s, None, None, Path::new("/nonexistent")).unwrap();
+    let f = uvt_host::fit_report::fit(
+        &s,
+        None,
+        None,
+        Path::new("/nonexistent"),
+        None,
+        Path::new("/nonexistent"),
+    )
+    .unwrap();
     assert_eq!(f.config, cheapest.config);
     assert!(f.ok, "{:?}", f.confirm);
     println!(

@@ -1,7 +1,8 @@
 //! Triangle kinds of the conservativeness tests (`tests/conservative.rs`), shared with the
-//! bounded-margin measurement (`examples/bounded_margin.rs`).
+//! row-span, planar and static-unit tests and the bounded-margin measurement
+//! (`examples/bounded_margin.rs`).
 
-use crate::tri;
+use crate::{c, tri, Rng};
 use uvt_core::Triangle;
 
 /// Triangle kinds of the conservativeness tests.
@@ -141,4 +142,19 @@ pub fn make(kind: Kind, p: &[f64; NP]) -> Triangle {
         };
     }
     tri(t0, t1)
+}
+
+/// A triangle of `kind` from fresh random parameters in [-1, 1], made static and in focus (its
+/// t1 vertices replaced by t0, every CoC 0): the static triangles of the planar and static-unit
+/// tests, every kind's shapes (guard band, crossers, w = 0, slivers, extremes).
+pub fn make_static(kind: Kind, rng: &mut Rng) -> Triangle {
+    let mut p = [0.0; NP];
+    for x in p.iter_mut() {
+        *x = rng.range(-1.0, 1.0);
+    }
+    let mut v = make(kind, &p).vertices(0);
+    for x in v.iter_mut() {
+        x.coc = c(0.0);
+    }
+    Triangle::new_static(v).expect("static triangle in the domain")
 }

@@ -13,27 +13,10 @@ use uvt_core::{
     BboxScan, Coord, Exact, Laine2011, Outcome, PlanarPrecision, Sample, SamplePattern, ScreenPos,
     Setup, Triangle, Vertex, Viewport, Wide,
 };
-use uvt_tests::kinds::{make, Kind, NP};
+use uvt_tests::kinds::{make_static, Kind};
 use uvt_tests::*;
 
 type Pl = PlanarPrecision;
-
-/// The triangle with its t1 vertices replaced by t0 and every CoC 0: static, in focus.
-fn still(t: &Triangle) -> Triangle {
-    let mut v = t.vertices(0);
-    for x in v.iter_mut() {
-        x.coc = c(0.0);
-    }
-    Triangle::new_static(v).expect("static triangle in the domain")
-}
-
-fn params(rng: &mut Rng) -> [f64; NP] {
-    let mut p = [0.0; NP];
-    for x in p.iter_mut() {
-        *x = rng.range(-1.0, 1.0);
-    }
-    p
-}
 
 /// Seeded static triangles of every kind (regular, crossing the camera plane, one vertex at
 /// w = 0, slivers, domain extremes, huge).
@@ -47,7 +30,7 @@ fn random_static(rng: &mut Rng, i: u32) -> Triangle {
         Kind::Moving,
     ];
     let k = kinds[(i as usize) % kinds.len()];
-    still(&make(k, &params(rng)))
+    make_static(k, rng)
 }
 
 /// The direction of `sample::direction` (i64).

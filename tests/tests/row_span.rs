@@ -17,19 +17,8 @@ use uvt_core::{
     setup_with, BoundsStrategy, DefaultPrecision, Exact, Ops, Outcome, PixelRect, Precision, Prim,
     Renderer, Rgb888, SamplePattern, Setup, Stats, Triangle, Viewport,
 };
-use uvt_tests::kinds::{make, Kind, NP};
+use uvt_tests::kinds::{make, ALL_KINDS, NP};
 use uvt_tests::*;
-
-const ALL_KINDS: [Kind; 8] = [
-    Kind::Static,
-    Kind::Moving,
-    Kind::Defocus,
-    Kind::Both,
-    Kind::Crossing,
-    Kind::Extreme,
-    Kind::Sliver,
-    Kind::WZero,
-];
 
 /// What a sweep saw (so that a sweep that exercises nothing fails).
 #[derive(Default, Debug)]

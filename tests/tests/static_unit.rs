@@ -16,27 +16,10 @@ use uvt_core::{
     PlanarPrecision, Prim, Renderer, Rgb888, SamplePattern, ScreenPos, Setup, StaticOnly,
     TileBuffer, Triangle, Viewport,
 };
-use uvt_tests::kinds::{make, Kind, NP};
+use uvt_tests::kinds::{make_static, Kind};
 use uvt_tests::{c, cases, dump, planar_mesh, random_samples, seed, tri, Rng};
 
 const CAP: usize = 96;
-
-/// The triangle with its t1 vertices replaced by t0 and every CoC 0: static, in focus.
-fn still(t: &Triangle) -> Triangle {
-    let mut v = t.vertices(0);
-    for x in v.iter_mut() {
-        x.coc = c(0.0);
-    }
-    Triangle::new_static(v).expect("static triangle in the domain")
-}
-
-fn params(rng: &mut Rng) -> [f64; NP] {
-    let mut p = [0.0; NP];
-    for x in p.iter_mut() {
-        *x = rng.range(-1.0, 1.0);
-    }
-    p
-}
 
 /// A static triangle reaching far into the guard band: one or two vertices at up to 2^13 NDC
 /// off screen at small w, the others on screen.
@@ -137,7 +120,7 @@ fn scene(rng: &mut Rng, n: usize, vp: Viewport, mix: &mut Mix) -> Vec<Prim> {
             }
             _ => {
                 let k = kinds[rng.below(kinds.len() as u64) as usize];
-                let t = still(&make(k, &params(rng)));
+                let t = make_static(k, rng);
                 let w = t.vertices(0).map(|v| v.w.to_bits());
                 if w.iter().any(|&w| w > 0) && w.iter().any(|&w| w < 0) {
                     mix.crossing += 1;
