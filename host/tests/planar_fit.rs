@@ -31,6 +31,13 @@ fn scene(name: &str, vp: (u16, u16), spp: u16, tris: &[[[f64; 4]; 3]]) -> Scene 
     Scene::parse(&text, name, Path::new(".")).expect("test scene parses")
 }
 
+/// `uvt fit` on a loaded scene with no M4 figures (the confirmation renders; only the M4 rows of
+/// the report are "not measured").
+fn fit_without_m4(s: &Scene, tol: Option<f64>) -> uvt_host::fit_report::Fit {
+    let none = Path::new("/nonexistent");
+    uvt_host::fit_report::fit(s, tol, None, none, None, none).unwrap()
+}
+
 /// Guard band: two vertices at x = ±8000 clip units, w = 1 (NDC ±8000), y = 0.37 — their
 /// largest component rounds with a step of 2^14 raw (¼ clip unit), so y = 0.37 moves by 0.12
 /// (0.12 NDC, ≈ 3.8 px on 64 px): the horizontal edge across the screen moves that far.
@@ -124,15 +131,7 @@ fn fit_never_picks_planar_beyond_the_tolerance() {
         "planar d_q {} px on the guard-band scene",
         pl.d_q_px
     );
-    let f = uvt_host::fit_report::fit(
-        &s,
-        Some(tol),
-        None,
-        Path::new("/nonexistent"),
-        None,
-        Path::new("/nonexistent"),
-    )
-    .unwrap();
+    let f = fit_without_m4(&s, Some(tol));
     assert_eq!(f.unit, "static-only");
     assert_ne!(f.config, uvt_host::planar::NAME, "{}", f.config);
     assert!(f.ok, "{:?}", f.confirm);
@@ -140,15 +139,7 @@ fn fit_never_picks_planar_beyond_the_tolerance() {
     // Above the planar d_q it meets and, the cheapest static-only sample test, is picked.
     let tol = pl.d_q_px * 1.01;
     assert!(planar(tol).meets);
-    let f = uvt_host::fit_report::fit(
-        &s,
-        Some(tol),
-        None,
-        Path::new("/nonexistent"),
-        None,
-        Path::new("/nonexistent"),
-    )
-    .unwrap();
+    let f = fit_without_m4(&s, Some(tol));
     assert_eq!(f.config, uvt_host::planar::NAME);
     assert!(f.ok, "{:?}", f.confirm);
     println!("guard band at {tol:.4} px: fit picks {}", f.config);
@@ -184,15 +175,7 @@ fn fit_picks_planar_for_a_benign_static_scene_when_cheapest() {
         .filter(|f| f.meets && f.unit_cost.is_some())
         .min_by_key(|f| key(f))
         .unwrap();
-    let f = uvt_host::fit_report::fit(
-        &s,
-        None,
-        None,
-        Path::new("/nonexistent"),
-        None,
-        Path::new("/nonexistent"),
-    )
-    .unwrap();
+    let f = fit_without_m4(&s, None);
     assert_eq!(f.config, cheapest.config);
     assert!(f.ok, "{:?}", f.confirm);
     println!(

@@ -144,6 +144,18 @@ pub fn make(kind: Kind, p: &[f64; NP]) -> Triangle {
     tri(t0, t1)
 }
 
+/// The kinds the planar and static-unit tests make static with [`make_static`]: regular,
+/// crossing the camera plane, one vertex at w = 0, slivers, domain extremes, and the moving
+/// kind's shapes (large, guard band).
+pub const STATIC_KINDS: [Kind; 6] = [
+    Kind::Static,
+    Kind::Crossing,
+    Kind::WZero,
+    Kind::Sliver,
+    Kind::Extreme,
+    Kind::Moving,
+];
+
 /// A triangle of `kind` from fresh random parameters in [-1, 1], made static and in focus (its
 /// t1 vertices replaced by t0, every CoC 0): the static triangles of the planar and static-unit
 /// tests, every kind's shapes (guard band, crossers, w = 0, slivers, extremes).

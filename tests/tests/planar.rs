@@ -13,7 +13,7 @@ use uvt_core::{
     BboxScan, Coord, Exact, Laine2011, Outcome, PlanarPrecision, Sample, SamplePattern, ScreenPos,
     Setup, Triangle, Vertex, Viewport, Wide,
 };
-use uvt_tests::kinds::{make_static, Kind};
+use uvt_tests::kinds::{make_static, STATIC_KINDS};
 use uvt_tests::*;
 
 type Pl = PlanarPrecision;
@@ -21,14 +21,7 @@ type Pl = PlanarPrecision;
 /// Seeded static triangles of every kind (regular, crossing the camera plane, one vertex at
 /// w = 0, slivers, domain extremes, huge).
 fn random_static(rng: &mut Rng, i: u32) -> Triangle {
-    let kinds = [
-        Kind::Static,
-        Kind::Crossing,
-        Kind::WZero,
-        Kind::Sliver,
-        Kind::Extreme,
-        Kind::Moving,
-    ];
+    let kinds = STATIC_KINDS;
     let k = kinds[(i as usize) % kinds.len()];
     make_static(k, rng)
 }

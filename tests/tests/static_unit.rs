@@ -16,7 +16,7 @@ use uvt_core::{
     PlanarPrecision, Prim, Renderer, Rgb888, SamplePattern, ScreenPos, Setup, StaticOnly,
     TileBuffer, Triangle, Viewport,
 };
-use uvt_tests::kinds::{make_static, Kind};
+use uvt_tests::kinds::{make_static, STATIC_KINDS};
 use uvt_tests::{c, cases, dump, planar_mesh, random_samples, seed, tri, Rng};
 
 const CAP: usize = 96;
@@ -97,14 +97,7 @@ struct Mix {
 /// A seeded static scene of `n` triangles (or pairs) of every kind (and, every third scene, a
 /// mesh).
 fn scene(rng: &mut Rng, n: usize, vp: Viewport, mix: &mut Mix) -> Vec<Prim> {
-    let kinds = [
-        Kind::Static,
-        Kind::Crossing,
-        Kind::WZero,
-        Kind::Sliver,
-        Kind::Extreme,
-        Kind::Moving,
-    ];
+    let kinds = STATIC_KINDS;
     let mut tris = Vec::new();
     for _ in 0..n {
         let t = match rng.below(8) {
