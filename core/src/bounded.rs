@@ -372,7 +372,7 @@ fn fill_rule(v: &[(i32, i32, i32); 3], i: usize, j: usize, s: i64) -> bool {
 /// remainder `un21`'s true value is < v < 2^32, so forming it modulo 2^32 (wrapping) is exact.
 #[inline]
 #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
-fn div64_32(u: u64, v: u32) -> u32 {
+pub(crate) fn div64_32(u: u64, v: u32) -> u32 {
     const B: u32 = 1 << 16;
     let (u1, u0) = ((u >> 32) as u32, u as u32);
     let (vn1, vn0) = (v >> 16, v & 0xffff);

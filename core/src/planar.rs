@@ -23,7 +23,8 @@
 //! monotone in |v|). `s_k ≤ 15`: `m_k = 2^29` gives s = 15 and `rnd = 2^14`; below, bitlen ≤ 29,
 //! s ≤ 14 before the increment, and after it `m_k < 2^(15+s)` gives `rnd(m_k, s + 1) ≤ 2^14`.
 //! Coverage and ε need no division and no i128 (the depth plane needs `det·256·W·H` < 2^78 in
-//! i128 and three 64-bit divisions).
+//! i128 and three divisions of a 62-bit by a 32-bit value, `floor_div_d32`: a 64-bit division
+//! routine, or 32-bit divides in the static-specialised unit — the same quotients).
 //!
 //! **Per sample** (`d` = [`crate::sample::direction`], each \|d_i\| ≤ 2^30 inside a viewport
 //! ≤ 2048, i32): `E_k = n_k · d` (three SMULL/SMLAL, \|E\| < 3·2^61 < 2^63, i64, exact).
@@ -105,7 +106,7 @@
 //! (`depth_within_the_derived_bound_of_exact`), which fails on the old z rounding. Depth never
 //! influences coverage.
 
-use crate::bounded::Eps;
+use crate::bounded::{div64_32, Eps};
 use crate::formats::{DEPTH_FAR, DEPTH_FRAC, DEPTH_NEAR, SUBPIXEL_BITS};
 use crate::input::{Triangle, Viewport, W, X, Y, Z};
 use crate::sample::{Hit, ScreenPos};
@@ -219,13 +220,59 @@ fn shift_to_i64(v: i128, r: i32) -> i64 {
     i64::try_from(x).unwrap_or(if v < 0 { i64::MIN } else { i64::MAX })
 }
 
+/// `⌊z / d32⌋` for |z| < 2^62 and `d32` ∈ [2^31, 2^32): in [−2^31, 2^31) (i32). `DIV32 =
+/// false` (the general units): `i64::div_euclid` (the floor, d32 > 0; a 64-bit division
+/// routine on 32-bit targets). `DIV32 = true` (the static-specialised unit): the magnitude's
+/// floor `q = ⌊|z| / d32⌋` by [`div64_32`] (32-bit divides, the Cortex-M's UDIV; its
+/// precondition `|z| < 2^32·d32` holds as |z| < 2^62 < 2^63 ≤ 2^32·d32), the remainder `r =
+/// |z| − q·d32` exact (q·d32 ≤ |z| < 2^62), and the floor of the signed quotient `q` for
+/// `z ≥ 0`, `−q − [r ≠ 0]` for `z < 0` — the same integer (`planar_corners.rs` checks both
+/// forms bit for bit at the operand corners and on seeded operands and triangles).
+#[inline(always)]
+#[allow(
+    clippy::arithmetic_side_effects,
+    clippy::cast_possible_truncation,
+    clippy::cast_possible_wrap,
+    clippy::cast_sign_loss
+)]
+pub(crate) fn floor_div_d32<const DIV32: bool>(z: i64, d32: i64) -> Option<i32> {
+    if DIV32 {
+        Some(floor_div32(z, d32))
+    } else {
+        i32::try_from(z.div_euclid(d32)).ok()
+    }
+}
+
+/// [`floor_div_d32`]'s `DIV32` form (one copy for the three divisions).
+#[inline(never)]
+#[allow(
+    clippy::arithmetic_side_effects,
+    clippy::cast_possible_truncation,
+    clippy::cast_possible_wrap,
+    clippy::cast_sign_loss
+)]
+fn floor_div32(z: i64, d32: i64) -> i32 {
+    // d32 ∈ [2^31, 2^32): exact in u32.
+    let (mag, v) = (z.unsigned_abs(), d32 as u32);
+    let q = div64_32(mag, v);
+    // q·v ≤ mag < 2^62: the product and the difference are exact.
+    let r = mag - u64::from(q) * u64::from(v);
+    // q ≤ mag / 2^31 < 2^31: exact in i32, and −q − 1 ≥ −2^31.
+    let q = q as i32;
+    if z >= 0 {
+        q
+    } else {
+        -q - i32::from(r != 0)
+    }
+}
+
 /// The depth plane `(G, f)` from the exact `Zv` (< 2^77) and `D ≠ 0` (|D| < 2^93), module
-/// docs.
+/// docs; the three divisions by [`floor_div_d32`] (`DIV32` picks its form, same bits).
 // bitlen(D) ≤ 93: rd = bitlen(D) − 32 ∈ [−23, 61] (D ≥ 256), rz = bitlen(max|Zv|) − 62 ∈
 // [−61, 15]; every shifted value has ≤ 32 bits (D) or ≤ 62 bits (Zv); f ∈ [−62, 98].
 #[inline(never)]
 #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_wrap)]
-fn depth_plane(zv: [i128; 3], d: i128) -> Option<([i32; 3], i32)> {
+fn depth_plane<const DIV32: bool>(zv: [i128; 3], d: i128) -> Option<([i32; 3], i32)> {
     // Orient D > 0: |D|, |Zv| < 2^120, the negations are exact.
     let (zv, d) = if d < 0 { (zv.map(|c| -c), -d) } else { (zv, d) };
     if d < 256 {
@@ -240,7 +287,7 @@ fn depth_plane(zv: [i128; 3], d: i128) -> Option<([i32; 3], i32)> {
     let mut g = [0i32; 3];
     for (gi, &z) in g.iter_mut().zip(zv.iter()) {
         // |Z62| < 2^62, D32 ≥ 2^31: the floor quotient is in [−2^31, 2^31): i32.
-        *gi = i32::try_from(shift_to_i64(z, rz).div_euclid(d32)).ok()?;
+        *gi = floor_div_d32::<DIV32>(shift_to_i64(z, rz), d32)?;
     }
     // Zv_i / D ≈ G_i·2^(rz − rd); depth·2^-24 = Σ Zv_i·d_i / D: f = rd − rz − 24.
     Some((g, rd - rz - DEPTH_FRAC as i32))
@@ -248,8 +295,20 @@ fn depth_plane(zv: [i128; 3], d: i128) -> Option<([i32; 3], i32)> {
 
 /// Planar setup of a static triangle (its t0 vertices) in `vp`: the rounded vertices, their
 /// exact normals, the epsilon and the depth plane, or `None` (culled as degenerate: det P' = 0).
-#[allow(clippy::arithmetic_side_effects)] // ranges at each line
+#[inline]
 pub(crate) fn planar_setup(
+    tri: &Triangle,
+    vp: Viewport,
+    ops: &mut Ops,
+) -> Option<(PlanarEdges, Eps)> {
+    planar_setup_with::<false>(tri, vp, ops)
+}
+
+/// [`planar_setup`] with the depth plane's divisions in the form `DIV32` picks
+/// ([`floor_div_d32`]): the same result bit for bit; `true` links no 64-bit division routine
+/// (the static-specialised unit).
+#[allow(clippy::arithmetic_side_effects)] // ranges at each line
+pub(crate) fn planar_setup_with<const DIV32: bool>(
     tri: &Triangle,
     vp: Viewport,
     ops: &mut Ops,
@@ -303,7 +362,7 @@ pub(crate) fn planar_setup(
             .sum::<i128>()
     });
     let dw = i64::from(vp.w) * i64::from(vp.h) * (1i64 << SUBPIXEL_BITS);
-    let (g, f) = depth_plane(zv, (i128::from(det) << smax) * i128::from(dw))?;
+    let (g, f) = depth_plane::<DIV32>(zv, (i128::from(det) << smax) * i128::from(dw))?;
     ops.add_setup(20);
     // |P'| ≤ 2^15 − 1 and s ≤ 15 (module table): the conversions are exact.
     let pv = pv.map(|p| p.map(|c| i16::try_from(c).unwrap_or(0)));

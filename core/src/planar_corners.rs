@@ -246,3 +246,204 @@ fn planar_at_the_domain_corners() {
         "too little exercised: {vis} setups, {cov} hits"
     );
 }
+
+/// `floor_div_d32`'s two forms (`DIV32`: 32-bit divides; else `i64::div_euclid`) against the
+/// i128 floor division at the operand corners (|z| up to 2^62 − 1, multiples of d32 and one
+/// off, d32 at both ends of [2^31, 2^32)) and on seeded operands: bit for bit.
+#[test]
+fn div32_floor_equals_the_division_at_the_corners() {
+    use crate::planar::floor_div_d32;
+    let seed = seed();
+    let mut r = Rng(seed ^ 0xd132);
+    let mut ds = vec![
+        1i64 << 31,
+        (1 << 31) + 1,
+        (1 << 32) - 1,
+        (1 << 32) - 2,
+        3 << 30,
+    ];
+    let mut zs = vec![
+        0i64,
+        1,
+        -1,
+        (1 << 62) - 1,
+        -(1 << 62) + 1,
+        1 << 61,
+        -(1 << 61),
+    ];
+    for _ in 0..cases(2000, 200_000) {
+        ds.push((1 << 31) + (r.next_u64() % (1 << 31)) as i64);
+        zs.push(r.signed((1 << 62) - 1));
+    }
+    let mut n = 0u64;
+    for (i, &d) in ds.iter().enumerate() {
+        // z at the quotient's ends and around multiples of d: q·d + {−1, 0, 1}.
+        let q_end = ((1i128 << 62) - 1) / i128::from(d);
+        let mut zi: Vec<i64> = [q_end, -q_end, 1, -1, q_end / 2, -q_end / 3]
+            .iter()
+            .flat_map(|&q| [-1i128, 0, 1].map(|o| q * i128::from(d) + o))
+            .filter(|z| z.abs() < 1 << 62)
+            .map(|z| z as i64)
+            .collect();
+        zi.extend(zs.iter().skip(i % 7).step_by(97).copied());
+        for &z in &zi {
+            let want = i128::from(z).div_euclid(i128::from(d));
+            let (fast, general) = (floor_div_d32::<true>(z, d), floor_div_d32::<false>(z, d));
+            assert!(
+                fast.map(i128::from) == Some(want) && general == fast,
+                "floor(z / d), z {z} ({z:#x}) d {d} ({d:#x}) (UVT_SEED={seed}): expected {want} \
+                 ({want:#x}), observed DIV32 {fast:?}, div_euclid {general:?}"
+            );
+            n += 1;
+        }
+    }
+    assert!(n > 10_000, "too few operands: {n}");
+}
+
+/// The static unit's setup form of the planar setup (`planar_setup_with::<true>`, the depth
+/// plane's divisions in 32-bit divides) against the general one and against the frozen copy
+/// (the form before it), at the domain corners (the triangles of `planar_at_the_domain_corners`)
+/// and on seeded random triangles on every corner viewport and seeded ones: bit for bit.
+#[test]
+fn div32_setup_equals_the_general_and_frozen_setup() {
+    use crate::planar::planar_setup_with;
+    use crate::planar_frozen::frozen_setup;
+    let seed = seed();
+    let mut r = Rng(seed ^ 0x5e7d);
+    let mut vis = 0u64;
+    let mut check = |t: &Triangle, vp: Viewport, what: &str| {
+        let a = planar_setup_with::<true>(t, vp, &mut Ops::default());
+        let b = planar_setup_with::<false>(t, vp, &mut Ops::default());
+        let c = frozen_setup(t, vp, &mut Ops::default());
+        assert!(
+            a == b && a == c,
+            "{what} (UVT_SEED={seed}) {t:?} vp {vp:?}: expected (general) {b:?}\n  frozen {c:?}\n  observed (DIV32) {a:?}"
+        );
+        vis += u64::from(a.is_some());
+    };
+    for i in 0..cases(3000, 100_000) {
+        let mut v = [[0i32; 4]; 3];
+        for (k, p) in v.iter_mut().enumerate() {
+            *p = match i % 3 {
+                0 => [0; 4].map(|_| VALUES[(r.next_u64() % VALUES.len() as u64) as usize]),
+                1 => [0; 4].map(|_| r.signed(i64::from(LIM)) as i32),
+                _ => {
+                    // In front of the camera: random NDC, w and z.
+                    let w = (r.next_u64() % (LIM as u64)) as i64 + 1 + k as i64;
+                    let w = w.min(i64::from(LIM));
+                    let (nx, ny) = (r.signed(1 << 16), r.signed(1 << 16));
+                    [(nx * w) >> 16, (ny * w) >> 16, r.signed(i64::from(LIM)), w].map(|x| x as i32)
+                }
+            };
+        }
+        let Some(t) = mk(v) else { continue };
+        for vp in viewports() {
+            check(&t, vp, &format!("case {i}"));
+        }
+        let side = |r: &mut Rng| (r.next_u64() % 2048) as u16 + 1;
+        let vp = Viewport::new(side(&mut r), side(&mut r)).unwrap();
+        check(&t, vp, &format!("case {i}, seeded viewport"));
+    }
+    assert!(vis > 1000, "too few visible setups: {vis}");
+}
+
+/// The static unit's depth without a 64-bit variable shift (`static_unit::split_floor` with the
+/// `(sh, m)` that `depth_split` chooses) against `⌊acc / 2^f⌋` for every f ∈ [1, 63] at the
+/// corners of the depth range (quotients DEPTH_NEAR, DEPTH_FAR, 0, −1, 1 and seeded, remainders
+/// 0, 1, 2^f − 1 and seeded; |acc| < 2^63): bit for bit. And `depth_split`'s decision (two
+/// extremes of the affine sum) against the four corner positions' quotients (the form before
+/// it) on seeded planes and viewports.
+#[test]
+fn static_depth_split_equals_the_shift() {
+    use crate::static_unit::{depth_split, split_floor};
+    let seed = seed();
+    let mut r = Rng(seed ^ 0xde97);
+    let mut n = 0u64;
+    for f in 1..=63i32 {
+        let mut qs = vec![
+            DEPTH_NEAR,
+            DEPTH_NEAR + 1,
+            -1,
+            0,
+            1,
+            DEPTH_FAR - 1,
+            DEPTH_FAR,
+        ];
+        let mut rems = vec![0i128, 1, (1i128 << f) - 1, (1i128 << f) - 2];
+        for _ in 0..cases(20, 2000) {
+            qs.push(r.next_u64() as i32);
+            rems.push(i128::from(r.next_u64()) % (1i128 << f));
+        }
+        for &q in &qs {
+            for &rem in &rems {
+                let acc = (i128::from(q) << f) + rem.max(0);
+                let Ok(acc) = i64::try_from(acc) else {
+                    continue;
+                };
+                // A plane whose sum is acc at every position: G_0 = G_1 = 0, gw = acc.
+                let (sh, m) = depth_split([0, 0, 1], f, acc, [-1, 1], [-1, 1]);
+                let want = (acc >> f) as i32;
+                let fast = (DEPTH_NEAR..=DEPTH_FAR).contains(&want);
+                assert_eq!(sh < 32, fast, "f {f} acc {acc} ({acc:#x}): split {sh} {m}");
+                if !fast {
+                    continue;
+                }
+                let got = split_floor(acc, sh, m);
+                assert_eq!(
+                    got, want,
+                    "f {f} acc {acc} ({acc:#x}) (UVT_SEED={seed}) sh {sh} m {m}: expected \
+                     {want} ({want:#x}), observed {got} ({got:#x})"
+                );
+                n += 1;
+            }
+        }
+    }
+    // The decision against the four corners (the form before it).
+    let mut fast_n = 0u64;
+    for i in 0..cases(20_000, 1_000_000) {
+        let g = [0; 3].map(|_| r.signed(1 << 31).clamp(-(1 << 31), (1 << 31) - 1) as i32);
+        let f = (r.next_u64() % 70) as i32 - 3;
+        let side = |r: &mut Rng| match r.next_u64() % 3 {
+            0 => 2048i64,
+            1 => 1,
+            _ => (r.next_u64() % 2048) as i64 + 1,
+        };
+        let (w, h) = (side(&mut r), side(&mut r));
+        let wh = 256 * w * h;
+        // gw near a value that makes the plane's depth land in range for some f.
+        let gw = match i % 2 {
+            0 => i64::from(g[2]) * wh,
+            _ => r.signed(1 << 61),
+        };
+        let (dx, dy) = (
+            [-wh, wh - 2 * h].map(|x| x as i32),
+            [-wh + 2 * w, wh].map(|x| x as i32),
+        );
+        let old = (0..=63).contains(&f) && f >= 1 && {
+            let corners = [
+                (dx[0], dy[0]),
+                (dx[1], dy[0]),
+                (dx[0], dy[1]),
+                (dx[1], dy[1]),
+            ];
+            corners.iter().all(|&(x, y)| {
+                let q = (i128::from(gw)
+                    + i128::from(g[0]) * i128::from(x)
+                    + i128::from(g[1]) * i128::from(y))
+                    >> f;
+                (i128::from(DEPTH_NEAR)..=i128::from(DEPTH_FAR)).contains(&q)
+            })
+        };
+        let (sh, _) = depth_split(g, f, gw, dx, dy);
+        assert_eq!(
+            sh < 32,
+            old,
+            "case {i} (UVT_SEED={seed}): g {g:?} f {f} gw {gw} vp {w}x{h}: expected fast {old}"
+        );
+        fast_n += u64::from(old);
+    }
+    assert!(
+        n > 2000 && fast_n > 100,
+        "too little exercised: {n} splits, {fast_n} fast planes"
+    );
+}

@@ -13,9 +13,9 @@
 //!
 //! | stage | computes | reads |
 //! |---|---|---|
-//! | [`static_setup`] | [`classify`] (acceptance); the planar setup (`planar.rs`: rounded vertices `P'`, exact normals `n_k = (a, b, c)`, σ, depth plane `(G, f)`); oriented normals `a' = σa`, `b' = σb`; `C_k = σ·c_k·d_w − [edge k's fill rule refuses E_k = 0]` (i64, \|.\| < 2^61 + 1); `G_2·d_w`; the 2D footprint | x, y, z, w of the t0 vertices (classify: all fields) |
+//! | [`static_setup`] | [`classify`] (acceptance); the planar setup (`planar.rs`: rounded vertices `P'`, exact normals `n_k = (a, b, c)`, σ, depth plane `(G, f)`, its three divisions in 32-bit divides: `planar_setup_with::<true>`, the same bits, no 64-bit division routine); oriented normals `a' = σa`, `b' = σb`; `C_k = σ·c_k·d_w − [edge k's fill rule refuses E_k = 0]` (i64, \|.\| < 2^61 + 1); `G_2·d_w`; the depth's split shift `(sh, m)` ([`static_depth`]); the 2D footprint | x, y, z, w of the t0 vertices (classify: all fields) |
 //! | [`static_tile`] | per bounds tile: the largest `C_k + a'_k·d_x + b'_k·d_y` of each edge over the tile's sample rectangle (one corner per edge, 2 multiply-adds) | the tile's pixel rectangle |
-//! | [`static_test`] | `C_k + a'_k·d_x + b'_k·d_y ≥ 0` for k = 0, 1, 2 (six 32 × 32 → 64 multiply-adds), depth on a hit | the sample's (x, y) |
+//! | [`static_test`] | `C_k + a'_k·d_x + b'_k·d_y ≥ 0` for k = 0, 1, 2 (six 32 × 32 → 64 multiply-adds), depth on a hit (two multiply-adds, then `(hi >> sh)·m + ⌊lo·m / 2^32⌋` on the sum's words: no 64-bit variable shift) | the sample's (x, y) |
 //!
 //! **Exactly the planar test.** `d = (d_x, d_y, d_w)` is [`crate::sample::direction`] (d_w =
 //! 256·W·H is a constant of the viewport), so `σE_k = σ(a_k d_x + b_k d_y + c_k d_w)` is the
@@ -24,7 +24,8 @@
 //! a = 0 and σb > 0) accepts, i.e. `σE_k ≥ 0` where the rule accepts and `σE_k ≥ 1` where it
 //! refuses (integers): `C_k` carries the 1, so one sign test per edge decides. The depth is the
 //! planar test's sum `Σ G_i·d_i` with its constant term `G_2·d_w` from setup, floored and
-//! saturated the same way (`f < 0` calls the planar test's own function). So
+//! saturated the same way (`f < 1`, or a viewport where some position saturates, calls the
+//! planar test's own function; otherwise the floor from the sum's two words, [`static_depth`]). So
 //! [`static_test`] returns bit for bit what [`crate::planar::planar_test`] returns on the same
 //! triangle and position (`tests/tests/static_unit.rs`).
 //!
@@ -65,7 +66,7 @@ use embedded_graphics_core::pixelcolor::Rgb888;
 use crate::error::Error;
 use crate::formats::{Precision, DEPTH_FAR, DEPTH_NEAR, SUBPIXEL_BITS};
 use crate::input::{PixelRect, SamplePattern, Triangle, Viewport};
-use crate::planar::{depth, planar_setup};
+use crate::planar::{depth, planar_setup_with};
 use crate::sample::{Hit, ScreenPos};
 use crate::setup::{classify, Class, Cull};
 use crate::stats::{Ops, Stats};
@@ -94,8 +95,11 @@ pub struct StaticSetup {
     /// the planar depth plane `G` and exponent `f`
     g: [i32; 3],
     f: i32,
-    /// no position of the viewport saturates the depth (`static_depth`)
+    /// no position of the viewport saturates the depth: it takes the split shift `sh` ∈
+    /// [0, 31], `m` ∈ [1, 2^31] (`static_depth`), else the planar test's own function
     fast: bool,
+    sh: u32,
+    m: u32,
     /// `G_2·d_w` (|.| < 2^61): the depth's constant term
     gw: i64,
     /// `2H`, `2W`, `256·W·H`: `d_x = 2H·xs − 256WH`, `d_y = 256WH − 2W·ys`
@@ -158,7 +162,7 @@ pub fn static_setup(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> Result<Stati
     if !StaticOnly::accepts(class) {
         return Err(class);
     }
-    let Some((pl, _)) = planar_setup(tri, vp, ops) else {
+    let Some((pl, _)) = planar_setup_with::<true>(tri, vp, ops) else {
         return Ok(StaticOutcome::Culled(Cull::Degenerate));
     };
     let pv = pl.vertices();
@@ -211,7 +215,8 @@ pub fn static_setup(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> Result<Stati
     // `dxy` (|.| ≤ 2^30).
     let (xh, yh) = (one * w - 1, one * h - 1);
     let (dx0, dx1, dy0, dy1) = (-wh, 2 * h * xh - wh, wh, wh - 2 * w * yh);
-    let fast = depth_fast(g, f, gw, [(dx0, dy0), (dx1, dy0), (dx0, dy1), (dx1, dy1)]);
+    let (sh, m) = depth_split(g, f, gw, [dx0, dx1], [dy1, dy0]);
+    let fast = sh < GENERAL;
     ops.add_setup(12 + 4 * 3);
     Ok(StaticOutcome::Visible(StaticSetup {
         ab,
@@ -219,6 +224,8 @@ pub fn static_setup(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> Result<Stati
         g,
         f,
         fast,
+        sh,
+        m,
         gw,
         h2: 2 * h,
         w2: 2 * w,
@@ -299,35 +306,86 @@ pub fn static_test(s: &StaticSetup, pos: ScreenPos) -> Option<Hit> {
     })
 }
 
+/// `sh` of a plane whose depth takes the planar test's own function ([`static_depth`]).
+const GENERAL: u32 = 32;
+
 /// The planar test's depth ([`crate::planar`]: `⌊Σ G_i·d_i / 2^min(f, 63)⌋` saturated to
 /// [`DEPTH_NEAR`, `DEPTH_FAR`]) with the constant term `G_2·d_w` from setup: the same sum, the
-/// same bits. When setup found that no position of the viewport saturates (`fast`: `0 ≤ f ≤ 63`
-/// and the quotient inside the depth range at the viewport's four corner positions — the sum
-/// is affine in the position and the floor monotone, so its extremes are at the corners) the
-/// quotient is the depth as it stands; otherwise the planar test's own function decides.
+/// same bits. When setup found that no position of the viewport saturates ([`depth_split`]:
+/// `1 ≤ f ≤ 63` and the quotient inside the depth range at the viewport's four corner
+/// positions — the sum is affine in the position and the floor monotone, so its extremes are
+/// at the corners) the quotient `q = ⌊acc / 2^f⌋` is the depth as it stands and is formed from
+/// the sum's two 32-bit words `acc = hi·2^32 + lo` (`hi = ⌊acc / 2^32⌋`, `lo` ∈ [0, 2^32))
+/// without a 64-bit variable shift: `q = (hi >> sh)·m + ⌊lo·m / 2^32⌋` modulo 2^32, with
+/// - `f ≤ 31`: `sh = 0`, `m = 2^(32−f)` ∈ [2, 2^31]: `acc / 2^f = hi·m + lo·m / 2^32` and `hi·m`
+///   is an integer, so `q = hi·m + ⌊lo·m / 2^32⌋` (the high word of the 32 × 32 → 64 unsigned
+///   product `lo·m` < 2^63);
+/// - `f ≥ 32`: `sh = f − 32` ∈ [0, 31], `m = 1`: `q = ⌊⌊acc / 2^32⌋ / 2^(f−32)⌋ = hi >> sh`,
+///   and `⌊lo / 2^32⌋ = 0`.
+///
+/// `q` ∈ [DEPTH_NEAR, DEPTH_FAR] ⊂ i32 and the wrapping u32 sum is congruent to it modulo
+/// 2^32, so its i32 reading is `q` exactly. Otherwise (`fast` false) the planar test's own
+/// function decides.
 #[inline(always)]
-#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+#[allow(
+    clippy::arithmetic_side_effects,
+    clippy::cast_possible_truncation,
+    clippy::cast_possible_wrap,
+    clippy::cast_sign_loss
+)]
 fn static_depth(s: &StaticSetup, dx: i32, dy: i32) -> i32 {
     if !s.fast {
         return depth(&s.g, s.f, &[dx, dy, s.wh]);
     }
     let [g0, g1, _] = s.g;
-    // |G·d| ≤ 2^61 each, three terms < 2^63 (`planar.rs`); `fast`: 0 ≤ f ≤ 63 and the
-    // quotient lies in [DEPTH_NEAR, DEPTH_FAR] (setup), so the truncation is exact.
-    ((s.gw + i64::from(g0) * i64::from(dx) + i64::from(g1) * i64::from(dy)) >> s.f) as i32
+    // |G·d| ≤ 2^61 each, three terms < 2^63 (`planar.rs`).
+    let acc = s.gw + i64::from(g0) * i64::from(dx) + i64::from(g1) * i64::from(dy);
+    split_floor(acc, s.sh, s.m)
 }
 
-/// Whether no sample position of `vp` saturates the depth of plane `(g, f)` (`gw = G_2·d_w`):
-/// `0 ≤ f ≤ 63` and `⌊acc / 2^f⌋ ∈ [DEPTH_NEAR, DEPTH_FAR]` at the four corner positions.
-#[allow(clippy::arithmetic_side_effects)]
+/// `(hi >> sh)·m + ⌊lo·m / 2^32⌋` modulo 2^32 read as i32, `acc = hi·2^32 + lo` ([`static_depth`];
+/// `sh` < 32: the shift is in range; `lo·m` < 2^64 in u64).
+#[inline(always)]
+#[allow(
+    clippy::arithmetic_side_effects,
+    clippy::cast_possible_truncation,
+    clippy::cast_possible_wrap,
+    clippy::cast_sign_loss
+)]
+pub(crate) fn split_floor(acc: i64, sh: u32, m: u32) -> i32 {
+    let (hi, lo) = ((acc >> 32) as i32, acc as u32);
+    let low = ((u64::from(lo) * u64::from(m)) >> 32) as u32;
+    ((hi >> sh) as u32).wrapping_mul(m).wrapping_add(low) as i32
+}
+
+/// The depth's split shift `(sh, m)` of plane `(g, f)` (`gw = G_2·d_w`, [`static_depth`]):
+/// `(f − 32, 1)` or `(0, 2^(32−f))` when `1 ≤ f ≤ 63` and no position of the viewport
+/// saturates, else `(GENERAL, 1)`. `dx`, `dy`: the ranges of `d_x`, `d_y` over the viewport's
+/// positions. The sum `gw + G_0·d_x + G_1·d_y` is affine with separate terms, so its extremes
+/// over the positions are `gw` plus each term's extreme over its own range (at an end); the
+/// floor is monotone, so no position saturates iff both extremes' quotients lie in
+/// [`DEPTH_NEAR`, `DEPTH_FAR`].
+#[allow(clippy::arithmetic_side_effects, clippy::cast_sign_loss)]
 #[inline(never)]
-fn depth_fast(g: [i32; 3], f: i32, gw: i64, corners: [(i32, i32); 4]) -> bool {
-    (0..=63).contains(&f)
-        && corners.iter().all(|&(dx, dy)| {
-            // The sum as in `static_depth` (< 2^63); f ∈ [0, 63]: the shift is in range.
-            let q = (gw + i64::from(g[0]) * i64::from(dx) + i64::from(g[1]) * i64::from(dy)) >> f;
-            (i64::from(DEPTH_NEAR)..=i64::from(DEPTH_FAR)).contains(&q)
-        })
+pub(crate) fn depth_split(g: [i32; 3], f: i32, gw: i64, dx: [i32; 2], dy: [i32; 2]) -> (u32, u32) {
+    // |G·d| ≤ 2^61 per term: each extreme's sum < 2^63 (`static_depth`).
+    let term = |gi: i32, [lo, hi]: [i32; 2]| {
+        let (a, b) = (i64::from(gi) * i64::from(lo), i64::from(gi) * i64::from(hi));
+        (a.min(b), a.max(b))
+    };
+    let ((x0, x1), (y0, y1)) = (term(g[0], dx), term(g[1], dy));
+    let fast = (1..=63).contains(&f) && {
+        // f ∈ [1, 63]: the shifts are in range.
+        let (lo, hi) = ((gw + x0 + y0) >> f, (gw + x1 + y1) >> f);
+        lo >= i64::from(DEPTH_NEAR) && hi <= i64::from(DEPTH_FAR)
+    };
+    match f {
+        // 32 − f ∈ [1, 31]: 2^(32−f) ∈ [2, 2^31] (u32; a right shift of a constant).
+        1..=31 if fast => (0, (1u32 << 31) >> (f - 1) as u32),
+        // f − 32 ∈ [0, 31].
+        32..=63 if fast => ((f - 32) as u32, 1),
+        _ => (GENERAL, 1),
+    }
 }
 
 /// Operations counted per sample test (direction 2, three edges × (2 multiply-adds, 1 add,
