@@ -50,6 +50,7 @@ pub mod input;
 pub mod interval;
 #[cfg(test)]
 mod interval_corners;
+mod motion_depth;
 pub mod motion_render;
 pub mod motion_test;
 pub mod motion_unit;

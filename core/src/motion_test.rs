@@ -19,7 +19,8 @@
 //! strict sign; `decide_slow` gives orientation 0 to mixed signs): the test returns before the
 //! third edge.
 
-use crate::bounded::{decide_slow, depth, lerp, mla_hi};
+use crate::bounded::{decide_slow, lerp, mla_hi};
+use crate::motion_depth::depth;
 use crate::formats::{OFFSET_SHIFT_MIN, TUV_FRAC};
 use crate::input::Sample;
 use crate::motion_unit::MotionSetup;
@@ -68,6 +69,9 @@ pub fn motion_test(m: &MotionSetup, pos: ScreenPos, s: &Sample) -> Option<Hit> {
     }
     // xs < 256W ≤ 2^19, ys < 256H: exact in i32.
     let (xs, ys) = (pos.xs as i32, pos.ys as i32);
+    if m.still {
+        return still(m, xs, ys);
+    }
     let t = s.t().to_bits();
     if !m.fast || t == HALF {
         return general(m, xs, ys, t);
@@ -117,6 +121,60 @@ pub fn motion_test(m: &MotionSetup, pos: ScreenPos, s: &Sample) -> Option<Hit> {
     };
     Some(Hit {
         depth: depth(&e, &wz_fast(m, tq, late), sign),
+    })
+}
+
+/// The static path of [`motion_test`] (`MotionSetup::still`: `r = q`, every w > 0, a `fast`
+/// viewport): the fast datapath's offsets with the position-independent part precomputed,
+/// `floor((swq·x + 2^31 + ngxq·w)/2^32)` = `floor((c + ngxq·w)/2^32)` — the same sum, so the
+/// same bits (|c| < 2^60 + 2^31, |ngxq·w| < 2^60: < 2^62 in i64); the lerps of a zero
+/// difference are the base values (module docs), every w > 0 is known, and (w, z) are
+/// loaded for the depth. `xs < 256W`, `ys < 256H` (checked by [`motion_test`]).
+#[inline(always)]
+#[allow(
+    clippy::arithmetic_side_effects,
+    clippy::cast_possible_truncation,
+    clippy::indexing_slicing
+)]
+fn still(m: &MotionSetup, xs: i32, ys: i32) -> Option<Hit> {
+    // As in [`motion_test`]: both scaled factors fit i32 (`fast`).
+    let ngxq = (m.sw - 2 * xs) * m.k;
+    let ngyq = (2 * ys - m.sh) * m.k;
+    // [_; 3] and [_; 2] indexed by constants.
+    let v = |k: usize| {
+        let w = m.wz[k].0;
+        let [cx, cy] = m.c[k];
+        let hi = |c: i64, ng: i32| ((c + i64::from(ng) * i64::from(w)) >> 32) as i32;
+        (hi(cx, ngxq), hi(cy, ngyq))
+    };
+    let (a0, b0) = v(0);
+    let (a1, b1) = v(1);
+    let e2 = edge(a0, b0, a1, b1);
+    let (a2, b2) = v(2);
+    let e0 = edge(a1, b1, a2, b2);
+    if e0 != 0 && e2 != 0 && (e0 < 0) != (e2 < 0) {
+        return None;
+    }
+    let e1 = edge(a2, b2, a0, b0);
+    let e = [e0, e1, e2];
+    let sign = if e0 != 0 && e1 != 0 && e2 != 0 {
+        if e0 & e1 & e2 < 0 {
+            -1
+        } else if e0 | e1 | e2 >= 0 {
+            1
+        } else {
+            return None;
+        }
+    } else {
+        let [(w0, _), (w1, _), (w2, _)] = m.wz;
+        let (sign, covered, _) = decide_slow(e, [(a0, b0, w0), (a1, b1, w1), (a2, b2, w2)]);
+        if !covered {
+            return None;
+        }
+        sign
+    };
+    Some(Hit {
+        depth: depth(&e, &m.wz, sign),
     })
 }
 
