@@ -146,8 +146,7 @@ mod tests {
             let want = crate::bounded::depth(&e, &wz, sign);
             let got = depth(&e, &wz, sign);
             assert_eq!(
-                got,
-                want,
+                got, want,
                 "UVT_SEED={seed}: e {e:?} wz {wz:?} sign {sign}: got {got} ({got:#010x}), \
                  want {want} ({want:#010x})"
             );

@@ -20,9 +20,9 @@
 //! third edge.
 
 use crate::bounded::{decide_slow, lerp, mla_hi};
-use crate::motion_depth::depth;
 use crate::formats::{OFFSET_SHIFT_MIN, TUV_FRAC};
 use crate::input::Sample;
+use crate::motion_depth::depth;
 use crate::motion_unit::MotionSetup;
 use crate::sample::{Hit, ScreenPos};
 

@@ -176,12 +176,16 @@ fn end_box(tri: &Triangle, j: i64, eps: &Eps, vp: Viewport, ops: &mut Ops) -> En
         for k in 0..3 {
             let a = if axis == 0 { at(k, X) } else { -at(k, Y) };
             let w = ws.get(k).copied().unwrap_or(1);
-            for (ac, wc) in [
-                (a - e, w - ew),
-                (a - e, w + ew),
-                (a + e, w - ew),
-                (a + e, w + ew),
-            ] {
+            // The smallest projection over the four corners `(a ± e, w ± ew)` (every w > 0):
+            // `(a + w)·E/(2w) = E/2 + a·E/(2w)` is smallest at `a − e` and, there, at the
+            // largest w if `a − e ≥ 0`, else at the smallest; the largest at `a + e` and the
+            // smallest w if `a + e ≥ 0`, else the largest.
+            let (lo, hi) = (a - e, a + e);
+            let corners = [
+                (lo, if lo >= 0 { w + ew } else { w - ew }),
+                (hi, if hi >= 0 { w - ew } else { w + ew }),
+            ];
+            for (ac, wc) in corners {
                 // wc > 0 (checked above); |ac + wc| < 2^34, E ≤ 2^11: < 2^45 (checked anyway:
                 // a failure gives the viewport).
                 let px = (ac + wc)
@@ -191,7 +195,7 @@ fn end_box(tri: &Triangle, j: i64, eps: &Eps, vp: Viewport, ops: &mut Ops) -> En
             }
         }
     }
-    ops.add_setup(3 * 4 * 2 * 3);
+    ops.add_setup(3 * 2 * 2 * 3);
     Some(Some(out))
 }
 
