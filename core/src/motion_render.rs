@@ -27,7 +27,8 @@ use crate::unit::{MotionOnly, Unit};
 const SAMPLE_OPS: u64 = 15 * 3 + 2 + 3 * 8 + 9 + 3;
 const HIT_OPS: u64 = 12;
 
-/// One visible triangle's setup.
+/// One visible triangle's setup. (No heap in core, so the large variant stays inline.)
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum MotionEntry {
     /// a static or moving triangle on the motion path

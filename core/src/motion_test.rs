@@ -37,15 +37,6 @@ const HALF: i32 = 1 << (TUV_FRAC - 1);
 /// 2^16: one t step.
 const ONE: i32 = 1 << TUV_FRAC;
 
-/// `floor((e·p + ng·w + 2^31) / 2^32)`: a rounded offset on the fast datapath (step 3–4 with
-/// the factors scaled by 2^(32−S), `bounded::fast_vertex`). |e·p| < 2^31·2^30, |ng·w| <
-/// 2^31·2^29: the sum < 2^62 (i64), the high word |a'| < 2^30 (exact in i32).
-#[inline(always)]
-#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
-fn hi(e: i32, p: i32, ng: i32, w: i32) -> i32 {
-    ((i64::from(e) * i64::from(p) + i64::from(ng) * i64::from(w) + (1 << 31)) >> 32) as i32
-}
-
 /// `a_i·b_j − a_j·b_i`: an edge value (step 5), |a|, |b| < 2^30: each product < 2^60, the
 /// difference < 2^61 (i64).
 #[inline(always)]
@@ -84,43 +75,70 @@ pub fn motion_test(m: &MotionSetup, pos: ScreenPos, s: &Sample) -> Option<Hit> {
     let ngxq = (m.sw - 2 * xs) * m.k;
     let ngyq = (2 * ys - m.sh) * m.k;
     // The tables are [_; 2] and [_; 3] indexed by a bool and by constants.
-    let b = &m.base[usize::from(late)];
-    let vert = |k: usize| {
-        let (bk, dk) = (&b[k], &m.d[k]);
-        // |d| ≤ 2^30 (a checked triangle's fields are ≤ 2^29), |tq| < 2^31.
-        let x = mla_hi(tq, dk[MX], bk[MX]);
-        let y = mla_hi(tq, dk[MY], bk[MY]);
+    let end = usize::from(late);
+    let (b, c) = (&m.base[end], &m.c[end]);
+    // One vertex: `w = b_w + δ_w`, and the offsets with the base's part `swq·b_x + 2^31`
+    // from setup: `x_t = b_x + δ_x` with `δ_x = floor((tq·d_x + 2^31)/2^32)` (`mla_hi`), so
+    // `swq·x_t + ngxq·w + 2^31 = c_x + swq·δ_x + ngxq·w`, the same sum (|δ| ≤ 2^30: |swq·δ|
+    // < 2^61, |c_x| < 2^60 + 2^31, |ngxq·w| < 2^60: every partial sum < 2^63). `bad`
+    // collects `w − 1` (|w| ≤ 2^29): its sign bit is set iff some w ≤ 0.
+    let mut bad = 0i32;
+    let mut vert = |k: usize| {
+        let (bk, dk, [cx, cy]) = (&b[k], &m.d[k], c[k]);
         let w = mla_hi(tq, dk[MW], bk[MW]);
-        (hi(m.swq, x, ngxq, w), hi(m.shq, y, ngyq, w), w)
+        bad |= w - 1;
+        let dx = mla_hi(tq, dk[MX], 0);
+        let dy = mla_hi(tq, dk[MY], 0);
+        let sum = |c: i64, e: i32, d: i32, ng: i32| {
+            ((c + i64::from(e) * i64::from(d) + i64::from(ng) * i64::from(w)) >> 32) as i32
+        };
+        (sum(cx, m.swq, dx, ngxq), sum(cy, m.shq, dy, ngyq))
     };
-    let (a0, b0, w0) = vert(0);
-    let (a1, b1, w1) = vert(1);
-    let (a2, b2, w2) = vert(2);
-    let wpos = w0 > 0 && w1 > 0 && w2 > 0;
+    let (a0, b0) = vert(0);
+    let (a1, b1) = vert(1);
     let e2 = edge(a0, b0, a1, b1);
+    let (a2, b2) = vert(2);
     let e0 = edge(a1, b1, a2, b2);
-    if wpos && e0 != 0 && e2 != 0 && (e0 < 0) != (e2 < 0) {
+    let wpos = bad >= 0;
+    if wpos && ((e0 < 0 && e2 > 0) || (e0 > 0 && e2 < 0)) {
         return None;
     }
     let e1 = edge(a2, b2, a0, b0);
     let e = [e0, e1, e2];
-    let sign = if wpos && e0 != 0 && e1 != 0 && e2 != 0 {
-        if e0 & e1 & e2 < 0 {
-            -1
-        } else if e0 | e1 | e2 >= 0 {
-            1
-        } else {
-            return None;
-        }
+    let ab = [(a0, b0), (a1, b1), (a2, b2)];
+    if !wpos || e0 == 0 || e1 == 0 || e2 == 0 {
+        return rare(m, tq, late, ab, e);
+    }
+    let sign = if e0 & e1 & e2 < 0 {
+        -1
+    } else if e0 | e1 | e2 >= 0 {
+        1
     } else {
-        let (sign, covered, _) = decide_slow(e, [(a0, b0, w0), (a1, b1, w1), (a2, b2, w2)]);
-        if !covered {
-            return None;
-        }
-        sign
+        return None;
     };
+    hit(m, tq, late, &e, sign)
+}
+
+/// A covered sample's depth on the fast datapath: (w, z) recomputed ([`wz_fast`]) and
+/// [`depth`]. Out of line: nothing of it stays live through the common miss.
+#[inline(never)]
+fn hit(m: &MotionSetup, tq: i32, late: bool, e: &[i64; 3], sign: i64) -> Option<Hit> {
     Some(Hit {
-        depth: depth(&e, &wz_fast(m, tq, late), sign),
+        depth: depth(e, &wz_fast(m, tq, late), sign),
+    })
+}
+
+/// The rare path of the fast datapath (some w ≤ 0 or some E' = 0): w recomputed,
+/// `bounded::decide_slow` (orientation, fill rule), the depth on a hit.
+#[cold]
+#[inline(never)]
+fn rare(m: &MotionSetup, tq: i32, late: bool, ab: [(i32, i32); 3], e: [i64; 3]) -> Option<Hit> {
+    let wz = wz_fast(m, tq, late);
+    let [(a0, b0), (a1, b1), (a2, b2)] = ab;
+    let [(w0, _), (w1, _), (w2, _)] = wz;
+    let (sign, covered, _) = decide_slow(e, [(a0, b0, w0), (a1, b1, w1), (a2, b2, w2)]);
+    covered.then(|| Hit {
+        depth: depth(&e, &wz, sign),
     })
 }
 
@@ -143,7 +161,7 @@ fn still(m: &MotionSetup, xs: i32, ys: i32) -> Option<Hit> {
     // [_; 3] and [_; 2] indexed by constants.
     let v = |k: usize| {
         let w = m.wz[k].0;
-        let [cx, cy] = m.c[k];
+        let [cx, cy] = m.c[0][k];
         let hi = |c: i64, ng: i32| ((c + i64::from(ng) * i64::from(w)) >> 32) as i32;
         (hi(cx, ngxq), hi(cy, ngyq))
     };

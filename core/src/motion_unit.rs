@@ -91,8 +91,9 @@ pub struct MotionSetup {
     /// a static triangle (`r = q`) with every w > 0 on a `fast` viewport: the sample test
     /// takes [`crate::motion_test`]'s static path with the constants below
     pub(crate) still: bool,
-    /// static path: per vertex `swq·x + 2^31`, `shq·y + 2^31` (|.| < 2^60 + 2^31)
-    pub(crate) c: [[i64; 2]; 3],
+    /// per shutter end, per vertex `swq·x + 2^31`, `shq·y + 2^31` of the base vertex
+    /// (|.| < 2^60 + 2^31; meaningful when `fast`)
+    pub(crate) c: [[[i64; 2]; 3]; 2],
     /// static path: per vertex `(w, z)` (|.| ≤ 2^29)
     pub(crate) wz: [(i32, i32); 3],
     slabs: [PixelRect; SLABS],
@@ -293,13 +294,15 @@ pub fn motion_setup<P: Precision>(
     let (swq, shq) = (sw.saturating_mul(k), sh.saturating_mul(k));
     let [b0, _] = base;
     let still = fast && class == Class::Static && b0.iter().all(|v| v[2] > 0);
-    // |swq|, |shq| < 2^31 (`fast`; else `still` is false and the values are not read), |x|,
-    // |y| ≤ 2^29: each product < 2^60, plus 2^31 (i64).
-    let c = b0.map(|v| {
-        [
-            i64::from(swq) * i64::from(v[0]) + (1 << 31),
-            i64::from(shq) * i64::from(v[1]) + (1 << 31),
-        ]
+    // |swq|, |shq| < 2^31 (`fast`; else the values are not read), |x|, |y| ≤ 2^29: each
+    // product < 2^60, plus 2^31 (i64).
+    let c = base.map(|end| {
+        end.map(|v| {
+            [
+                i64::from(swq) * i64::from(v[0]) + (1 << 31),
+                i64::from(shq) * i64::from(v[1]) + (1 << 31),
+            ]
+        })
     });
     let wz = b0.map(|v| (v[2], v[3]));
     ops.add_setup(12);
