@@ -124,7 +124,7 @@ pub fn motion_test(m: &MotionSetup, pos: ScreenPos, s: &Sample) -> Option<Hit> {
 #[inline(never)]
 fn hit(m: &MotionSetup, tq: i32, late: bool, e: &[i64; 3], sign: i64) -> Option<Hit> {
     Some(Hit {
-        depth: depth(e, &wz_fast(m, tq, late), sign),
+        depth: depth_out(e, &wz_fast(m, tq, late), sign),
     })
 }
 
@@ -138,8 +138,15 @@ fn rare(m: &MotionSetup, tq: i32, late: bool, ab: [(i32, i32); 3], e: [i64; 3]) 
     let [(w0, _), (w1, _), (w2, _)] = wz;
     let (sign, covered, _) = decide_slow(e, [(a0, b0, w0), (a1, b1, w1), (a2, b2, w2)]);
     covered.then(|| Hit {
-        depth: depth(&e, &wz, sign),
+        depth: depth_out(&e, &wz, sign),
     })
+}
+
+/// [`depth`] out of line, for the paths that are not hot (rare, general, moving hits): one
+/// copy of it in the program beside the static path's inlined one.
+#[inline(never)]
+fn depth_out(e: &[i64; 3], wz: &[(i32, i32); 3], sign: i64) -> i32 {
+    depth(e, wz, sign)
 }
 
 /// The static path of [`motion_test`] (`MotionSetup::still`: `r = q`, every w > 0, a `fast`
@@ -265,6 +272,6 @@ fn general(m: &MotionSetup, xs: i32, ys: i32, t: i32) -> Option<Hit> {
     };
     let wz = [0, 1, 2].map(|k| (at(k, MW), at(k, MZ)));
     Some(Hit {
-        depth: depth(&e, &wz, sign),
+        depth: depth_out(&e, &wz, sign),
     })
 }

@@ -177,27 +177,37 @@ fn end_box(tri: &Triangle, j: i64, eps: &Eps, vp: Viewport, ops: &mut Ops) -> En
         for k in 0..3 {
             let a = if axis == 0 { at(k, X) } else { -at(k, Y) };
             let w = ws.get(k).copied().unwrap_or(1);
-            // The smallest projection over the four corners `(a ± e, w ± ew)` (every w > 0):
-            // `(a + w)·E/(2w) = E/2 + a·E/(2w)` is smallest at `a − e` and, there, at the
-            // largest w if `a − e ≥ 0`, else at the smallest; the largest at `a + e` and the
-            // smallest w if `a + e ≥ 0`, else the largest.
-            let (lo, hi) = (a - e, a + e);
-            let corners = [
-                (lo, if lo >= 0 { w + ew } else { w - ew }),
-                (hi, if hi >= 0 { w - ew } else { w + ew }),
-            ];
-            for (ac, wc) in corners {
-                // wc > 0 (checked above); |ac + wc| < 2^34, E ≤ 2^11: < 2^45 (checked anyway:
-                // a failure gives the viewport).
-                let px = (ac + wc)
-                    .checked_mul(i64::from(ext))
-                    .and_then(|n| n.checked_div_euclid(2 * wc))?;
-                *o = (o.0.min(px), o.1.max(px));
-            }
+            let (lo, hi) = corner_range(a, w, e, ew, ext)?;
+            *o = (o.0.min(lo), o.1.max(hi));
         }
     }
     ops.add_setup(3 * 2 * 2 * 3);
     Some(Some(out))
+}
+
+/// The floors of the smallest and largest projection `(a + w)·E/(2w)` over the four corners
+/// `(a ± e, w ± ew)` (every w > 0, the caller's check): `E/2 + a·E/(2w)` is smallest at
+/// `a − e` and, there, at the largest w if `a − e ≥ 0`, else at the smallest; the largest at
+/// `a + e` and the smallest w if `a + e ≥ 0`, else the largest (the floor is monotone).
+/// |a|, e, |w|, ew < 2^33 (`end_box`): the sums are exact in i64.
+#[inline(never)]
+#[allow(clippy::arithmetic_side_effects)]
+fn corner_range(a: i64, w: i64, e: i64, ew: i64, ext: u16) -> Option<(i64, i64)> {
+    let (lo, hi) = (a - e, a + e);
+    let wl = if lo >= 0 { w + ew } else { w - ew };
+    let wh = if hi >= 0 { w - ew } else { w + ew };
+    Some((project(lo, wl, ext)?, project(hi, wh, ext)?))
+}
+
+/// `floor((a + w)·E / (2w))` for `w > 0` (the caller's check): |a + w| < 2^34, E ≤ 2^11, so
+/// the product is < 2^45; checked anyway (`None`, the viewport, on a failure). Out of line:
+/// one copy of the 64-bit division for every corner.
+#[inline(never)]
+#[allow(clippy::arithmetic_side_effects)]
+fn project(a: i64, w: i64, ext: u16) -> Option<i64> {
+    a.checked_add(w)?
+        .checked_mul(i64::from(ext))?
+        .checked_div_euclid(w.checked_mul(2)?)
 }
 
 /// `[lo, hi]` (pixel indices, any sign) clipped to `[0, extent)` as a half-open range.
