@@ -14,10 +14,11 @@
 //! shutter ends are equal (`classify`: the motion-only unit has CoC 0 throughout), so the
 //! values — hence the bits — are those of the full unit's static instantiation.
 //!
-//! **Early exit.** With every w > 0 a sample whose first two edge values are non-zero and of
-//! different signs is not covered whatever the third (the fast decision needs one common
-//! strict sign; `decide_slow` gives orientation 0 to mixed signs): the test returns before the
-//! third edge.
+//! **Early exit.** A sample with two edge values of strictly different signs is not covered,
+//! whatever the third and the w: the fast decision needs one common strict sign, and
+//! `decide_slow` covers only when every non-zero `E'` has the orientation's sign (with every
+//! w > 0 the orientation is then 0; otherwise it is `sign(Σ E'·w)`, which at most one of the
+//! two matches). The test returns before the third edge.
 
 use crate::bounded::{decide_slow, lerp, mla_hi};
 use crate::formats::{OFFSET_SHIFT_MIN, TUV_FRAC};
@@ -99,10 +100,10 @@ pub fn motion_test(m: &MotionSetup, pos: ScreenPos, s: &Sample) -> Option<Hit> {
     let e2 = edge(a0, b0, a1, b1);
     let (a2, b2) = vert(2);
     let e0 = edge(a1, b1, a2, b2);
-    let wpos = bad >= 0;
-    if wpos && ((e0 < 0 && e2 > 0) || (e0 > 0 && e2 < 0)) {
+    if (e0 ^ e2) < 0 && e0 != 0 && e2 != 0 {
         return None;
     }
+    let wpos = bad >= 0;
     let e1 = edge(a2, b2, a0, b0);
     let e = [e0, e1, e2];
     let ab = [(a0, b0), (a1, b1), (a2, b2)];
