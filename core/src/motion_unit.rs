@@ -351,3 +351,59 @@ pub fn motion_tile(m: &MotionSetup, cell: PixelRect, ops: &mut Ops) -> u8 {
     }
     mask
 }
+
+#[cfg(test)]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+mod tests {
+    use super::*;
+    use crate::testrng::{cases, seed, Rng};
+
+    /// [`corner_range`] (two chosen corners) against the floors of all four corners'
+    /// projections, on extreme and seeded random operands: the ranges `end_box` feeds it
+    /// (|a| ≤ 2^31 + 2^27, 0 < w − ew, ew ≤ 2^27, e ≤ 2^27, E ≤ 2048).
+    #[test]
+    fn corner_range_is_the_four_corner_range() {
+        let s = seed();
+        let mut rng = Rng(s);
+        let brute = |a: i64, w: i64, e: i64, ew: i64, ext: u16| {
+            let c = [
+                (a - e, w - ew),
+                (a - e, w + ew),
+                (a + e, w - ew),
+                (a + e, w + ew),
+            ];
+            let p = c.map(|(ac, wc)| ((ac + wc) * i64::from(ext)).div_euclid(2 * wc));
+            (p.iter().copied().min(), p.iter().copied().max())
+        };
+        let mut check = |a: i64, w: i64, e: i64, ew: i64, ext: u16| {
+            if w - ew <= 0 {
+                return;
+            }
+            let (lo, hi) = brute(a, w, e, ew, ext);
+            let got = corner_range(a, w, e, ew, ext);
+            assert_eq!(
+                got.map(Some),
+                lo.zip(hi).map(Some),
+                "UVT_SEED={s}: a {a} ({a:#x}) w {w} e {e} ew {ew} E {ext}"
+            );
+        };
+        let big = (1i64 << 31) + (1 << 27);
+        for a in [-big, -1, 0, 1, big, 12345] {
+            for w in [1, 2, 5, 1 << 20, big] {
+                for (e, ew) in [(0, 0), (1, 1), (2050 * 4, 4), (1 << 27, 1 << 27)] {
+                    for ext in [1, 7, 2048] {
+                        check(a, w, e, ew, ext);
+                    }
+                }
+            }
+        }
+        for _ in 0..cases(100_000, 2_000_000) {
+            let a = rng.signed(big);
+            let ew = rng.signed(1 << 27).abs() >> (rng.next_u64() % 28);
+            let w = ew + 1 + rng.signed(big).abs();
+            let e = rng.signed(1 << 27).abs() >> (rng.next_u64() % 28);
+            let ext = 1 + (rng.next_u64() % 2048) as u16;
+            check(a, w, e, ew, ext);
+        }
+    }
+}
