@@ -375,7 +375,7 @@ mod tests {
             let p = c.map(|(ac, wc)| ((ac + wc) * i64::from(ext)).div_euclid(2 * wc));
             (p.iter().copied().min(), p.iter().copied().max())
         };
-        let mut check = |a: i64, w: i64, e: i64, ew: i64, ext: u16| {
+        let check = |a: i64, w: i64, e: i64, ew: i64, ext: u16| {
             if w - ew <= 0 {
                 return;
             }
