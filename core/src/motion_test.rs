@@ -21,7 +21,7 @@
 //! two matches). The test returns before the third edge.
 
 use crate::bounded::{decide_slow, lerp, mla_hi};
-use crate::formats::{OFFSET_SHIFT_MIN, TUV_FRAC};
+use crate::formats::{OFFSET_SHIFT_MAX, OFFSET_SHIFT_MIN, TUV_FRAC};
 use crate::input::Sample;
 use crate::motion_depth::depth;
 use crate::motion_unit::MotionSetup;
@@ -230,8 +230,9 @@ fn general(m: &MotionSetup, xs: i32, ys: i32, t: i32) -> Option<Hit> {
     let (q, r) = (&m.base[0], &m.base[1]);
     // ngx = 256W − 2xs ∈ (−256W, 256W], ngy likewise (|.| ≤ 2^19).
     let (ngx, ngy) = (m.sw - 2 * xs, 2 * ys - m.sh);
-    // 2^(S−1) ≤ 2^31; S − 20 ∈ 0..=12 (`MotionSetup::shift`).
-    let half = 1i64 << (m.shift - 1);
+    // 2^31 >> (32 − S) = 2^(S−1) (a right shift of a constant; 32 − S ∈ 0..=12,
+    // `MotionSetup::shift`).
+    let half = (1i64 << 31) >> (OFFSET_SHIFT_MAX - m.shift);
     let fine = m.shift - OFFSET_SHIFT_MIN;
     // |e·p| ≤ 2^19·2^29, |ng·w| ≤ 2^19·2^29, + 2^31: < 2^49 (i64); `>> 20` leaves < 2^31
     // (exact in i32), then `>> fine` (≤ 12): nested floors compose (`bounded::offset`).
