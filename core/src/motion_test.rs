@@ -6,13 +6,17 @@
 //! the fast datapath (`bounded::fast_vertex`: the lerps one rounded high word each, the offsets
 //! one rounded high word of `swq·x + ngxq·w`) where `bounded::Fast::new` takes it (T ≠ 2^15 and
 //! both viewport sides below 2^(S−9)), the step-by-step general datapath otherwise
-//! ([`general`], out of line); steps 5–7 with the same fast decision and `bounded::decide_slow`
-//! (out of line) for the rare path (some w ≤ 0 or some E' = 0); the depth by `bounded::depth` on
-//! hits. A static triangle is run as a motion one with `r − q = 0`: every rounded lerp of a
+//! (`general`, out of line); steps 5–7 with the same fast decision and `bounded::decide_slow`
+//! (out of line) for the rare path (some w ≤ 0 or some E' = 0); the depth on hits by
+//! `bounded::depth`'s function (`motion_depth.rs`, bit for bit). The offsets are the same sums
+//! regrouped in exact i64: `swq·x_t + ngxq·w + 2^31 = (swq·b_x + 2^31) + swq·δ_x + ngxq·w`
+//! with the bracket from setup (`x_t = b_x + δ_x`, the rounded lerp). A static triangle is run as a motion one with `r − q = 0`: every rounded lerp of a
 //! zero difference is the base value exactly (`f0 + floor((0 + 2^31)/2^32) = f0` on the fast
 //! datapath, `f0 + floor(2^15/2^16) = f0` on the general one), and for a static triangle the two
 //! shutter ends are equal (`classify`: the motion-only unit has CoC 0 throughout), so the
-//! values — hence the bits — are those of the full unit's static instantiation.
+//! values — hence the bits — are those of the full unit's static instantiation. A static
+//! triangle with every w > 0 on a fast viewport (`MotionSetup::still`) takes `still`: its
+//! vertices do not depend on t, so only `ngxq·w` is formed per sample.
 //!
 //! **Early exit.** A sample with two edge values of strictly different signs is not covered,
 //! whatever the third and the w: the fast decision needs one common strict sign, and
