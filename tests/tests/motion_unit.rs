@@ -245,9 +245,9 @@ fn seeded_motion_scenes_render_identically() {
             "{name}: every kind and shared pairs occurred: {mix:?}"
         );
     }
-    run::<DefaultPrecision>("bounded-16-16-16-20", cases(60, 600), 0);
-    run::<Bounded<16, 16, 16, 24>>("bounded-16-16-16-24", cases(20, 200), 1);
-    run::<PlanarPrecision>("planar-16-16-16-20", cases(20, 200), 2);
+    run::<DefaultPrecision>("bounded-16-16-16-20", cases(200, 2000), 0);
+    run::<Bounded<16, 16, 16, 24>>("bounded-16-16-16-24", cases(60, 600), 1);
+    run::<PlanarPrecision>("planar-16-16-16-20", cases(60, 600), 2);
 }
 
 /// 2048-pixel viewport sides (the general datapath at S = 20 for every sample): random tiles
@@ -256,7 +256,7 @@ fn seeded_motion_scenes_render_identically() {
 fn wide_viewports_render_identically() {
     let mut rng = Rng(seed() ^ 0x2048);
     let mut mix = Mix::default();
-    for case in 0..cases(6, 40) {
+    for case in 0..cases(12, 80) {
         let vp = if case % 2 == 0 {
             Viewport::new(2048, 16 + rng.below(32) as u16)
         } else {
@@ -389,8 +389,8 @@ fn sample_test_is_bounded_test_and_slab_boxes_conservative() {
             "{name}: too few covered samples probed: {hits}"
         );
     }
-    run::<DefaultPrecision>("bounded-16-16-16-20", cases(300, 3000), 3);
-    run::<Bounded<16, 16, 16, 32>>("bounded-16-16-16-32", cases(60, 600), 4);
+    run::<DefaultPrecision>("bounded-16-16-16-20", cases(1000, 10000), 3);
+    run::<Bounded<16, 16, 16, 32>>("bounded-16-16-16-32", cases(200, 2000), 4);
 }
 
 /// Extreme inputs: every vertex at ±2^13 (huge motion across the guard band), w = 0 at both
