@@ -157,7 +157,7 @@ struct Ctx {
 /// (`bounded_corners.rs` drives f0 = ±2^29, f1 = ∓2^29, T = 2^16).
 #[inline(always)]
 #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
-fn lerp(f0: i32, f1: i32, t: i32) -> i32 {
+pub(crate) fn lerp(f0: i32, f1: i32, t: i32) -> i32 {
     // (p + 2^15) >> 16 on i64: an arithmetic shift by a constant, the exact floor.
     f0 + ((i64::from(t) * i64::from(f1 - f0) + TUV_SCALE / 2) >> TUV_FRAC) as i32
 }
@@ -221,7 +221,7 @@ fn vertex<const MOTION: bool, const DEFOCUS: bool>(
 /// the caller proves that the sum fits i32.
 #[inline(always)]
 #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
-fn mla_hi(m: i32, n: i32, acc: i32) -> i32 {
+pub(crate) fn mla_hi(m: i32, n: i32, acc: i32) -> i32 {
     // |m·n| ≤ 2^62 < 2^63 − 2^31; the shift by the constant 32 is the exact floor, and the
     // quotient is < 2^31 in magnitude (each caller's range), so the narrowing is exact.
     acc + ((i64::from(m) * i64::from(n) + (1 << 31)) >> 32) as i32
@@ -520,7 +520,7 @@ pub(crate) fn depth_quotient_32(num: i64, den: i64) -> i64 {
     clippy::cast_possible_truncation,
     clippy::cast_sign_loss
 )]
-fn depth(e: &[i64; 3], wz: &[(i32, i32); 3], sign: i64) -> i32 {
+pub(crate) fn depth(e: &[i64; 3], wz: &[(i32, i32); 3], sign: i64) -> i32 {
     // A covered sample's E' are each 0 or of the orientation's sign, so |E'| = sign·E'
     // (|E'| < 2^61: the negation cannot overflow).
     let big = e.iter().fold(0, |m, &x| m | if sign < 0 { -x } else { x }) as u64;
@@ -602,7 +602,7 @@ fn det_sign(e: &[i64; 3], w: [i32; 3]) -> i64 {
 #[cold]
 #[inline(never)]
 #[allow(clippy::arithmetic_side_effects)]
-fn decide_slow(e: [i64; 3], p: [(i32, i32, i32); 3]) -> (i64, bool, u64) {
+pub(crate) fn decide_slow(e: [i64; 3], p: [(i32, i32, i32); 3]) -> (i64, bool, u64) {
     let (sign, n) = if p.iter().all(|&(_, _, w)| w > 0) {
         let pos = e.iter().any(|&x| x > 0);
         let neg = e.iter().any(|&x| x < 0);

@@ -14,6 +14,7 @@ use crate::error::Error;
 use crate::formats::DefaultPrecision;
 use crate::formats::{Coord, Lens, SubPixel, Time};
 use crate::input::{Sample, SamplePattern, Triangle, Vertex, Viewport};
+use crate::motion_render::MotionRenderer;
 use crate::sample::{sample_test, sample_test_unit, ScreenPos};
 use crate::setup::{classify, setup_unit, Outcome};
 use crate::static_unit::{static_setup, static_test, static_tile, StaticOutcome, StaticRenderer};
@@ -254,6 +255,9 @@ pub fn render_on_with<P: crate::formats::Precision, U: Unit, V: Unit>() -> Resul
     if const { crate::static_unit::specialised::<P, U>() } {
         return render_static::<V>();
     }
+    if const { crate::motion_unit::specialised::<P, U>() } {
+        return render_motion::<P, V>();
+    }
     let prims = unit_prims::<V>()?;
     let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLE_TABLE)?;
     let mut r = Renderer::<Laine2011, NTRIS, P, U>::new(Laine2011, viewport()?, &prims)?;
@@ -299,6 +303,35 @@ fn render_static<V: Unit>() -> Result<DemoResult, Error> {
     let prims = unit_prims::<V>()?;
     let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLE_TABLE)?;
     let mut r = StaticRenderer::<NTRIS>::new(viewport()?, &prims)?;
+    let mut image = [[0u8; 3]; NPIXELS];
+    r.render_with::<8, 8, SPP>(
+        &pattern,
+        BOUNDS_TILE,
+        Rgb888::new(16, 16, 24),
+        |x, y, c, _| {
+            // x, y < SIZE = 32: the index < 1024.
+            let idx = usize::from(y)
+                .saturating_mul(usize::from(SIZE))
+                .saturating_add(usize::from(x));
+            if let Some(p) = image.get_mut(idx) {
+                *p = [c.r(), c.g(), c.b()];
+            }
+        },
+    )?;
+    Ok(DemoResult {
+        checksum: fnv1a(&image),
+        stats: r.stats,
+    })
+}
+
+/// [`render_on_with`] on the motion-only unit at a bounded precision
+/// ([`crate::motion_unit::specialised`]): the prims unit `V` accepts on the motion-specialised
+/// [`MotionRenderer`] (`Err(ClassNotInUnit)` unless all are static or moving and in focus).
+#[inline(always)]
+fn render_motion<P: crate::formats::Precision, V: Unit>() -> Result<DemoResult, Error> {
+    let prims = unit_prims::<V>()?;
+    let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLE_TABLE)?;
+    let mut r = MotionRenderer::<NTRIS, P>::new(viewport()?, &prims)?;
     let mut image = [[0u8; 3]; NPIXELS];
     r.render_with::<8, 8, SPP>(
         &pattern,
@@ -410,6 +443,9 @@ pub mod cost {
         if const { crate::static_unit::specialised::<P, U>() } {
             return static_cost::setup::<V>(reps);
         }
+        if const { crate::motion_unit::specialised::<P, U>() } {
+            return motion_cost::setup::<P, V>(reps);
+        }
         let prims = unit_prims::<V>()?;
         let vp = viewport()?;
         let mut ops = Ops::default();
@@ -459,6 +495,9 @@ pub mod cost {
     ) -> Result<u64, Error> {
         if const { crate::static_unit::specialised::<P, U>() } {
             return static_cost::bounds::<V, EMPTY>(reps);
+        }
+        if const { crate::motion_unit::specialised::<P, U>() } {
+            return motion_cost::bounds::<P, V, EMPTY>(reps);
         }
         let prims = unit_prims::<V>()?;
         let vp = viewport()?;
@@ -519,6 +558,9 @@ pub mod cost {
     ) -> Result<u64, Error> {
         if const { crate::static_unit::specialised::<P, U>() } {
             return static_cost::samples::<V, EMPTY>(reps);
+        }
+        if const { crate::motion_unit::specialised::<P, U>() } {
+            return motion_cost::samples::<P, V, EMPTY>(reps);
         }
         let prims = unit_prims::<V>()?;
         let vp = viewport()?;
@@ -620,6 +662,135 @@ pub mod cost {
                                     black_box((black_box(&s), pos, smp));
                                 } else {
                                     black_box(static_test(black_box(&s), pos));
+                                }
+                                calls = calls.saturating_add(1);
+                            }
+                        }
+                    }
+                }
+            }
+            Ok(calls)
+        }
+    }
+
+    /// The per-stage workloads on the motion-specialised path
+    /// ([`crate::motion_unit::specialised`]): the same prims, tiles, window and call counts as
+    /// the general ones, on [`motion_setup`] (or, at a planar precision, [`static_setup`] for a
+    /// static triangle, as [`MotionRenderer`] does), [`motion_tile`] and [`motion_test`].
+    mod motion_cost {
+        use super::*;
+        use crate::motion_render::MotionEntry;
+        use crate::motion_test::motion_test;
+        use crate::motion_unit::{motion_setup, motion_tile, MotionOutcome};
+        use crate::setup::Class;
+
+        /// The renderer's setup of one triangle: `None` when culled or refused.
+        #[inline(always)]
+        fn entry<P: crate::formats::Precision>(
+            p: &Prim,
+            vp: crate::input::Viewport,
+            ops: &mut Ops,
+        ) -> Option<MotionEntry> {
+            if P::PLANAR && classify(&p.tri) == Class::Static {
+                match static_setup(&p.tri, vp, ops) {
+                    Ok(StaticOutcome::Visible(s)) => Some(MotionEntry::Static(s)),
+                    _ => None,
+                }
+            } else {
+                match motion_setup::<P>(&p.tri, vp, ops) {
+                    Ok(MotionOutcome::Visible(m)) => Some(MotionEntry::Motion(m)),
+                    _ => None,
+                }
+            }
+        }
+
+        /// Setup of the prims unit `V` accepts, `reps` times.
+        pub(super) fn setup<P: crate::formats::Precision, V: Unit>(
+            reps: u32,
+        ) -> Result<u64, Error> {
+            let prims = unit_prims::<V>()?;
+            let vp = viewport()?;
+            let mut ops = Ops::default();
+            let mut calls = 0u64;
+            for _ in 0..reps {
+                for p in prims.iter() {
+                    black_box(entry::<P>(black_box(p), vp, &mut ops));
+                    calls = calls.saturating_add(1);
+                }
+            }
+            Ok(calls)
+        }
+
+        /// The 2×2 tile cull over every visible prim's footprint, `reps` times (`EMPTY`: the
+        /// harness alone, as [`bounds_empty_on_with`]).
+        pub(super) fn bounds<P: crate::formats::Precision, V: Unit, const EMPTY: bool>(
+            reps: u32,
+        ) -> Result<u64, Error> {
+            let prims = unit_prims::<V>()?;
+            let vp = viewport()?;
+            let mut ops = Ops::default();
+            let mut calls = 0u64;
+            for p in prims.iter() {
+                let Some(e) = entry::<P>(p, vp, &mut ops) else {
+                    continue;
+                };
+                let fp = match &e {
+                    MotionEntry::Motion(m) => m.footprint(),
+                    MotionEntry::Static(s) => s.footprint(),
+                };
+                for _ in 0..reps {
+                    for cell in fp.cells(2) {
+                        if EMPTY {
+                            black_box((black_box(&e), cell));
+                        } else {
+                            match black_box(&e) {
+                                MotionEntry::Motion(m) => {
+                                    black_box(motion_tile(m, cell, &mut ops));
+                                }
+                                MotionEntry::Static(s) if P::PLANAR => {
+                                    black_box(static_tile(s, cell, &mut ops));
+                                }
+                                MotionEntry::Static(_) => {}
+                            }
+                        }
+                        calls = calls.saturating_add(1);
+                    }
+                }
+            }
+            Ok(calls)
+        }
+
+        /// The sample window of every visible prim (`EMPTY`: the harness alone, as
+        /// [`samples_empty_on_with`]).
+        pub(super) fn samples<P: crate::formats::Precision, V: Unit, const EMPTY: bool>(
+            reps: u32,
+        ) -> Result<u64, Error> {
+            let prims = unit_prims::<V>()?;
+            let vp = viewport()?;
+            let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLE_TABLE)?;
+            let mut ops = Ops::default();
+            let mut calls = 0u64;
+            for p in prims.iter() {
+                let Some(e) = entry::<P>(p, vp, &mut ops) else {
+                    continue;
+                };
+                for _ in 0..reps.saturating_mul(SAMPLE_PASSES) {
+                    for py in 12..20u16 {
+                        for px in 12..20u16 {
+                            for smp in pattern.pixel(px, py) {
+                                let pos = ScreenPos::of(px, py, smp);
+                                if EMPTY {
+                                    black_box((black_box(&e), pos, smp));
+                                } else {
+                                    match black_box(&e) {
+                                        MotionEntry::Motion(m) => {
+                                            black_box(motion_test(m, pos, smp));
+                                        }
+                                        MotionEntry::Static(s) if P::PLANAR => {
+                                            black_box(static_test(s, pos));
+                                        }
+                                        MotionEntry::Static(_) => {}
+                                    }
                                 }
                                 calls = calls.saturating_add(1);
                             }

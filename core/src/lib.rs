@@ -15,7 +15,8 @@
 //!    test of a [`Planar`] precision (vertices rounded once to 15 bits).
 //! 4. [`tile`] — the tile framebuffer, resolve and the render loop; [`static_unit`] — the
 //!    static-only unit's own setup, 2D tile cull, sample test and renderer at a [`Planar`]
-//!    precision.
+//!    precision; [`motion_unit`] — the motion-only unit's own setup, time-slab tile cull,
+//!    sample test ([`motion_test`]) and renderer ([`motion_render`]) at a bounded precision.
 //!
 //! Number formats are all in [`formats`]; `core/README.md` has the full width table.
 #![cfg_attr(not(test), no_std)]
@@ -49,6 +50,10 @@ pub mod input;
 pub mod interval;
 #[cfg(test)]
 mod interval_corners;
+mod motion_depth;
+pub mod motion_render;
+pub mod motion_test;
+pub mod motion_unit;
 pub mod planar;
 #[cfg(test)]
 mod planar_corners;
@@ -78,6 +83,8 @@ pub use formats::{
 };
 pub use input::{PixelRect, Sample, SamplePattern, Triangle, Vertex, Viewport};
 pub use interval::Interval;
+pub use motion_render::{MotionEntry, MotionRenderer};
+pub use motion_unit::{MotionOutcome, MotionSetup};
 pub use sample::{sample_eval, sample_test, Hit, SampleEval, ScreenPos};
 pub use setup::{setup, setup_scaled, setup_with, Class, Cull, Outcome, Setup};
 pub use static_unit::{StaticRenderer, StaticSetup};

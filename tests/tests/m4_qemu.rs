@@ -3,8 +3,10 @@
 //! (Cortex-M3 without FPU, QEMU `mps2-an385`), run under `qemu-system-arm` with a time limit, and
 //! its checksum and counters must equal the host's for the same scene through the same core.
 //! Each unit variant's program (`UVT_M4_UNIT`, Cortex-M4F only) must equal the host render of
-//! the same prims on the same unit; so must the full and static-only programs at the planar
-//! static configuration (`UVT_M4_PREC=planar-16-16-16-20`).
+//! the same prims on the same unit; so must the full, motion-only and static-only programs at
+//! the planar static configuration (`UVT_M4_PREC=planar-16-16-16-20`). The specialised programs
+//! (motion-only: `motion_unit.rs`; static-only at planar: `static_unit.rs`) also render the
+//! full unit's checksum and covered count on the same prims.
 
 use std::path::PathBuf;
 use std::process::Command;
@@ -186,20 +188,47 @@ fn cortex_m4f_unit_programs_are_bit_exact_with_host() {
         );
         let cpu = format!("cortex-m4 (unit {name})");
         check_output(&text, lines(r), "thumbv7em-none-eabihf", "mps2-an386", &cpu);
+        if name == MotionOnly::NAME {
+            let full = uvt_core::demo::render_on::<Full, MotionOnly>()
+                .unwrap_or_else(|e| panic!("full unit on the motion-only prims: {e}"));
+            matches_full(&text, &full, "motion-only program");
+        }
     }
 }
 
-/// The full and static-only Cortex-M4F programs at the planar static configuration
-/// (`planar-16-16-16-20`) against the host render of the same prims on the same unit at
-/// `PlanarPrecision`; the static-only program (the static-specialised path) also against the
-/// host's full unit on the static prims (checksum and covered count).
+/// A specialised unit program's output has the full unit's checksum and covered count on the
+/// same prims (`full`).
+fn matches_full(text: &str, full: &uvt_core::demo::DemoResult, what: &str) {
+    let want = format!("checksum {:#010x}", full.checksum);
+    assert!(
+        text.lines().any(|l| l == want),
+        "{what} against the full unit on its prims: expected '{want}' ({}), program \
+         output:\n{text}",
+        full.checksum
+    );
+    let covered = format!(" samples_covered={} ", full.stats.samples_covered);
+    assert!(
+        text.lines()
+            .any(|l| l.starts_with("stats ") && l.contains(&covered)),
+        "{what}: expected '{covered}' (the full unit's), program output:\n{text}"
+    );
+}
+
+/// The full, motion-only and static-only Cortex-M4F programs at the planar static
+/// configuration (`planar-16-16-16-20`) against the host render of the same prims on the same
+/// unit at `PlanarPrecision`; the specialised programs also against the host's full unit on
+/// their prims (checksum and covered count).
 #[test]
 fn cortex_m4f_planar_unit_programs_are_bit_exact_with_host() {
     use uvt_core::demo::render_on_with;
-    use uvt_core::{Full, PlanarPrecision, StaticOnly, Unit};
+    use uvt_core::{Full, MotionOnly, PlanarPrecision, StaticOnly, Unit};
     let _one = M4F.lock().unwrap_or_else(|e| e.into_inner());
     let host = [
         (Full::NAME, render_on_with::<PlanarPrecision, Full, Full>()),
+        (
+            MotionOnly::NAME,
+            render_on_with::<PlanarPrecision, MotionOnly, MotionOnly>(),
+        ),
         (
             StaticOnly::NAME,
             render_on_with::<PlanarPrecision, StaticOnly, StaticOnly>(),
@@ -220,25 +249,16 @@ fn cortex_m4f_planar_unit_programs_are_bit_exact_with_host() {
         );
         let cpu = format!("cortex-m4 (unit {name}, planar-16-16-16-20)");
         check_output(&text, lines(r), "thumbv7em-none-eabihf", "mps2-an386", &cpu);
-        if name == StaticOnly::NAME {
-            // The static-only program runs the static-specialised path (`static_unit.rs`):
-            // its image and covered count are the full unit's on the same prims.
-            let full = render_on_with::<PlanarPrecision, Full, StaticOnly>()
-                .unwrap_or_else(|e| panic!("full unit on the static prims (planar): {e}"));
-            let want = format!("checksum {:#010x}", full.checksum);
-            assert!(
-                text.lines().any(|l| l == want),
-                "static-only planar program against the full unit on its prims: expected \
-                 '{want}' ({}), program output:\n{text}",
-                full.checksum
-            );
-            let covered = format!(" samples_covered={} ", full.stats.samples_covered);
-            assert!(
-                text.lines()
-                    .any(|l| l.starts_with("stats ") && l.contains(&covered)),
-                "static-only planar program: expected '{covered}' (the full unit's), \
-                 program output:\n{text}"
-            );
-        }
+        // The specialised programs (static-only: `static_unit.rs`, motion-only:
+        // `motion_unit.rs`): image and covered count are the full unit's on the same prims.
+        let full = if name == StaticOnly::NAME {
+            render_on_with::<PlanarPrecision, Full, StaticOnly>()
+        } else if name == MotionOnly::NAME {
+            render_on_with::<PlanarPrecision, Full, MotionOnly>()
+        } else {
+            continue;
+        };
+        let full = full.unwrap_or_else(|e| panic!("full unit on the {name} prims (planar): {e}"));
+        matches_full(&text, &full, &format!("{name} planar program"));
     }
 }

@@ -1,0 +1,283 @@
+//! The motion-specialised sample test of the motion-only unit ([`crate::motion_unit`]): the
+//! bounded sample test (`bounded.rs`) of a static or motion triangle, bit for bit, with every
+//! per-triangle factor precomputed in [`MotionSetup`] and nothing else.
+//!
+//! **Same contract, same bits.** Steps 1–8 of `bounded.rs` for `MOTION = true, DEFOCUS = false`:
+//! the fast datapath (`bounded::fast_vertex`: the lerps one rounded high word each, the offsets
+//! one rounded high word of `swq·x + ngxq·w`) where `bounded::Fast::new` takes it (T ≠ 2^15 and
+//! both viewport sides below 2^(S−9)), the step-by-step general datapath otherwise
+//! (`general`, out of line); steps 5–7 with the same fast decision and `bounded::decide_slow`
+//! (out of line) for the rare path (some w ≤ 0 or some E' = 0); the depth on hits by
+//! `bounded::depth`'s function (`motion_depth.rs`, bit for bit). The offsets are the same sums
+//! regrouped in exact i64: `swq·x_t + ngxq·w + 2^31 = (swq·b_x + 2^31) + swq·δ_x + ngxq·w`
+//! with the bracket from setup (`x_t = b_x + δ_x`, the rounded lerp). A static triangle is run as a motion one with `r − q = 0`: every rounded lerp of a
+//! zero difference is the base value exactly (`f0 + floor((0 + 2^31)/2^32) = f0` on the fast
+//! datapath, `f0 + floor(2^15/2^16) = f0` on the general one), and for a static triangle the two
+//! shutter ends are equal (`classify`: the motion-only unit has CoC 0 throughout), so the
+//! values — hence the bits — are those of the full unit's static instantiation. A static
+//! triangle with every w > 0 on a fast viewport (`MotionSetup::still`) takes `still`: its
+//! vertices do not depend on t, so only `ngxq·w` is formed per sample.
+//!
+//! **Early exit.** A sample with two edge values of strictly different signs is not covered,
+//! whatever the third and the w: the fast decision needs one common strict sign, and
+//! `decide_slow` covers only when every non-zero `E'` has the orientation's sign (with every
+//! w > 0 the orientation is then 0; otherwise it is `sign(Σ E'·w)`, which at most one of the
+//! two matches). The test returns before the third edge.
+
+use crate::bounded::{decide_slow, lerp, mla_hi};
+use crate::formats::{OFFSET_SHIFT_MAX, OFFSET_SHIFT_MIN, TUV_FRAC};
+use crate::input::Sample;
+use crate::motion_depth::depth;
+use crate::motion_unit::MotionSetup;
+use crate::sample::{Hit, ScreenPos};
+
+/// Field indices of a [`MotionSetup`] vertex: x, y, w, z.
+pub(crate) const MX: usize = 0;
+pub(crate) const MY: usize = 1;
+pub(crate) const MW: usize = 2;
+pub(crate) const MZ: usize = 3;
+
+/// 2^15: the middle of the shutter, the one T the fast lerp refuses.
+const HALF: i32 = 1 << (TUV_FRAC - 1);
+/// 2^16: one t step.
+const ONE: i32 = 1 << TUV_FRAC;
+
+/// `a_i·b_j − a_j·b_i`: an edge value (step 5), |a|, |b| < 2^30: each product < 2^60, the
+/// difference < 2^61 (i64).
+#[inline(always)]
+#[allow(clippy::arithmetic_side_effects)]
+fn edge(ai: i32, bi: i32, aj: i32, bj: i32) -> i64 {
+    i64::from(ai) * i64::from(bj) - i64::from(aj) * i64::from(bi)
+}
+
+/// The motion-only unit's sample test at screen position `pos` and sample `s`: bit for bit
+/// the full unit's bounded test of the same triangle (module docs); `None` when not covered or
+/// outside the viewport.
+#[inline(always)]
+#[allow(
+    clippy::arithmetic_side_effects,
+    clippy::cast_possible_wrap,
+    clippy::indexing_slicing
+)]
+pub fn motion_test(m: &MotionSetup, pos: ScreenPos, s: &Sample) -> Option<Hit> {
+    if pos.xs >= m.end[0] || pos.ys >= m.end[1] {
+        return None;
+    }
+    // xs < 256W ≤ 2^19, ys < 256H: exact in i32.
+    let (xs, ys) = (pos.xs as i32, pos.ys as i32);
+    if m.still {
+        return still(m, xs, ys);
+    }
+    let t = s.t().to_bits();
+    if !m.fast || t == HALF {
+        return general(m, xs, ys, t);
+    }
+    let late = t > HALF;
+    // T ∈ [0, 2^16] \ {2^15}: min(T, 2^16 − T) < 2^15, so |tq| < 2^31 (`bounded::Fast::new`).
+    let tq = if late { t - ONE } else { t } * ONE;
+    // `fast`: 256·max(W, H)·k < 2^31 with k = 2^(32−S); |sw − 2xs| ≤ sw and |2ys − sh| ≤ sh
+    // (|.| ≤ 2^19), so both scaled factors fit i32 (`bounded::Fast::new`).
+    let ngxq = (m.sw - 2 * xs) * m.k;
+    let ngyq = (2 * ys - m.sh) * m.k;
+    // The tables are [_; 2] and [_; 3] indexed by a bool and by constants.
+    let end = usize::from(late);
+    let (b, c) = (&m.base[end], &m.c[end]);
+    // One vertex: `w = b_w + δ_w`, and the offsets with the base's part `swq·b_x + 2^31`
+    // from setup: `x_t = b_x + δ_x` with `δ_x = floor((tq·d_x + 2^31)/2^32)` (`mla_hi`), so
+    // `swq·x_t + ngxq·w + 2^31 = c_x + swq·δ_x + ngxq·w`, the same sum (|δ| ≤ 2^30: |swq·δ|
+    // < 2^61, |c_x| < 2^60 + 2^31, |ngxq·w| < 2^60: every partial sum < 2^63). `bad`
+    // collects `w − 1` (|w| ≤ 2^29): its sign bit is set iff some w ≤ 0.
+    let mut bad = 0i32;
+    let mut vert = |k: usize| {
+        let (bk, dk, [cx, cy]) = (&b[k], &m.d[k], c[k]);
+        let w = mla_hi(tq, dk[MW], bk[MW]);
+        bad |= w - 1;
+        let dx = mla_hi(tq, dk[MX], 0);
+        let dy = mla_hi(tq, dk[MY], 0);
+        let sum = |c: i64, e: i32, d: i32, ng: i32| {
+            ((c + i64::from(e) * i64::from(d) + i64::from(ng) * i64::from(w)) >> 32) as i32
+        };
+        (sum(cx, m.swq, dx, ngxq), sum(cy, m.shq, dy, ngyq))
+    };
+    let (a0, b0) = vert(0);
+    let (a1, b1) = vert(1);
+    let e2 = edge(a0, b0, a1, b1);
+    let (a2, b2) = vert(2);
+    let e0 = edge(a1, b1, a2, b2);
+    if (e0 ^ e2) < 0 && e0 != 0 && e2 != 0 {
+        return None;
+    }
+    let wpos = bad >= 0;
+    let e1 = edge(a2, b2, a0, b0);
+    let e = [e0, e1, e2];
+    let ab = [(a0, b0), (a1, b1), (a2, b2)];
+    if !wpos || e0 == 0 || e1 == 0 || e2 == 0 {
+        return rare(m, tq, late, ab, e);
+    }
+    let sign = if e0 & e1 & e2 < 0 {
+        -1
+    } else if e0 | e1 | e2 >= 0 {
+        1
+    } else {
+        return None;
+    };
+    hit(m, tq, late, &e, sign)
+}
+
+/// A covered sample's depth on the fast datapath: (w, z) recomputed ([`wz_fast`]) and
+/// [`depth`]. Out of line: nothing of it stays live through the common miss.
+#[inline(never)]
+fn hit(m: &MotionSetup, tq: i32, late: bool, e: &[i64; 3], sign: i64) -> Option<Hit> {
+    Some(Hit {
+        depth: depth_out(e, &wz_fast(m, tq, late), sign),
+    })
+}
+
+/// The rare path of the fast datapath (some w ≤ 0 or some E' = 0): w recomputed,
+/// `bounded::decide_slow` (orientation, fill rule), the depth on a hit.
+#[cold]
+#[inline(never)]
+fn rare(m: &MotionSetup, tq: i32, late: bool, ab: [(i32, i32); 3], e: [i64; 3]) -> Option<Hit> {
+    let wz = wz_fast(m, tq, late);
+    let [(a0, b0), (a1, b1), (a2, b2)] = ab;
+    let [(w0, _), (w1, _), (w2, _)] = wz;
+    let (sign, covered, _) = decide_slow(e, [(a0, b0, w0), (a1, b1, w1), (a2, b2, w2)]);
+    covered.then(|| Hit {
+        depth: depth_out(&e, &wz, sign),
+    })
+}
+
+/// [`depth`] out of line, for the paths that are not hot (rare, general, moving hits): one
+/// copy of it in the program beside the static path's inlined one.
+#[inline(never)]
+fn depth_out(e: &[i64; 3], wz: &[(i32, i32); 3], sign: i64) -> i32 {
+    depth(e, wz, sign)
+}
+
+/// The static path of [`motion_test`] (`MotionSetup::still`: `r = q`, every w > 0, a `fast`
+/// viewport): the fast datapath's offsets with the position-independent part precomputed,
+/// `floor((swq·x + 2^31 + ngxq·w)/2^32)` = `floor((c + ngxq·w)/2^32)` — the same sum, so the
+/// same bits (|c| < 2^60 + 2^31, |ngxq·w| < 2^60: < 2^62 in i64); the lerps of a zero
+/// difference are the base values (module docs), every w > 0 is known, and (w, z) are
+/// loaded for the depth. `xs < 256W`, `ys < 256H` (checked by [`motion_test`]).
+#[inline(always)]
+#[allow(
+    clippy::arithmetic_side_effects,
+    clippy::cast_possible_truncation,
+    clippy::indexing_slicing
+)]
+fn still(m: &MotionSetup, xs: i32, ys: i32) -> Option<Hit> {
+    // As in [`motion_test`]: both scaled factors fit i32 (`fast`).
+    let ngxq = (m.sw - 2 * xs) * m.k;
+    let ngyq = (2 * ys - m.sh) * m.k;
+    // [_; 3] and [_; 2] indexed by constants.
+    let v = |k: usize| {
+        let w = m.wz[k].0;
+        let [cx, cy] = m.c[0][k];
+        let hi = |c: i64, ng: i32| ((c + i64::from(ng) * i64::from(w)) >> 32) as i32;
+        (hi(cx, ngxq), hi(cy, ngyq))
+    };
+    let (a0, b0) = v(0);
+    let (a1, b1) = v(1);
+    let e2 = edge(a0, b0, a1, b1);
+    let (a2, b2) = v(2);
+    let e0 = edge(a1, b1, a2, b2);
+    if e0 != 0 && e2 != 0 && (e0 < 0) != (e2 < 0) {
+        return None;
+    }
+    let e1 = edge(a2, b2, a0, b0);
+    let e = [e0, e1, e2];
+    let sign = if e0 != 0 && e1 != 0 && e2 != 0 {
+        if e0 & e1 & e2 < 0 {
+            -1
+        } else if e0 | e1 | e2 >= 0 {
+            1
+        } else {
+            return None;
+        }
+    } else {
+        let [(w0, _), (w1, _), (w2, _)] = m.wz;
+        let (sign, covered, _) = decide_slow(e, [(a0, b0, w0), (a1, b1, w1), (a2, b2, w2)]);
+        if !covered {
+            return None;
+        }
+        sign
+    };
+    Some(Hit {
+        depth: depth(&e, &m.wz, sign),
+    })
+}
+
+/// The step-1 (w, z) of every vertex on the fast datapath (hits only, out of line: w and z
+/// are not kept live through the common miss). |d| ≤ 2^30, |tq| < 2^31 (as in
+/// [`motion_test`]).
+#[inline(never)]
+#[allow(clippy::indexing_slicing)]
+fn wz_fast(m: &MotionSetup, tq: i32, late: bool) -> [(i32, i32); 3] {
+    // [_; 2] indexed by a bool, [_; 4] by constants.
+    let b = &m.base[usize::from(late)];
+    let at = |k: usize, f: usize| mla_hi(tq, m.d[k][f], b[k][f]);
+    [0, 1, 2].map(|k| (at(k, MW), at(k, MZ)))
+}
+
+/// The general datapath (`bounded::eval_general` of the motion class, step by step): the
+/// inputs the fast one refuses (T = 2^15, a viewport side ≥ 2^(S−9)). `xs < 256W`,
+/// `ys < 256H` (checked by [`motion_test`]).
+#[cold]
+#[inline(never)]
+#[allow(
+    clippy::arithmetic_side_effects,
+    clippy::cast_possible_truncation,
+    clippy::indexing_slicing
+)]
+fn general(m: &MotionSetup, xs: i32, ys: i32, t: i32) -> Option<Hit> {
+    let (q, r) = (&m.base[0], &m.base[1]);
+    // ngx = 256W − 2xs ∈ (−256W, 256W], ngy likewise (|.| ≤ 2^19).
+    let (ngx, ngy) = (m.sw - 2 * xs, 2 * ys - m.sh);
+    // 2^31 >> (32 − S) = 2^(S−1) (a right shift of a constant; 32 − S ∈ 0..=12,
+    // `MotionSetup::shift`).
+    let half = (1i64 << 31) >> (OFFSET_SHIFT_MAX - m.shift);
+    let fine = m.shift - OFFSET_SHIFT_MIN;
+    // |e·p| ≤ 2^19·2^29, |ng·w| ≤ 2^19·2^29, + 2^31: < 2^49 (i64); `>> 20` leaves < 2^31
+    // (exact in i32), then `>> fine` (≤ 12): nested floors compose (`bounded::offset`).
+    let off = |e: i32, p: i32, ng: i32, w: i32| {
+        (((i64::from(e) * i64::from(p) + i64::from(ng) * i64::from(w) + half) >> OFFSET_SHIFT_MIN)
+            as i32)
+            >> fine
+    };
+    let at = |k: usize, f: usize| lerp(q[k][f], r[k][f], t);
+    let v = [0, 1, 2].map(|k| {
+        let w = at(k, MW);
+        (
+            off(m.sw, at(k, MX), ngx, w),
+            off(m.sh, at(k, MY), ngy, w),
+            w,
+        )
+    });
+    let [(a0, b0, w0), (a1, b1, w1), (a2, b2, w2)] = v;
+    let e = [
+        edge(a1, b1, a2, b2),
+        edge(a2, b2, a0, b0),
+        edge(a0, b0, a1, b1),
+    ];
+    let [e0, e1, e2] = e;
+    let sign = if w0 > 0 && w1 > 0 && w2 > 0 && e0 != 0 && e1 != 0 && e2 != 0 {
+        if e0 & e1 & e2 < 0 {
+            -1
+        } else if e0 | e1 | e2 >= 0 {
+            1
+        } else {
+            return None;
+        }
+    } else {
+        let (sign, covered, _) = decide_slow(e, v);
+        if !covered {
+            return None;
+        }
+        sign
+    };
+    let wz = [0, 1, 2].map(|k| (at(k, MW), at(k, MZ)));
+    Some(Hit {
+        depth: depth_out(&e, &wz, sign),
+    })
+}
