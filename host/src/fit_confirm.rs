@@ -9,6 +9,7 @@ use rayon::prelude::*;
 use serde::Serialize;
 use uvt_core::bounds::{BoundsStrategy, TileBounds};
 use uvt_core::strategies::{best, hull, hull_edge, hull_lens, Hyper, LensTime, BEST_SLABS};
+use uvt_core::{motion_unit, static_unit, MotionRenderer, StaticRenderer};
 use uvt_core::{
     sample_test, Bounded, DefocusOnly, Full, Laine2011, MotionOnly, Ops, Outcome, PixelRect, Prec,
     Precision, Prim, Renderer, Rgb888, SamplePattern, ScreenPos, Setup, StaticOnly, Triangle, Unit,
@@ -218,6 +219,27 @@ pub struct Confirm {
     pub matches_host_driver: Option<bool>,
     /// samples tested and covered by the chosen unit's renderer
     pub unit_tested_covered: [u64; 2],
+    /// the unit's specialised renderer at this configuration (`uvt_core::StaticRenderer` for
+    /// the static-only unit at a planar configuration, `uvt_core::MotionRenderer` for the
+    /// motion-only unit at a bounded or planar one — the renderers of the unit's Cortex-M
+    /// programs, with their own tile cull): its name, whether it produced the full unit's
+    /// colour at every sample and the same image, and its tested / covered counts; `None`
+    /// when the unit has none at this configuration
+    pub specialised: Option<Specialised>,
+}
+
+/// The specialised renderer's comparison with the full unit ([`Confirm::specialised`]).
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Specialised {
+    /// `StaticRenderer` or `MotionRenderer`
+    pub renderer: &'static str,
+    /// every sample's colour and the resolved image equal the full unit's (the counters differ:
+    /// its own tile cull tests other samples)
+    pub identical_to_full: Option<bool>,
+    /// why it could not run
+    pub error: Option<String>,
+    /// samples tested and covered by it
+    pub tested_covered: [u64; 2],
 }
 
 impl Confirm {
@@ -228,6 +250,10 @@ impl Confirm {
             && self.beyond_tolerance == 0
             && self.identical_to_full == Some(true)
             && self.matches_host_driver == Some(true)
+            && self
+                .specialised
+                .as_ref()
+                .is_none_or(|x| x.identical_to_full == Some(true))
     }
 }
 
@@ -290,7 +316,7 @@ where
     let vp = scene.core_viewport();
     let unit = unit.to_string();
     // The no-heap renderer keeps CAPACITY setups inline: run on a thread with a large stack.
-    let run = move || -> Result<(Frame, Frame), String> {
+    let run = move || -> Result<(Frame, Frame, Option<Specialised>), String> {
         let full = render::<P, B, Full>(strat, vp, &prims, &pat, tile)?;
         let mine = match unit.as_str() {
             "full" => render::<P, B, Full>(strat, vp, &prims, &pat, tile),
@@ -299,7 +325,30 @@ where
             "static-only" => render::<P, B, StaticOnly>(strat, vp, &prims, &pat, tile),
             u => Err(format!("unknown unit {u}")),
         }?;
-        Ok((full, mine))
+        let spec = match unit.as_str() {
+            "static-only" if static_unit::specialised::<P, StaticOnly>() => {
+                Some(("StaticRenderer", render_static(vp, &prims, &pat, tile)))
+            }
+            "motion-only" if motion_unit::specialised::<P, MotionOnly>() => {
+                Some(("MotionRenderer", render_motion::<P>(vp, &prims, &pat, tile)))
+            }
+            _ => None,
+        };
+        let spec = spec.map(|(renderer, got)| match got {
+            Ok(f) => Specialised {
+                renderer,
+                identical_to_full: Some(f.samples == full.samples && f.image == full.image),
+                error: None,
+                tested_covered: [f.tested, f.covered],
+            },
+            Err(e) => Specialised {
+                renderer,
+                identical_to_full: None,
+                error: Some(e),
+                tested_covered: [0, 0],
+            },
+        });
+        Ok((full, mine, spec))
     };
     let joined = std::thread::Builder::new()
         .stack_size(1 << 30)
@@ -308,7 +357,8 @@ where
         .join()
         .map_err(|_| anyhow::anyhow!("the renderer thread panicked"))?;
     match joined {
-        Ok((full, mine)) => {
+        Ok((full, mine, spec)) => {
+            c.specialised = spec;
             c.identical_to_full = Some(full == mine);
             c.unit_tested_covered = [mine.tested, mine.covered];
             let img: Vec<[u8; 3]> = mine.image.iter().map(|p| [p.r(), p.g(), p.b()]).collect();
@@ -342,6 +392,52 @@ fn render<P: Precision, B: BoundsStrategy, U: Unit>(
     tile: u8,
 ) -> Result<Frame, String> {
     let mut r = Renderer::<B, CAPACITY, P, U>::new(strat, vp, prims).map_err(|e| e.to_string())?;
+    render_passes(vp, pat, |sp, out| {
+        r.render_with::<8, 8, 1>(sp, tile, clear_color(), out)
+    })
+}
+
+/// [`render`] with the static-only unit's specialised renderer (planar configurations).
+fn render_static(
+    vp: uvt_core::Viewport,
+    prims: &[Prim],
+    pat: &Pattern,
+    tile: u8,
+) -> Result<Frame, String> {
+    let mut r = StaticRenderer::<CAPACITY>::new(vp, prims).map_err(|e| e.to_string())?;
+    render_passes(vp, pat, |sp, out| {
+        r.render_with::<8, 8, 1>(sp, tile, clear_color(), out)
+    })
+}
+
+/// [`render`] with the motion-only unit's specialised renderer.
+fn render_motion<P: Precision>(
+    vp: uvt_core::Viewport,
+    prims: &[Prim],
+    pat: &Pattern,
+    tile: u8,
+) -> Result<Frame, String> {
+    let mut r = MotionRenderer::<CAPACITY, P>::new(vp, prims).map_err(|e| e.to_string())?;
+    render_passes(vp, pat, |sp, out| {
+        r.render_with::<8, 8, 1>(sp, tile, clear_color(), out)
+    })
+}
+
+/// [`CLEAR`] as a colour.
+fn clear_color() -> Rgb888 {
+    Rgb888::new(CLEAR[0], CLEAR[1], CLEAR[2])
+}
+
+/// One pass per sample index through `pass(pattern, out)` (a renderer's `render_with` with a
+/// one-sample pattern), collected into a [`Frame`].
+fn render_passes(
+    vp: uvt_core::Viewport,
+    pat: &Pattern,
+    mut pass: impl FnMut(
+        &SamplePattern<'_>,
+        &mut dyn FnMut(u16, u16, Rgb888, uvt_core::PixelStats),
+    ) -> Result<(), uvt_core::Error>,
+) -> Result<Frame, String> {
     let (w, h) = (usize::from(vp.width()), usize::from(vp.height()));
     let spp = usize::from(pat.spp);
     let n = usize::from(pat.block);
@@ -351,7 +447,7 @@ fn render<P: Precision, B: BoundsStrategy, U: Unit>(
     for si in 0..spp {
         let table: Vec<_> = (0..n * n).map(|p| pat.quant[p * spp + si]).collect();
         let sp = SamplePattern::new(pat.block, 1, &table).map_err(|e| e.to_string())?;
-        r.render_with::<8, 8, 1>(&sp, tile, clear, |x, y, c, ps| {
+        pass(&sp, &mut |x, y, c, ps| {
             samples[(usize::from(y) * w + usize::from(x)) * spp + si] = c;
             tested += u64::from(ps.tested);
             covered += u64::from(ps.covered);

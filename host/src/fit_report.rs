@@ -305,6 +305,17 @@ pub fn fit_md(f: &Fit) -> String {
         "| image identical to the host frame driver's | | {} |\n",
         yes(c.matches_host_driver == Some(true))
     );
+    if let Some(x) = &c.specialised {
+        s += &format!(
+            "| every sample and the image identical to the full unit with the unit's specialised renderer (`{}`, its own tile cull; the renderer of its Cortex-M program) | {} | {} |\n",
+            x.renderer,
+            x.error.clone().unwrap_or_else(|| format!(
+                "tested {} covered {}",
+                x.tested_covered[0], x.tested_covered[1]
+            )),
+            yes(x.identical_to_full == Some(true))
+        );
+    }
     if !f.unbounded_primitives.is_empty() {
         s += &format!(
             "\nPrimitives without a screen-space bound: {} differing decisions, largest distance {:.6} px from an edge (measured; no bound applies).\n",

@@ -82,6 +82,21 @@ fn check_fit(name: &str, o: &Output, j: &serde_json::Value) {
         .collect();
     let unit = j["unit"].as_str().unwrap();
     assert!(accepts(unit, &counts), "{name}: {unit} for {counts:?}");
+    // The unit's specialised renderer (its Cortex-M program's) is confirmed where it has one.
+    let config = j["config"].as_str().unwrap();
+    let spec = &c["specialised"];
+    match (
+        unit,
+        config.starts_with("exact"),
+        config.starts_with("planar"),
+    ) {
+        ("static-only", _, true) => assert_eq!(spec["renderer"], "StaticRenderer", "{name}: {c}"),
+        ("motion-only", false, _) => assert_eq!(spec["renderer"], "MotionRenderer", "{name}: {c}"),
+        _ => assert!(spec.is_null(), "{name}: {c}"),
+    }
+    if !spec.is_null() {
+        assert_eq!(spec["identical_to_full"], true, "{name}: {c}");
+    }
     // Smallest: no narrower unit accepts the classes too.
     let narrower: &[&str] = match unit {
         "full" => &["motion-only", "defocus-only", "static-only"],
@@ -106,6 +121,7 @@ fn check_fit(name: &str, o: &Output, j: &serde_json::Value) {
 #[test]
 fn fit_on_the_stress_scenes() {
     let mut n = 0;
+    let mut renderers = std::collections::BTreeSet::new();
     let mut dirs: Vec<_> = std::fs::read_dir(repo("stress"))
         .unwrap()
         .map(|e| e.unwrap().path())
@@ -128,14 +144,19 @@ fn fit_on_the_stress_scenes() {
             );
             continue;
         }
-        check_fit(
-            &name,
-            &o,
-            &j.unwrap_or_else(|| panic!("{name}: {}", text(&o))),
-        );
+        let j = j.unwrap_or_else(|| panic!("{name}: {}", text(&o)));
+        check_fit(&name, &o, &j);
+        if let Some(r) = j["confirm"]["specialised"]["renderer"].as_str() {
+            renderers.insert(r.to_string());
+        }
         n += 1;
     }
     assert_eq!(n, 12);
+    // Both specialised renderers are confirmed on some stress scene.
+    assert_eq!(
+        renderers.into_iter().collect::<Vec<_>>(),
+        ["MotionRenderer", "StaticRenderer"]
+    );
 }
 
 #[test]
