@@ -253,7 +253,7 @@ impl Confirm {
             && self
                 .specialised
                 .as_ref()
-                .is_none_or(|x| x.identical_to_full == Some(true))
+                .map_or(true, |x| x.identical_to_full == Some(true))
     }
 }
 
