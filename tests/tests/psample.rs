@@ -98,6 +98,19 @@ fn committed_planar_records_cover_the_edge_cases() {
             c[key]
         );
     }
+    // Found by search: the unclamped depth at both sides of both clamps.
+    for key in [
+        "depth_at_far",
+        "depth_past_far",
+        "depth_at_near",
+        "depth_past_near",
+    ] {
+        assert!(
+            c[key].as_u64().unwrap() >= 3,
+            "unit set: {key} = {}",
+            c[key]
+        );
+    }
     assert!(c["culled_degenerate"].as_u64().unwrap() >= 1, "{c}");
     assert!(c["records"].as_u64().unwrap() >= 3000, "{c}");
     let sliver = m["psample_cases"]

@@ -467,7 +467,15 @@ pub fn unit(seed: u64) -> Result<Set> {
         format!("domain-end random static triangles and viewports (seed {seed})"),
         super::psample::domain_random(&mut prng, 120),
     ));
-    set.planar(super::psample::unit(&groups, seed));
+    let mut pset = super::psample::unit(&groups, seed);
+    let first = pset.inp.len();
+    super::psample::boundary_search(&mut pset, &mut prng, 3);
+    pset.cases.push(super::psample::Case {
+        name: "found by search: unclamped depth at 2^31 − 2, 2^31 − 1, −2^31, −2^31 − 1; f ≥ 63 with |acc| ≥ 2^62".into(),
+        triangles: 0,
+        records: [first, pset.inp.len()],
+    });
+    set.planar(pset);
     Ok(set)
 }
 

@@ -142,6 +142,16 @@ pub struct Coverage {
     pub f_negative: u64,
     /// depth exponent f ≥ 63 (the shift leaves 0 or −1)
     pub f_ge_63: u64,
+    /// f ≥ 63 and |acc| ≥ 2^62 (the shift by 63 is not the shift by 62)
+    pub f_ge_63_acc_large: u64,
+    /// the depth before the clamp is 2^31 − 2 (DEPTH_FAR, not clamped)
+    pub depth_at_far: u64,
+    /// the depth before the clamp is 2^31 − 1 (the first clamped value)
+    pub depth_past_far: u64,
+    /// the depth before the clamp is −2^31 (DEPTH_NEAR, not clamped)
+    pub depth_at_near: u64,
+    /// the depth before the clamp is −2^31 − 1 (the first clamped value)
+    pub depth_past_near: u64,
     /// depth saturated at the far end
     pub depth_far: u64,
     /// depth saturated at the near end
@@ -207,6 +217,17 @@ impl PSet {
         let f = pl.depth_plane().1;
         c.f_negative += (f < 0) as u64;
         c.f_ge_63 += (f >= 63) as u64;
+        c.f_ge_63_acc_large +=
+            (hit && f >= 63 && acc(&pl, vp, pos).unsigned_abs() >= 1 << 62) as u64;
+        if hit {
+            let u = depth_unclamped(&pl, vp, pos);
+            let far = i128::from(uvt_core::formats::DEPTH_FAR);
+            let near = i128::from(uvt_core::formats::DEPTH_NEAR);
+            c.depth_at_far += (u == far) as u64;
+            c.depth_past_far += (u == far + 1) as u64;
+            c.depth_at_near += (u == near) as u64;
+            c.depth_past_near += (u == near - 1) as u64;
+        }
         c.depth_far += (e.hit.map(|h| h.depth) == Some(uvt_core::formats::DEPTH_FAR)) as u64;
         c.depth_near += (e.hit.map(|h| h.depth) == Some(uvt_core::formats::DEPTH_NEAR)) as u64;
         let (sw, sh) = (256 * u32::from(vp.width()), 256 * u32::from(vp.height()));
@@ -215,6 +236,116 @@ impl PSet {
         self.inp.push(input);
         self.out.push(out);
         Some(e)
+    }
+}
+
+/// `acc = G · d` of the depth plane at `pos` (`planar.rs` "Depth"; |acc| < 2^63), in i128.
+pub fn acc(pl: &PlanarEdges, vp: Viewport, pos: ScreenPos) -> i128 {
+    let (w, h) = (i128::from(vp.width()), i128::from(vp.height()));
+    let d = [
+        (2 * i128::from(pos.xs) - 256 * w) * h,
+        (256 * h - 2 * i128::from(pos.ys)) * w,
+        256 * w * h,
+    ];
+    let (g, _) = pl.depth_plane();
+    (0..3).map(|i| i128::from(g[i]) * d[i]).sum()
+}
+
+/// The depth before the clamp to [DEPTH_NEAR, DEPTH_FAR], exact: `⌊acc / 2^min(f, 63)⌋` for
+/// f ≥ 0, `acc·2^(−f)` for f < 0 (f ≥ −62 from setup: < 2^125).
+pub fn depth_unclamped(pl: &PlanarEdges, vp: Viewport, pos: ScreenPos) -> i128 {
+    let a = acc(pl, vp, pos);
+    let f = pl.depth_plane().1;
+    if f >= 0 {
+        a >> f.min(63)
+    } else {
+        a << (-f).min(64)
+    }
+}
+
+/// Records found by search at the depth clamp's boundaries (the unclamped depth 2^31 − 2,
+/// 2^31 − 1, −2^31, −2^31 − 1) on triangles whose z/w is within a few LSB of ±128 across the
+/// screen, and covered samples with f ≥ 63 and |acc| ≥ 2^62 (where a shift by 62 instead of 63
+/// would differ: it needs G_x ≈ G_y ≈ G_w near 2^31 and the sample at a corner where d_x, d_y,
+/// d_w ≈ 2^30 share their sign) on screen-covering triangles in the plane z = γ·(x + y + w),
+/// γ ∈ [2^-28, 2^-25] (depth below one LSB), at the viewport's top right corner: at most `per`
+/// records per target.
+pub fn boundary_search(set: &mut PSet, rng: &mut rand_pcg::Pcg64, per: u64) {
+    let far = i128::from(uvt_core::formats::DEPTH_FAR);
+    let near = i128::from(uvt_core::formats::DEPTH_NEAR);
+    let targets = [far, far + 1, near, near - 1];
+    let mut found = [0u64; 5];
+    for i in 0..3000 {
+        if found.iter().all(|&n| n >= per) {
+            break;
+        }
+        let kind = i % 3;
+        if (kind == 2 && found[4] >= per) || (kind < 2 && found[..4].iter().all(|&n| n >= per)) {
+            continue;
+        }
+        let (vp, v) = if kind < 2 {
+            // kind 0: far, w = 2^22, z = 2^29 − r (r < 4): z/w·2^24 ∈ [2^31 − 16, 2^31];
+            // kind 1: near, w = 2^22 − 2^8 (on its vertex's rounding grid, so that the rounded
+            // triangle keeps it), z = −2^29 + r (r ∈ 2^15 ± 16): z/w·2^24 ≈ −2^31 ± 64.
+            let (w, z0, sign, r) = if kind == 0 {
+                (1i32 << 22, 1i32 << 29, -1, 0..4)
+            } else {
+                ((1 << 22) - 256, -(1 << 29), 1, 32752..32784)
+            };
+            let v = [(-1i32, -1i32), (1, -1), (0, 1)].map(|(x, y)| {
+                let z = z0 + sign * rng.gen_range(r.clone());
+                Vertex::from_bits([2 * x * w, 2 * y * w, z, w, 0])
+            });
+            (Viewport::new(64, 64).expect("64 × 64"), v)
+        } else {
+            let g = rng.gen_range(1.0..8.0) / f64::from(1u32 << 28);
+            let v = [(-4i64, -4i64), (4, -4), (0, 4)].map(|(x, y)| {
+                let w = (1i64 << 27) - rng.gen_range(0..1 << 20);
+                let (x, y) = (x * w, y * w);
+                let z = (g * (x + y + w) as f64).floor() as i32;
+                Vertex::from_bits([x as i32, y as i32, z, w as i32, 0])
+            });
+            (Viewport::new(2048, 2048).expect("2048"), v)
+        };
+        let Ok(t) = Triangle::new_static(v) else {
+            continue;
+        };
+        let probe = Setup::unculled_with::<PlanarPrecision>(&t, vp);
+        let Some(pl) = probe.planar() else { continue };
+        let (sw, sh) = (256 * u32::from(vp.width()), 256 * u32::from(vp.height()));
+        for k in 0..40 {
+            let pos = if kind == 2 && k < 4 {
+                ScreenPos {
+                    xs: sw - 1 - k * 64,
+                    ys: k * 64,
+                }
+            } else {
+                ScreenPos {
+                    xs: rng.gen_range(0..sw),
+                    ys: rng.gen_range(0..sh),
+                }
+            };
+            let Some(e) = planar_eval(&probe, pos, &mut Ops::default()) else {
+                continue;
+            };
+            if e.hit.is_none() {
+                continue;
+            }
+            let slot = if kind == 2 {
+                let f = pl.depth_plane().1;
+                (f >= 63 && acc(&pl, vp, pos).unsigned_abs() >= 1 << 62).then_some(4)
+            } else {
+                let u = depth_unclamped(&pl, vp, pos);
+                targets.iter().position(|&x| x == u)
+            };
+            if let Some(k) = slot {
+                if found[k] < per {
+                    found[k] += 1;
+                    set.cov.triangles += 1;
+                    set.push(&t, vp, pos);
+                }
+            }
+        }
     }
 }
 
