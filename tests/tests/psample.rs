@@ -208,6 +208,9 @@ fn rtl_planar_unit_passes_every_committed_record() {
     );
 }
 
+/// A predicate on an (input, output) record pair.
+type Kind = Box<dyn Fn(&[u32], &[u32]) -> bool>;
+
 fn e_of(out: &[u32], k: usize) -> i64 {
     ((u64::from(out[2 + 2 * k]) << 32) | u64::from(out[3 + 2 * k])) as i64
 }
@@ -219,7 +222,7 @@ fn kinds(set: &Path) -> Vec<(&'static str, usize)> {
     let ins = records(set, "psample_in.hex");
     let outs = records(set, "psample_out.hex");
     let f_of = |i: &[u32]| (((i[22] >> 2) & 0xff) as u8) as i8;
-    let tests: Vec<(&'static str, Box<dyn Fn(&[u32], &[u32]) -> bool>)> = vec![
+    let tests: Vec<(&'static str, Kind)> = vec![
         ("covered", Box::new(|_, o| o[0] & 1 == 1)),
         ("not covered", Box::new(|_, o| o[0] & 1 == 0)),
         (
