@@ -171,7 +171,8 @@ enum Cmd {
     },
     /// The unit-variant table: per unit flash, RAM and M4F instructions (from m4_units.json),
     /// the sample test's multiplier estimate restricted to the unit's stages and the RTL unit's
-    /// synthesized counts (from synth.json).
+    /// synthesized counts (from synth.json); then the static-only unit at the planar static
+    /// configuration (planar-16-16-16-20: estimate and synthesized uvt_psample.v).
     Units {
         /// configuration name (exact-P-T-B or bounded-P-T-B-O)
         #[arg(long, default_value = "bounded-16-16-16-20")]
@@ -586,6 +587,7 @@ fn run(cli: Cli) -> Result<()> {
                 syn.as_deref(),
                 &synth,
             ))?;
+            say(&uvt_host::synth::planar_md(syn.as_deref(), &synth))?;
         }
         Cmd::Stress { dir } => {
             let scenes = uvt_host::precision::stress_scenes(&dir)?;

@@ -1,7 +1,9 @@
 //! The per-unit entries of `host/report/synth.json` (`bash vectors/rtl/synth.sh`): each unit
 //! variant of the RTL sample test (`vectors/rtl/uvt_bsample.v` with `MOTION`, `DEFOCUS`)
 //! synthesized at the default configuration, which `uvt units` shows beside the cost model's
-//! per-unit estimate (`crate::fit::unit_sample_cost`). The per-configuration entries
+//! per-unit estimate (`crate::fit::unit_sample_cost`), and the static-only unit at the planar
+//! static configuration (`vectors/rtl/uvt_psample.v`, run `static-only@planar-16-16-16-20`),
+//! shown beside `crate::planar::unit_cost` ([`planar_md`]). The per-configuration entries
 //! (`"configs"`) are read by `crate::precision_cost`.
 
 use std::path::Path;
@@ -67,6 +69,37 @@ pub fn load_units(path: &Path) -> Result<Option<Vec<Unit>>> {
     Ok(Some(f.units))
 }
 
+/// Markdown: the static-only unit at the planar static configuration — the cost model's
+/// sample-test estimate (`crate::planar::unit_cost`) beside the synthesized counts of
+/// `vectors/rtl/uvt_psample.v` (`synth`, the `"units"` of `synth_path`), "not synthesized"
+/// without its entry.
+pub fn planar_md(synth: Option<&[Unit]>, synth_path: &Path) -> String {
+    let name = crate::planar::NAME;
+    let mut s = format!(
+        "\nStatic-only unit at the planar static configuration `{name}` (`uvt_core::static_unit`; RTL `vectors/rtl/uvt_psample.v`, synthesized counts from `{}`; the other units at `{name}` carry the bounded unit beside the planar test and have no RTL of their own):\n\n| unit | sample test DSP48E1 estimate | synthesized DSP48E1 / LUT / FF | MULT18X18D estimate | synthesized MULT18X18D / LUT4 / FF | Σ bit-products | products |\n|---|---|---|---|---|---|---|\n",
+        synth_path.display()
+    );
+    let c = crate::planar::unit_cost(false, false).unwrap_or_default();
+    let syn = synth.and_then(|v| v.iter().find(|u| u.unit == "static-only" && u.name == name));
+    let (sx, se) = syn.map_or(("not synthesized".into(), "not synthesized".into()), |u| {
+        (
+            format!("{} / {} / {}", u.xilinx.dsp48e1, u.xilinx.lut, u.xilinx.ff),
+            format!("{} / {} / {}", u.ecp5.mult18x18d, u.ecp5.lut4, u.ecp5.ff),
+        )
+    });
+    s += &format!(
+        "| static-only | {} | {sx} | {} | {se} | {} | {} |\n",
+        c.dsp48e1, c.ecp5, c.bit_products, c.products
+    );
+    if syn.is_none() {
+        s += &format!(
+            "\nsynthesized: none at `{name}` in `{}` (`bash vectors/rtl/synth.sh -k static-only@{name}`).\n",
+            synth_path.display()
+        );
+    }
+    s
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -97,6 +130,40 @@ mod tests {
                 "{name} at {def}: estimate (DSP48E1, MULT18X18D) against synthesized ({path})"
             );
         }
+    }
+
+    /// The static-only unit at the planar static configuration (`uvt_psample.v`) is synthesized,
+    /// and the cost model's estimate (`crate::planar::unit_cost`: 3 direction products 21 × 13,
+    /// 9 edge and 3 depth products 32 × 32) equals the synthesized hard multipliers for both
+    /// families; `uvt units` shows both.
+    #[test]
+    fn planar_static_unit_estimate_equals_synthesis() {
+        let (path, units) = committed();
+        let name = crate::planar::NAME;
+        let syn = units
+            .iter()
+            .find(|u| u.unit == "static-only" && u.name == name)
+            .unwrap_or_else(|| panic!("{path}: no unit static-only at {name}"));
+        let est = crate::planar::unit_cost(false, false).unwrap();
+        assert_eq!(
+            (est.dsp48e1, est.ecp5),
+            (syn.xilinx.dsp48e1, syn.ecp5.mult18x18d),
+            "static-only at {name}: estimate (DSP48E1, MULT18X18D) against synthesized ({path})"
+        );
+        let md = planar_md(Some(&units), Path::new(path));
+        let row = format!(
+            "| static-only | {} | {} / {} / {} | {} | {} / {} / {} |",
+            est.dsp48e1,
+            syn.xilinx.dsp48e1,
+            syn.xilinx.lut,
+            syn.xilinx.ff,
+            est.ecp5,
+            syn.ecp5.mult18x18d,
+            syn.ecp5.lut4,
+            syn.ecp5.ff
+        );
+        assert!(md.contains(&row), "{md}");
+        assert!(planar_md(None, Path::new(path)).contains("not synthesized"));
     }
 
     /// The full unit's entry is the default configuration's full-unit run (`"configs"`), and a

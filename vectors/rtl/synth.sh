@@ -1,19 +1,23 @@
 #!/usr/bin/env bash
-# Synthesize the bounded sample-test unit (uvt_bsample.v, its multipliers uvt_mul.v) with Yosys
-# for Xilinx 7-series (synth_xilinx: DSP48E1, LUT1..6, flip-flops, SRLs) and Lattice ECP5
-# (synth_ecp5: MULT18X18D, LUT4, flip-flops) per configuration and unit variant, and write the
-# counts to host/report/synth.json:
+# Synthesize the bounded sample-test unit (uvt_bsample.v, its multipliers uvt_mul.v) and the
+# planar static sample-test unit (uvt_psample.v) with Yosys for Xilinx 7-series (synth_xilinx:
+# DSP48E1, LUT1..6, flip-flops, SRLs) and Lattice ECP5 (synth_ecp5: MULT18X18D, LUT4,
+# flip-flops) per configuration and unit variant, and write the counts to host/report/synth.json:
 #   {"yosys": …, "configs": [{"name", "xilinx": {…}, "ecp5": {…}}],     full unit per configuration
-#    "units": [{"unit", "name", "xilinx": {…}, "ecp5": {…}}]}           each unit at the default
+#    "units": [{"unit", "name", "xilinx": {…}, "ecp5": {…}}]}           each unit at the default,
+#                                                                      static-only at planar
 #
 #   bash vectors/rtl/synth.sh [-j JOBS] [-o OUT.json] [-r WORKDIR] [-k] [RUN …]
 #
 # RUN = CONFIG (the full unit) or UNIT@CONFIG, UNIT one of full, motion-only, defocus-only,
 # static-only (uvt_bsample's MOTION, DEFOCUS); CONFIG = bounded-P-T-B-O (B, the bounds'
-# precision, does not enter the sample test). Default: bounded-16-16-16-20 bounded-16-16-16-24
-# bounded-12-12-12-24 bounded-8-8-8-28 and motion-only@, defocus-only@, static-only@ the default
-# bounded-16-16-16-20. "configs" lists the full-unit runs; "units" the four units at the default
-# configuration (full = the run bounded-16-16-16-20), those that were synthesized.
+# precision, does not enter the sample test). The planar static configuration has one run,
+# static-only@planar-16-16-16-20: uvt_psample.v (its other units would carry the bounded unit
+# beside it; they are not built). Default: bounded-16-16-16-20 bounded-16-16-16-24
+# bounded-12-12-12-24 bounded-8-8-8-28, motion-only@, defocus-only@, static-only@ the default
+# bounded-16-16-16-20, and static-only@planar-16-16-16-20. "configs" lists the full-unit runs;
+# "units" the four units at the default configuration (full = the run bounded-16-16-16-20) and
+# the static-only unit at planar-16-16-16-20, those that were synthesized.
 # -k: keep the entries of the existing OUT that this run does not synthesize (needs jq); each
 # entry's "seconds" are its own run's, total_seconds this run's.
 # -r WORKDIR: no synthesis; rebuild the JSON from the stat files and times of an earlier run's
@@ -27,6 +31,7 @@ reuse=
 keep=
 out=host/report/synth.json
 default=bounded-16-16-16-20
+planar=planar-16-16-16-20
 while [ $# -gt 0 ]; do
   case "$1" in
     -j) jobs="$2"; shift 2 ;;
@@ -39,7 +44,7 @@ while [ $# -gt 0 ]; do
 done
 runs=("$@")
 [ ${#runs[@]} -gt 0 ] || runs=(bounded-16-16-16-20 bounded-16-16-16-24 bounded-12-12-12-24 bounded-8-8-8-28
-  "motion-only@$default" "defocus-only@$default" "static-only@$default")
+  "motion-only@$default" "defocus-only@$default" "static-only@$default" "static-only@$planar")
 units=(full motion-only defocus-only static-only)
 # unit → MOTION DEFOCUS of uvt_bsample.v
 terms() {
@@ -55,9 +60,14 @@ for r in "${runs[@]}"; do
   u=$(unit_of "$r"); c=$(config_of "$r")
   terms "$u" >/dev/null || { echo "synth.sh: run '$r': unit '$u' is not one of ${units[*]}" >&2; exit 2; }
   [ "$u" != full ] || [ "$r" = "$c" ] || { echo "synth.sh: run '$r': write the full unit's run as '$c'" >&2; exit 2; }
+  if [ "$c" = "$planar" ]; then
+    [ "$u" = static-only ] ||
+      { echo "synth.sh: run '$r': at $planar only the static-only unit is built (static-only@$planar)" >&2; exit 2; }
+    continue
+  fi
   IFS=- read -r kind _pos _tuv _bnd off <<<"$c"
   if [ "$kind" != bounded ] || [ -z "$off" ]; then
-    echo "synth.sh: run '$r': configuration '$c' is not bounded-P-T-B-O" >&2; exit 2
+    echo "synth.sh: run '$r': configuration '$c' is neither bounded-P-T-B-O nor $planar" >&2; exit 2
   fi
 done
 if [ -n "$keep" ]; then
@@ -67,6 +77,7 @@ if [ -n "$keep" ]; then
     { echo "synth.sh: -k: $out has no \"configs\" array" >&2; exit 1; }
 fi
 rtl="vectors/rtl/uvt_mul.v vectors/rtl/uvt_bsample.v"
+rtl_planar="vectors/rtl/uvt_mul.v vectors/rtl/uvt_psample.v"
 if [ -n "$reuse" ]; then
   work=$reuse
 else
@@ -83,18 +94,24 @@ run() { # run family
   # The multiplier tiling follows the family's hard multiplier (uvt_mul.v): 25 × 18 signed for
   # the DSP48E1, 18 × 18 for the MULT18X18D. The full unit keeps MOTION = DEFOCUS = 1 (the
   # defaults, not set: the same command as before the unit parameters).
-  local cmd ports
-  if [ "$fam" = xilinx ]; then
-    cmd="synth_xilinx -top uvt_bsample -family xc7"; ports="-set DSP_A 25 -set DSP_B 18"
+  # The planar static unit (uvt_psample.v) has only the tiling parameters.
+  local cmd ports top=uvt_bsample src=$rtl cfgp
+  if [ "$cfg" = "$planar" ]; then
+    top=uvt_psample; src=$rtl_planar; cfgp=""
   else
-    cmd="synth_ecp5 -top uvt_bsample"; ports="-set DSP_A 18 -set DSP_B 18"
+    cfgp="-set POS $pos -set TUV $tuv -set OFF $off"
   fi
-  if [ "$unit" != full ]; then
+  if [ "$fam" = xilinx ]; then
+    cmd="synth_xilinx -top $top -family xc7"; ports="-set DSP_A 25 -set DSP_B 18"
+  else
+    cmd="synth_ecp5 -top $top"; ports="-set DSP_A 18 -set DSP_B 18"
+  fi
+  if [ "$unit" != full ] && [ "$top" = uvt_bsample ]; then
     read -r mot dof <<<"$(terms "$unit")"
     ports="$ports -set MOTION $mot -set DEFOCUS $dof"
   fi
   local t0=$SECONDS
-  if ! yosys -q -l "$work/$name.$fam.log" -p "read_verilog -defer $rtl; chparam -set POS $pos -set TUV $tuv -set OFF $off $ports uvt_bsample; $cmd; tee -q -o $work/$name.$fam.stat stat" >/dev/null 2>&1; then
+  if ! yosys -q -l "$work/$name.$fam.log" -p "read_verilog -defer $src; chparam $cfgp $ports $top; $cmd; tee -q -o $work/$name.$fam.stat stat" >/dev/null 2>&1; then
     echo "synth.sh: yosys failed for $name ($fam); see $work/$name.$fam.log" >&2; return 1
   fi
   echo "$((SECONDS - t0))" > "$work/$name.$fam.secs"
@@ -169,6 +186,15 @@ ver=$(yosys -V | sed 's/"/\\"/g')
       [ -z "$e" ] || { printf '%s\n    %s' "$sep" "$e"; sep=","; }
     fi
   done
+  # The planar static unit (one run; its entry kept with -k when not re-run).
+  r="static-only@$planar"
+  if ran "$r"; then
+    printf '%s\n    {"unit": "static-only", "name": "%s",\n     %s}' "$sep" "$planar" "$(fields "$r")"
+    sep=","
+  elif [ -n "$keep" ]; then
+    e=$(jq -c --arg n "$planar" '(.units // [])[] | select(.unit == "static-only" and .name == $n)' "$out")
+    [ -z "$e" ] || { printf '%s\n    %s' "$sep" "$e"; sep=","; }
+  fi
   printf '\n  ]\n}\n'
 } > "$out.tmp"
 jq -e . "$out.tmp" >/dev/null 2>&1 || ! command -v jq >/dev/null || { echo "synth.sh: wrote invalid JSON to $out.tmp" >&2; exit 1; }

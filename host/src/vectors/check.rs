@@ -145,6 +145,19 @@ fn check_set(dir: &Path) -> Result<u64> {
             Err(e) => diffs.fail("bsample_in", line, &e),
         }
     }
+    for (line, (i, o)) in get("psample_in")
+        .iter()
+        .zip(&get("psample_out"))
+        .enumerate()
+    {
+        match super::psample::run_psample(i) {
+            Ok((inp, _, r)) => {
+                diffs.cmp("psample_in", line, i, &inp.0);
+                diffs.cmp("psample_out", line, o, &r.0);
+            }
+            Err(e) => diffs.fail("psample_in", line, &e),
+        }
+    }
     for (line, (i, o)) in get("resolve_in")
         .iter()
         .zip(&get("resolve_out"))

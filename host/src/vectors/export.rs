@@ -49,6 +49,10 @@ pub struct Set {
     tris: Vec<(Triangle, Viewport)>,
     /// what the bounded sample-test records cover
     pub bcov: Option<Coverage>,
+    /// what the planar sample-test records cover
+    pub pcov: Option<super::psample::Coverage>,
+    /// named groups of the planar records
+    pub pcases: Vec<super::psample::Case>,
 }
 
 impl Set {
@@ -68,6 +72,12 @@ impl Set {
         self.files.insert("bsample_in".into(), b.inp);
         self.files.insert("bsample_out".into(), b.out);
         self.bcov = Some(b.cov);
+    }
+    fn planar(&mut self, p: super::psample::PSet) {
+        self.files.insert("psample_in".into(), p.inp);
+        self.files.insert("psample_out".into(), p.out);
+        self.pcov = Some(p.cov);
+        self.pcases = p.cases;
     }
     fn lookup(&self) -> impl Fn(u32) -> Result<(Setup, LaineCoeffs), String> + '_ {
         move |i| {
@@ -438,6 +448,34 @@ pub fn unit(seed: u64) -> Result<Set> {
         })
         .collect();
     set.resolve(&half);
+    // Planar sample-test records (its own random stream, after everything above): the t0 frame
+    // of every triangle above (CoC dropped: static), the planar configuration's named cases,
+    // depth saturation as for the bounded records, and domain-end random triangles.
+    let mut prng = rand_pcg::Pcg64::seed_from_u64(seed ^ 0x9a7a_0002);
+    let mut groups = vec![(
+        "the t0 frames of the setup and bounded records' triangles (named cases, seeded random, depth saturation), CoC dropped".to_string(),
+        btris
+            .iter()
+            .map(|(t, vp)| (super::psample::static_of(t), *vp))
+            .collect::<Vec<_>>(),
+    )];
+    for (name, list, side) in super::psample::named_cases() {
+        let vp = Viewport::new(side, side).map_err(|e| anyhow!("{e}"))?;
+        groups.push((name.into(), list.into_iter().map(|t| (t, vp)).collect()));
+    }
+    groups.push((
+        format!("domain-end random static triangles and viewports (seed {seed})"),
+        super::psample::domain_random(&mut prng, 120),
+    ));
+    let mut pset = super::psample::unit(&groups, seed);
+    let first = pset.inp.len();
+    super::psample::boundary_search(&mut pset, &mut prng, 3);
+    pset.cases.push(super::psample::Case {
+        name: "found by search: unclamped depth at 2^31 − 2, 2^31 − 1, −2^31, −2^31 − 1; f ≥ 63 with |acc| ≥ 2^62".into(),
+        triangles: 0,
+        records: [first, pset.inp.len()],
+    });
+    set.planar(pset);
     Ok(set)
 }
 
@@ -551,6 +589,7 @@ pub fn frame(scene: &Scene, scene_json: &str) -> Result<Set> {
     set.trace = Some(trace);
     let b = super::bsample::frame(&core, vp, &q, 320);
     set.bounded(b);
+    set.planar(super::psample::frame(&core, vp, &q, 320));
     Ok(set)
 }
 
@@ -589,6 +628,9 @@ pub fn write(set: &Set, dir: &Path, kind: &str, seed: u64) -> Result<()> {
         "cases": set.cases, "files": files,
         "bsample_config": {"name": Grid::DEFAULT.name(), "grid": Grid::DEFAULT, "core": "uvt_core::bounded_eval with uvt_core::BoundedPrecision = Bounded<16, 16, 16, 20>"},
         "bsample_coverage": set.bcov,
+        "psample_config": {"name": super::psample::CONFIG, "core": "uvt_core::planar::planar_eval on the planar setup of uvt_core::PlanarPrecision = Planar<16, 16, 16, 20> (static triangles; culled ones have no record)"},
+        "psample_coverage": set.pcov,
+        "psample_cases": set.pcases,
     });
     outputs.push((
         "manifest.json".into(),

@@ -12,7 +12,10 @@ use serde::Serialize;
 use sha2::{Digest, Sha256};
 
 /// Version of this format (bump on any layout change). 2: the bounded sample-test records
-/// `bsample_{in,out}` (self-contained, no setup index).
+/// `bsample_{in,out}` (self-contained, no setup index). The planar sample-test records
+/// `psample_{in,out}` were added to version 2 without a bump: no existing file's layout or
+/// bytes changed, and a checker without them refuses a set that has them by name (its layout
+/// of `psample_in` has 0 words, the manifest's 28).
 pub const FORMAT_VERSION: u32 = 2;
 
 /// One field of a record.
@@ -99,7 +102,9 @@ fn tri_fields(l: Layout) -> Layout {
 }
 
 /// The stages and their files.
-pub const STAGES: [&str; 6] = ["setup", "bounds", "select", "sample", "bsample", "resolve"];
+pub const STAGES: [&str; 7] = [
+    "setup", "bounds", "select", "sample", "bsample", "psample", "resolve",
+];
 
 /// Layout of `<stage>_in` or `<stage>_out`; `spp` sets the resolve width.
 pub fn layout(file: &str, spp: u32) -> Layout {
@@ -217,6 +222,32 @@ pub fn layout(file: &str, spp: u32) -> Layout {
             .w("b1", 32, true, 0)
             .w("a2", 32, true, 0)
             .w("b2", 32, true, 0)
+            .w("e0", 64, true, 0)
+            .w("e1", 64, true, 0)
+            .w("e2", 64, true, 0),
+        "psample_in" => {
+            let mut l = l;
+            for k in 0..3 {
+                for f in ["x", "y", "z", "w"] {
+                    l = l.w(&format!("v{k}_{f}"), 32, true, 16);
+                }
+            }
+            l = l.packed(&[("viewport_w", 16, false), ("viewport_h", 16, false)]);
+            for k in 0..3 {
+                for f in ["a", "b", "c"] {
+                    l = l.w(&format!("n{k}_{f}"), 32, true, 0);
+                }
+            }
+            l.packed(&[("sigma", 2, true), ("f", 8, true)])
+                .w("g0", 32, true, 0)
+                .w("g1", 32, true, 0)
+                .w("g2", 32, true, 0)
+                .w("xs", 32, false, 8)
+                .w("ys", 32, false, 8)
+        }
+        "psample_out" => l
+            .packed(&[("covered", 1, false)])
+            .w("depth", 32, true, 24)
             .w("e0", 64, true, 0)
             .w("e1", 64, true, 0)
             .w("e2", 64, true, 0),

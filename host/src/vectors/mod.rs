@@ -4,6 +4,7 @@ pub mod bsample;
 pub mod check;
 pub mod export;
 pub mod format;
+pub mod psample;
 pub mod stages;
 
 use std::path::Path;
