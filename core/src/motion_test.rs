@@ -214,10 +214,10 @@ fn still(m: &MotionSetup, xs: i32, ys: i32) -> Option<Hit> {
 #[inline(never)]
 #[allow(clippy::indexing_slicing)]
 fn wz_fast(m: &MotionSetup, tq: i32, late: bool) -> [(i32, i32); 3] {
-    // [_; 2] indexed by a bool, [_; 4] by constants.
-    let b = &m.base[usize::from(late)];
-    let at = |k: usize, f: usize| mla_hi(tq, m.d[k][f], b[k][f]);
-    [0, 1, 2].map(|k| (at(k, MW), at(k, MZ)))
+    let b = if late { &m.base[1] } else { &m.base[0] };
+    let at = |d: &[i32; 4], b: &[i32; 4]| (mla_hi(tq, d[MW], b[MW]), mla_hi(tq, d[MZ], b[MZ]));
+    let ([d0, d1, d2], [b0, b1, b2]) = (&m.d, b);
+    [at(d0, b0), at(d1, b1), at(d2, b2)]
 }
 
 /// The general datapath (`bounded::eval_general` of the motion class, step by step): the
@@ -245,15 +245,16 @@ fn general(m: &MotionSetup, xs: i32, ys: i32, t: i32) -> Option<Hit> {
             as i32)
             >> fine
     };
-    let at = |k: usize, f: usize| lerp(q[k][f], r[k][f], t);
-    let v = [0, 1, 2].map(|k| {
-        let w = at(k, MW);
-        (
-            off(m.sw, at(k, MX), ngx, w),
-            off(m.sh, at(k, MY), ngy, w),
-            w,
-        )
-    });
+    // Per vertex the lerped (x, y, w, z) (fields by constant, vertices by destructuring: no
+    // index check, hence no panic path, is linked).
+    let at = |qk: &[i32; 4], rk: &[i32; 4]| {
+        let [qx, qy, qw, qz] = *qk;
+        let [rx, ry, rw, rz] = *rk;
+        [lerp(qx, rx, t), lerp(qy, ry, t), lerp(qw, rw, t), lerp(qz, rz, t)]
+    };
+    let ([q0, q1, q2], [r0, r1, r2]) = (q, r);
+    let p = [at(q0, r0), at(q1, r1), at(q2, r2)];
+    let v = p.map(|[x, y, w, _]| (off(m.sw, x, ngx, w), off(m.sh, y, ngy, w), w));
     let [(a0, b0, w0), (a1, b1, w1), (a2, b2, w2)] = v;
     let e = [
         edge(a1, b1, a2, b2),
@@ -276,7 +277,7 @@ fn general(m: &MotionSetup, xs: i32, ys: i32, t: i32) -> Option<Hit> {
         }
         sign
     };
-    let wz = [0, 1, 2].map(|k| (at(k, MW), at(k, MZ)));
+    let wz = p.map(|[_, _, w, z]| (w, z));
     Some(Hit {
         depth: depth_out(&e, &wz, sign),
     })
