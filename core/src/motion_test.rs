@@ -52,8 +52,9 @@ fn edge(ai: i32, bi: i32, aj: i32, bj: i32) -> i64 {
 
 /// The motion-only unit's sample test at screen position `pos` and sample `s`: bit for bit
 /// the full unit's bounded test of the same triangle (module docs); `None` when not covered or
-/// outside the viewport.
-#[inline(always)]
+/// outside the viewport. Out of line: one copy for the renderer and the cost workload, and
+/// the whole register file for the test (its callers' loop state is saved by the call).
+#[inline(never)]
 #[allow(
     clippy::arithmetic_side_effects,
     clippy::cast_possible_wrap,
