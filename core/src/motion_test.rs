@@ -25,7 +25,7 @@
 //! two matches). The test returns before the third edge.
 
 use crate::bounded::{decide_slow, lerp, mla_hi};
-use crate::formats::{OFFSET_SHIFT_MAX, OFFSET_SHIFT_MIN, TUV_FRAC};
+use crate::formats::{Precision, OFFSET_SHIFT_MAX, OFFSET_SHIFT_MIN, TUV_FRAC};
 use crate::input::Sample;
 use crate::motion_depth::depth;
 use crate::motion_unit::MotionSetup;
@@ -60,13 +60,16 @@ fn edge(ai: i32, bi: i32, aj: i32, bj: i32) -> i64 {
     clippy::cast_possible_wrap,
     clippy::indexing_slicing
 )]
-pub fn motion_test(m: &MotionSetup, pos: ScreenPos, s: &Sample) -> Option<Hit> {
+pub fn motion_test<P: Precision>(m: &MotionSetup, pos: ScreenPos, s: &Sample) -> Option<Hit> {
     if pos.xs >= m.end[0] || pos.ys >= m.end[1] {
         return None;
     }
     // xs < 256W ≤ 2^19, ys < 256H: exact in i32.
     let (xs, ys) = (pos.xs as i32, pos.ys as i32);
-    if m.still {
+    // A planar precision's renderer sets static triangles up with `static_unit`, so the static
+    // path is not linked there; a static `MotionSetup` at it takes the moving path with
+    // `r − q = 0`, the same bits (module docs).
+    if !P::PLANAR && m.still {
         return still(m, xs, ys);
     }
     let t = s.t().to_bits();
