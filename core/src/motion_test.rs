@@ -28,12 +28,10 @@ use crate::bounded::{decide_slow, lerp, mla_hi};
 use crate::formats::{Precision, OFFSET_SHIFT_MAX, OFFSET_SHIFT_MIN, TUV_FRAC};
 use crate::input::Sample;
 use crate::motion_depth::depth;
-use crate::motion_unit::MotionSetup;
+use crate::motion_unit::{MotionSetup, Vfast};
 use crate::sample::{Hit, ScreenPos};
 
-/// Field indices of a [`MotionSetup`] vertex: x, y, w, z.
-pub(crate) const MX: usize = 0;
-pub(crate) const MY: usize = 1;
+/// Field indices of a [`MotionSetup`] vertex (x, y, w, z): w and z.
 pub(crate) const MW: usize = 2;
 pub(crate) const MZ: usize = 3;
 
@@ -83,67 +81,75 @@ pub fn motion_test<P: Precision>(m: &MotionSetup, pos: ScreenPos, s: &Sample) ->
     // (|.| ≤ 2^19), so both scaled factors fit i32 (`bounded::Fast::new`).
     let ngxq = (m.sw - 2 * xs) * m.k;
     let ngyq = (2 * ys - m.sh) * m.k;
-    // The tables are [_; 2] and [_; 3] indexed by a bool and by constants.
-    let end = usize::from(late);
-    let (b, c) = (&m.base[end], &m.c[end]);
+    let [v0, v1, v2] = if late { &m.hot[1] } else { &m.hot[0] };
+    let (swq, shq) = (m.swq, m.shq);
     // One vertex: `w = b_w + δ_w`, and the offsets with the base's part `swq·b_x + 2^31`
     // from setup: `x_t = b_x + δ_x` with `δ_x = floor((tq·d_x + 2^31)/2^32)` (`mla_hi`), so
     // `swq·x_t + ngxq·w + 2^31 = c_x + swq·δ_x + ngxq·w`, the same sum (|δ| ≤ 2^30: |swq·δ|
-    // < 2^61, |c_x| < 2^60 + 2^31, |ngxq·w| < 2^60: every partial sum < 2^63). `bad`
-    // collects `w − 1` (|w| ≤ 2^29): its sign bit is set iff some w ≤ 0.
-    let mut bad = 0i32;
-    let mut vert = |k: usize| {
-        let (bk, dk, [cx, cy]) = (&b[k], &m.d[k], c[k]);
-        let w = mla_hi(tq, dk[MW], bk[MW]);
-        bad |= w - 1;
-        let dx = mla_hi(tq, dk[MX], 0);
-        let dy = mla_hi(tq, dk[MY], 0);
+    // < 2^61, |c_x| < 2^60 + 2^31, |ngxq·w| < 2^60: every partial sum < 2^63). Returns
+    // `(a', b', w − 1)` (|w| ≤ 2^29).
+    let vert = |v: &Vfast| {
+        let w = mla_hi(tq, v.dw, v.bw);
         let sum = |c: i64, e: i32, d: i32, ng: i32| {
-            ((c + i64::from(e) * i64::from(d) + i64::from(ng) * i64::from(w)) >> 32) as i32
+            ((c + i64::from(e) * i64::from(mla_hi(tq, d, 0)) + i64::from(ng) * i64::from(w))
+                >> 32) as i32
         };
-        (sum(cx, m.swq, dx, ngxq), sum(cy, m.shq, dy, ngyq))
+        (sum(v.cx, swq, v.dx, ngxq), sum(v.cy, shq, v.dy, ngyq), w - 1)
     };
-    let (a0, b0) = vert(0);
-    let (a1, b1) = vert(1);
+    let (a0, b0, n0) = vert(v0);
+    let (a1, b1, n1) = vert(v1);
+    let (a2, b2, n2) = vert(v2);
+    let ab = [a0, b0, a1, b1, a2, b2];
     let e2 = edge(a0, b0, a1, b1);
-    let (a2, b2) = vert(2);
     let e0 = edge(a1, b1, a2, b2);
-    if (e0 ^ e2) < 0 && e0 != 0 && e2 != 0 {
+    // Two strict signs that differ: not covered (module docs, early exit).
+    if (e0 > 0 && e2 < 0) || (e0 < 0 && e2 > 0) {
         return None;
     }
-    let wpos = bad >= 0;
     let e1 = edge(a2, b2, a0, b0);
-    let e = [e0, e1, e2];
-    let ab = [(a0, b0), (a1, b1), (a2, b2)];
-    if !wpos || e0 == 0 || e1 == 0 || e2 == 0 {
-        return rare(m, tq, late, ab, e);
+    // The sign bit of `n0 | n1 | n2` is set iff some w ≤ 0.
+    if (n0 | n1 | n2) < 0 || e0 == 0 || e1 == 0 || e2 == 0 {
+        return rare(m, tq, late, &ab);
     }
-    let sign = if e0 & e1 & e2 < 0 {
-        -1
-    } else if e0 | e1 | e2 >= 0 {
-        1
-    } else {
+    // Every w > 0 and every E' ≠ 0: covered iff the three strict signs agree (`e0`, `e2`
+    // agree here).
+    if (e0 ^ e1) < 0 {
         return None;
-    };
-    hit(m, tq, late, &e, sign)
+    }
+    hit(m, tq, late, &ab)
 }
 
-/// A covered sample's depth on the fast datapath: (w, z) recomputed ([`wz_fast`]) and
-/// [`depth`]. Out of line: nothing of it stays live through the common miss.
+/// The edge values `[E'_0, E'_1, E'_2]` of the offsets `[a0, b0, a1, b1, a2, b2]`.
+#[inline(always)]
+fn edges(ab: &[i32; 6]) -> [i64; 3] {
+    let [a0, b0, a1, b1, a2, b2] = *ab;
+    [
+        edge(a1, b1, a2, b2),
+        edge(a2, b2, a0, b0),
+        edge(a0, b0, a1, b1),
+    ]
+}
+
+/// A covered sample's depth on the fast datapath (every w > 0, the three E' of one strict
+/// sign): the edges and (w, z) recomputed ([`wz_fast`]) and [`depth`]. Out of line: nothing of
+/// it stays live through the common miss.
 #[inline(never)]
-fn hit(m: &MotionSetup, tq: i32, late: bool, e: &[i64; 3], sign: i64) -> Option<Hit> {
+fn hit(m: &MotionSetup, tq: i32, late: bool, ab: &[i32; 6]) -> Option<Hit> {
+    let e = edges(ab);
+    let sign = if e[0] < 0 { -1 } else { 1 };
     Some(Hit {
-        depth: depth_out(e, &wz_fast(m, tq, late), sign),
+        depth: depth_out(&e, &wz_fast(m, tq, late), sign),
     })
 }
 
-/// The rare path of the fast datapath (some w ≤ 0 or some E' = 0): w recomputed,
-/// `bounded::decide_slow` (orientation, fill rule), the depth on a hit.
+/// The rare path of the fast datapath (some w ≤ 0 or some E' = 0): the edges and w
+/// recomputed, `bounded::decide_slow` (orientation, fill rule), the depth on a hit.
 #[cold]
 #[inline(never)]
-fn rare(m: &MotionSetup, tq: i32, late: bool, ab: [(i32, i32); 3], e: [i64; 3]) -> Option<Hit> {
+fn rare(m: &MotionSetup, tq: i32, late: bool, ab: &[i32; 6]) -> Option<Hit> {
+    let e = edges(ab);
     let wz = wz_fast(m, tq, late);
-    let [(a0, b0), (a1, b1), (a2, b2)] = ab;
+    let [a0, b0, a1, b1, a2, b2] = *ab;
     let [(w0, _), (w1, _), (w2, _)] = wz;
     let (sign, covered, _) = decide_slow(e, [(a0, b0, w0), (a1, b1, w1), (a2, b2, w2)]);
     covered.then(|| Hit {

@@ -96,6 +96,9 @@ pub struct MotionSetup {
     pub(crate) c: [[[i64; 2]; 3]; 2],
     /// static path: per vertex `(w, z)` (|.| ≤ 2^29)
     pub(crate) wz: [(i32, i32); 3],
+    /// the moving fast path's per shutter end, per vertex data (`c`, `d` and `base` regrouped
+    /// so that one vertex is read with four LDRD)
+    pub(crate) hot: [[Vfast; 3]; 2],
     slabs: [PixelRect; SLABS],
     footprint: PixelRect,
     class: Class,
@@ -119,6 +122,21 @@ impl MotionSetup {
     pub fn viewport(&self) -> Viewport {
         self.vp
     }
+}
+
+/// One vertex at one shutter end for the moving fast path ([`MotionSetup`]'s `c`, `d` and
+/// `base` fields regrouped; the same ranges).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(crate) struct Vfast {
+    /// `swq·x + 2^31`, `shq·y + 2^31` of the base vertex
+    pub(crate) cx: i64,
+    pub(crate) cy: i64,
+    /// `r − q` of x, y, w
+    pub(crate) dx: i32,
+    pub(crate) dy: i32,
+    pub(crate) dw: i32,
+    /// the base vertex's w
+    pub(crate) bw: i32,
 }
 
 /// Result of [`motion_setup`]. (No heap in core, so the large variant stays inline.)
@@ -315,6 +333,19 @@ pub fn motion_setup<P: Precision>(
         })
     });
     let wz = b0.map(|v| (v[2], v[3]));
+    let mut hot = [[Vfast::default(); 3]; 2];
+    for ((h, ce), be) in hot.iter_mut().zip(c).zip(base) {
+        for (((hv, [cx, cy]), bv), dv) in h.iter_mut().zip(ce).zip(be).zip(d) {
+            *hv = Vfast {
+                cx,
+                cy,
+                dx: dv[0],
+                dy: dv[1],
+                dw: dv[2],
+                bw: bv[2],
+            };
+        }
+    }
     ops.add_setup(12);
     Ok(MotionOutcome::Visible(MotionSetup {
         base,
@@ -330,6 +361,7 @@ pub fn motion_setup<P: Precision>(
         still,
         c,
         wz,
+        hot,
         slabs,
         footprint,
         class,
