@@ -41,11 +41,12 @@ const HALF: i32 = 1 << (TUV_FRAC - 1);
 const ONE: i32 = 1 << TUV_FRAC;
 
 /// `a_i·b_j − a_j·b_i`: an edge value (step 5), |a|, |b| < 2^30: each product < 2^60, the
-/// difference < 2^61 (i64).
+/// sum < 2^61 (i64). Written `a_i·b_j + a_j·(−b_i)` (−b_i exact: |b_i| < 2^30), the same
+/// integer, so that it is one SMULL and one SMLAL.
 #[inline(always)]
 #[allow(clippy::arithmetic_side_effects)]
 fn edge(ai: i32, bi: i32, aj: i32, bj: i32) -> i64 {
-    i64::from(ai) * i64::from(bj) - i64::from(aj) * i64::from(bi)
+    i64::from(ai) * i64::from(bj) + i64::from(aj) * i64::from(-bi)
 }
 
 /// The motion-only unit's sample test at screen position `pos` and sample `s`: bit for bit
