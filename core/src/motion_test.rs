@@ -293,3 +293,46 @@ fn general(m: &MotionSetup, xs: i32, ys: i32, t: i32) -> Option<Hit> {
         depth: depth_out(&e, &wz, sign),
     })
 }
+
+#[cfg(test)]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+mod tests {
+    use super::*;
+    use crate::testrng::{cases, seed, Rng};
+
+    /// [`edge`] (`a_i·b_j + a_j·(−b_i)`) against the bounded test's form `a_i·b_j − a_j·b_i`
+    /// evaluated in i128, bit for bit: every combination of the offset corners (±(2^30 − 1),
+    /// ±2^29, ±1, 0) and seeded random offsets with |.| < 2^30. Prints the inputs and both
+    /// values (decimal and hex) on a failure.
+    #[test]
+    fn edge_is_the_difference_of_products() {
+        let s = seed();
+        let check = |ai: i32, bi: i32, aj: i32, bj: i32| {
+            let want = i128::from(ai) * i128::from(bj) - i128::from(aj) * i128::from(bi);
+            let got = edge(ai, bi, aj, bj);
+            assert_eq!(
+                i128::from(got),
+                want,
+                "UVT_SEED={s}: a_i {ai} ({ai:#x}) b_i {bi} ({bi:#x}) a_j {aj} ({aj:#x}) b_j {bj} \
+                 ({bj:#x}): got {got} ({got:#x}), want {want} ({want:#x})"
+            );
+        };
+        let m = (1 << 30) - 1;
+        let corners = [m, -m, 1 << 29, -(1 << 29), 1, -1, 0];
+        for &ai in &corners {
+            for &bi in &corners {
+                for &aj in &corners {
+                    for &bj in &corners {
+                        check(ai, bi, aj, bj);
+                    }
+                }
+            }
+        }
+        let mut rng = Rng(s);
+        for _ in 0..cases(200_000, 5_000_000) {
+            let mut v = || rng.signed(i64::from(m)) as i32;
+            let (ai, bi, aj, bj) = (v(), v(), v(), v());
+            check(ai, bi, aj, bj);
+        }
+    }
+}
