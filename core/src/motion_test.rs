@@ -92,10 +92,14 @@ pub fn motion_test<P: Precision>(m: &MotionSetup, pos: ScreenPos, s: &Sample) ->
     let vert = |v: &Vfast| {
         let w = mla_hi(tq, v.dw, v.bw);
         let sum = |c: i64, e: i32, d: i32, ng: i32| {
-            ((c + i64::from(e) * i64::from(mla_hi(tq, d, 0)) + i64::from(ng) * i64::from(w))
-                >> 32) as i32
+            ((c + i64::from(e) * i64::from(mla_hi(tq, d, 0)) + i64::from(ng) * i64::from(w)) >> 32)
+                as i32
         };
-        (sum(v.cx, swq, v.dx, ngxq), sum(v.cy, shq, v.dy, ngyq), w - 1)
+        (
+            sum(v.cx, swq, v.dx, ngxq),
+            sum(v.cy, shq, v.dy, ngyq),
+            w - 1,
+        )
     };
     let (a0, b0, n0) = vert(v0);
     let (a1, b1, n1) = vert(v1);
@@ -261,7 +265,12 @@ fn general(m: &MotionSetup, xs: i32, ys: i32, t: i32) -> Option<Hit> {
     let at = |qk: &[i32; 4], rk: &[i32; 4]| {
         let [qx, qy, qw, qz] = *qk;
         let [rx, ry, rw, rz] = *rk;
-        [lerp(qx, rx, t), lerp(qy, ry, t), lerp(qw, rw, t), lerp(qz, rz, t)]
+        [
+            lerp(qx, rx, t),
+            lerp(qy, ry, t),
+            lerp(qw, rw, t),
+            lerp(qz, rz, t),
+        ]
     };
     let ([q0, q1, q2], [r0, r1, r2]) = (q, r);
     let p = [at(q0, r0), at(q1, r1), at(q2, r2)];
