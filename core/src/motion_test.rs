@@ -226,7 +226,7 @@ fn still(m: &MotionSetup, xs: i32, ys: i32) -> Option<Hit> {
 /// The step-1 (w, z) of every vertex on the fast datapath (hits only, out of line: w and z
 /// are not kept live through the common miss). |d| ≤ 2^30, |tq| < 2^31 (as in
 /// [`motion_test`]).
-#[inline(never)]
+#[inline(always)]
 #[allow(clippy::indexing_slicing)]
 fn wz_fast(m: &MotionSetup, tq: i32, late: bool) -> [(i32, i32); 3] {
     let b = if late { &m.base[1] } else { &m.base[0] };
