@@ -188,7 +188,7 @@ fn still(m: &MotionSetup, xs: i32, ys: i32) -> Option<Hit> {
     // [_; 3] and [_; 2] indexed by constants.
     let v = |k: usize| {
         let w = m.wz[k].0;
-        let [cx, cy] = m.c[0][k];
+        let Vfast { cx, cy, .. } = m.hot[0][k];
         let hi = |c: i64, ng: i32| ((c + i64::from(ng) * i64::from(w)) >> 32) as i32;
         (hi(cx, ngxq), hi(cy, ngyq))
     };

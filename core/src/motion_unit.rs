@@ -91,13 +91,11 @@ pub struct MotionSetup {
     /// a static triangle (`r = q`) with every w > 0 on a `fast` viewport: the sample test
     /// takes [`crate::motion_test`]'s static path with the constants below
     pub(crate) still: bool,
-    /// per shutter end, per vertex `swq·x + 2^31`, `shq·y + 2^31` of the base vertex
-    /// (|.| < 2^60 + 2^31; meaningful when `fast`)
-    pub(crate) c: [[[i64; 2]; 3]; 2],
     /// static path: per vertex `(w, z)` (|.| ≤ 2^29)
     pub(crate) wz: [(i32, i32); 3],
-    /// the moving fast path's per shutter end, per vertex data (`c`, `d` and `base` regrouped
-    /// so that one vertex is read with four LDRD)
+    /// per shutter end, per vertex: the fast datapath's data (`swq·x + 2^31`, `shq·y + 2^31`
+    /// of the base vertex, meaningful when `fast`; `d`'s and `base`'s x, y, w regrouped so that
+    /// one vertex is read with a few LDRD / LDM)
     pub(crate) hot: [[Vfast; 3]; 2],
     slabs: [PixelRect; SLABS],
     footprint: PixelRect,
@@ -124,18 +122,17 @@ impl MotionSetup {
     }
 }
 
-/// One vertex at one shutter end for the moving fast path ([`MotionSetup`]'s `c`, `d` and
-/// `base` fields regrouped; the same ranges).
+/// One vertex at one shutter end for the fast datapath (`MotionSetup::hot`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub(crate) struct Vfast {
-    /// `swq·x + 2^31`, `shq·y + 2^31` of the base vertex
+    /// `swq·x + 2^31`, `shq·y + 2^31` of the base vertex (|.| < 2^60 + 2^31)
     pub(crate) cx: i64,
     pub(crate) cy: i64,
-    /// `r − q` of x, y, w
+    /// `r − q` of x, y, w (|.| ≤ 2^30)
     pub(crate) dx: i32,
     pub(crate) dy: i32,
     pub(crate) dw: i32,
-    /// the base vertex's w
+    /// the base vertex's w (|.| ≤ 2^29)
     pub(crate) bw: i32,
 }
 
@@ -359,7 +356,6 @@ pub fn motion_setup<P: Precision>(
         fast,
         shift,
         still,
-        c,
         wz,
         hot,
         slabs,
