@@ -784,7 +784,7 @@ pub mod cost {
                                 } else {
                                     match black_box(&e) {
                                         MotionEntry::Motion(m) => {
-                                            black_box(motion_test(m, pos, smp));
+                                            black_box(motion_test::<P>(m, pos, smp));
                                         }
                                         MotionEntry::Static(s) if P::PLANAR => {
                                             black_box(static_test(s, pos));

@@ -28,7 +28,9 @@ fn div64_32(u: u64, v: u32) -> u32 {
     let (u1, u0) = ((u >> 32) as u32, u as u32);
     let (vn1, vn0) = (v >> 16, v & 0xffff);
     let digit = |hi: u32, lo: u32| {
-        let mut q = hi / vn1;
+        // vn1 ≥ 2^15 (v normalized): the checked form never takes its fallback; it links no
+        // division-by-zero panic (a plain `/` does: the compiler cannot see vn1 ≠ 0).
+        let mut q = hi.checked_div(vn1).unwrap_or(u32::MAX);
         let mut rhat = hi - q * vn1;
         if q >= B || q * vn0 > rhat * B + lo {
             q -= 1;

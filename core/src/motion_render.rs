@@ -157,7 +157,7 @@ impl<const N: usize, P: Precision> MotionRenderer<N, P> {
                             if (mask >> slab_of(smp.t().to_bits())) & 1 == 0 {
                                 return Skip;
                             }
-                            Run(motion_test(m, pos, smp))
+                            Run(motion_test::<P>(m, pos, smp))
                         });
                     }
                     MotionEntry::Static(_) => {}

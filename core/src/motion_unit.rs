@@ -91,11 +91,12 @@ pub struct MotionSetup {
     /// a static triangle (`r = q`) with every w > 0 on a `fast` viewport: the sample test
     /// takes [`crate::motion_test`]'s static path with the constants below
     pub(crate) still: bool,
-    /// per shutter end, per vertex `swq·x + 2^31`, `shq·y + 2^31` of the base vertex
-    /// (|.| < 2^60 + 2^31; meaningful when `fast`)
-    pub(crate) c: [[[i64; 2]; 3]; 2],
     /// static path: per vertex `(w, z)` (|.| ≤ 2^29)
     pub(crate) wz: [(i32, i32); 3],
+    /// per shutter end, per vertex: the fast datapath's data (`swq·x + 2^31`, `shq·y + 2^31`
+    /// of the base vertex, meaningful when `fast`; `d`'s and `base`'s x, y, w regrouped so that
+    /// one vertex is read with a few LDRD / LDM)
+    pub(crate) hot: [[Vfast; 3]; 2],
     slabs: [PixelRect; SLABS],
     footprint: PixelRect,
     class: Class,
@@ -119,6 +120,20 @@ impl MotionSetup {
     pub fn viewport(&self) -> Viewport {
         self.vp
     }
+}
+
+/// One vertex at one shutter end for the fast datapath (`MotionSetup::hot`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(crate) struct Vfast {
+    /// `swq·x + 2^31`, `shq·y + 2^31` of the base vertex (|.| < 2^60 + 2^31)
+    pub(crate) cx: i64,
+    pub(crate) cy: i64,
+    /// `r − q` of x, y, w (|.| ≤ 2^30)
+    pub(crate) dx: i32,
+    pub(crate) dy: i32,
+    pub(crate) dw: i32,
+    /// the base vertex's w (|.| ≤ 2^29)
+    pub(crate) bw: i32,
 }
 
 /// Result of [`motion_setup`]. (No heap in core, so the large variant stays inline.)
@@ -315,6 +330,19 @@ pub fn motion_setup<P: Precision>(
         })
     });
     let wz = b0.map(|v| (v[2], v[3]));
+    let mut hot = [[Vfast::default(); 3]; 2];
+    for ((h, ce), be) in hot.iter_mut().zip(c).zip(base) {
+        for (((hv, [cx, cy]), bv), dv) in h.iter_mut().zip(ce).zip(be).zip(d) {
+            *hv = Vfast {
+                cx,
+                cy,
+                dx: dv[0],
+                dy: dv[1],
+                dw: dv[2],
+                bw: bv[2],
+            };
+        }
+    }
     ops.add_setup(12);
     Ok(MotionOutcome::Visible(MotionSetup {
         base,
@@ -328,8 +356,8 @@ pub fn motion_setup<P: Precision>(
         fast,
         shift,
         still,
-        c,
         wz,
+        hot,
         slabs,
         footprint,
         class,

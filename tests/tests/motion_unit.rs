@@ -330,7 +330,7 @@ fn sample_test_is_bounded_test_and_slab_boxes_conservative() {
                     let want = bounded_test(&full, pos, s, &mut Ops::default());
                     let Some(h) = want else {
                         if let MotionOutcome::Visible(m) = &out {
-                            let got = motion_test(m, pos, s);
+                            let got = motion_test::<P>(m, pos, s);
                             assert!(got.is_none(), "{name}: motion covers, bounded does not");
                         }
                         return;
@@ -360,7 +360,7 @@ fn sample_test_is_bounded_test_and_slab_boxes_conservative() {
                             m.slab(j)
                         ));
                     }
-                    match motion_test(m, pos, s) {
+                    match motion_test::<P>(m, pos, s) {
                         Some(g) if g == h => {}
                         g => fail(&format!("motion test {g:?}")),
                     }
@@ -438,7 +438,7 @@ fn domain_corners_are_exact_and_conservative() {
                                 want.is_none() || in_box,
                                 "case {i}: covered ({px}, {py}) t {t} outside its slab box"
                             );
-                            motion_test(m, pos, &s)
+                            motion_test::<DefaultPrecision>(m, pos, &s)
                         }
                         MotionOutcome::Outside => None,
                     };
