@@ -17,9 +17,7 @@ use crate::sample::{Hit, ScreenPos};
 use crate::setup::{classify, Class, Cull};
 use crate::static_unit::{static_setup, static_test, static_tile, StaticOutcome, StaticSetup};
 use crate::stats::{Ops, Stats};
-use crate::tile::{
-    check_tile_args, tile_size, walk_screen, DepthTest, PixelStats, Prim, TileBuffer,
-};
+use crate::tile::{tile_screen, walk_screen, DepthTest, PixelStats, Prim, TileBuffer};
 use crate::unit::{MotionOnly, Unit};
 
 /// Operations counted per sample test and per hit: the bounded test's count for the motion
@@ -113,15 +111,8 @@ impl<const N: usize, P: Precision> MotionRenderer<N, P> {
         clear: Rgb888,
         fb: &mut TileBuffer<TW, TH, S>,
     ) -> Result<(), Error> {
-        check_tile_args::<TW, TH, S>(pattern, bounds_tile, x0, y0, &self.vp)?;
+        let screen = tile_screen::<TW, TH, S>(pattern, bounds_tile, x0, y0, &self.vp)?;
         fb.clear_fill(clear);
-        let (tw, th) = tile_size::<TW, TH>();
-        let screen = PixelRect {
-            x0,
-            y0,
-            x1: x0.saturating_add(tw).min(self.vp.w),
-            y1: y0.saturating_add(th).min(self.vp.h),
-        };
         let MotionRenderer { setups, stats, .. } = self;
         let mut ops = Ops::default();
         for (entry, color) in setups.iter() {

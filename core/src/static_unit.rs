@@ -70,9 +70,7 @@ use crate::planar::{depth, planar_setup_with};
 use crate::sample::{Hit, ScreenPos};
 use crate::setup::{classify, Class, Cull};
 use crate::stats::{Ops, Stats};
-use crate::tile::{
-    check_tile_args, tile_size, walk_screen, DepthTest, PixelStats, Prim, TileBuffer,
-};
+use crate::tile::{tile_screen, walk_screen, DepthTest, PixelStats, Prim, TileBuffer};
 use crate::unit::{StaticOnly, Unit};
 
 /// Whether precision `P` on unit `U` renders on this module's path: a planar precision on the
@@ -458,15 +456,8 @@ impl<const N: usize> StaticRenderer<N> {
         clear: Rgb888,
         fb: &mut TileBuffer<TW, TH, S>,
     ) -> Result<(), Error> {
-        check_tile_args::<TW, TH, S>(pattern, bounds_tile, x0, y0, &self.vp)?;
+        let screen = tile_screen::<TW, TH, S>(pattern, bounds_tile, x0, y0, &self.vp)?;
         fb.clear_fill(clear);
-        let (tw, th) = tile_size::<TW, TH>();
-        let screen = PixelRect {
-            x0,
-            y0,
-            x1: x0.saturating_add(tw).min(self.vp.w),
-            y1: y0.saturating_add(th).min(self.vp.h),
-        };
         let StaticRenderer { setups, stats, .. } = self;
         let mut ops = Ops::default();
         for (setup, color) in setups.iter() {

@@ -266,8 +266,28 @@ pub(crate) fn walk_screen<const TW: usize, const TH: usize, const S: usize>(
 
 /// The argument checks of every renderer's `render_tile`: the pattern has `S` samples per
 /// pixel ([`Error::SppMismatch`]), the bounds tile is 1, 2, 4 or 8 and divides `TW` and `TH`
-/// ([`Error::BoundsTile`]), and (`x0`, `y0`) lies in `vp` ([`Error::PixelOutOfRange`]).
-pub(crate) fn check_tile_args<const TW: usize, const TH: usize, const S: usize>(
+/// ([`Error::BoundsTile`]), and (`x0`, `y0`) lies in `vp` ([`Error::PixelOutOfRange`]); then
+/// the tile's pixels clipped to the viewport.
+#[inline(always)]
+pub(crate) fn tile_screen<const TW: usize, const TH: usize, const S: usize>(
+    pattern: &SamplePattern<'_>,
+    bounds_tile: u8,
+    x0: u16,
+    y0: u16,
+    vp: &Viewport,
+) -> Result<PixelRect, Error> {
+    check_tile_args::<TW, TH, S>(pattern, bounds_tile, x0, y0, vp)?;
+    let (tw, th) = tile_size::<TW, TH>();
+    Ok(PixelRect {
+        x0,
+        y0,
+        x1: x0.saturating_add(tw).min(vp.w),
+        y1: y0.saturating_add(th).min(vp.h),
+    })
+}
+
+/// The checks of [`tile_screen`].
+fn check_tile_args<const TW: usize, const TH: usize, const S: usize>(
     pattern: &SamplePattern<'_>,
     bounds_tile: u8,
     x0: u16,
@@ -389,15 +409,8 @@ impl<B: BoundsStrategy, const N: usize, P: Precision, U: Unit> Renderer<B, N, P,
         clear: Rgb888,
         fb: &mut TileBuffer<TW, TH, S>,
     ) -> Result<(), Error> {
-        check_tile_args::<TW, TH, S>(pattern, bounds_tile, x0, y0, &self.vp)?;
+        let screen = tile_screen::<TW, TH, S>(pattern, bounds_tile, x0, y0, &self.vp)?;
         fb.clear(clear);
-        let (tw, th) = tile_size::<TW, TH>();
-        let screen = PixelRect {
-            x0,
-            y0,
-            x1: x0.saturating_add(tw).min(self.vp.w),
-            y1: y0.saturating_add(th).min(self.vp.h),
-        };
         let b = u16::from(bounds_tile);
         let Renderer {
             bounds,
