@@ -12,11 +12,10 @@ use serde::Serialize;
 use sha2::{Digest, Sha256};
 
 /// Version of this format (bump on any layout change). 2: the bounded sample-test records
-/// `bsample_{in,out}` (self-contained, no setup index). The planar sample-test records
-/// `psample_{in,out}` were added to version 2 without a bump: no existing file's layout or
-/// bytes changed, and a checker without them refuses a set that has them by name (its layout
-/// of `psample_in` has 0 words, the manifest's 28).
-pub const FORMAT_VERSION: u32 = 2;
+/// `bsample_{in,out}` (self-contained, no setup index). 3: the planar sample-test records
+/// `psample_{in,out}` (no earlier file's layout or bytes changed; a version-2 checker refuses
+/// the set by its version instead of skipping files it does not know).
+pub const FORMAT_VERSION: u32 = 3;
 
 /// One field of a record.
 #[derive(Clone, Debug, Serialize, PartialEq, Eq)]
