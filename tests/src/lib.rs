@@ -4,6 +4,7 @@
 
 pub mod icarus;
 pub mod kinds;
+pub mod tiles;
 
 use uvt_core::bounds::{BoundsStrategy, TileBounds};
 use uvt_core::{

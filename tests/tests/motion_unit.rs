@@ -134,40 +134,10 @@ fn compare<P: Precision>(
             .map_err(|e| format!("full unit tile ({x0}, {y0}): {e}"))?;
         mo.render_tile(x0, y0, pat, bt, clear, &mut fb)
             .map_err(|e| format!("motion unit tile ({x0}, {y0}): {e}"))?;
-        for ty in 0..8usize {
-            for tx in 0..8usize {
-                let (pa, pb) = (fa.pixel_stats(tx, ty), fb.pixel_stats(tx, ty));
-                let (x, y) = (x0 as usize + tx, y0 as usize + ty);
-                if (pa.covered, pa.written) != (pb.covered, pb.written) {
-                    return Err(format!(
-                        "pixel ({x}, {y}): covered/written full {}/{}, motion {}/{}",
-                        pa.covered, pa.written, pb.covered, pb.written
-                    ));
-                }
-                for s in 0..4 {
-                    let (da, db) = (fa.depth(tx, ty, s), fb.depth(tx, ty, s));
-                    let (ca, cb) = (fa.sample_color(tx, ty, s), fb.sample_color(tx, ty, s));
-                    if da != db || ca != cb {
-                        let hex = |d: Option<i32>| d.map(|d| format!("{d} ({d:#010x})"));
-                        return Err(format!(
-                            "pixel ({x}, {y}) sample {s}: full depth {:?} color {ca:?}, \
-                             motion depth {:?} color {cb:?}",
-                            hex(da),
-                            hex(db)
-                        ));
-                    }
-                }
-            }
-        }
+        uvt_tests::tiles::same_tile(&fa, &fb, x0, y0, "motion")?;
     }
-    let (a, b) = (full.stats, mo.stats);
-    let key = |s: uvt_core::Stats| (s.samples_covered, s.samples_written, s.samples_occluded);
-    if tiles.is_none() && key(a) != key(b) {
-        return Err(format!(
-            "covered/written/occluded: full {:?}, motion {:?}",
-            key(a),
-            key(b)
-        ));
+    if tiles.is_none() {
+        uvt_tests::tiles::same_counts(full.stats, mo.stats, "motion")?;
     }
     Ok(())
 }
