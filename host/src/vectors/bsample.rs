@@ -12,8 +12,8 @@ use rand::{Rng, SeedableRng};
 use serde::Serialize;
 use uvt_core::setup::classify;
 use uvt_core::{
-    bounded_eval, setup_with, BoundedPrecision, Lens, Ops, Outcome, Sample, ScreenPos, Setup,
-    SubPixel, Time, Triangle, Vertex, Viewport,
+    bounded_eval, setup_with, BoundedPrecision, Lens, Ops, Outcome, Precision, Sample, ScreenPos,
+    Setup, SubPixel, Time, Triangle, Vertex, Viewport,
 };
 
 use super::format::Rec;
@@ -300,9 +300,10 @@ fn rand_sample(rng: &mut rand_pcg::Pcg64) -> Sample {
     .expect("drawn inside the domain")
 }
 
-/// The footprint of the bounded setup, or the whole viewport for a culled triangle.
-fn area(t: &Triangle, vp: Viewport) -> (u32, u32, u32, u32) {
-    match setup_with::<BoundedPrecision>(t, vp, &mut Ops::default()) {
+/// The footprint of the setup at precision `P` in 1/256 px, or the whole viewport for a
+/// culled triangle.
+pub(super) fn area<P: Precision>(t: &Triangle, vp: Viewport) -> (u32, u32, u32, u32) {
+    match setup_with::<P>(t, vp, &mut Ops::default()) {
         Outcome::Visible(s) => {
             let f = s.footprint();
             (
@@ -324,7 +325,7 @@ pub fn unit(tris: &[(Triangle, Viewport)], seed: u64, g: Grid) -> BSet {
     let mut set = BSet::default();
     let extreme = [(0, -65536, -65536), (65536, 65536, 65536), (32768, 0, 0)];
     for (t, vp) in tris {
-        let (x0, y0, x1, y1) = area(t, *vp);
+        let (x0, y0, x1, y1) = area::<BoundedPrecision>(t, *vp);
         let (sw, sh) = (256 * vp.width() as u32, 256 * vp.height() as u32);
         for _ in 0..8 {
             let p = ScreenPos {
@@ -414,7 +415,7 @@ pub fn frame(
 ) -> BSet {
     let mut set = BSet::default();
     for t in tris {
-        let (x0, y0, x1, y1) = area(t, vp);
+        let (x0, y0, x1, y1) = area::<BoundedPrecision>(t, vp);
         let mut all = Vec::new();
         for py in (y0 / 256) as u16..(y1 / 256) as u16 {
             for px in (x0 / 256) as u16..(x1 / 256) as u16 {

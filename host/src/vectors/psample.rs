@@ -17,10 +17,7 @@
 use rand::{Rng, SeedableRng};
 use serde::Serialize;
 use uvt_core::planar::{planar_eval, PlanarEdges, PlanarEval};
-use uvt_core::{
-    setup_with, Ops, Outcome, PlanarPrecision, SamplePattern, ScreenPos, Setup, Triangle, Vertex,
-    Viewport,
-};
+use uvt_core::{Ops, PlanarPrecision, SamplePattern, ScreenPos, Setup, Triangle, Vertex, Viewport};
 
 use super::format::Rec;
 
@@ -349,23 +346,6 @@ pub fn boundary_search(set: &mut PSet, rng: &mut rand_pcg::Pcg64, per: u64) {
     }
 }
 
-/// The footprint of the planar setup in 1/256 px, or the whole viewport when setup culls the
-/// triangle as outside.
-fn area(t: &Triangle, vp: Viewport) -> (u32, u32, u32, u32) {
-    match setup_with::<PlanarPrecision>(t, vp, &mut Ops::default()) {
-        Outcome::Visible(s) => {
-            let f = s.footprint();
-            (
-                256 * f.x0 as u32,
-                256 * f.y0 as u32,
-                256 * f.x1 as u32,
-                256 * f.y1 as u32,
-            )
-        }
-        Outcome::Culled(_) => (0, 0, 256 * vp.width() as u32, 256 * vp.height() as u32),
-    }
-}
-
 /// Unit-level records for the named groups of static triangles `groups` (each triangle with
 /// its viewport): per triangle 4 random positions over its footprint, the four viewport
 /// corners, and positions found by search (coarse positions, whole, quarter and 1/256 pixels)
@@ -399,7 +379,7 @@ fn unit_tri(set: &mut PSet, rng: &mut rand_pcg::Pcg64, t: &Triangle, vp: Viewpor
             return;
         }
         set.cov.triangles += 1;
-        let (x0, y0, x1, y1) = area(t, *vp);
+        let (x0, y0, x1, y1) = super::bsample::area::<PlanarPrecision>(t, *vp);
         let (sw, sh) = (256 * vp.width() as u32, 256 * vp.height() as u32);
         for _ in 0..4 {
             let p = ScreenPos {
@@ -457,7 +437,7 @@ pub fn frame(tris: &[Triangle], vp: Viewport, pattern: &SamplePattern<'_>, per_t
             continue;
         }
         set.cov.triangles += 1;
-        let (x0, y0, x1, y1) = area(t, vp);
+        let (x0, y0, x1, y1) = super::bsample::area::<PlanarPrecision>(t, vp);
         let mut all = Vec::new();
         for py in (y0 / 256) as u16..(y1 / 256) as u16 {
             for px in (x0 / 256) as u16..(x1 / 256) as u16 {
