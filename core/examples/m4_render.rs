@@ -18,7 +18,7 @@
 //!
 //! **Per unit.** `UVT_M4_UNIT` at build time (`full`, `motion-only`, `defocus-only`,
 //! `static-only`; an unknown name fails the build) makes it the program of that unit variant
-//! (`uvt_core::unit`) instead: only the default configuration (`DefaultPrecision`), only the
+//! (`uvt_core::config::unit`) instead: only the default configuration (`DefaultPrecision`), only the
 //! demo prims the unit accepts, rendered with `Renderer<Laine2011, _, DefaultPrecision, U>`
 //! (checksum and counters) and the cost lines `setup_unit`, `bounds_unit`, `sample_unit` of
 //! those prims on `U`. Nothing of the precision sweep or the exact configuration is in it, so
@@ -109,12 +109,12 @@ macro_rules! with_sel {
 /// The unit chosen at build time (`UVT_M4_UNIT`); `None`: the precision program.
 const UNIT: Option<&str> = option_env!("UVT_M4_UNIT");
 
-/// Index of `UNIT` in `uvt_core::unit::UNIT_NAMES` (0 without `UVT_M4_UNIT`); an unknown name
+/// Index of `UNIT` in `uvt_core::config::unit::UNIT_NAMES` (0 without `UVT_M4_UNIT`); an unknown name
 /// is a build error.
 const UNIT_SEL: usize = match UNIT {
     None => 0,
     Some(u) => {
-        let names = uvt_core::unit::UNIT_NAMES;
+        let names = uvt_core::config::unit::UNIT_NAMES;
         let mut i = 0;
         while i < names.len() && !same(names[i], u) {
             i += 1;
@@ -144,7 +144,7 @@ const EMPTY: bool = option_env!("UVT_M4_EMPTY").is_some();
 const PRIMS_SEL: usize = match option_env!("UVT_M4_PRIMS") {
     None => UNIT_SEL,
     Some(u) => {
-        let names = uvt_core::unit::UNIT_NAMES;
+        let names = uvt_core::config::unit::UNIT_NAMES;
         let mut i = 0;
         while i < names.len() && !same(names[i], u) {
             i += 1;
@@ -466,7 +466,7 @@ mod target {
             o.s("unit_prec ").s(crate::PREC).s("\n");
         }
         o.s("prims ")
-            .s(uvt_core::unit::UNIT_NAMES[crate::PRIMS_SEL])
+            .s(uvt_core::config::unit::UNIT_NAMES[crate::PRIMS_SEL])
             .s("\n");
         let c = ticks(syst, || {
             with_unit!(demo::cost::setup_all_on_with, 20).unwrap_or(0)
@@ -543,7 +543,7 @@ fn main() {
         }
         println!("unit {name}");
         println!("unit_prec {PREC}");
-        println!("prims {}", uvt_core::unit::UNIT_NAMES[PRIMS_SEL]);
+        println!("prims {}", uvt_core::config::unit::UNIT_NAMES[PRIMS_SEL]);
         return;
     }
     match demo::render() {

@@ -9,18 +9,22 @@
 
 use embedded_graphics_core::pixelcolor::{Rgb888, RgbColor};
 
-use crate::bounds::{BoundsStrategy, Laine2011};
+use crate::bounds::laine::Laine2011;
+use crate::bounds::strategy::BoundsStrategy;
+use crate::config::formats::{Coord, Lens, SubPixel, Time};
+use crate::config::precision::DefaultPrecision;
+use crate::config::unit::Unit;
 use crate::error::Error;
-use crate::formats::DefaultPrecision;
-use crate::formats::{Coord, Lens, SubPixel, Time};
-use crate::input::{Sample, SamplePattern, Triangle, Vertex, Viewport};
-use crate::motion_render::MotionRenderer;
-use crate::sample::{sample_test, sample_test_unit, ScreenPos};
-use crate::setup::{classify, setup_unit, Outcome};
-use crate::static_unit::{static_setup, static_test, static_tile, StaticOutcome, StaticRenderer};
+use crate::input::{Prim, Sample, SamplePattern, Triangle, Vertex, Viewport};
+use crate::raster::renderer::Renderer;
+use crate::sample::pos::ScreenPos;
+use crate::sample::{sample_test, sample_test_unit};
+use crate::setup::{setup_unit, Outcome};
 use crate::stats::{Ops, Stats};
-use crate::tile::{Prim, Renderer};
-use crate::unit::Unit;
+use crate::units::motion_only::render::MotionRenderer;
+use crate::units::static_only::{
+    static_setup, static_test, static_tile, StaticOutcome, StaticRenderer,
+};
 
 /// Viewport side.
 pub const SIZE: u16 = 32;
@@ -230,7 +234,7 @@ pub struct DemoResult {
 
 /// Render the scene and return checksum and counters (the full unit, default precision).
 pub fn render() -> Result<DemoResult, Error> {
-    render_unit::<crate::unit::Full>()
+    render_unit::<crate::config::unit::Full>()
 }
 
 /// The scene's primitives that unit `U` accepts (in scene order), rendered at the default
@@ -250,12 +254,12 @@ pub fn render_on<U: Unit, V: Unit>() -> Result<DemoResult, Error> {
 
 /// [`render_on`] at precision `P` (e.g. the planar static configuration on each unit).
 #[inline(always)]
-pub fn render_on_with<P: crate::formats::Precision, U: Unit, V: Unit>() -> Result<DemoResult, Error>
-{
-    if const { crate::static_unit::specialised::<P, U>() } {
+pub fn render_on_with<P: crate::config::precision::Precision, U: Unit, V: Unit>(
+) -> Result<DemoResult, Error> {
+    if const { crate::units::static_only::specialised::<P, U>() } {
         return render_static::<V>();
     }
-    if const { crate::motion_unit::specialised::<P, U>() } {
+    if const { crate::units::motion_only::setup::specialised::<P, U>() } {
         return render_motion::<P, V>();
     }
     let prims = unit_prims::<V>()?;
@@ -296,7 +300,7 @@ fn fnv1a(image: &[[u8; 3]]) -> u32 {
 }
 
 /// [`render_on_with`] on the static-only unit at a planar precision
-/// ([`crate::static_unit::specialised`]): the prims unit `V` accepts on the static-specialised
+/// ([`crate::units::static_only::specialised`]): the prims unit `V` accepts on the static-specialised
 /// [`StaticRenderer`] (`Err(ClassNotInUnit)` unless all are static and in focus).
 #[inline(always)]
 fn render_static<V: Unit>() -> Result<DemoResult, Error> {
@@ -325,10 +329,10 @@ fn render_static<V: Unit>() -> Result<DemoResult, Error> {
 }
 
 /// [`render_on_with`] on the motion-only unit at a bounded precision
-/// ([`crate::motion_unit::specialised`]): the prims unit `V` accepts on the motion-specialised
+/// ([`crate::units::motion_only::setup::specialised`]): the prims unit `V` accepts on the motion-specialised
 /// [`MotionRenderer`] (`Err(ClassNotInUnit)` unless all are static or moving and in focus).
 #[inline(always)]
-fn render_motion<P: crate::formats::Precision, V: Unit>() -> Result<DemoResult, Error> {
+fn render_motion<P: crate::config::precision::Precision, V: Unit>() -> Result<DemoResult, Error> {
     let prims = unit_prims::<V>()?;
     let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLE_TABLE)?;
     let mut r = MotionRenderer::<NTRIS, P>::new(viewport()?, &prims)?;
@@ -357,7 +361,7 @@ fn render_motion<P: crate::formats::Precision, V: Unit>() -> Result<DemoResult, 
 pub fn unit_prims<U: Unit>() -> Result<heapless::Vec<Prim, NTRIS>, Error> {
     let mut out = heapless::Vec::new();
     for p in prims()? {
-        if U::accepts(classify(&p.tri)) {
+        if U::accepts(p.tri.class()) {
             // At most NTRIS of NTRIS prims: the push cannot fail.
             out.push(p)
                 .map_err(|_| Error::TooManyTriangles { capacity: NTRIS })?;
@@ -373,13 +377,13 @@ pub mod cost {
     use core::hint::black_box;
 
     /// Setup (plus the Laine coefficient preparation) of every triangle, `reps` times, at the
-    /// exact configuration ([`crate::formats::Exact`]; `_with` for any other).
+    /// exact configuration ([`crate::config::precision::Exact`]; `_with` for any other).
     pub fn setup_all(reps: u32) -> Result<u64, Error> {
-        setup_all_with::<crate::formats::Exact>(reps)
+        setup_all_with::<crate::config::precision::Exact>(reps)
     }
 
     /// [`setup_all`] at precision `P` (e.g. the bounded test's ε-widened setup).
-    pub fn setup_all_with<P: crate::formats::Precision>(reps: u32) -> Result<u64, Error> {
+    pub fn setup_all_with<P: crate::config::precision::Precision>(reps: u32) -> Result<u64, Error> {
         let setup = crate::setup::setup_with::<P>;
         let prims = prims()?;
         let vp = viewport()?;
@@ -399,11 +403,13 @@ pub mod cost {
     /// Bounds of every 2×2 tile of every visible triangle's footprint, `reps` times (exact
     /// configuration).
     pub fn bounds_all(reps: u32) -> Result<u64, Error> {
-        bounds_all_with::<crate::formats::Exact>(reps)
+        bounds_all_with::<crate::config::precision::Exact>(reps)
     }
 
     /// [`bounds_all`] at precision `P`.
-    pub fn bounds_all_with<P: crate::formats::Precision>(reps: u32) -> Result<u64, Error> {
+    pub fn bounds_all_with<P: crate::config::precision::Precision>(
+        reps: u32,
+    ) -> Result<u64, Error> {
         let setup = crate::setup::setup_with::<P>;
         let prims = prims()?;
         let vp = viewport()?;
@@ -437,13 +443,13 @@ pub mod cost {
     }
 
     /// [`setup_all_on`] at precision `P`.
-    pub fn setup_all_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
+    pub fn setup_all_on_with<P: crate::config::precision::Precision, U: Unit, V: Unit>(
         reps: u32,
     ) -> Result<u64, Error> {
-        if const { crate::static_unit::specialised::<P, U>() } {
+        if const { crate::units::static_only::specialised::<P, U>() } {
             return static_cost::setup::<V>(reps);
         }
-        if const { crate::motion_unit::specialised::<P, U>() } {
+        if const { crate::units::motion_only::setup::specialised::<P, U>() } {
             return motion_cost::setup::<P, V>(reps);
         }
         let prims = unit_prims::<V>()?;
@@ -474,7 +480,7 @@ pub mod cost {
     }
 
     /// [`bounds_all_on`] at precision `P`.
-    pub fn bounds_all_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
+    pub fn bounds_all_on_with<P: crate::config::precision::Precision, U: Unit, V: Unit>(
         reps: u32,
     ) -> Result<u64, Error> {
         bounds_loop::<P, U, V, false>(reps)
@@ -482,7 +488,7 @@ pub mod cost {
 
     /// The harness alone: [`bounds_all_on_with`]'s loop (the same setups, cells and call
     /// count) with the tile bounds replaced by handing their arguments to `black_box`.
-    pub fn bounds_empty_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
+    pub fn bounds_empty_on_with<P: crate::config::precision::Precision, U: Unit, V: Unit>(
         reps: u32,
     ) -> Result<u64, Error> {
         bounds_loop::<P, U, V, true>(reps)
@@ -490,13 +496,13 @@ pub mod cost {
 
     /// The tile-bounds workload of [`bounds_all_on_with`]; `EMPTY`: the bounds replaced by
     /// handing their arguments to `black_box` (the loop's own cost).
-    fn bounds_loop<P: crate::formats::Precision, U: Unit, V: Unit, const EMPTY: bool>(
+    fn bounds_loop<P: crate::config::precision::Precision, U: Unit, V: Unit, const EMPTY: bool>(
         reps: u32,
     ) -> Result<u64, Error> {
-        if const { crate::static_unit::specialised::<P, U>() } {
+        if const { crate::units::static_only::specialised::<P, U>() } {
             return static_cost::bounds::<V, EMPTY>(reps);
         }
-        if const { crate::motion_unit::specialised::<P, U>() } {
+        if const { crate::units::motion_only::setup::specialised::<P, U>() } {
             return motion_cost::bounds::<P, V, EMPTY>(reps);
         }
         let prims = unit_prims::<V>()?;
@@ -535,7 +541,7 @@ pub mod cost {
     }
 
     /// [`samples_all_on`] at precision `P`.
-    pub fn samples_all_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
+    pub fn samples_all_on_with<P: crate::config::precision::Precision, U: Unit, V: Unit>(
         reps: u32,
     ) -> Result<u64, Error> {
         samples_loop::<P, U, V, false>(reps)
@@ -545,7 +551,7 @@ pub mod cost {
     /// call count) with the sample test replaced by handing its arguments to `black_box` — the
     /// measuring loop's own cost per call, to subtract from the sample test's (the same loop
     /// for every unit and path).
-    pub fn samples_empty_on_with<P: crate::formats::Precision, U: Unit, V: Unit>(
+    pub fn samples_empty_on_with<P: crate::config::precision::Precision, U: Unit, V: Unit>(
         reps: u32,
     ) -> Result<u64, Error> {
         samples_loop::<P, U, V, true>(reps)
@@ -553,13 +559,13 @@ pub mod cost {
 
     /// The sample-test workload of [`samples_all_on_with`]; `EMPTY`: the test replaced by
     /// handing its arguments to `black_box` (the loop's own cost).
-    fn samples_loop<P: crate::formats::Precision, U: Unit, V: Unit, const EMPTY: bool>(
+    fn samples_loop<P: crate::config::precision::Precision, U: Unit, V: Unit, const EMPTY: bool>(
         reps: u32,
     ) -> Result<u64, Error> {
-        if const { crate::static_unit::specialised::<P, U>() } {
+        if const { crate::units::static_only::specialised::<P, U>() } {
             return static_cost::samples::<V, EMPTY>(reps);
         }
-        if const { crate::motion_unit::specialised::<P, U>() } {
+        if const { crate::units::motion_only::setup::specialised::<P, U>() } {
             return motion_cost::samples::<P, V, EMPTY>(reps);
         }
         let prims = unit_prims::<V>()?;
@@ -596,7 +602,7 @@ pub mod cost {
     }
 
     /// The per-stage workloads on the static-specialised path
-    /// ([`crate::static_unit::specialised`]): the same prims, tiles, window and call counts as
+    /// ([`crate::units::static_only::specialised`]): the same prims, tiles, window and call counts as
     /// the general ones, on [`static_setup`], [`static_tile`] and [`static_test`].
     mod static_cost {
         use super::*;
@@ -674,24 +680,24 @@ pub mod cost {
     }
 
     /// The per-stage workloads on the motion-specialised path
-    /// ([`crate::motion_unit::specialised`]): the same prims, tiles, window and call counts as
+    /// ([`crate::units::motion_only::setup::specialised`]): the same prims, tiles, window and call counts as
     /// the general ones, on [`motion_setup`] (or, at a planar precision, [`static_setup`] for a
     /// static triangle, as [`MotionRenderer`] does), [`motion_tile`] and [`motion_test`].
     mod motion_cost {
         use super::*;
-        use crate::motion_render::MotionEntry;
-        use crate::motion_test::motion_test;
-        use crate::motion_unit::{motion_setup, motion_tile, MotionOutcome};
-        use crate::setup::Class;
+        use crate::config::class::Class;
+        use crate::units::motion_only::render::MotionEntry;
+        use crate::units::motion_only::sample::motion_test;
+        use crate::units::motion_only::setup::{motion_setup, motion_tile, MotionOutcome};
 
         /// The renderer's setup of one triangle: `None` when culled or refused.
         #[inline(always)]
-        fn entry<P: crate::formats::Precision>(
+        fn entry<P: crate::config::precision::Precision>(
             p: &Prim,
             vp: crate::input::Viewport,
             ops: &mut Ops,
         ) -> Option<MotionEntry> {
-            if P::PLANAR && classify(&p.tri) == Class::Static {
+            if P::PLANAR && p.tri.class() == Class::Static {
                 match static_setup(&p.tri, vp, ops) {
                     Ok(StaticOutcome::Visible(s)) => Some(MotionEntry::Static(s)),
                     _ => None,
@@ -705,7 +711,7 @@ pub mod cost {
         }
 
         /// Setup of the prims unit `V` accepts, `reps` times.
-        pub(super) fn setup<P: crate::formats::Precision, V: Unit>(
+        pub(super) fn setup<P: crate::config::precision::Precision, V: Unit>(
             reps: u32,
         ) -> Result<u64, Error> {
             let prims = unit_prims::<V>()?;
@@ -723,7 +729,7 @@ pub mod cost {
 
         /// The 2×2 tile cull over every visible prim's footprint, `reps` times (`EMPTY`: the
         /// harness alone, as [`bounds_empty_on_with`]).
-        pub(super) fn bounds<P: crate::formats::Precision, V: Unit, const EMPTY: bool>(
+        pub(super) fn bounds<P: crate::config::precision::Precision, V: Unit, const EMPTY: bool>(
             reps: u32,
         ) -> Result<u64, Error> {
             let prims = unit_prims::<V>()?;
@@ -762,7 +768,11 @@ pub mod cost {
 
         /// The sample window of every visible prim (`EMPTY`: the harness alone, as
         /// [`samples_empty_on_with`]).
-        pub(super) fn samples<P: crate::formats::Precision, V: Unit, const EMPTY: bool>(
+        pub(super) fn samples<
+            P: crate::config::precision::Precision,
+            V: Unit,
+            const EMPTY: bool,
+        >(
             reps: u32,
         ) -> Result<u64, Error> {
             let prims = unit_prims::<V>()?;
@@ -811,18 +821,20 @@ pub mod cost {
     /// Sample tests of every sample of a 8×8 pixel window for every visible triangle,
     /// `reps × SAMPLE_PASSES` times (exact configuration).
     pub fn samples_all(reps: u32) -> Result<u64, Error> {
-        samples_all_with::<crate::formats::Exact>(reps)
+        samples_all_with::<crate::config::precision::Exact>(reps)
     }
 
     /// [`samples_all`] at precision `P` (a `Bounded` one runs the bounded sample test).
-    pub fn samples_all_with<P: crate::formats::Precision>(reps: u32) -> Result<u64, Error> {
+    pub fn samples_all_with<P: crate::config::precision::Precision>(
+        reps: u32,
+    ) -> Result<u64, Error> {
         samples_class_with::<P>(reps, None)
     }
 
     /// [`samples_all_with`] restricted to the visible triangles of one class (`None`: all).
-    pub fn samples_class_with<P: crate::formats::Precision>(
+    pub fn samples_class_with<P: crate::config::precision::Precision>(
         reps: u32,
-        class: Option<crate::setup::Class>,
+        class: Option<crate::config::class::Class>,
     ) -> Result<u64, Error> {
         let setup = crate::setup::setup_with::<P>;
         let prims = prims()?;

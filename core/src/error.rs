@@ -133,14 +133,14 @@ pub enum Error {
     },
     /// A pixel outside the viewport was asked for.
     PixelOutOfRange,
-    /// A primitive's class needs an effect the renderer's [`crate::unit::Unit`] has no
+    /// A primitive's class needs an effect the renderer's [`crate::config::unit::Unit`] has no
     /// hardware for (e.g. a moving triangle in a static-only unit): refused, never rendered
     /// without the effect.
     ClassNotInUnit {
         /// index of the primitive in the list handed to the renderer
         index: usize,
-        /// its class (`setup::classify`)
-        class: crate::setup::Class,
+        /// its class (`Triangle::class`)
+        class: crate::config::class::Class,
         /// the unit's name (`Unit::NAME`)
         unit: &'static str,
     },

@@ -1,11 +1,15 @@
 //! Checked inputs: triangles, viewport, sample table. Constructors refuse anything outside the
 //! declared domain of `formats.rs`, so every later stage may rely on those ranges.
 
-use crate::error::{Error, Field, SampleField};
-use crate::formats::{
-    low_bits_mask, Coord, DefaultPrecision, Lens, Precision, SubPixel, Time, COORD_FRAC,
-    COORD_LIMIT_RAW, MAX_VIEWPORT, TUV_FRAC, TUV_ONE,
+use embedded_graphics_core::pixelcolor::Rgb888;
+
+use crate::arith::div::low_bits_mask;
+use crate::config::class::Class;
+use crate::config::formats::{
+    Coord, Lens, SubPixel, Time, COORD_FRAC, COORD_LIMIT_RAW, MAX_VIEWPORT, TUV_FRAC, TUV_ONE,
 };
+use crate::config::precision::{DefaultPrecision, Precision};
+use crate::error::{Error, Field, SampleField};
 
 /// One vertex at one end of the shutter: clip-space position and signed CoC radius.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -63,6 +67,26 @@ pub(crate) const C: usize = 4;
 const FIELDS: [Field; 5] = [Field::X, Field::Y, Field::Z, Field::W, Field::Coc];
 
 impl Triangle {
+    /// The triangle's class: motion if any field differs between the ends (the CoC only counts
+    /// when non-zero somewhere), defocus if any CoC is non-zero.
+    pub fn class(&self) -> Class {
+        let [v0, v1] = &self.v;
+        let defocus = v0.iter().chain(v1.iter()).any(|p| p[C] != 0);
+        let motion = v0.iter().zip(v1.iter()).any(|(a, b)| {
+            a[X] != b[X]
+                || a[Y] != b[Y]
+                || a[Z] != b[Z]
+                || a[W] != b[W]
+                || (defocus && a[C] != b[C])
+        });
+        match (motion, defocus) {
+            (false, false) => Class::Static,
+            (true, false) => Class::Motion,
+            (false, true) => Class::Defocus,
+            (true, true) => Class::MotionDefocus,
+        }
+    }
+
     /// Checked constructor: every coordinate must satisfy |v| ≤ 2^13 (default precision).
     pub fn new(t0: [Vertex; 3], t1: [Vertex; 3]) -> Result<Triangle, Error> {
         Triangle::new_with::<DefaultPrecision>(t0, t1)
@@ -412,4 +436,13 @@ impl<'a> SamplePattern<'a> {
             .and_then(|a| self.samples.get(a..a.checked_add(s)?))
             .unwrap_or(&[])
     }
+}
+
+/// A triangle with its flat color.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Prim {
+    /// geometry
+    pub tri: Triangle,
+    /// color
+    pub color: Rgb888,
 }

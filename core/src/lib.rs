@@ -5,20 +5,23 @@
 //! floating point, no panics: every input outside the declared domain is refused with an
 //! [`Error`].
 //!
-//! Pipeline, one module per stage (read them in this order):
-//! 1. [`setup`] — once per triangle: class, culling, lens-corner boxes, footprint, time span.
+//! Pipeline, one folder per block (read them in this order):
+//! 1. [`setup`] — once per triangle: class, culling, lens-corner boxes, footprint, time span,
+//!    the conservative epsilon and the planar test's per-triangle setup.
 //! 2. [`bounds`] — per bounds tile: (u, v, t) intervals, behind the [`BoundsStrategy`] trait
 //!    ([`Laine2011`] dual-space bounds; [`BboxScan`] as the baseline; tighter, composable
-//!    strategies in [`strategies`]).
-//! 3. [`sample`] — the exact 5D sample test with a fill rule, and depth; [`bounded`] — the
-//!    bounded (hardware-width) sample test of a [`Bounded`] precision; [`planar`] — the static
-//!    test of a [`Planar`] precision (vertices rounded once to 15 bits).
-//! 4. [`tile`] — the tile framebuffer, resolve and the render loop; [`static_unit`] — the
-//!    static-only unit's own setup, 2D tile cull, sample test and renderer at a [`Planar`]
-//!    precision; [`motion_unit`] — the motion-only unit's own setup, time-slab tile cull,
-//!    sample test ([`motion_test`]) and renderer ([`motion_render`]) at a bounded precision.
+//!    strategies beside them).
+//! 3. [`sample`] — the sample test: the exact test, the bounded (hardware-width) test of a
+//!    [`Bounded`] precision and the planar static test of a [`Planar`] precision, behind one
+//!    dispatch.
+//! 4. [`raster`] — the tile framebuffer, resolve and the render loop; [`units`] — the
+//!    static-only unit's own setup, 2D tile cull and sample test at a [`Planar`] precision, and
+//!    the motion-only unit's own setup, time-slab tile cull and sample test at a bounded
+//!    precision.
 //!
-//! Number formats are all in [`formats`]; `core/README.md` has the full width table.
+//! Below them: [`config`] (every signal's format, the precision types, the units, the class),
+//! [`arith`] (wide accumulator, intervals, divisions), [`input`], [`error`], [`stats`]. The
+//! width table of every intermediate is [`widths`]; `core/README.md` has it.
 #![cfg_attr(not(test), no_std)]
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
@@ -33,62 +36,59 @@
     clippy::cast_possible_wrap
 )]
 
-pub mod bounded;
-#[cfg(test)]
-mod bounded_corners;
-#[cfg(test)]
-mod bounded_frozen;
+pub mod arith;
 pub mod bounds;
-#[cfg(test)]
-mod corners;
+pub mod config;
 pub mod demo;
 pub mod error;
-#[cfg(test)]
-mod fast_corners;
-pub mod formats;
 pub mod input;
-pub mod interval;
-#[cfg(test)]
-mod interval_corners;
-mod motion_depth;
-pub mod motion_render;
-pub mod motion_test;
-pub mod motion_unit;
-pub mod planar;
-#[cfg(test)]
-mod planar_corners;
-#[cfg(test)]
-mod planar_frozen;
+pub mod raster;
 pub mod sample;
 pub mod setup;
-pub mod static_unit;
 pub mod stats;
-pub mod strategies;
+pub mod units;
 #[cfg(test)]
-mod testrng;
-pub mod tile;
-pub mod unit;
-pub mod wide;
-#[cfg(test)]
-mod width_corners;
+mod verify;
 pub mod widths;
 
-pub use bounded::{bounded_eval, bounded_test, BoundedEval, Eps};
-pub use bounds::{walk_tiles, BboxScan, BoundsStrategy, Laine2011, RowSpan, TileBounds, UvtBox};
-pub use embedded_graphics_core::pixelcolor::Rgb888;
-pub use error::{Error, Field, SampleField};
-pub use formats::{
-    Bounded, BoundedPrecision, Coord, DefaultPrecision, Depth, Exact, Lens, Planar,
-    PlanarPrecision, Prec, Precision, PrecisionBits, SubPixel, Time,
+pub use arith::interval::Interval;
+pub use arith::wide::Wide;
+pub use bounds::bbox::BboxScan;
+pub use bounds::laine::Laine2011;
+pub use bounds::strategy::{walk_tiles, BoundsStrategy, RowSpan, TileBounds, UvtBox};
+pub use config::class::Class;
+pub use config::formats::{Coord, Depth, Lens, SubPixel, Time};
+pub use config::precision::{
+    Bounded, BoundedPrecision, DefaultPrecision, Exact, Planar, PlanarPrecision, Prec, Precision,
+    PrecisionBits,
 };
-pub use input::{PixelRect, Sample, SamplePattern, Triangle, Vertex, Viewport};
-pub use interval::Interval;
-pub use motion_render::{MotionEntry, MotionRenderer};
-pub use motion_unit::{MotionOutcome, MotionSetup};
-pub use sample::{sample_eval, sample_test, Hit, SampleEval, ScreenPos};
-pub use setup::{setup, setup_scaled, setup_with, Class, Cull, Outcome, Setup};
-pub use static_unit::{StaticRenderer, StaticSetup};
-pub use stats::{Ops, Stats};
-pub use tile::{resolve_colors, DepthTest, PixelStats, Prim, RenderError, Renderer, TileBuffer};
-pub use unit::{DefocusOnly, Full, MotionOnly, StaticOnly, Unit};
-pub use wide::Wide;
+pub use config::unit::{DefocusOnly, Full, MotionOnly, StaticOnly, Unit};
+pub use embedded_graphics_core::pixelcolor::Rgb888;
+pub use error::Error;
+pub use error::Field;
+pub use error::SampleField;
+pub use input::PixelRect;
+pub use input::Prim;
+pub use input::Sample;
+pub use input::SamplePattern;
+pub use input::Triangle;
+pub use input::Vertex;
+pub use input::Viewport;
+pub use raster::renderer::{RenderError, Renderer};
+pub use raster::tile_buffer::{resolve_colors, DepthTest, PixelStats, TileBuffer};
+pub use sample::bounded::{bounded_eval, bounded_test, BoundedEval};
+pub use sample::exact::{sample_eval, SampleEval};
+pub use sample::pos::{Hit, ScreenPos};
+pub use sample::sample_test;
+pub use setup::eps::Eps;
+pub use setup::setup;
+pub use setup::setup_scaled;
+pub use setup::setup_with;
+pub use setup::Cull;
+pub use setup::Outcome;
+pub use setup::Setup;
+pub use stats::Ops;
+pub use stats::Stats;
+pub use units::motion_only::render::{MotionEntry, MotionRenderer};
+pub use units::motion_only::setup::{MotionOutcome, MotionSetup};
+pub use units::static_only::{StaticRenderer, StaticSetup};

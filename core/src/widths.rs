@@ -15,13 +15,14 @@
 
 use core::fmt;
 
-use crate::bounded::Eps;
-use crate::formats::{
-    Precision, COORD_LIMIT_RAW, DEPTH_EDGE_BITS, DEPTH_FRAC, MAX_VIEWPORT, OFFSET_SHIFT_MAX,
-    OFFSET_SHIFT_MIN, RECIP_SHIFT, SUBPIXEL_BITS, TUV_FRAC,
+use crate::config::class::Class;
+use crate::config::formats::{
+    COORD_LIMIT_RAW, DEPTH_EDGE_BITS, DEPTH_FRAC, MAX_VIEWPORT, RECIP_SHIFT, SUBPIXEL_BITS,
+    TUV_FRAC,
 };
+use crate::config::precision::{Precision, OFFSET_SHIFT_MAX, OFFSET_SHIFT_MIN};
 use crate::input::Viewport;
-use crate::setup::Class;
+use crate::setup::eps::Eps;
 
 /// Significant bits (magnitude) the bounded test keeps of each edge value for the depth
 /// interpolation: `|E''| < 2^24` (`bounded.rs`, step 8).
@@ -840,8 +841,8 @@ pub fn write_class_markdown<W: fmt::Write>(out: &mut W) -> fmt::Result {
 /// The configurations of `core/README.md`'s width section: the exact test and the bounded
 /// default.
 pub const README_CONFIGS: [Config; 2] = [
-    Config::of::<crate::formats::Exact>(),
-    Config::of::<crate::formats::BoundedPrecision>(),
+    Config::of::<crate::config::precision::Exact>(),
+    Config::of::<crate::config::precision::BoundedPrecision>(),
 ];
 
 /// The whole generated width section of `core/README.md` (`uvt widths` with no `--config`):
@@ -913,10 +914,13 @@ mod tests {
     #[test]
     fn config_names() {
         let c = Config::parse("bounded-16-16-16-20").unwrap();
-        assert_eq!(c, Config::of::<crate::formats::BoundedPrecision>());
+        assert_eq!(
+            c,
+            Config::of::<crate::config::precision::BoundedPrecision>()
+        );
         assert_eq!(format!("{c}"), "bounded-16-16-16-20");
         let e = Config::parse("exact-16-16-16").unwrap();
-        assert_eq!(e, Config::of::<crate::formats::Exact>());
+        assert_eq!(e, Config::of::<crate::config::precision::Exact>());
         for bad in [
             "exact-16-16",
             "exact-16-16-16-20",
@@ -936,7 +940,7 @@ mod tests {
     /// The entries issue 10 lists as wrong in the old hand-written table.
     #[test]
     fn corrected_entries() {
-        let t = table(&Config::of::<crate::formats::Exact>());
+        let t = table(&Config::of::<crate::config::precision::Exact>());
         // Clip coordinates up to +2^29 raw: 31 bits with sign.
         let w = t.find("setup", "corner `w").unwrap();
         assert_eq!((w.bound, w.bits()), (Mag::pow2(29), 31));
@@ -971,7 +975,7 @@ mod tests {
                 );
             }
         }
-        let t = table(&Config::of::<crate::formats::BoundedPrecision>());
+        let t = table(&Config::of::<crate::config::precision::BoundedPrecision>());
         for r in t.rows().filter(|r| r.stage == "sample") {
             for m in r.mul.iter().flatten() {
                 let rare = r.signal.starts_with("6 ");

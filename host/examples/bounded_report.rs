@@ -12,7 +12,7 @@ use std::hint::black_box;
 use std::time::Instant;
 
 use rayon::prelude::*;
-use uvt_core::bounds::BoundsStrategy;
+use uvt_core::bounds::strategy::BoundsStrategy;
 use uvt_core::{
     sample_test, setup_scaled, Bounded, Eps, Laine2011, Ops, Outcome, PixelRect, Precision,
     ScreenPos, Setup, Triangle,

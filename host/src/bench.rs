@@ -16,8 +16,10 @@
 
 use serde::Serialize;
 use std::time::Duration;
-use uvt_core::bounds::BoundsStrategy;
-use uvt_core::strategies::{best, hull, hull_edge, hull_lens, Hyper, LensTime, BEST_SLABS};
+use uvt_core::bounds::compose::{best, hull, hull_edge, hull_lens, BEST_SLABS};
+use uvt_core::bounds::hyper::Hyper;
+use uvt_core::bounds::lens_time::LensTime;
+use uvt_core::bounds::strategy::BoundsStrategy;
 use uvt_core::{Bounded, Laine2011, Prec, Precision, Triangle, Viewport};
 
 use crate::frame::{run, Fixed, FrameStats, Reference, RunOpts};

@@ -141,7 +141,7 @@ pub fn check_sample(
 
 /// The perturbation bound of the core's sample test for a setup, clip units `[x, y, w]`: the
 /// bounded test decides exactly on a triangle whose vertices lie within `Setup::eps()` (raw
-/// 2^-16, rounded up) of the exact test's at the same quantized inputs (`uvt_core::bounded`);
+/// 2^-16, rounded up) of the exact test's at the same quantized inputs (`uvt_core::sample::bounded`);
 /// zero for the exact test.
 pub fn eps_of(s: &Setup) -> [f64; 3] {
     let e = s.eps();

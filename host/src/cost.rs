@@ -289,7 +289,8 @@ mod tests {
     #[test]
     fn default_sample_test_is_at_most_a_quarter_of_exact() {
         let exact = sample_cost(&Config::parse("exact-16-16-16").unwrap()).dsp48e1;
-        let def = sample_cost(&Config::of::<uvt_core::formats::DefaultPrecision>()).dsp48e1;
+        let def =
+            sample_cost(&Config::of::<uvt_core::config::precision::DefaultPrecision>()).dsp48e1;
         assert!(4 * def <= exact, "default {def} DSP48E1, exact {exact}");
     }
 

@@ -1,5 +1,5 @@
 //! `uvt fit SCENE.json`: which rasterizer unit a scene needs, and what it saves — the smallest
-//! unit variant (`uvt_core::unit`) that accepts every primitive's class, the narrowest
+//! unit variant (`uvt_core::config::unit`) that accepts every primitive's class, the narrowest
 //! configuration of the precision sweep ([`crate::cost::SWEEP`]) whose documented error
 //! distance meets the tolerance *for this scene's geometry*, the bounds strategy and tile size
 //! with the most covered samples per unit of cost; then a render with that choice to confirm it
@@ -361,7 +361,7 @@ pub fn classes(scene: &Scene) -> Result<Vec<Class>> {
         .enumerate()
         .map(|(i, t)| {
             t.to_core()
-                .map(|c| uvt_core::setup::classify(&c))
+                .map(|c| c.class())
                 .map_err(|e| anyhow!("triangles[{i}]: {e}"))
         })
         .collect()

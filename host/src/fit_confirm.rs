@@ -7,13 +7,15 @@
 use embedded_graphics_core::pixelcolor::RgbColor;
 use rayon::prelude::*;
 use serde::Serialize;
-use uvt_core::bounds::{BoundsStrategy, TileBounds};
-use uvt_core::strategies::{best, hull, hull_edge, hull_lens, Hyper, LensTime, BEST_SLABS};
-use uvt_core::{motion_unit, static_unit, MotionRenderer, StaticRenderer};
+use uvt_core::bounds::compose::{best, hull, hull_edge, hull_lens, BEST_SLABS};
+use uvt_core::bounds::hyper::Hyper;
+use uvt_core::bounds::lens_time::LensTime;
+use uvt_core::bounds::strategy::{BoundsStrategy, TileBounds};
 use uvt_core::{
     sample_test, Bounded, DefocusOnly, Full, Laine2011, MotionOnly, Ops, Outcome, PixelRect, Prec,
     Precision, Prim, Renderer, Rgb888, SamplePattern, ScreenPos, Setup, StaticOnly, Triangle, Unit,
 };
+use uvt_core::{MotionRenderer, StaticRenderer};
 
 use crate::bench::run_strategy_at;
 use crate::compare::{check_sample_eps, eps_of, footprint_union, Rounding};
@@ -326,10 +328,12 @@ where
             u => Err(format!("unknown unit {u}")),
         }?;
         let spec = match unit.as_str() {
-            "static-only" if static_unit::specialised::<P, StaticOnly>() => {
+            "static-only" if uvt_core::units::static_only::specialised::<P, StaticOnly>() => {
                 Some(("StaticRenderer", render_static(vp, &prims, &pat, tile)))
             }
-            "motion-only" if motion_unit::specialised::<P, MotionOnly>() => {
+            "motion-only"
+                if uvt_core::units::motion_only::setup::specialised::<P, MotionOnly>() =>
+            {
                 Some(("MotionRenderer", render_motion::<P>(vp, &prims, &pat, tile)))
             }
             _ => None,

@@ -20,8 +20,8 @@ use std::time::{Duration, Instant};
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
-use uvt_core::bounds::{BoundsStrategy, RowSpan, TileBounds};
-use uvt_core::unit::Full;
+use uvt_core::bounds::strategy::{BoundsStrategy, RowSpan, TileBounds};
+use uvt_core::config::unit::Full;
 use uvt_core::{Class, Cull, Ops, Outcome, PixelRect, Triangle, Viewport};
 
 use crate::pattern::Pattern;

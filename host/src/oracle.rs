@@ -54,7 +54,7 @@ pub mod clip;
 pub mod search;
 
 use rayon::prelude::*;
-use uvt_core::bounds::BoundsStrategy;
+use uvt_core::bounds::strategy::BoundsStrategy;
 use uvt_core::{
     sample_test, Laine2011, Ops, Outcome, PixelRect, ScreenPos, Setup, Triangle, UvtBox, Viewport,
 };

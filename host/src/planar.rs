@@ -108,7 +108,7 @@ pub fn degenerate(scene: &Scene) -> (u64, u64) {
     let (mut n, mut stat) = (0u64, 0u64);
     for t in &scene.tris {
         let Ok(c) = t.to_core() else { continue };
-        if uvt_core::setup::classify(&c) != Class::Static {
+        if c.class() != Class::Static {
             continue;
         }
         stat += 1;

@@ -23,7 +23,7 @@ use std::time::Duration;
 
 use rayon::prelude::*;
 use serde::Serialize;
-use uvt_core::bounds::BoundsStrategy;
+use uvt_core::bounds::strategy::BoundsStrategy;
 use uvt_core::{
     sample_test, Bounded, Laine2011, Ops, Outcome, PixelRect, Prec, Precision, ScreenPos, Setup,
     Triangle,
@@ -450,7 +450,7 @@ fn errors<P: Precision + Sync>(
                             a[0].behind += u64::from(c.behind);
                         }
                         if let (Some(h), Some(z)) = (hf, hr) {
-                            if h.depth != uvt_core::formats::DEPTH_FAR && z.abs() < 128.0 {
+                            if h.depth != uvt_core::config::formats::DEPTH_FAR && z.abs() < 128.0 {
                                 let err = (h.depth as f64 - z * 16777216.0).abs();
                                 a[0].depth_lsb[0] = a[0].depth_lsb[0].max(err);
                                 a[0].depth_lsb[1] += err;
@@ -521,7 +521,7 @@ pub fn planar_dq(s: &Scene) -> (f64, Vec<Option<f64>>) {
         .iter()
         .map(|t| {
             let c = t.to_core().ok()?;
-            let class = uvt_core::setup::classify(&c);
+            let class = c.class();
             crate::planar::prim_dq(t, &c, class, s.viewport, 1.0)
         })
         .collect();
@@ -625,7 +625,8 @@ pub fn lost_samples(scene: &Scene) -> (u64, u64) {
                         let Some(h) = uvt_core::sample_test(s, pos, q, &mut ops) else {
                             continue;
                         };
-                        let empty = fb.depth(0, 0, si) == Some(uvt_core::formats::DEPTH_EMPTY)
+                        let empty = fb.depth(0, 0, si)
+                            == Some(uvt_core::config::formats::DEPTH_EMPTY)
                             && fb.sample_color(0, 0, si) == Some(black);
                         let _ = fb.write(0, 0, si, white, h.depth);
                         if empty {

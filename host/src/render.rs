@@ -5,7 +5,7 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::{anyhow, Context, Result};
-use uvt_core::bounds::BoundsStrategy;
+use uvt_core::bounds::strategy::BoundsStrategy;
 use uvt_core::{BboxScan, Laine2011, Precision};
 
 use crate::compare::{compare, CoverageDiff};

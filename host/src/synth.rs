@@ -76,7 +76,7 @@ pub fn load_units(path: &Path) -> Result<Option<Vec<Unit>>> {
 pub fn planar_md(synth: Option<&[Unit]>, synth_path: &Path) -> String {
     let name = crate::planar::NAME;
     let mut s = format!(
-        "\nStatic-only unit at the planar static configuration `{name}` (`uvt_core::static_unit`; RTL `vectors/rtl/uvt_psample.v`, synthesized counts from `{}`; the other units at `{name}` carry the bounded unit beside the planar test and have no RTL of their own):\n\n| unit | sample test DSP48E1 estimate | synthesized DSP48E1 / LUT / FF | MULT18X18D estimate | synthesized MULT18X18D / LUT4 / FF | Σ bit-products | products |\n|---|---|---|---|---|---|---|\n",
+        "\nStatic-only unit at the planar static configuration `{name}` (`uvt_core::units::static_only`; RTL `vectors/rtl/uvt_psample.v`, synthesized counts from `{}`; the other units at `{name}` carry the bounded unit beside the planar test and have no RTL of their own):\n\n| unit | sample test DSP48E1 estimate | synthesized DSP48E1 / LUT / FF | MULT18X18D estimate | synthesized MULT18X18D / LUT4 / FF | Σ bit-products | products |\n|---|---|---|---|---|---|---|\n",
         synth_path.display()
     );
     let c = crate::planar::unit_cost(false, false).unwrap_or_default();
@@ -117,7 +117,7 @@ mod tests {
     #[test]
     fn unit_estimates_equal_synthesis() {
         let (path, units) = committed();
-        let def = Config::of::<uvt_core::formats::DefaultPrecision>();
+        let def = Config::of::<uvt_core::config::precision::DefaultPrecision>();
         for (name, motion, defocus) in UNITS {
             let syn = units
                 .iter()
@@ -173,7 +173,7 @@ mod tests {
         let (path, units) = committed();
         let v: serde_json::Value =
             serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap();
-        let def = Config::of::<uvt_core::formats::DefaultPrecision>().to_string();
+        let def = Config::of::<uvt_core::config::precision::DefaultPrecision>().to_string();
         let cfg = v["configs"]
             .as_array()
             .unwrap()

@@ -5,8 +5,7 @@
 //! keeps them). Every triangle is made static (its t0 vertices, CoC 0), so every row counts.
 //! Run: `cargo run --release -p uvt-tests --example planar_eps`.
 
-use uvt_core::bounded::Eps;
-use uvt_core::setup::classify;
+use uvt_core::setup::eps::Eps;
 use uvt_core::{
     setup_with, Class, DefaultPrecision, Exact, Outcome, PlanarPrecision, Precision, Triangle,
 };
@@ -33,7 +32,7 @@ fn main() {
                     x.coc = uvt_core::Coord::from_bits(0);
                 }
                 let t = Triangle::new_static(v).expect("static");
-                assert_eq!(classify(&t), Class::Static);
+                assert_eq!(t.class(), Class::Static);
                 let ops = &mut Default::default();
                 if !matches!(setup_with::<Exact>(&t, vp, ops), Outcome::Visible(_)) {
                     continue;

@@ -6,7 +6,7 @@ pub mod icarus;
 pub mod kinds;
 pub mod tiles;
 
-use uvt_core::bounds::{BoundsStrategy, TileBounds};
+use uvt_core::bounds::strategy::{BoundsStrategy, TileBounds};
 use uvt_core::{
     sample_test, Coord, Lens, Outcome, PixelRect, Sample, SamplePattern, ScreenPos, Setup, Stats,
     SubPixel, Time, Triangle, Vertex, Viewport,

@@ -2,7 +2,7 @@
 //! outside it every constructor returns an error naming the culprit.
 
 use proptest::prelude::*;
-use uvt_core::bounds::BoundsStrategy;
+use uvt_core::bounds::strategy::BoundsStrategy;
 use uvt_core::*;
 use uvt_tests::*;
 

@@ -8,7 +8,8 @@
 //! a hand-picked direction; and a known case the edge bound must tighten (it fails without it).
 
 use proptest::prelude::*;
-use uvt_core::strategies::{best, hull_edge, EdgeTime};
+use uvt_core::bounds::compose::{best, hull_edge};
+use uvt_core::bounds::edge_time::EdgeTime;
 use uvt_core::{
     setup_with, Bounded, BoundsStrategy, Exact, Laine2011, Outcome, PixelRect, SamplePattern,
     TileBounds, Triangle, Vertex, Viewport,

@@ -229,7 +229,7 @@ fn limit_effort_parses_and_refuses_bad_values() {
 #[test]
 fn clip_edge_model_agrees_with_the_core() {
     use rand::{Rng, SeedableRng};
-    use uvt_core::bounds::BoundsStrategy;
+    use uvt_core::bounds::strategy::BoundsStrategy;
     use uvt_host::oracle::clip::{core_covers, TileCover};
     use uvt_host::scenes::{bench, Bench, Row};
     let seed: u64 = std::env::var("UVT_SEED")
@@ -343,7 +343,7 @@ fn clip_search_finds_boxes_the_5d_points_miss() {
 /// rows (the 1D, 2D and 3D searches) and the static row (no search).
 #[test]
 fn every_face_of_the_clip_box_is_attained_by_a_covered_point() {
-    use uvt_core::bounds::BoundsStrategy;
+    use uvt_core::bounds::strategy::BoundsStrategy;
     use uvt_host::oracle::{clip::core_covers, tile_limit, Method};
     use uvt_host::scenes::{Bench, Row};
     let effort = uvt_host::bench::parse_effort("8:16,16:32").expect("valid");

@@ -1,4 +1,4 @@
-//! The motion-specialised motion-only unit (`uvt_core::motion_unit`) against the full unit at
+//! The motion-specialised motion-only unit (`uvt_core::units::motion_only::setup`) against the full unit at
 //! the same bounded configuration: the same image, depth and covered / written / occluded
 //! counts on the demo prims and on seeded random scenes of every hard kind made motion-only
 //! (moving, static, camera-plane crossers, w = 0 vertices, slivers flipping orientation, domain
@@ -7,8 +7,10 @@
 //! boxes never dropping a covered sample (brute force over whole viewports); refusal of the
 //! other classes. Seed: `UVT_SEED`; more cases with `UVT_EXTENSIVE=1`.
 
-use uvt_core::motion_test::motion_test;
-use uvt_core::motion_unit::{motion_setup, slab_of, specialised, MotionOutcome, SLABS};
+use uvt_core::units::motion_only::sample::motion_test;
+use uvt_core::units::motion_only::setup::{
+    motion_setup, slab_of, specialised, MotionOutcome, SLABS,
+};
 use uvt_core::{
     bounded_test, demo, Bounded, Class, DefaultPrecision, DefocusOnly, Error, Exact, Full,
     Laine2011, MotionOnly, MotionRenderer, Ops, PlanarPrecision, Precision, Prim, Renderer, Rgb888,

@@ -1,4 +1,4 @@
-//! The planar static test (`uvt_core::planar`, configuration `PlanarPrecision` =
+//! The planar static test (`uvt_core::sample::planar`, configuration `PlanarPrecision` =
 //! `planar-16-16-16-20`, vertices rounded once to 15 bits): hand-picked cases bit for bit;
 //! coverage = the exact test on the rounded triangle P' (independent rounding, 192-bit exact
 //! test); agreement with the exact configuration within the derived per-triangle distance;
@@ -7,8 +7,12 @@
 //! sufficient for every strategy (brute force); every unit identical to the full unit is in
 //! `variants.rs`. Seeded (`UVT_SEED`, printed on failure), more cases with `UVT_EXTENSIVE=1`.
 
-use uvt_core::planar::{planar_eval, PlanarEdges};
-use uvt_core::strategies::{best, hull, hull_edge, hull_lens, EdgeTime, Hyper, LensTime};
+use uvt_core::bounds::compose::{best, hull, hull_edge, hull_lens};
+use uvt_core::bounds::edge_time::EdgeTime;
+use uvt_core::bounds::hyper::Hyper;
+use uvt_core::bounds::lens_time::LensTime;
+use uvt_core::sample::planar::planar_eval;
+use uvt_core::setup::planar::PlanarEdges;
 use uvt_core::{
     BboxScan, Coord, Exact, Laine2011, Outcome, PlanarPrecision, Sample, SamplePattern, ScreenPos,
     Setup, Triangle, Vertex, Viewport, Wide,
@@ -28,7 +32,7 @@ fn random_static(rng: &mut Rng, i: u32) -> Triangle {
 
 /// The direction of `sample::direction` (i64).
 fn dir(vp: Viewport, pos: ScreenPos) -> [i64; 3] {
-    uvt_core::sample::direction(vp, pos)
+    uvt_core::sample::pos::direction(vp, pos)
 }
 
 fn planar_of(s: &Setup) -> PlanarEdges {

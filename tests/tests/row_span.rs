@@ -11,8 +11,8 @@
 //! - Renderer: `best()` and the same strategy without a row step (every tile face-tested)
 //!   render identical images and identical counters except the bounds and row op counts.
 
-use uvt_core::strategies::hull::HullTiles;
-use uvt_core::strategies::{best, hull};
+use uvt_core::bounds::compose::{best, hull};
+use uvt_core::bounds::hull::HullTiles;
 use uvt_core::{
     setup_with, BoundsStrategy, DefaultPrecision, Exact, Ops, Outcome, PixelRect, Precision, Prim,
     Renderer, Rgb888, SamplePattern, Setup, Stats, Triangle, Viewport,

@@ -3,9 +3,9 @@
 //! The stages are those of the exact configuration (`Exact`); the bounded test has its own hand
 //! cases in `bounded.rs`.
 
-use uvt_core::bounds::BoundsStrategy;
-use uvt_core::formats::{DEPTH_EMPTY, DEPTH_FAR, DEPTH_NEAR};
-use uvt_core::setup::AxisBoxes;
+use uvt_core::bounds::strategy::BoundsStrategy;
+use uvt_core::config::formats::{DEPTH_EMPTY, DEPTH_FAR, DEPTH_NEAR};
+use uvt_core::setup::boxes::AxisBoxes;
 use uvt_core::*;
 use uvt_tests::*;
 
@@ -133,7 +133,7 @@ fn setup_classify_and_cull() {
     let mut coc_changes = defocus;
     coc_changes[1][4] = 0.2;
     let mut ops = Ops::default();
-    let class = |t: &Triangle| setup::classify(t);
+    let class = |t: &Triangle| t.class();
     assert_eq!(class(&stat(base)), Class::Static);
     assert_eq!(
         class(&tri(base, z_moves)),

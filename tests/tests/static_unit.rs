@@ -1,4 +1,4 @@
-//! The static-specialised static-only unit (`uvt_core::static_unit`) against the full unit at
+//! The static-specialised static-only unit (`uvt_core::units::static_only`) against the full unit at
 //! the planar configuration (`PlanarPrecision`): the same image, depth and covered / written /
 //! occluded counts on the demo prims and on seeded random static scenes (guard-band,
 //! camera-plane-crossing, w = 0, sliver, domain-extreme and mesh triangles); its sample test
@@ -7,8 +7,8 @@
 //! with `UVT_EXTENSIVE=1`.
 
 use uvt_core::demo;
-use uvt_core::planar::planar_test;
-use uvt_core::static_unit::{
+use uvt_core::sample::planar::planar_test;
+use uvt_core::units::static_only::{
     specialised, static_setup, static_test, static_tile, StaticOutcome, StaticRenderer,
 };
 use uvt_core::{

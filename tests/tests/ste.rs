@@ -63,7 +63,7 @@ fn static_triangle_hull_culls_pixels_outside() {
         color: Rgb888::new(255, 255, 255),
     }];
     let laine = render_stats(Laine2011, &prims, vp, &pat, 1);
-    let hull = render_stats(uvt_core::strategies::hull(), &prims, vp, &pat, 1);
+    let hull = render_stats(uvt_core::bounds::compose::hull(), &prims, vp, &pat, 1);
     assert_eq!(
         laine.samples_covered, hull.samples_covered,
         "hull culled coverage"
@@ -96,8 +96,14 @@ fn moving_defocused_triangle_lens_slabs_beat_laine() {
         color: Rgb888::new(255, 255, 255),
     }];
     let laine = render_stats(Laine2011, &prims, vp, &pat, 1);
-    let lens = render_stats(uvt_core::strategies::LensTime::<4>, &prims, vp, &pat, 1);
-    let best = render_stats(uvt_core::strategies::best(), &prims, vp, &pat, 1);
+    let lens = render_stats(
+        uvt_core::bounds::lens_time::LensTime::<4>,
+        &prims,
+        vp,
+        &pat,
+        1,
+    );
+    let best = render_stats(uvt_core::bounds::compose::best(), &prims, vp, &pat, 1);
     assert_eq!(laine.by_class, [0, 0, 0, 1]);
     for s in [&lens, &best] {
         assert_eq!(s.samples_covered, laine.samples_covered, "coverage differs");
@@ -111,7 +117,7 @@ fn moving_defocused_triangle_lens_slabs_beat_laine() {
         "lens-t {sn} ppm not ≥ 1.2× laine {sl} ppm"
     );
     assert!(sb >= sn, "best {sb} ppm below lens-t {sn} ppm");
-    let hyper = render_stats(uvt_core::strategies::Hyper, &prims, vp, &pat, 1);
+    let hyper = render_stats(uvt_core::bounds::hyper::Hyper, &prims, vp, &pat, 1);
     assert_eq!(
         hyper.samples_covered, laine.samples_covered,
         "coverage differs"

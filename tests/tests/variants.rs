@@ -1,4 +1,4 @@
-//! Unit variants (`uvt_core::unit`): each variant renders every primitive list it accepts
+//! Unit variants (`uvt_core::config::unit`): each variant renders every primitive list it accepts
 //! bit-identically to the full unit at the same precision — every sample's colour and depth,
 //! every pixel's counters and the renderer's `Stats` (operation counts included) — at the
 //! default bounded precision, at `Exact` and at `PlanarPrecision`. Scenes: the built-in benchmark scenes (quick size)
@@ -9,7 +9,6 @@
 
 use rand::SeedableRng;
 use uvt_core::input::SamplePattern;
-use uvt_core::setup::classify;
 use uvt_core::{
     demo, DefaultPrecision, DefocusOnly, Error, Exact, Full, Laine2011, MotionOnly, PixelStats,
     PlanarPrecision, Precision, Prim, Renderer, Rgb888, StaticOnly, Stats, TileBuffer, Triangle,
@@ -72,7 +71,7 @@ use embedded_graphics_core::pixelcolor::RgbColor;
 fn accepted<U: Unit>(prims: &[Prim]) -> Vec<Prim> {
     prims
         .iter()
-        .filter(|p| U::accepts(classify(&p.tri)))
+        .filter(|p| U::accepts(p.tri.class()))
         .copied()
         .collect()
 }
@@ -214,7 +213,7 @@ fn builtin_scenes_render_identically_on_every_accepting_unit() {
         assert!(
             scene_prims(&scene)
                 .iter()
-                .all(|p| classify(&p.tri) == uvt_core::Class::MotionDefocus),
+                .all(|p| p.tri.class() == uvt_core::Class::MotionDefocus),
             "the default scene is no longer all motion + defocus: add it to the comparison"
         );
     });

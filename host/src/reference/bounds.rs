@@ -1,4 +1,4 @@
-//! f64 reference — stage 2, per-tile bounds (mirrors `uvt_core::bounds::Laine2011`).
+//! f64 reference — stage 2, per-tile bounds (mirrors `uvt_core::bounds::laine::Laine2011`).
 //!
 //! The same Laine 2011 construction in f64 with exact divisions and no outward rounding: u/v from
 //! the interpolated lens-corner boxes, t from the dual-space bounding lines over the footprint.

@@ -10,7 +10,6 @@
 
 use rand::{Rng, SeedableRng};
 use serde::Serialize;
-use uvt_core::setup::classify;
 use uvt_core::{
     bounded_eval, setup_with, BoundedPrecision, Lens, Ops, Outcome, Precision, Sample, ScreenPos,
     Setup, SubPixel, Time, Triangle, Vertex, Viewport,
@@ -84,7 +83,7 @@ pub fn enc_bsample_in(t: &Triangle, vp: Viewport, g: Grid, pos: ScreenPos, s: &S
     }
     r.packed(&[(vp.width() as i64, 16), (vp.height() as i64, 16)])
         .packed(&[
-            (classify(t).index() as i64, 2),
+            (t.class().index() as i64, 2),
             (g.off as i64, 6),
             (g.pos as i64, 5),
             (g.tuv as i64, 5),
@@ -130,14 +129,17 @@ pub fn dec_bsample_in(w: &[u32]) -> Result<BsampleIn, String> {
         .map_err(|e| format!("input viewport refused: {e}"))?;
     let cfg = g(31);
     let (class, off, pos, tuv) = (cfg & 3, (cfg >> 2) & 63, (cfg >> 8) & 31, (cfg >> 13) & 31);
-    let want = classify(&tri).index() as u32;
+    let want = tri.class().index() as u32;
     if class != want {
         return Err(format!(
             "field class = {class}, but the triangle's class is {want} ({:?})",
-            classify(&tri)
+            tri.class()
         ));
     }
-    if !(uvt_core::formats::OFFSET_SHIFT_MIN..=uvt_core::formats::OFFSET_SHIFT_MAX).contains(&off) {
+    if !(uvt_core::config::precision::OFFSET_SHIFT_MIN
+        ..=uvt_core::config::precision::OFFSET_SHIFT_MAX)
+        .contains(&off)
+    {
         return Err(format!("field off_shift = {off} outside 20..=32"));
     }
     for (name, f) in [("pos_frac", pos), ("tuv_frac", tuv)] {
@@ -268,7 +270,7 @@ impl BSet {
         let (e, out) = run_bsample(&input.0).expect("generator records are valid");
         let c = &mut self.cov;
         c.records += 1;
-        c.class[classify(&t).index()] += 1;
+        c.class[t.class().index()] += 1;
         let hit = e.hit.is_some();
         c.covered += hit as u64;
         if e.e.contains(&0) {
@@ -279,8 +281,10 @@ impl BSet {
             c.rare_path += 1;
             c.rare_covered += hit as u64;
         }
-        c.depth_far += (e.hit.map(|h| h.depth) == Some(uvt_core::formats::DEPTH_FAR)) as u64;
-        c.depth_near += (e.hit.map(|h| h.depth) == Some(uvt_core::formats::DEPTH_NEAR)) as u64;
+        c.depth_far +=
+            (e.hit.map(|h| h.depth) == Some(uvt_core::config::formats::DEPTH_FAR)) as u64;
+        c.depth_near +=
+            (e.hit.map(|h| h.depth) == Some(uvt_core::config::formats::DEPTH_NEAR)) as u64;
         let (sw, sh) = (256 * u32::from(vp.width()), 256 * u32::from(vp.height()));
         c.corners += ([0, sw - 1].contains(&pos.xs) && [0, sh - 1].contains(&pos.ys)) as u64;
         self.inp.push(input);

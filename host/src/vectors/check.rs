@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{anyhow, bail, Context, Result};
 use serde_json::Value;
-use uvt_core::bounds::LaineCoeffs;
+use uvt_core::bounds::laine::LaineCoeffs;
 use uvt_core::Setup;
 
 use super::format::{layout, parse, sha256, show_field, STAGES};

@@ -1,6 +1,6 @@
 //! Planar sample-test records (`psample_in.hex` / `psample_out.hex`) of the planar static
 //! configuration `planar-16-16-16-20` (`uvt_core::PlanarPrecision`, `core/src/planar.rs`):
-//! self-contained inputs of `uvt_core::planar::planar_eval` — the static triangle's raw t0
+//! self-contained inputs of `uvt_core::sample::planar::planar_eval` — the static triangle's raw t0
 //! vertices (x, y, z, w; CoC 0, t1 = t0), the viewport, **what the planar setup hands the
 //! per-sample test** (the edge normals `n_k = (a, b, c)`, the orientation σ, the depth plane `G`
 //! and its exponent `f`) and one sample position (xs, ys) — and its outputs: coverage, depth
@@ -16,7 +16,8 @@
 
 use rand::{Rng, SeedableRng};
 use serde::Serialize;
-use uvt_core::planar::{planar_eval, PlanarEdges, PlanarEval};
+use uvt_core::sample::planar::{planar_eval, PlanarEval};
+use uvt_core::setup::planar::PlanarEdges;
 use uvt_core::{Ops, PlanarPrecision, SamplePattern, ScreenPos, Setup, Triangle, Vertex, Viewport};
 
 use super::format::Rec;
@@ -218,15 +219,17 @@ impl PSet {
             (hit && f >= 63 && acc(&pl, vp, pos).unsigned_abs() >= 1 << 62) as u64;
         if hit {
             let u = depth_unclamped(&pl, vp, pos);
-            let far = i128::from(uvt_core::formats::DEPTH_FAR);
-            let near = i128::from(uvt_core::formats::DEPTH_NEAR);
+            let far = i128::from(uvt_core::config::formats::DEPTH_FAR);
+            let near = i128::from(uvt_core::config::formats::DEPTH_NEAR);
             c.depth_at_far += (u == far) as u64;
             c.depth_past_far += (u == far + 1) as u64;
             c.depth_at_near += (u == near) as u64;
             c.depth_past_near += (u == near - 1) as u64;
         }
-        c.depth_far += (e.hit.map(|h| h.depth) == Some(uvt_core::formats::DEPTH_FAR)) as u64;
-        c.depth_near += (e.hit.map(|h| h.depth) == Some(uvt_core::formats::DEPTH_NEAR)) as u64;
+        c.depth_far +=
+            (e.hit.map(|h| h.depth) == Some(uvt_core::config::formats::DEPTH_FAR)) as u64;
+        c.depth_near +=
+            (e.hit.map(|h| h.depth) == Some(uvt_core::config::formats::DEPTH_NEAR)) as u64;
         let (sw, sh) = (256 * u32::from(vp.width()), 256 * u32::from(vp.height()));
         c.corners += ([0, sw - 1].contains(&pos.xs) && [0, sh - 1].contains(&pos.ys)) as u64;
         c.vp_2048 += (vp.width() == 2048 || vp.height() == 2048) as u64;
@@ -268,8 +271,8 @@ pub fn depth_unclamped(pl: &PlanarEdges, vp: Viewport, pos: ScreenPos) -> i128 {
 /// γ ∈ [2^-28, 2^-25] (depth below one LSB), at the viewport's top right corner: at most `per`
 /// records per target.
 pub fn boundary_search(set: &mut PSet, rng: &mut rand_pcg::Pcg64, per: u64) {
-    let far = i128::from(uvt_core::formats::DEPTH_FAR);
-    let near = i128::from(uvt_core::formats::DEPTH_NEAR);
+    let far = i128::from(uvt_core::config::formats::DEPTH_FAR);
+    let near = i128::from(uvt_core::config::formats::DEPTH_NEAR);
     let targets = [far, far + 1, near, near - 1];
     let mut found = [0u64; 5];
     for i in 0..3000 {
@@ -426,7 +429,7 @@ fn unit_tri(set: &mut PSet, rng: &mut rand_pcg::Pcg64, t: &Triangle, vp: Viewpor
 pub fn frame(tris: &[Triangle], vp: Viewport, pattern: &SamplePattern<'_>, per_tri: usize) -> PSet {
     let mut set = PSet::default();
     for t in tris {
-        if uvt_core::setup::classify(t) != uvt_core::Class::Static {
+        if t.class() != uvt_core::Class::Static {
             continue;
         }
         if Setup::unculled_with::<PlanarPrecision>(t, vp)

@@ -2,7 +2,8 @@
 //! return; the checker runs them again on the files' inputs and compares bit for bit.
 
 use embedded_graphics_core::pixelcolor::RgbColor;
-use uvt_core::bounds::{BoundsStrategy, LaineCoeffs};
+use uvt_core::bounds::laine::LaineCoeffs;
+use uvt_core::bounds::strategy::BoundsStrategy;
 use uvt_core::{
     resolve_colors, sample_eval, setup_with, Cull, Exact, Interval, Laine2011, Lens, Ops, Outcome,
     PixelRect, Rgb888, Sample, ScreenPos, Setup, SubPixel, Time, Triangle, UvtBox, Vertex,

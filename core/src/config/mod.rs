@@ -1,0 +1,7 @@
+//! What a configuration is: every signal's number format ([`formats`]), the precision types
+//! ([`precision`]), the unit variants ([`unit`]) and the class of a triangle ([`class`]).
+
+pub mod class;
+pub mod formats;
+pub mod precision;
+pub mod unit;
