@@ -1,6 +1,7 @@
 //! The bounding-box scan (Laine 2011 "Bbox scan"): every sample of the footprint is tested.
 
 use crate::bounds::strategy::{BoundsStrategy, UvtBox};
+use crate::config::unit::Unit;
 use crate::input::PixelRect;
 use crate::setup::Setup;
 use crate::stats::Ops;
@@ -16,8 +17,8 @@ impl BoundsStrategy for BboxScan {
     fn name(&self) -> &'static str {
         "bbox"
     }
-    fn prepare(&self, _: &Setup, _: &mut Ops) {}
-    fn tile(&self, _: &Setup, _: &(), _: PixelRect, _: &mut Ops) -> Option<UvtBox> {
+    fn prepare<U: Unit>(&self, _: &Setup, _: &mut Ops) {}
+    fn tile<U: Unit>(&self, _: &Setup, _: &(), _: PixelRect, _: &mut Ops) -> Option<UvtBox> {
         Some(UvtBox::FULL)
     }
 }

@@ -66,7 +66,7 @@
 use crate::arith::div::floor_div;
 use crate::arith::interval::{solve_le, Interval};
 use crate::bounds::strategy::{BoundsStrategy, RowSpan, TileBounds, UvtBox};
-use crate::config::unit::{Full, Unit};
+use crate::config::unit::Unit;
 use crate::input::{PixelRect, Triangle, Viewport, C, W, X, Y};
 use crate::setup::Setup;
 use crate::stats::Ops;
@@ -323,21 +323,9 @@ impl<S: BoundsStrategy> BoundsStrategy for EdgeTime<S> {
     fn name(&self) -> &'static str {
         self.name
     }
-    fn prepare(&self, setup: &Setup, ops: &mut Ops) -> Self::Coeffs {
-        self.prepare_unit::<Full>(setup, ops)
-    }
-    fn tile(
-        &self,
-        setup: &Setup,
-        c: &Self::Coeffs,
-        tile: PixelRect,
-        ops: &mut Ops,
-    ) -> Option<Self::Tile> {
-        self.tile_unit::<Full>(setup, c, tile, ops)
-    }
     // Gated on the unit: the edge bound only with `U::MOTION` (a class without motion gets none
     // on every unit).
-    fn prepare_unit<U: Unit>(&self, setup: &Setup, ops: &mut Ops) -> Self::Coeffs {
+    fn prepare<U: Unit>(&self, setup: &Setup, ops: &mut Ops) -> Self::Coeffs {
         let edge = if U::MOTION && setup.class.motion() {
             edge_axis(setup, ops)
         } else {
@@ -345,10 +333,10 @@ impl<S: BoundsStrategy> BoundsStrategy for EdgeTime<S> {
         };
         EdgeCoeffs {
             edge,
-            inner: self.inner.prepare_unit::<U>(setup, ops),
+            inner: self.inner.prepare::<U>(setup, ops),
         }
     }
-    fn tile_unit<U: Unit>(
+    fn tile<U: Unit>(
         &self,
         setup: &Setup,
         c: &Self::Coeffs,
@@ -356,7 +344,7 @@ impl<S: BoundsStrategy> BoundsStrategy for EdgeTime<S> {
         ops: &mut Ops,
     ) -> Option<Self::Tile> {
         self.edge_tile::<U>(setup, c, tile, ops, |ops| {
-            self.inner.tile_unit::<U>(setup, &c.inner, tile, ops)
+            self.inner.tile::<U>(setup, &c.inner, tile, ops)
         })
     }
     /// The inner strategy's span (the edge bound has no row step).
@@ -370,8 +358,8 @@ impl<S: BoundsStrategy> BoundsStrategy for EdgeTime<S> {
     ) -> RowSpan {
         self.inner.row_span(setup, &c.inner, row, bt, ops)
     }
-    /// As [`Self::tile_unit`], with the inner strategy's span tile.
-    fn span_tile_unit<U: Unit>(
+    /// As [`Self::tile`], with the inner strategy's span tile.
+    fn span_tile<U: Unit>(
         &self,
         setup: &Setup,
         c: &Self::Coeffs,
@@ -380,8 +368,7 @@ impl<S: BoundsStrategy> BoundsStrategy for EdgeTime<S> {
         ops: &mut Ops,
     ) -> Option<Self::Tile> {
         self.edge_tile::<U>(setup, c, tile, ops, |ops| {
-            self.inner
-                .span_tile_unit::<U>(setup, &c.inner, span, tile, ops)
+            self.inner.span_tile::<U>(setup, &c.inner, span, tile, ops)
         })
     }
 }
@@ -422,8 +409,9 @@ mod tests {
     #![allow(clippy::arithmetic_side_effects, clippy::indexing_slicing)]
     use super::*;
     use crate::config::precision::{Bounded, Exact};
+    use crate::config::unit::Full;
     use crate::input::Vertex;
-    use crate::setup::{setup_with, Outcome};
+    use crate::setup::{setup, Outcome};
 
     const LIM: i32 = 1 << 29;
 
@@ -495,7 +483,7 @@ mod tests {
             let vp = Viewport::new(vw, vh).unwrap();
             for tri in tris() {
                 let mut ops = Ops::default();
-                let Outcome::Visible(s) = setup_with::<P>(&tri, vp, &mut ops) else {
+                let Outcome::Visible(s) = setup::<P, Full>(&tri, vp, &mut ops) else {
                     continue;
                 };
                 let Some(e) = edge_axis(&s, &mut ops) else {
@@ -509,7 +497,7 @@ mod tests {
                 assert!(e.base.iter().all(|b| b.abs() < 1 << 73));
                 assert!(e.slope.iter().all(|b| b.abs() < 1 << 53));
                 let strat = EdgeTime::new(crate::bounds::laine::Laine2011, "edge-t");
-                let c = strat.prepare(&s, &mut ops);
+                let c = strat.prepare::<Full>(&s, &mut ops);
                 let fp = s.footprint();
                 for (x, y) in [(fp.x0, fp.y0), (fp.x1 - 1, fp.y1 - 1), (fp.x0, fp.y1 - 1)] {
                     for bt in [1u16, 8] {
@@ -520,7 +508,7 @@ mod tests {
                             y1: (y + bt).min(fp.y1),
                         };
                         let _ = e.t(tile, &mut ops);
-                        let _ = strat.tile(&s, &c, tile, &mut ops);
+                        let _ = strat.tile::<Full>(&s, &c, tile, &mut ops);
                     }
                 }
             }

@@ -698,7 +698,7 @@ impl<S: BoundsStrategy> BoundsStrategy for HullCull<S> {
     fn name(&self) -> &'static str {
         self.name
     }
-    fn prepare(&self, setup: &Setup, ops: &mut Ops) -> Self::Coeffs {
+    fn prepare<U: Unit>(&self, setup: &Setup, ops: &mut Ops) -> Self::Coeffs {
         let (pts, n) = swept_points(&setup.tri, setup.class);
         let pts = pts.get(..n).unwrap_or(&[]);
         let hull = if setup.eps.is_zero() {
@@ -712,9 +712,9 @@ impl<S: BoundsStrategy> BoundsStrategy for HullCull<S> {
             }
         };
         let tiles = HullTiles::of(&hull, setup.footprint, ops);
-        (tiles, self.inner.prepare(setup, ops))
+        (tiles, self.inner.prepare::<U>(setup, ops))
     }
-    fn tile(
+    fn tile<U: Unit>(
         &self,
         setup: &Setup,
         c: &Self::Coeffs,
@@ -724,7 +724,7 @@ impl<S: BoundsStrategy> BoundsStrategy for HullCull<S> {
         if c.0.culls(tile, ops) {
             return None;
         }
-        self.inner.tile(setup, &c.1, tile, ops)
+        self.inner.tile::<U>(setup, &c.1, tile, ops)
     }
     /// The run of the row's cells no face culls ([`HullTiles::span`]), pruned; the whole row,
     /// not pruned, where spans are not used. The inner strategy's own span is not consulted
@@ -743,9 +743,8 @@ impl<S: BoundsStrategy> BoundsStrategy for HullCull<S> {
         }
     }
     /// Inside a pruned span no face culls the tile: only the inner bounds (what [`Self::tile`]
-    /// returns for a tile no face culls); else [`Self::tile`] itself (as `tile_unit`, which is
-    /// `tile` for this strategy).
-    fn span_tile_unit<U: Unit>(
+    /// returns for a tile no face culls); else [`Self::tile`] itself.
+    fn span_tile<U: Unit>(
         &self,
         setup: &Setup,
         c: &Self::Coeffs,
@@ -754,9 +753,9 @@ impl<S: BoundsStrategy> BoundsStrategy for HullCull<S> {
         ops: &mut Ops,
     ) -> Option<S::Tile> {
         if span.is_pruned() {
-            self.inner.tile(setup, &c.1, tile, ops)
+            self.inner.tile::<U>(setup, &c.1, tile, ops)
         } else {
-            self.tile_unit::<U>(setup, c, tile, ops)
+            self.tile::<U>(setup, c, tile, ops)
         }
     }
 }

@@ -49,6 +49,7 @@
 use crate::bounds::laine::{Laine2011, LaineCoeffs};
 use crate::bounds::strategy::{BoundsStrategy, TileBounds, UvtBox};
 use crate::config::class::Class;
+use crate::config::unit::Unit;
 use crate::input::{PixelRect, Triangle, W};
 use crate::setup::boxes::axis_coord;
 use crate::setup::Setup;
@@ -246,8 +247,8 @@ impl BoundsStrategy for Hyper {
     fn name(&self) -> &'static str {
         "hyper"
     }
-    fn prepare(&self, setup: &Setup, ops: &mut Ops) -> HyperCoeffs {
-        let laine = Laine2011.prepare(setup, ops);
+    fn prepare<U: Unit>(&self, setup: &Setup, ops: &mut Ops) -> HyperCoeffs {
+        let laine = Laine2011.prepare::<U>(setup, ops);
         let axes = (setup.class == Class::MotionDefocus).then(|| {
             let fp = setup.footprint;
             let vp = setup.viewport;
@@ -278,14 +279,14 @@ impl BoundsStrategy for Hyper {
         let axes = axes.flatten();
         HyperCoeffs { laine, axes }
     }
-    fn tile(
+    fn tile<U: Unit>(
         &self,
         setup: &Setup,
         c: &HyperCoeffs,
         tile: PixelRect,
         ops: &mut Ops,
     ) -> Option<HyperTile> {
-        let b = Laine2011.tile(setup, &c.laine, tile, ops)?;
+        let b = Laine2011.tile::<U>(setup, &c.laine, tile, ops)?;
         let s = c.axes.as_ref().and_then(|[x, y]| {
             let (xl, nx) = start_width(tile.x0, tile.x1);
             let (yl, ny) = start_width(tile.y0, tile.y1);

@@ -4,7 +4,7 @@
 use crate::arith::interval::{solve_le64, Interval, RecipConstraint};
 use crate::bounds::strategy::{BoundsStrategy, UvtBox};
 use crate::config::formats::DualDelta;
-use crate::config::unit::{Full, Unit};
+use crate::config::unit::Unit;
 use crate::input::{PixelRect, Triangle, W};
 use crate::setup::boxes::axis_coord;
 use crate::setup::Setup;
@@ -178,24 +178,10 @@ impl BoundsStrategy for Laine2011 {
         "laine2011"
     }
 
-    fn prepare(&self, setup: &Setup, ops: &mut Ops) -> LaineCoeffs {
-        self.prepare_unit::<Full>(setup, ops)
-    }
-
-    fn tile(
-        &self,
-        setup: &Setup,
-        c: &LaineCoeffs,
-        tile: PixelRect,
-        ops: &mut Ops,
-    ) -> Option<UvtBox> {
-        self.tile_unit::<Full>(setup, c, tile, ops)
-    }
-
     // Gated on the unit: lens terms only with `U::DEFOCUS`, dual lines only with `U::MOTION`
     // (for an accepted class the same coefficients: a class without defocus gets no lens axis,
     // one without motion no dual axis, on every unit).
-    fn prepare_unit<U: Unit>(&self, setup: &Setup, ops: &mut Ops) -> LaineCoeffs {
+    fn prepare<U: Unit>(&self, setup: &Setup, ops: &mut Ops) -> LaineCoeffs {
         // Filled in place (no array `map` of the ~100-byte axis values: each would be copied).
         let mut c = LaineCoeffs {
             lens: [None; 2],
@@ -224,7 +210,7 @@ impl BoundsStrategy for Laine2011 {
         c
     }
 
-    fn tile_unit<U: Unit>(
+    fn tile<U: Unit>(
         &self,
         setup: &Setup,
         c: &LaineCoeffs,

@@ -40,6 +40,7 @@ use crate::bounds::laine::{DualAxis, Laine2011, LaineCoeffs};
 use crate::bounds::strategy::{BoundsStrategy, TileBounds, UvtBox};
 use crate::config::class::Class;
 use crate::config::formats::{TUV_FRAC, TUV_ONE};
+use crate::config::unit::Unit;
 use crate::input::{PixelRect, Triangle, W};
 use crate::setup::boxes::axis_coord;
 use crate::setup::Setup;
@@ -181,8 +182,8 @@ impl<const R: usize> BoundsStrategy for LensTime<R> {
         "lens-t"
     }
 
-    fn prepare(&self, setup: &Setup, ops: &mut Ops) -> Self::Coeffs {
-        let laine = Laine2011.prepare(setup, ops);
+    fn prepare<U: Unit>(&self, setup: &Setup, ops: &mut Ops) -> Self::Coeffs {
+        let laine = Laine2011.prepare::<U>(setup, ops);
         let slabs = (setup.class == Class::MotionDefocus).then(|| {
             let fp = setup.footprint;
             let xi = [
@@ -212,14 +213,14 @@ impl<const R: usize> BoundsStrategy for LensTime<R> {
         LensTimeCoeffs { laine, slabs }
     }
 
-    fn tile(
+    fn tile<U: Unit>(
         &self,
         setup: &Setup,
         c: &Self::Coeffs,
         tile: PixelRect,
         ops: &mut Ops,
     ) -> Option<Self::Tile> {
-        let mut b = Laine2011.tile(setup, &c.laine, tile, ops)?;
+        let mut b = Laine2011.tile::<U>(setup, &c.laine, tile, ops)?;
         let Some(slabs) = c.slabs.as_ref() else {
             return Some(LensTimeTile { b, t: None });
         };

@@ -109,32 +109,20 @@ pub trait BoundsStrategy {
     type Tile: TileBounds;
     /// Short name for reports.
     fn name(&self) -> &'static str;
-    /// Per-triangle preparation (counted in `ops.setup`).
-    fn prepare(&self, setup: &Setup, ops: &mut Ops) -> Self::Coeffs;
-    /// Bounds of one tile inside the triangle's footprint (counted in `ops.bounds`).
-    fn tile(
+    /// Per-triangle preparation (counted in `ops.setup`) on unit `U`, for a setup whose class
+    /// `U` accepts (the renderer checks; [`crate::config::unit::Full`] accepts every class):
+    /// for every accepted class the full unit's value, with the terms of the effects `U` lacks
+    /// compiled out where the strategy gates them.
+    fn prepare<U: Unit>(&self, setup: &Setup, ops: &mut Ops) -> Self::Coeffs;
+    /// Bounds of one tile inside the triangle's footprint (counted in `ops.bounds`) on unit `U`,
+    /// as [`Self::prepare`].
+    fn tile<U: Unit>(
         &self,
         setup: &Setup,
         c: &Self::Coeffs,
         tile: PixelRect,
         ops: &mut Ops,
     ) -> Option<Self::Tile>;
-    /// [`Self::prepare`] on unit `U` for a setup whose class `U` accepts (the renderer
-    /// checks): the same value, with the terms of the effects `U` lacks compiled out where the
-    /// strategy gates them (default: `prepare` itself).
-    fn prepare_unit<U: Unit>(&self, setup: &Setup, ops: &mut Ops) -> Self::Coeffs {
-        self.prepare(setup, ops)
-    }
-    /// [`Self::tile`] on unit `U`, as [`Self::prepare_unit`].
-    fn tile_unit<U: Unit>(
-        &self,
-        setup: &Setup,
-        c: &Self::Coeffs,
-        tile: PixelRect,
-        ops: &mut Ops,
-    ) -> Option<Self::Tile> {
-        self.tile(setup, c, tile, ops)
-    }
     /// The run of one row's bounds tiles to visit (counted in `ops.rows`, never in
     /// `ops.bounds`). `row` is one row of cells of the footprint region: its columns `[x0, x1)`
     /// and the rows `[y0, y1)` that every cell of it shares (cells are aligned to the `bt` grid
@@ -150,10 +138,10 @@ pub trait BoundsStrategy {
     ) -> RowSpan {
         RowSpan::whole(row)
     }
-    /// Bounds of a tile inside the span `span` of its row: the same value as
-    /// [`Self::tile_unit`] (a strategy may skip there the part of its test that the span has
-    /// already decided). Default: [`Self::tile_unit`].
-    fn span_tile_unit<U: Unit>(
+    /// Bounds of a tile inside the span `span` of its row: the same value as [`Self::tile`] (a
+    /// strategy may skip there the part of its test that the span has already decided).
+    /// Default: [`Self::tile`].
+    fn span_tile<U: Unit>(
         &self,
         setup: &Setup,
         c: &Self::Coeffs,
@@ -161,7 +149,7 @@ pub trait BoundsStrategy {
         tile: PixelRect,
         ops: &mut Ops,
     ) -> Option<Self::Tile> {
-        self.tile_unit::<U>(setup, c, tile, ops)
+        self.tile::<U>(setup, c, tile, ops)
     }
 }
 
@@ -211,7 +199,7 @@ impl RowSpan {
 /// ([`PixelRect::rows`]), the row's span ([`BoundsStrategy::row_span`]), then every cell of the
 /// row in order ([`PixelRect::cells`]: the same cells in the same raster order as
 /// `region.cells(bt)`), handing `f` each cell with its bounds, `None` for a cell outside the span
-/// or culled by [`BoundsStrategy::span_tile_unit`].
+/// or culled by [`BoundsStrategy::span_tile`].
 pub fn walk_tiles<B: BoundsStrategy, U: Unit>(
     b: &B,
     setup: &Setup,
@@ -225,7 +213,7 @@ pub fn walk_tiles<B: BoundsStrategy, U: Unit>(
         let span = b.row_span(setup, c, row, bt, ops);
         for cell in row.cells(bt) {
             let t = if span.admits(&cell) {
-                b.span_tile_unit::<U>(setup, c, &span, cell, ops)
+                b.span_tile::<U>(setup, c, &span, cell, ops)
             } else {
                 None
             };

@@ -1,33 +1,263 @@
-//! Stage 4 — the tiny tile framebuffer and the render loop.
+//! Stage 4 — the render loop: one [`Raster`] over any unit's pipeline, and the
+//! [`Renderer`] a user instantiates — the raster of the pipeline
+//! [`crate::units::select`] picks for a (precision, unit).
 //!
-//! [`TileBuffer`] holds `TW×TH` pixels × `S` samples of color and depth. Depth test: strictly
-//! less wins, so of equal depths the first writer keeps the slot. The buffer clears to
-//! [`DEPTH_EMPTY`] (raw `i32::MAX`), which the sample test never outputs (its depths saturate to
-//! `[DEPTH_NEAR, DEPTH_FAR]`, `sample.rs`): a covered sample is either written or rejected by the
-//! depth test against a value an earlier triangle wrote, and [`Stats`] counts which
-//! (`samples_covered = samples_written + samples_occluded`). Resolve averages the S samples per channel with
-//! round-half-up: `(Σ + S/2) / S`. [`Renderer`] sets every triangle up exactly once into a
-//! fixed-capacity `heapless::Vec` (no heap; memory is `N` setups plus one tile buffer), then walks
-//! the screen tile by tile; per screen tile, per triangle whose footprint meets it, per bounds
-//! tile (aligned to the bounds-tile grid, clipped to footprint and screen tile) it asks the bounds
-//! strategy for (u, v, t) intervals and runs the sample test on the samples inside them; the
-//! tiles are walked row by row, each row first narrowed by the strategy's row span
-//! ([`crate::bounds::strategy::walk_tiles`]).
+//! [`Raster`] sets every triangle up exactly once into a fixed-capacity `heapless::Vec` (no
+//! heap; memory is `N` pipeline entries plus one tile buffer), then walks the screen tile by
+//! tile; per screen tile, per triangle whose footprint meets it, the pipeline walks the bounds
+//! tiles (aligned to the bounds-tile grid, clipped to footprint and screen tile) with its tile
+//! step — the general pipeline's (u, v, t) intervals, row by row with the strategy's row spans;
+//! the specialised units' own culls — and the one per-cell loop ([`shade_cell`]) runs the
+//! pipeline's sample test on the samples the tile admits, depth-tests the hits into the
+//! [`TileBuffer`] and counts in [`Stats`] (`samples_covered = samples_written +
+//! samples_occluded`). Resolve averages the S samples per channel with round-half-up.
 
 use embedded_graphics_core::draw_target::DrawTarget;
 use embedded_graphics_core::pixelcolor::Rgb888;
 use embedded_graphics_core::prelude::{Pixel, Point};
 
-use crate::bounds::strategy::{walk_tiles, BoundsStrategy, TileBounds};
-use crate::config::precision::{DefaultPrecision, Precision};
-use crate::config::unit::{Full, Unit};
+use crate::bounds::laine::Laine2011;
+use crate::config::precision::{DefaultPrecision, PlanarPrecision};
+use crate::config::unit::{Full, MotionOnly, StaticOnly, Unit};
 use crate::error::Error;
 use crate::input::{PixelRect, Prim, SamplePattern, Viewport};
 use crate::raster::tile_buffer::{tile_size, DepthTest, PixelStats, TileBuffer};
 use crate::sample::pos::ScreenPos;
-use crate::sample::sample_test_unit;
-use crate::setup::{setup_unit, Cull, Outcome, Setup};
+use crate::setup::{Cull, Outcome};
 use crate::stats::{Ops, Stats};
+use crate::units::pipeline::Pipeline;
+use crate::units::select::PipelineOf;
+
+/// The renderer of precision `P` (default: [`DefaultPrecision`]) on unit `U` (default: [`Full`];
+/// a narrower unit refuses the classes it lacks, [`Error::ClassNotInUnit`]) with bounds strategy
+/// `B`, holding at most `N` visible triangles: the [`Raster`] of the pipeline
+/// [`crate::units::select`] picks — the static-only unit's own pipeline at a planar precision,
+/// the motion-only unit's at a bounded one (where `B` is not used: those units cull with their
+/// own tests), else the general pipeline. Generic code names it with the bound
+/// `(P, U): Select<B>` ([`crate::units::select::Select`]), which every precision and unit
+/// satisfy.
+pub type Renderer<B, const N: usize, P = DefaultPrecision, U = Full> =
+    Raster<PipelineOf<B, P, U>, N>;
+
+/// The static-only unit's renderer at the planar configuration (`planar-16-16-16-20`).
+pub type StaticRenderer<const N: usize> = Renderer<Laine2011, N, PlanarPrecision, StaticOnly>;
+
+/// The motion-only unit's renderer at bounded precision `P`.
+pub type MotionRenderer<const N: usize, P = DefaultPrecision> =
+    Renderer<Laine2011, N, P, MotionOnly>;
+
+/// The render loop over pipeline `L`, holding at most `N` visible triangles (module docs).
+/// [`Renderer`] names it by precision and unit; a pipeline can also be named directly (e.g. the
+/// general pipeline on a unit that has its own, to compare the two).
+pub struct Raster<L: Pipeline, const N: usize> {
+    pipe: L,
+    vp: Viewport,
+    entries: heapless::Vec<(L::Entry, Rgb888), N>,
+    /// counters accumulated over setup and every rendered tile
+    pub stats: Stats,
+}
+
+impl<L: Pipeline, const N: usize> Raster<L, N> {
+    /// Set every triangle up exactly once, in order, with bounds strategy `bounds`. Fails with
+    /// [`Error::ClassNotInUnit`] (naming the first such primitive, culled or not) if a
+    /// primitive's class is not accepted by the unit — every class is checked before any setup
+    /// — or with [`Error::TooManyTriangles`] if more than `N` triangles are visible. No renderer
+    /// is returned on an error.
+    pub fn new(bounds: L::Bounds, vp: Viewport, prims: &[Prim]) -> Result<Self, Error> {
+        for (index, p) in prims.iter().enumerate() {
+            let class = p.tri.class();
+            if !<L::Unit as Unit>::accepts(class) {
+                return Err(refused::<L>(index, class));
+            }
+        }
+        let mut r = Raster {
+            pipe: L::new(bounds),
+            vp,
+            entries: heapless::Vec::new(),
+            stats: Stats::default(),
+        };
+        for (index, p) in prims.iter().enumerate() {
+            Stats::inc(&mut r.stats.triangles);
+            // Every class is accepted (checked above): `Err` cannot occur; were it to, the
+            // primitive is refused, never rendered.
+            match r.pipe.setup(&p.tri, vp, &mut r.stats.ops) {
+                Outcome::Refused(class) => return Err(refused::<L>(index, class)),
+                Outcome::Culled(Cull::Outside) => Stats::inc(&mut r.stats.culled_outside),
+                Outcome::Culled(Cull::Degenerate) => Stats::inc(&mut r.stats.culled_degenerate),
+                Outcome::Visible(e) => {
+                    if let Some(c) = r.stats.by_class.get_mut(L::class(&e).index()) {
+                        Stats::inc(c);
+                    }
+                    r.entries
+                        .push((e, p.color))
+                        .map_err(|_| Error::TooManyTriangles { capacity: N })?;
+                }
+            }
+        }
+        Ok(r)
+    }
+
+    /// The visible triangles' pipeline entries (the general pipeline's: setup and the
+    /// strategy's coefficients), in order.
+    pub fn entries(&self) -> impl Iterator<Item = &L::Entry> {
+        self.entries.iter().map(|(e, _)| e)
+    }
+
+    /// Render the screen tile whose top-left pixel is (`x0`, `y0`) into `fb` (cleared first).
+    pub fn render_tile<const TW: usize, const TH: usize, const S: usize>(
+        &mut self,
+        x0: u16,
+        y0: u16,
+        pattern: &SamplePattern<'_>,
+        bounds_tile: u8,
+        clear: Rgb888,
+        fb: &mut TileBuffer<TW, TH, S>,
+    ) -> Result<(), Error> {
+        let screen = tile_screen::<TW, TH, S>(pattern, bounds_tile, x0, y0, &self.vp)?;
+        fb.clear_fill(clear);
+        let bt = u16::from(bounds_tile);
+        let Raster {
+            pipe,
+            entries,
+            stats,
+            ..
+        } = self;
+        let mut ops = Ops::default();
+        for (entry, color) in entries.iter() {
+            let region = L::footprint(entry).intersect(&screen);
+            if region.is_empty() {
+                continue;
+            }
+            // A cell the tile step culls (or, on the general pipeline, outside its row's span)
+            // counts as visited and skipped.
+            pipe.walk(entry, region, bt, &mut ops, |cell, tile, ops| {
+                Stats::inc(&mut stats.tiles_visited);
+                let Some(tile) = tile else {
+                    Stats::inc(&mut stats.tiles_skipped);
+                    return;
+                };
+                let at = Cell {
+                    cell,
+                    screen,
+                    color: *color,
+                };
+                shade_cell::<L, TW, TH, S>(entry, &tile, &at, pattern, fb, stats, ops);
+            });
+        }
+        stats.ops.add(&ops);
+        Ok(())
+    }
+
+    /// Render the whole viewport tile by tile, handing every resolved pixel with its counters to
+    /// `out(x, y, color, stats)`. One `TileBuffer` lives on the stack.
+    pub fn render_with<const TW: usize, const TH: usize, const S: usize>(
+        &mut self,
+        pattern: &SamplePattern<'_>,
+        bounds_tile: u8,
+        clear: Rgb888,
+        out: impl FnMut(u16, u16, Rgb888, PixelStats),
+    ) -> Result<(), Error> {
+        let mut fb = TileBuffer::<TW, TH, S>::new_fill(clear);
+        let vp = self.vp;
+        walk_screen(
+            vp,
+            &mut fb,
+            |x0, y0, fb| self.render_tile(x0, y0, pattern, bounds_tile, clear, fb),
+            out,
+        )
+    }
+
+    /// Render the whole viewport into an embedded-graphics `DrawTarget`, one tile at a time.
+    pub fn render<D, const TW: usize, const TH: usize, const S: usize>(
+        &mut self,
+        pattern: &SamplePattern<'_>,
+        bounds_tile: u8,
+        clear: Rgb888,
+        target: &mut D,
+    ) -> Result<(), RenderError<D::Error>>
+    where
+        D: DrawTarget<Color = Rgb888>,
+    {
+        let mut draw_err = None;
+        self.render_with::<TW, TH, S>(pattern, bounds_tile, clear, |x, y, c, _| {
+            if draw_err.is_none() {
+                let px = Pixel(Point::new(x as i32, y as i32), c);
+                if let Err(e) = target.draw_iter(core::iter::once(px)) {
+                    draw_err = Some(e);
+                }
+            }
+        })
+        .map_err(RenderError::Core)?;
+        match draw_err {
+            Some(e) => Err(RenderError::Draw(e)),
+            None => Ok(()),
+        }
+    }
+}
+
+/// The refusal of primitive `index` of `class` by pipeline `L`'s unit.
+fn refused<L: Pipeline>(index: usize, class: crate::config::class::Class) -> Error {
+    Error::ClassNotInUnit {
+        index,
+        class,
+        unit: <L::Unit as Unit>::NAME,
+    }
+}
+
+/// One bounds tile's place and the triangle's color.
+struct Cell {
+    cell: PixelRect,
+    screen: PixelRect,
+    color: Rgb888,
+}
+
+/// The one per-cell sample loop of every pipeline: each sample of the bounds tile that the tile
+/// step admits is tested ([`Pipeline::test`], its operations counted by the test or
+/// [`Pipeline::count`]), counted per pixel, and on a hit depth-tested into the buffer.
+#[inline(always)]
+fn shade_cell<L: Pipeline, const TW: usize, const TH: usize, const S: usize>(
+    entry: &L::Entry,
+    tile: &L::Tile,
+    at: &Cell,
+    pattern: &SamplePattern<'_>,
+    fb: &mut TileBuffer<TW, TH, S>,
+    stats: &mut Stats,
+    ops: &mut Ops,
+) {
+    let (cell, screen) = (at.cell, at.screen);
+    for py in cell.y0..cell.y1 {
+        for px in cell.x0..cell.x1 {
+            // The cell lies inside the screen tile, so both differences are in [0, TW), [0, TH).
+            let (Some(tx), Some(ty)) = (px.checked_sub(screen.x0), py.checked_sub(screen.y0))
+            else {
+                continue;
+            };
+            let (tx, ty) = (usize::from(tx), usize::from(ty));
+            for (si, s) in pattern.pixel(px, py).iter().enumerate() {
+                if !L::admits(tile, s, ops) {
+                    continue;
+                }
+                Stats::inc(&mut stats.samples_tested);
+                let hit = L::test(entry, ScreenPos::of(px, py, s), s, ops);
+                L::count(hit.is_some(), ops);
+                fb.count(tx, ty, hit.is_some());
+                let Some(h) = hit else {
+                    continue;
+                };
+                Stats::inc(&mut stats.samples_covered);
+                // In range (tx < TW, ty < TH, si < S = spp) and h.depth ≠ DEPTH_EMPTY.
+                match fb.write(tx, ty, si, at.color, h.depth) {
+                    Some(DepthTest::Written) => {
+                        Stats::inc(&mut stats.samples_written);
+                        fb.count_written(tx, ty);
+                    }
+                    Some(DepthTest::Occluded) => Stats::inc(&mut stats.samples_occluded),
+                    None => {}
+                }
+            }
+        }
+    }
+}
 
 /// The screen walk of every renderer's `render_with`: for each screen tile of `vp` (raster
 /// order) `render(x0, y0, fb)` renders it into `fb`, then each of its pixels inside `vp` goes to
@@ -108,225 +338,7 @@ fn check_tile_args<const TW: usize, const TH: usize, const S: usize>(
     Ok(())
 }
 
-/// Renders a triangle list with bounds strategy `B`, holding at most `N` visible setups, at
-/// precision `P` (default: [`DefaultPrecision`]) on unit `U` (default: [`Full`]; a narrower
-/// unit refuses the classes it lacks, [`Error::ClassNotInUnit`]).
-pub struct Renderer<
-    B: BoundsStrategy,
-    const N: usize,
-    P: Precision = DefaultPrecision,
-    U: Unit = Full,
-> {
-    prec: core::marker::PhantomData<(P, U)>,
-    bounds: B,
-    vp: Viewport,
-    setups: heapless::Vec<(Setup, B::Coeffs, Rgb888), N>,
-    /// counters accumulated over setup and every rendered tile
-    pub stats: Stats,
-}
-
-impl<B: BoundsStrategy, const N: usize, P: Precision, U: Unit> Renderer<B, N, P, U> {
-    /// Set every triangle up exactly once. Fails if more than `N` triangles are visible, or
-    /// with [`Error::ClassNotInUnit`] (naming the first such primitive, culled or not) if a
-    /// primitive's class is not accepted by `U`: every class is checked before any setup.
-    pub fn new(bounds: B, vp: Viewport, prims: &[Prim]) -> Result<Self, Error> {
-        for (index, p) in prims.iter().enumerate() {
-            let class = p.tri.class();
-            if !U::accepts(class) {
-                return Err(Error::ClassNotInUnit {
-                    index,
-                    class,
-                    unit: U::NAME,
-                });
-            }
-        }
-        let mut r = Renderer {
-            prec: core::marker::PhantomData,
-            bounds,
-            vp,
-            setups: heapless::Vec::new(),
-            stats: Stats::default(),
-        };
-        for (index, p) in prims.iter().enumerate() {
-            Stats::inc(&mut r.stats.triangles);
-            // Every class is accepted (checked above): `Err` cannot occur; were it to, the
-            // primitive is refused, never rendered.
-            let outcome = setup_unit::<P, U>(&p.tri, vp, &mut r.stats.ops);
-            match outcome.map_err(|class| Error::ClassNotInUnit {
-                index,
-                class,
-                unit: U::NAME,
-            })? {
-                Outcome::Culled(Cull::Outside) => Stats::inc(&mut r.stats.culled_outside),
-                Outcome::Culled(Cull::Degenerate) => Stats::inc(&mut r.stats.culled_degenerate),
-                Outcome::Visible(s) => {
-                    if let Some(c) = r.stats.by_class.get_mut(s.class.index()) {
-                        Stats::inc(c);
-                    }
-                    let coeffs = r.bounds.prepare_unit::<U>(&s, &mut r.stats.ops);
-                    r.setups
-                        .push((s, coeffs, p.color))
-                        .map_err(|_| Error::TooManyTriangles { capacity: N })?;
-                }
-            }
-        }
-        Ok(r)
-    }
-
-    /// The visible setups.
-    pub fn setups(&self) -> impl Iterator<Item = &Setup> {
-        self.setups.iter().map(|(s, _, _)| s)
-    }
-
-    /// Render the screen tile whose top-left pixel is (`x0`, `y0`) into `fb` (cleared first).
-    pub fn render_tile<const TW: usize, const TH: usize, const S: usize>(
-        &mut self,
-        x0: u16,
-        y0: u16,
-        pattern: &SamplePattern<'_>,
-        bounds_tile: u8,
-        clear: Rgb888,
-        fb: &mut TileBuffer<TW, TH, S>,
-    ) -> Result<(), Error> {
-        let screen = tile_screen::<TW, TH, S>(pattern, bounds_tile, x0, y0, &self.vp)?;
-        fb.clear(clear);
-        let b = u16::from(bounds_tile);
-        let Renderer {
-            bounds,
-            setups,
-            stats,
-            ..
-        } = self;
-        for (setup, coeffs, color) in setups.iter() {
-            let region = setup.footprint().intersect(&screen);
-            if region.is_empty() {
-                continue;
-            }
-            // Row → span → tiles; a cell outside its row's span counts as visited and skipped,
-            // like a cell the per-tile test culls (the same counters either way).
-            let mut ops = Ops::default();
-            walk_tiles::<B, U>(bounds, setup, coeffs, region, b, &mut ops, |cell, t, _| {
-                Stats::inc(&mut stats.tiles_visited);
-                let Some(uvt) = t else {
-                    Stats::inc(&mut stats.tiles_skipped);
-                    return;
-                };
-                shade_cell::<_, P, U, TW, TH, S>(
-                    setup, &uvt, cell, screen, pattern, *color, fb, stats,
-                );
-            });
-            stats.ops.add(&ops);
-        }
-        Ok(())
-    }
-
-    /// Render the whole viewport tile by tile, handing every resolved pixel with its counters to
-    /// `out(x, y, color, stats)`. One `TileBuffer` lives on the stack.
-    pub fn render_with<const TW: usize, const TH: usize, const S: usize>(
-        &mut self,
-        pattern: &SamplePattern<'_>,
-        bounds_tile: u8,
-        clear: Rgb888,
-        out: impl FnMut(u16, u16, Rgb888, PixelStats),
-    ) -> Result<(), Error> {
-        let mut fb = TileBuffer::<TW, TH, S>::new(clear);
-        let vp = self.vp;
-        walk_screen(
-            vp,
-            &mut fb,
-            |x0, y0, fb| self.render_tile(x0, y0, pattern, bounds_tile, clear, fb),
-            out,
-        )
-    }
-
-    /// Render the whole viewport into an embedded-graphics `DrawTarget`, one tile at a time.
-    pub fn render<D, const TW: usize, const TH: usize, const S: usize>(
-        &mut self,
-        pattern: &SamplePattern<'_>,
-        bounds_tile: u8,
-        clear: Rgb888,
-        target: &mut D,
-    ) -> Result<(), RenderError<D::Error>>
-    where
-        D: DrawTarget<Color = Rgb888>,
-    {
-        let mut draw_err = None;
-        self.render_with::<TW, TH, S>(pattern, bounds_tile, clear, |x, y, c, _| {
-            if draw_err.is_none() {
-                let px = Pixel(Point::new(x as i32, y as i32), c);
-                if let Err(e) = target.draw_iter(core::iter::once(px)) {
-                    draw_err = Some(e);
-                }
-            }
-        })
-        .map_err(RenderError::Core)?;
-        match draw_err {
-            Some(e) => Err(RenderError::Draw(e)),
-            None => Ok(()),
-        }
-    }
-}
-
-/// Test the samples of one bounds tile that fall inside its intervals.
-#[allow(clippy::too_many_arguments)]
-fn shade_cell<
-    T: TileBounds,
-    P: Precision,
-    U: Unit,
-    const TW: usize,
-    const TH: usize,
-    const S: usize,
->(
-    setup: &Setup,
-    uvt: &T,
-    cell: PixelRect,
-    screen: PixelRect,
-    pattern: &SamplePattern<'_>,
-    color: Rgb888,
-    fb: &mut TileBuffer<TW, TH, S>,
-    stats: &mut Stats,
-) {
-    let mut ops = Ops::default();
-    for py in cell.y0..cell.y1 {
-        for px in cell.x0..cell.x1 {
-            // The cell lies inside the screen tile, so both differences are in [0, TW), [0, TH).
-            let (Some(tx), Some(ty)) = (px.checked_sub(screen.x0), py.checked_sub(screen.y0))
-            else {
-                continue;
-            };
-            let (tx, ty) = (usize::from(tx), usize::from(ty));
-            for (si, s) in pattern.pixel(px, py).iter().enumerate() {
-                if !uvt.admits(s.u().to_bits(), s.v().to_bits(), s.t().to_bits(), &mut ops) {
-                    continue;
-                }
-                Stats::inc(&mut stats.samples_tested);
-                let hit = sample_test_unit::<P, U>(setup, ScreenPos::of(px, py, s), s, &mut ops);
-                let ps = fb.stats.get_mut(ty).and_then(|r| r.get_mut(tx));
-                if let Some(ps) = ps {
-                    ps.tested = ps.tested.saturating_add(1);
-                    ps.covered = ps.covered.saturating_add(u32::from(hit.is_some()));
-                }
-                if let Some(h) = hit {
-                    Stats::inc(&mut stats.samples_covered);
-                    // In range (tx < TW, ty < TH, si < S = spp) and h.depth ≠ DEPTH_EMPTY.
-                    match fb.write(tx, ty, si, color, h.depth) {
-                        Some(DepthTest::Written) => {
-                            Stats::inc(&mut stats.samples_written);
-                            if let Some(ps) = fb.stats.get_mut(ty).and_then(|r| r.get_mut(tx)) {
-                                ps.written = ps.written.saturating_add(1);
-                            }
-                        }
-                        Some(DepthTest::Occluded) => Stats::inc(&mut stats.samples_occluded),
-                        None => {}
-                    }
-                }
-            }
-        }
-    }
-    stats.ops.add(&ops);
-}
-
-/// Error of [`Renderer::render`]: the core's, or the draw target's.
+/// Error of [`Raster::render`]: the core's, or the draw target's.
 #[derive(Debug, PartialEq, Eq)]
 pub enum RenderError<E> {
     /// refused by the core

@@ -41,7 +41,7 @@
 use crate::arith::wide::Wide;
 use crate::config::class::Class;
 use crate::config::formats::{DEPTH_EDGE_BITS, DEPTH_FAR, DEPTH_FRAC, DEPTH_NEAR, TUV_FRAC};
-use crate::config::unit::{Full, Unit};
+use crate::config::unit::Unit;
 use crate::input::{Sample, C, W, X, Y, Z};
 use crate::sample::pos::{direction, Hit, ScreenPos};
 use crate::setup::Setup;
@@ -63,16 +63,9 @@ const DEPTH_SCALE: i128 = 1 << DEPTH_FRAC;
 /// motion+defocus `lerp·2^16 + U·l[C]`: ≤ 2^61 + 2^61 = 2^62. All < 2^63: no i64 overflow.
 /// The scalings are multiplications by the constant 2^16 (no shift), so debug builds' overflow
 /// checks see them; `tests::positions_at_the_domain_corners` drives the extremes.
+/// On unit `U` the class arms `U` lacks are compiled out (an accepted class takes the same arm).
 #[allow(clippy::arithmetic_side_effects)]
-#[cfg(test)]
-pub(crate) fn positions(setup: &Setup, s: &Sample, ops: &mut Ops) -> ([[i64; 4]; 3], u32) {
-    positions_unit::<Full>(setup, s, ops)
-}
-
-/// `positions` on unit `U`: the class arms `U` lacks are compiled out (an accepted class
-/// takes the same arm).
-#[allow(clippy::arithmetic_side_effects)] // ranges at `positions`
-fn positions_unit<U: Unit>(setup: &Setup, s: &Sample, ops: &mut Ops) -> ([[i64; 4]; 3], u32) {
+pub(crate) fn positions<U: Unit>(setup: &Setup, s: &Sample, ops: &mut Ops) -> ([[i64; 4]; 3], u32) {
     let [v0, v1] = &setup.tri.v;
     let t = i64::from(s.t().to_bits());
     let (u, v) = (i64::from(s.u().to_bits()), i64::from(s.v().to_bits()));
@@ -215,10 +208,10 @@ pub(crate) fn depth(e: &[Wide; 3], wz: &[(i64, i64); 3], det_sign: i32) -> i32 {
     i32::try_from(clamped).unwrap_or(DEPTH_FAR)
 }
 
-/// Everything the sample test computed for one sample: the exact edge values, the determinant and
-/// the decision. Golden vectors export it so RTL can be checked stage-internally.
+/// Everything the exact test computed for one sample: the exact edge values, the determinant
+/// and the decision. Golden vectors export it so RTL can be checked stage-internally.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct SampleEval {
+pub struct ExactEval {
     /// edge values E_0, E_1, E_2 (exact)
     pub e: [Wide; 3],
     /// det = P_0 · (P_1 × P_2) (exact; for static triangles only its sign is kept: ±1 or 0)
@@ -227,21 +220,11 @@ pub struct SampleEval {
     pub hit: Option<Hit>,
 }
 
-/// The sample test with its intermediates. Counts its arithmetic in `ops.sample`. Always the
-/// exact test, whatever the setup's precision; a `Bounded` setup's rounded intermediates come
-/// from [`crate::sample::bounded::bounded_eval`].
-pub fn sample_eval(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> SampleEval {
-    sample_eval_unit::<Full>(setup, pos, s, ops)
-}
-
-/// [`sample_eval`] on unit `U` for a setup whose class `U` accepts (the renderer checks): the
-/// same value, the class terms `U` lacks compiled out.
-pub fn sample_eval_unit<U: Unit>(
-    setup: &Setup,
-    pos: ScreenPos,
-    s: &Sample,
-    ops: &mut Ops,
-) -> SampleEval {
+/// The exact test with its intermediates, on unit `U` for a setup whose class `U` accepts (the
+/// renderer checks; the full unit accepts every class): the class terms `U` lacks are compiled
+/// out. Counts its arithmetic in `ops.sample`. Always the exact test, whatever the setup's
+/// precision; a `Bounded` setup's rounded intermediates come from [`crate::sample::bounded::eval`].
+pub fn eval<U: Unit>(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> ExactEval {
     let d = direction(setup.viewport, pos);
     ops.add_sample(5);
     // A bounded setup does not store the normals (`Setup::edges`): computed here, same value.
@@ -262,11 +245,11 @@ pub fn sample_eval_unit<U: Unit>(
         ops.add_sample(18);
         let det = Wide::from_i128(i128::from(st.det_sign));
         if !decide(&e, &st.n, st.det_sign) {
-            return SampleEval { e, det, hit: None };
+            return ExactEval { e, det, hit: None };
         }
         let wz = setup.tri.v[0].map(|q| (i64::from(q[W]), i64::from(q[Z])));
         ops.add_sample(12);
-        return SampleEval {
+        return ExactEval {
             e,
             det,
             hit: Some(Hit {
@@ -274,7 +257,7 @@ pub fn sample_eval_unit<U: Unit>(
             }),
         };
     }
-    let (p, _frac) = positions_unit::<U>(setup, s, ops);
+    let (p, _frac) = positions::<U>(setup, s, ops);
     let n = [
         cross(&p[1], &p[2]),
         cross(&p[2], &p[0]),
@@ -288,22 +271,15 @@ pub fn sample_eval_unit<U: Unit>(
     ops.add_sample(18 + 15 + 5 + 6);
     let det_sign = det.signum();
     if !decide(&e, &n, det_sign) {
-        return SampleEval { e, det, hit: None };
+        return ExactEval { e, det, hit: None };
     }
     let wz = p.map(|q| (q[2], q[3]));
     ops.add_sample(12);
-    SampleEval {
+    ExactEval {
         e,
         det,
         hit: Some(Hit {
             depth: depth(&e, &wz, det_sign),
         }),
     }
-}
-
-/// The exact test's hit, out of line: `sample_eval` returns a large value, and inlined here its
-/// stack frame would be set up on the bounded path's calls too.
-#[inline(never)]
-pub(crate) fn exact_test(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> Option<Hit> {
-    sample_eval(setup, pos, s, ops).hit
 }

@@ -8,34 +8,20 @@ pub mod exact;
 pub mod planar;
 pub mod pos;
 
-use crate::config::class::Class;
 use crate::config::precision::Precision;
 use crate::config::unit::Unit;
 use crate::input::Sample;
-use crate::sample::exact::{exact_test, sample_eval_unit};
 use crate::sample::pos::{Hit, ScreenPos};
 use crate::setup::Setup;
 use crate::stats::Ops;
 
-/// The sample test for one sample of a visible triangle: the depth on a hit. A setup of a
-/// [`crate::config::precision::Bounded`] precision runs the bounded test ([`crate::sample::bounded`]); every other
-/// runs the exact test above.
-pub fn sample_test(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> Option<Hit> {
-    if setup.prec.planar() && setup.class == Class::Static {
-        return crate::sample::planar::planar_test(setup, pos, ops);
-    }
-    if setup.prec.offset_shift().is_some() {
-        return crate::sample::bounded::bounded_test(setup, pos, s, ops);
-    }
-    exact_test(setup, pos, s, ops)
-}
-
-/// The sample test of precision `P` on unit `U`, chosen at compile time: `P`'s bounded test
-/// ([`crate::sample::bounded::bounded_test_unit`]) or the exact one, with only the classes `U`
-/// accepts instantiated. For a setup of precision `P` whose class `U` accepts, the same hit as
-/// [`sample_test`]; a class `U` does not accept is never covered (the renderer refuses it
-/// before setup).
-pub fn sample_test_unit<P: Precision, U: Unit>(
+/// The sample test of precision `P` on unit `U` for a setup made at `P` ([`crate::setup::setup`]
+/// or [`Setup::unculled`] with the same `P`), chosen at compile time: the planar test for a
+/// static triangle of a [`crate::config::precision::Planar`] precision, the bounded test of
+/// any other bounded precision, else the exact test — with only the classes `U` accepts
+/// instantiated. The depth on a hit; a class `U` does not accept is never covered (the
+/// renderer refuses it before setup). This is the one dispatch between the three tests.
+pub fn test<P: Precision, U: Unit>(
     setup: &Setup,
     pos: ScreenPos,
     s: &Sample,
@@ -47,10 +33,10 @@ pub fn sample_test_unit<P: Precision, U: Unit>(
     // A `Planar` precision's static class (gated as in setup: a constant on the static-only
     // unit, whose program then has no bounded datapath).
     if P::PLANAR && !(U::MOTION && setup.class.motion()) && !(U::DEFOCUS && setup.class.defocus()) {
-        return crate::sample::planar::planar_test(setup, pos, ops);
+        return planar::test(setup, pos, ops);
     }
     if P::OFFSET_SHIFT.is_some() {
-        return crate::sample::bounded::bounded_test_unit::<P, U>(setup, pos, s, ops);
+        return bounded::test::<P, U>(setup, pos, s, ops);
     }
-    sample_eval_unit::<U>(setup, pos, s, ops).hit
+    exact::eval::<U>(setup, pos, s, ops).hit
 }

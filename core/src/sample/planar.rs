@@ -174,7 +174,7 @@ pub(crate) fn depth(g: &[i32; 3], f: i32, d: &[i32; 3]) -> i32 {
 /// setup without planar data (not a static triangle of a `Planar` precision).
 #[inline(always)]
 #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_wrap)]
-pub fn planar_eval(setup: &Setup, pos: ScreenPos, ops: &mut Ops) -> Option<PlanarEval> {
+pub fn eval(setup: &Setup, pos: ScreenPos, ops: &mut Ops) -> Option<PlanarEval> {
     let crate::setup::Stored::Planar(pl) = &setup.edges else {
         return None;
     };
@@ -223,8 +223,8 @@ pub fn planar_eval(setup: &Setup, pos: ScreenPos, ops: &mut Ops) -> Option<Plana
     Some(PlanarEval { e, hit })
 }
 
-/// The planar test: the depth on a hit ([`planar_eval`]).
+/// The planar test: the depth on a hit ([`eval`]).
 #[inline]
-pub fn planar_test(setup: &Setup, pos: ScreenPos, ops: &mut Ops) -> Option<Hit> {
-    planar_eval(setup, pos, ops)?.hit
+pub fn test(setup: &Setup, pos: ScreenPos, ops: &mut Ops) -> Option<Hit> {
+    eval(setup, pos, ops)?.hit
 }

@@ -16,19 +16,19 @@
 //! front of the camera: `ξ = (a + w)·E / (2w)`.
 
 pub mod boxes;
-pub mod degenerate;
 pub mod eps;
+pub mod exact_edges;
 pub mod planar;
 pub mod span;
 
 use crate::arith::interval::Interval;
 use crate::config::class::Class;
-use crate::config::precision::{DefaultPrecision, Precision, PrecisionBits};
+use crate::config::precision::{Precision, PrecisionBits};
 use crate::config::unit::{Full, Unit};
 use crate::input::{PixelRect, Triangle, Viewport, C};
 use crate::setup::boxes::{axis_boxes, axis_range, corner_boxes, exact_boxes, AxisBoxes};
-use crate::setup::degenerate::{degenerate, static_edges};
 use crate::setup::eps::Eps;
+use crate::setup::exact_edges::{degenerate, static_edges, StaticEdges};
 use crate::setup::planar::{planar_setup, PlanarEdges};
 use crate::setup::span::frustum_span;
 use crate::stats::Ops;
@@ -42,26 +42,7 @@ pub enum Cull {
     Degenerate,
 }
 
-/// Static in-focus edge data: normals `n_k = P_{k+1} × P_{k+2}` and `det`, raw 2·16 fraction bits.
-/// Built only by setup from a checked [`Triangle`], so |n| < 2^59 and `det_sign` is ±1.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct StaticEdges {
-    pub(crate) n: [[i128; 3]; 3],
-    pub(crate) det_sign: i32,
-}
-
-impl StaticEdges {
-    /// Edge normals (a, b, c) per edge.
-    pub fn n(&self) -> [[i128; 3]; 3] {
-        self.n
-    }
-    /// Sign of P0·(P1×P2): −1 or 1 (0 is culled).
-    pub fn det_sign(&self) -> i32 {
-        self.det_sign
-    }
-}
-
-/// Everything later stages need about one triangle. Built only by [`setup_with`] (or
+/// Everything later stages need about one triangle. Built only by [`setup`] (or
 /// [`Setup::unculled`]) from a checked [`Triangle`] and [`Viewport`]; read through its methods,
 /// so no out-of-domain value (say a bound precision of 70 bits) can reach the bounds' shifts:
 ///
@@ -166,26 +147,26 @@ impl Setup {
     }
 }
 
-/// Result of setup. (No heap in core, so the large variant stays inline.)
+/// Result of a setup on a unit: visible with the per-triangle data `S` — a [`Setup`] here, the
+/// specialised units' own setups in `crate::units` — culled with the reason, or refused: the
+/// triangle's class needs an effect the unit has no hardware for (never on the full unit).
+/// (No heap in core, so the large variant stays inline.)
 #[allow(clippy::large_enum_variant)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Outcome {
+pub enum Outcome<S = Setup> {
     /// culled, with the reason
     Culled(Cull),
     /// visible: the setup
-    Visible(Setup),
+    Visible(S),
+    /// not accepted by the unit (nothing computed beyond [`Triangle::class`]): the class
+    Refused(Class),
 }
 
 impl Setup {
-    /// The sample-test data of a triangle without culling or bounds (footprint = whole
-    /// viewport, span = [0, 1]). For verification only: it lets tests and the host ask whether a
-    /// triangle that [`setup`] culled really covers no sample.
-    pub fn unculled(tri: &Triangle, vp: Viewport) -> Setup {
-        Setup::unculled_with::<DefaultPrecision>(tri, vp)
-    }
-
-    /// [`Setup::unculled`] at precision `P` (its sample test: exact or bounded).
-    pub fn unculled_with<P: Precision>(tri: &Triangle, vp: Viewport) -> Setup {
+    /// The sample-test data of a triangle at precision `P` without culling or bounds
+    /// (footprint = whole viewport, span = [0, 1]). For verification only: it lets tests and
+    /// the host ask whether a triangle that [`setup`] culled really covers no sample.
+    pub fn unculled<P: Precision>(tri: &Triangle, vp: Viewport) -> Setup {
         let class = tri.class();
         let prec = PrecisionBits::of::<P>();
         let full = AxisBoxes { lo: None, hi: None };
@@ -197,7 +178,7 @@ impl Setup {
         };
         let exact = P::OFFSET_SHIFT.is_none();
         let planar = if P::PLANAR && class == Class::Static {
-            planar_setup(tri, vp, &mut Ops::default())
+            planar_setup::<false>(tri, vp, &mut Ops::default())
         } else {
             None
         };
@@ -224,18 +205,7 @@ impl Setup {
     }
 }
 
-/// Run setup on one triangle at the default precision. Counts its arithmetic in `ops.setup`.
-pub fn setup(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> Outcome {
-    setup_with::<DefaultPrecision>(tri, vp, ops)
-}
-
-/// Run setup at precision `P`: box coordinates on `P`'s bound grid, the time span rounded
-/// outward to `P`'s t grid.
-pub fn setup_with<P: Precision>(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> Outcome {
-    setup_scaled::<P>(tri, vp, 1, 1, ops)
-}
-
-/// **Measurement only**: [`setup_with`] with the conservative epsilon scaled down to
+/// **Measurement only**: [`setup`] on the full unit with the conservative epsilon scaled down to
 /// `floor(ε·num/den)` (`num ≤ den`, else `num = den`; `den = 0` gives ε = 0), so a report can
 /// find the smallest margin with zero violations. Below the analytic ε the bounds are **not**
 /// guaranteed conservative for the bounded test; every value stays inside the range proofs.
@@ -249,28 +219,19 @@ pub fn setup_scaled<P: Precision>(
     setup_gated::<P, Full>(tri, tri.class(), vp, num, den, ops)
 }
 
-/// Setup on unit `U` ([`crate::config::unit`]) at precision `P`: `Err(class)` (nothing computed
-/// beyond [`Triangle::class`]) when `U` does not accept the triangle's class, else exactly
-/// [`setup_with::<P>`]'s outcome. The terms of the classes `U` lacks are compiled out: the
-/// stages read the unit's view of the triangle ([`unit_view`]: t0 fields only without
-/// motion, no CoC without defocus), which equals the triangle for every class `U` accepts.
-pub fn setup_unit<P: Precision, U: Unit>(
-    tri: &Triangle,
-    vp: Viewport,
-    ops: &mut Ops,
-) -> Result<Outcome, Class> {
+/// Run setup on one triangle at precision `P` on unit `U` ([`crate::config::unit`]): box
+/// coordinates on `P`'s bound grid, the time span rounded outward to `P`'s t grid; counts its
+/// arithmetic in `ops.setup`. [`Outcome::Refused`] (nothing computed beyond
+/// [`Triangle::class`]) when `U` does not accept the triangle's class; for every class `U`
+/// accepts the outcome is the full unit's. The terms of the classes `U` lacks are compiled out: the stages read the
+/// unit's view of the triangle ([`unit_view`]: t0 fields only without motion, no CoC without
+/// defocus), which equals the triangle for every class `U` accepts.
+pub fn setup<P: Precision, U: Unit>(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> Outcome {
     let class = tri.class();
     if !U::accepts(class) {
-        return Err(class);
+        return Outcome::Refused(class);
     }
-    Ok(setup_gated::<P, U>(
-        &unit_view::<U>(tri),
-        class,
-        vp,
-        1,
-        1,
-        ops,
-    ))
+    setup_gated::<P, U>(&unit_view::<U>(tri), class, vp, 1, 1, ops)
 }
 
 /// The fields of `tri` unit `U` reads: the shutter-close vertices replaced by the open ones
@@ -311,7 +272,7 @@ fn setup_gated<P: Precision, U: Unit>(
     // `None` inside: culled as degenerate after the frustum test.
     let planar_class =
         P::PLANAR && !(U::MOTION && class.motion()) && !(U::DEFOCUS && class.defocus());
-    let planar = planar_class.then(|| planar_setup(tri, vp, ops));
+    let planar = planar_class.then(|| planar_setup::<false>(tri, vp, ops));
     let full = if exact {
         Eps::default()
     } else if let Some(pl) = planar {
@@ -432,13 +393,43 @@ mod tests {
     fn edges_stored_for_exact_computed_for_bounded() {
         use crate::config::precision::{Bounded, Exact};
         let vp = Viewport::new(32, 32).unwrap();
-        let prims = crate::demo::prims().unwrap();
-        for (i, p) in prims.iter().enumerate() {
+        // Static, moving and defocused triangles (the demo scene's first three), raw = 256·value.
+        let v = |a: [i32; 5]| crate::input::Vertex::from_bits(a.map(|x| x * 256));
+        let tri = |a: [[i32; 5]; 3], b: [[i32; 5]; 3]| Triangle::new(a.map(v), b.map(v)).unwrap();
+        let still = [
+            [-400, -300, 200, 400, 0],
+            [400, -300, 200, 400, 0],
+            [0, 100, 200, 400, 0],
+        ];
+        let blur = [
+            [60, -150, 80, 300, 20],
+            [200, -150, 80, 300, 20],
+            [130, -20, 80, 300, 20],
+        ];
+        let tris = [
+            tri(still, still),
+            tri(
+                [
+                    [-200, 0, 100, 256, 0],
+                    [-100, 0, 100, 256, 0],
+                    [-150, 120, 100, 256, 0],
+                ],
+                [
+                    [100, 20, 110, 256, 0],
+                    [200, 20, 110, 256, 0],
+                    [150, 140, 110, 256, 0],
+                ],
+            ),
+            tri(blur, blur),
+        ];
+        let mut visible = 0;
+        for (i, t) in tris.iter().enumerate() {
             let mut ops = Ops::default();
-            let ex = setup_with::<Exact>(&p.tri, vp, &mut ops);
-            let bd = setup_with::<Bounded<16, 16, 16, 20>>(&p.tri, vp, &mut ops);
+            let ex = setup::<Exact, Full>(t, vp, &mut ops);
+            let bd = setup::<Bounded<16, 16, 16, 20>, Full>(t, vp, &mut ops);
             if let (Outcome::Visible(ex), Outcome::Visible(bd)) = (ex, bd) {
-                let want = (ex.class == Class::Static).then(|| static_edges(&p.tri));
+                visible += 1;
+                let want = (ex.class == Class::Static).then(|| static_edges(t));
                 assert_eq!(
                     ex.edges.exact(),
                     want,
@@ -453,5 +444,6 @@ mod tests {
                 assert_eq!(ex.edges(), want, "prim {i}: exact edges()");
             }
         }
+        assert_eq!(visible, 3, "every triangle is visible");
     }
 }

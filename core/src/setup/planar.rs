@@ -190,20 +190,11 @@ fn depth_plane<const DIV32: bool>(zv: [i128; 3], d: i128) -> Option<([i32; 3], i
 
 /// Planar setup of a static triangle (its t0 vertices) in `vp`: the rounded vertices, their
 /// exact normals, the epsilon and the depth plane, or `None` (culled as degenerate: det P' = 0).
-#[inline]
-pub(crate) fn planar_setup(
-    tri: &Triangle,
-    vp: Viewport,
-    ops: &mut Ops,
-) -> Option<(PlanarEdges, Eps)> {
-    planar_setup_with::<false>(tri, vp, ops)
-}
-
-/// [`planar_setup`] with the depth plane's divisions in the form `DIV32` picks
-/// ([`floor_div_d32`]): the same result bit for bit; `true` links no 64-bit division routine
-/// (the static-specialised unit).
+/// The depth plane's divisions take the form `DIV32` picks ([`floor_div_d32`]): the same result
+/// bit for bit; `true` links no 64-bit division routine (the static-specialised unit), `false`
+/// is the general setup's.
 #[allow(clippy::arithmetic_side_effects)] // ranges at each line
-pub(crate) fn planar_setup_with<const DIV32: bool>(
+pub(crate) fn planar_setup<const DIV32: bool>(
     tri: &Triangle,
     vp: Viewport,
     ops: &mut Ops,

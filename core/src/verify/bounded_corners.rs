@@ -15,13 +15,14 @@ use crate::bounds::laine::Laine2011;
 use crate::bounds::strategy::BoundsStrategy;
 use crate::config::class::Class;
 use crate::config::formats::{Lens, SubPixel, Time};
-use crate::config::precision::{Bounded, OFFSET_SHIFT_MAX, OFFSET_SHIFT_MIN};
+use crate::config::precision::{Bounded, DefaultPrecision, OFFSET_SHIFT_MAX, OFFSET_SHIFT_MIN};
+use crate::config::unit::Full;
 use crate::input::{PixelRect, Sample, Triangle, Vertex, Viewport, C, W, X, Y};
-use crate::sample::bounded::bounded_eval;
+use crate::sample::bounded;
 use crate::sample::bounded::datapath::Fast;
 use crate::sample::pos::ScreenPos;
 use crate::setup::eps::Eps;
-use crate::setup::{setup_with, Outcome, Setup};
+use crate::setup::{setup, Outcome, Setup};
 use crate::stats::Ops;
 
 const LIM: i32 = 1 << 29;
@@ -72,7 +73,7 @@ fn bounded_test_at_the_domain_corners() {
     for (vw, vh) in [(2048u16, 2048u16), (1, 1), (2048, 1)] {
         let vp = Viewport::new(vw, vh).unwrap();
         for tri in tris() {
-            let setup = Setup::unculled(&tri, vp);
+            let setup = Setup::unculled::<DefaultPrecision>(&tri, vp);
             let (motion, defocus) = (setup.class().motion(), setup.class().defocus());
             for s in &samples {
                 let (t, u, v) = (
@@ -112,7 +113,8 @@ fn bounded_test_at_the_domain_corners() {
                             let (i, j) = ((k + 1) % 3, (k + 2) % 3);
                             ab[i].0 * ab[j].1 - ab[j].0 * ab[i].1
                         });
-                        let got = bounded_eval(&setup, shift, pos, s, &mut Ops::default()).unwrap();
+                        let got =
+                            bounded::eval(&setup, shift, pos, s, &mut Ops::default()).unwrap();
                         let got_ab = got.ab.map(|(a, b)| (i128::from(a), i128::from(b)));
                         assert_eq!(
                             got_ab, ab,
@@ -130,9 +132,9 @@ fn bounded_test_at_the_domain_corners() {
                     xs: 256 * u32::from(vw),
                     ys: 0,
                 };
-                assert!(bounded_eval(&setup, 20, out, s, &mut Ops::default()).is_none());
+                assert!(bounded::eval(&setup, 20, out, s, &mut Ops::default()).is_none());
                 assert!(
-                    bounded_eval(&setup, 19, ScreenPos::of(0, 0, s), s, &mut Ops::default())
+                    bounded::eval(&setup, 19, ScreenPos::of(0, 0, s), s, &mut Ops::default())
                         .is_none()
                 );
             }
@@ -181,7 +183,7 @@ fn fast_and_general_datapaths_agree_at_their_boundary() {
     ] {
         let vp = Viewport::new(vw, vh).unwrap();
         for tri in &all {
-            let setup = Setup::unculled(tri, vp);
+            let setup = Setup::unculled::<DefaultPrecision>(tri, vp);
             let (motion, defocus) = (setup.class().motion(), setup.class().defocus());
             for &t in &ts {
                 for (&u, &v) in ls.iter().zip(ls.iter().rev()) {
@@ -191,7 +193,7 @@ fn fast_and_general_datapaths_agree_at_their_boundary() {
                         for shift in [OFFSET_SHIFT_MIN, 21, OFFSET_SHIFT_MAX] {
                             let mut ops = Ops::default();
                             let want = frozen_eval(&setup, shift, pos, &s, &mut ops);
-                            let got = bounded_eval(&setup, shift, pos, &s, &mut ops);
+                            let got = bounded::eval(&setup, shift, pos, &s, &mut ops);
                             assert_eq!(
                                 got, want,
                                 "vp {vw}x{vh} shift {shift} {s:?} px ({px},{py}) {tri:?}"
@@ -221,14 +223,15 @@ fn epsilon_setup_and_bounds_at_the_domain_corners() {
     for (vw, vh) in [(2048u16, 2048u16), (1, 1), (1, 2048)] {
         let vp = Viewport::new(vw, vh).unwrap();
         for tri in tris() {
-            let class = Setup::unculled(&tri, vp).class();
+            let class = Setup::unculled::<DefaultPrecision>(&tri, vp).class();
             let e = Eps::of(Some(OFFSET_SHIFT_MAX), class, vp);
             assert!(e.x().iter().all(|&x| (1..1 << 24).contains(&x)), "{e:?}");
             // Setup and Laine2011 at the widest epsilon run without overflow on every tile.
             let mut ops = Ops::default();
-            if let Outcome::Visible(s) = setup_with::<Bounded<16, 16, 16, 32>>(&tri, vp, &mut ops) {
+            if let Outcome::Visible(s) = setup::<Bounded<16, 16, 16, 32>, Full>(&tri, vp, &mut ops)
+            {
                 assert_eq!(s.eps(), e);
-                let c = Laine2011.prepare(&s, &mut ops);
+                let c = Laine2011.prepare::<Full>(&s, &mut ops);
                 let fp = s.footprint();
                 for (x, y) in [(fp.x0, fp.y0), (fp.x1 - 1, fp.y1 - 1)] {
                     let tile = PixelRect {
@@ -237,7 +240,7 @@ fn epsilon_setup_and_bounds_at_the_domain_corners() {
                         x1: x + 1,
                         y1: y + 1,
                     };
-                    let _ = Laine2011.tile(&s, &c, tile, &mut ops);
+                    let _ = Laine2011.tile::<Full>(&s, &c, tile, &mut ops);
                 }
             }
         }
@@ -245,11 +248,9 @@ fn epsilon_setup_and_bounds_at_the_domain_corners() {
     // The exact configuration: zero epsilon.
     let vp = Viewport::new(7, 5).unwrap();
     for tri in tris() {
-        assert!(
-            Setup::unculled_with::<crate::config::precision::Exact>(&tri, vp)
-                .eps()
-                .is_zero()
-        );
+        assert!(Setup::unculled::<crate::config::precision::Exact>(&tri, vp)
+            .eps()
+            .is_zero());
     }
 }
 

@@ -199,8 +199,10 @@ pub(crate) fn frozen_eval(
 mod tests {
     use super::frozen_eval;
     use crate::config::formats::{Lens, SubPixel, Time, DEPTH_FAR, DEPTH_NEAR};
+    use crate::config::precision::DefaultPrecision;
     use crate::input::{Sample, Triangle, Vertex, Viewport};
-    use crate::sample::bounded::{bounded_eval, BoundedEval};
+    use crate::sample::bounded;
+    use crate::sample::bounded::BoundedEval;
     use crate::sample::pos::ScreenPos;
     use crate::setup::Setup;
     use crate::stats::Ops;
@@ -347,14 +349,14 @@ mod tests {
                 1.0 - 2.0 * f64::from(pos.ys) / (256.0 * f64::from(vp.height())),
             );
             let tri = triangle(&mut r, g);
-            let setup = Setup::unculled(&tri, vp);
+            let setup = Setup::unculled::<DefaultPrecision>(&tri, vp);
             let shift = if r.next() % 2 == 0 {
                 20
             } else {
                 r.range(19, 33) as u32
             };
             let old = frozen_eval(&setup, shift, pos, &s, &mut Ops::default());
-            let new = bounded_eval(&setup, shift, pos, &s, &mut Ops::default());
+            let new = bounded::eval(&setup, shift, pos, &s, &mut Ops::default());
             assert_eq!(
                 old, new,
                 "seed {seed}: frozen vs new differ\n  shift {shift} pos {pos:?} {s:?}\n  {tri:?}\n  vp {vp:?}\n  frozen {old:x?}\n  new {new:x?}"

@@ -18,8 +18,10 @@ use crate::arith::wide::Wide;
 use crate::bounds::laine::{lens_s, LensAxis, LensSide};
 use crate::config::class::Class;
 use crate::config::formats::{Lens, SubPixel, Time, DEPTH_FAR, DEPTH_NEAR};
+use crate::config::unit::Full;
 use crate::input::{Sample, Triangle, Vertex, Viewport, C, W, X, Y, Z};
-use crate::sample::exact::{depth, positions, sample_eval};
+use crate::sample::exact;
+use crate::sample::exact::{depth, positions};
 use crate::sample::pos::{direction, ScreenPos};
 use crate::setup::boxes::project;
 use crate::setup::Setup;
@@ -102,11 +104,11 @@ fn positions_at_the_domain_corners() {
         smp(17, 99, ONE - 1, 1 - ONE, ONE - 1),
     ];
     for (tri, class) in corner_triangles() {
-        let setup = Setup::unculled_with::<crate::config::precision::Exact>(&tri, vp);
+        let setup = Setup::unculled::<crate::config::precision::Exact>(&tri, vp);
         assert_eq!(setup.class(), class);
         let [v0, v1] = &tri.v;
         for s in &samples {
-            let (p, frac) = positions(&setup, s, &mut Ops::default());
+            let (p, frac) = positions::<Full>(&setup, s, &mut Ops::default());
             for ((q, r), got) in v0.iter().zip(v1.iter()).zip(p.iter()) {
                 let want = position_i128(q, r, s, frac);
                 let got128 = got.map(i128::from);
@@ -117,7 +119,8 @@ fn positions_at_the_domain_corners() {
             }
             // The whole sample test at the corner runs without overflow, at every screen corner.
             for (px, py) in [(0, 0), (2047, 0), (0, 2047), (2047, 2047), (1024, 1023)] {
-                let _ = sample_eval(&setup, ScreenPos::of(px, py, s), s, &mut Ops::default());
+                let _ =
+                    exact::eval::<Full>(&setup, ScreenPos::of(px, py, s), s, &mut Ops::default());
             }
         }
     }

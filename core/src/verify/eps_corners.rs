@@ -14,9 +14,10 @@ use crate::bounds::hyper::Hyper;
 use crate::bounds::lens_time::LensTime;
 use crate::bounds::strategy::BoundsStrategy;
 use crate::config::precision::{Bounded, OFFSET_SHIFT_MAX};
+use crate::config::unit::Full;
 use crate::input::{PixelRect, Triangle, Vertex, Viewport};
 use crate::setup::eps::Eps;
-use crate::setup::{setup_with, Outcome};
+use crate::setup::{setup, Outcome};
 use crate::stats::Ops;
 
 const LIM: i32 = 1 << 29;
@@ -45,7 +46,7 @@ pub(super) fn tris() -> [Triangle; 6] {
 }
 
 fn corner_tiles<S: BoundsStrategy>(s: &S, setup: &crate::setup::Setup, ops: &mut Ops) {
-    let c = s.prepare(setup, ops);
+    let c = s.prepare::<Full>(setup, ops);
     let fp = setup.footprint();
     for (x, y) in [(fp.x0, fp.y0), (fp.x1 - 1, fp.y1 - 1), (fp.x0, fp.y1 - 1)] {
         for bt in [1u16, 8] {
@@ -55,7 +56,7 @@ fn corner_tiles<S: BoundsStrategy>(s: &S, setup: &crate::setup::Setup, ops: &mut
                 x1: (x + bt).min(fp.x1),
                 y1: (y + bt).min(fp.y1),
             };
-            let _ = s.tile(setup, &c, tile, ops);
+            let _ = s.tile::<Full>(setup, &c, tile, ops);
         }
     }
 }
@@ -67,7 +68,7 @@ fn strategies_with_epsilon_at_the_domain_corners() {
         let vp = Viewport::new(vw, vh).unwrap();
         for tri in tris() {
             let mut ops = Ops::default();
-            let Outcome::Visible(s) = setup_with::<Bounded<16, 16, 16, 32>>(&tri, vp, &mut ops)
+            let Outcome::Visible(s) = setup::<Bounded<16, 16, 16, 32>, Full>(&tri, vp, &mut ops)
             else {
                 continue;
             };

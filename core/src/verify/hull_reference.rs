@@ -16,8 +16,9 @@ use crate::bounds::hull::{
     eps_margin, face_culls, hull_faces, swept_points, HullCoeffs, HullTiles,
 };
 use crate::config::precision::{Bounded, Exact, Precision};
+use crate::config::unit::Full;
 use crate::input::{PixelRect, Triangle, Viewport};
-use crate::setup::{setup_with, Outcome, Setup};
+use crate::setup::{setup, Outcome, Setup};
 use crate::stats::Ops;
 use crate::verify::hyper_reference::random_tri;
 use crate::verify::rng::{cases, seed, Rng};
@@ -66,7 +67,7 @@ fn check(s: &Setup, tiles: impl Iterator<Item = PixelRect>, what: &str, n: &mut 
 }
 
 fn visible<P: Precision>(tri: &Triangle, vp: Viewport) -> Option<Setup> {
-    match setup_with::<P>(tri, vp, &mut Ops::default()) {
+    match setup::<P, Full>(tri, vp, &mut Ops::default()) {
         Outcome::Visible(s) => Some(s),
         _ => None,
     }

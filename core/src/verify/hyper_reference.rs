@@ -20,8 +20,9 @@ use crate::bounds::laine::Laine2011;
 use crate::bounds::strategy::BoundsStrategy;
 use crate::config::class::Class;
 use crate::config::precision::{Bounded, Exact, Precision};
+use crate::config::unit::Full;
 use crate::input::{PixelRect, Triangle, Vertex, Viewport};
-use crate::setup::{setup_with, Outcome, Setup};
+use crate::setup::{setup, Outcome, Setup};
 use crate::stats::Ops;
 use crate::verify::rng::{cases, seed, Rng};
 
@@ -39,8 +40,8 @@ fn tile_surfaces_ref(d: &Corners, x0: i64, x1: i64) -> Option<[Surface; 2]> {
 
 /// The replaced `Hyper::tile`.
 fn tile_ref(s: &Setup, tile: PixelRect) -> Option<HyperTile> {
-    let laine = Laine2011.prepare(s, &mut Ops::default());
-    let b = Laine2011.tile(s, &laine, tile, &mut Ops::default())?;
+    let laine = Laine2011.prepare::<Full>(s, &mut Ops::default());
+    let b = Laine2011.tile::<Full>(s, &laine, tile, &mut Ops::default())?;
     let eps = |axis: usize| i64::from(s.eps.x[axis].saturating_add(s.eps.w));
     let fp = s.footprint;
     let x = corners(
@@ -65,10 +66,10 @@ fn tile_ref(s: &Setup, tile: PixelRect) -> Option<HyperTile> {
 
 /// Compares the new and the reference tile; returns the number of tiles with surfaces.
 fn check(s: &Setup, tiles: impl Iterator<Item = PixelRect>, what: &str) -> u64 {
-    let c = Hyper.prepare(s, &mut Ops::default());
+    let c = Hyper.prepare::<Full>(s, &mut Ops::default());
     let mut with = 0;
     for tile in tiles {
-        let got = Hyper.tile(s, &c, tile, &mut Ops::default());
+        let got = Hyper.tile::<Full>(s, &c, tile, &mut Ops::default());
         let want = tile_ref(s, tile);
         assert_eq!(
             got, want,
@@ -142,7 +143,7 @@ pub(crate) fn random_tri(rng: &mut Rng) -> Option<Triangle> {
 }
 
 fn md_setup<P: Precision>(tri: &Triangle, vp: Viewport) -> Option<Setup> {
-    match setup_with::<P>(tri, vp, &mut Ops::default()) {
+    match setup::<P, Full>(tri, vp, &mut Ops::default()) {
         Outcome::Visible(s) if s.class == Class::MotionDefocus => Some(s),
         _ => None,
     }

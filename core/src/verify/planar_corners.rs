@@ -20,7 +20,7 @@ use crate::arith::wide::Wide;
 use crate::config::formats::{DEPTH_FAR, DEPTH_NEAR};
 use crate::config::precision::PlanarPrecision;
 use crate::input::{Triangle, Vertex, Viewport};
-use crate::sample::planar::planar_eval;
+use crate::sample::planar;
 use crate::sample::pos::{direction, ScreenPos};
 use crate::setup::Setup;
 use crate::stats::Ops;
@@ -107,7 +107,7 @@ fn check(t: &Triangle, r: &mut Rng, ctx: &str) -> (u64, u64, u64) {
         }
     }
     for vp in viewports() {
-        let s = Setup::unculled_with::<PlanarPrecision>(t, vp);
+        let s = Setup::unculled::<PlanarPrecision>(t, vp);
         let Some(pl) = s.planar() else {
             wrong_cull += u64::from(det != 0);
             continue;
@@ -147,7 +147,7 @@ fn check(t: &Triangle, r: &mut Rng, ctx: &str) -> (u64, u64, u64) {
                 _ => (r.next_u64() % u64::from(sh)) as u32,
             };
             let pos = ScreenPos { xs, ys };
-            let ev = planar_eval(&s, pos, &mut Ops::default()).expect("inside the viewport");
+            let ev = planar::eval(&s, pos, &mut Ops::default()).expect("inside the viewport");
             let want = exact_on(&q, direction(vp, pos));
             assert_eq!(
                 ev.hit.is_some(),
@@ -301,20 +301,20 @@ fn div32_floor_equals_the_division_at_the_corners() {
     assert!(n > 10_000, "too few operands: {n}");
 }
 
-/// The static unit's setup form of the planar setup (`planar_setup_with::<true>`, the depth
+/// The static unit's setup form of the planar setup (`planar_setup::<true>`, the depth
 /// plane's divisions in 32-bit divides) against the general one and against the frozen copy
 /// (the form before it), at the domain corners (the triangles of `planar_at_the_domain_corners`)
 /// and on seeded random triangles on every corner viewport and seeded ones: bit for bit.
 #[test]
 fn div32_setup_equals_the_general_and_frozen_setup() {
-    use crate::setup::planar::planar_setup_with;
+    use crate::setup::planar::planar_setup;
     use crate::verify::planar_frozen::frozen_setup;
     let seed = seed();
     let mut r = Rng(seed ^ 0x5e7d);
     let mut vis = 0u64;
     let mut check = |t: &Triangle, vp: Viewport, what: &str| {
-        let a = planar_setup_with::<true>(t, vp, &mut Ops::default());
-        let b = planar_setup_with::<false>(t, vp, &mut Ops::default());
+        let a = planar_setup::<true>(t, vp, &mut Ops::default());
+        let b = planar_setup::<false>(t, vp, &mut Ops::default());
         let c = frozen_setup(t, vp, &mut Ops::default());
         assert!(
             a == b && a == c,
@@ -356,7 +356,8 @@ fn div32_setup_equals_the_general_and_frozen_setup() {
 /// it) on seeded planes and viewports.
 #[test]
 fn static_depth_split_equals_the_shift() {
-    use crate::units::static_only::{depth_split, split_floor};
+    use crate::units::static_only::sample::split_floor;
+    use crate::units::static_only::setup::depth_split;
     let seed = seed();
     let mut r = Rng(seed ^ 0xde97);
     let mut n = 0u64;

@@ -19,6 +19,7 @@
 
 use crate::config::formats::{DEPTH_FAR, DEPTH_FRAC, DEPTH_NEAR, SUBPIXEL_BITS};
 use crate::input::{Triangle, Viewport, W, X, Y, Z};
+use crate::sample::planar;
 use crate::sample::planar::PlanarEval;
 use crate::sample::pos::{Hit, ScreenPos};
 use crate::setup::eps::Eps;
@@ -288,7 +289,6 @@ mod planar_frozen_tests {
     use super::*;
     use crate::config::precision::PlanarPrecision;
     use crate::input::Vertex;
-    use crate::sample::planar::planar_eval;
     use crate::setup::Setup;
     use crate::verify::rng::{cases, seed, Rng};
 
@@ -347,7 +347,7 @@ mod planar_frozen_tests {
         for i in 0..cases {
             let Some(t) = triangle(&mut r) else { continue };
             let vp = viewport(&mut r);
-            let live = Setup::unculled_with::<PlanarPrecision>(&t, vp);
+            let live = Setup::unculled::<PlanarPrecision>(&t, vp);
             let frozen = frozen_setup(&t, vp, &mut Ops::default());
             let lf = live.planar().map(|p| (p, live.eps()));
             assert_eq!(
@@ -385,7 +385,7 @@ mod planar_frozen_tests {
                 };
                 let pos = ScreenPos { xs, ys };
                 let want = frozen_eval(&pl, vp, pos);
-                let got = planar_eval(&live, pos, &mut Ops::default());
+                let got = planar::eval(&live, pos, &mut Ops::default());
                 assert_eq!(got, want, "case {i} (seed {seed}) xs {xs} ys {ys}: expected (frozen) {want:?}, observed {got:?}\n  {t:?} vp {vp:?}");
                 let Some(ev) = want else { continue };
                 cov += u64::from(ev.hit.is_some());

@@ -24,11 +24,11 @@ use std::string::String;
 use std::vec::Vec;
 
 use crate::config::formats::{Lens, SubPixel, Time};
-use crate::config::precision::{Bounded, OFFSET_SHIFT_MAX, OFFSET_SHIFT_MIN};
+use crate::config::precision::{Bounded, DefaultPrecision, OFFSET_SHIFT_MAX, OFFSET_SHIFT_MIN};
+use crate::config::unit::Full;
 use crate::input::{Sample, Triangle, Vertex, Viewport, C, W, X, Y, Z};
-use crate::sample::bounded::bounded_eval;
-use crate::sample::exact::sample_eval;
 use crate::sample::pos::ScreenPos;
+use crate::sample::{bounded, exact};
 use crate::setup::Setup;
 use crate::stats::Ops;
 use crate::widths::{table, Config, Table};
@@ -160,7 +160,8 @@ fn shadow_bounded(
     shift: u32,
     seen: &mut Seen,
 ) -> ([(i128, i128); 3], [i128; 3], i128, bool, Option<i32>) {
-    let setup = Setup::unculled(tri, Viewport::new(vp.0 as u16, vp.1 as u16).unwrap());
+    let setup =
+        Setup::unculled::<DefaultPrecision>(tri, Viewport::new(vp.0 as u16, vp.1 as u16).unwrap());
     let (motion, defocus) = (setup.class().motion(), setup.class().defocus());
     let (t, u, v) = (
         i128::from(s.t().to_bits()),
@@ -272,7 +273,10 @@ fn drive_bounded(n: usize) -> BTreeMap<u32, Seen> {
     let mut by_shift: BTreeMap<u32, Seen> = BTreeMap::new();
     for tri in triangles(seed, n) {
         for vp in viewports() {
-            let setup = Setup::unculled(&tri, Viewport::new(vp.0 as u16, vp.1 as u16).unwrap());
+            let setup = Setup::unculled::<DefaultPrecision>(
+                &tri,
+                Viewport::new(vp.0 as u16, vp.1 as u16).unwrap(),
+            );
             for s in samples() {
                 let (mx, my) = (vp.0 as u16 - 1, vp.1 as u16 - 1);
                 for (px, py) in [(0, 0), (mx, 0), (0, my), (mx, my)] {
@@ -282,7 +286,7 @@ fn drive_bounded(n: usize) -> BTreeMap<u32, Seen> {
                         let (ab, e, sign, cov, depth) =
                             shadow_bounded(&tri, vp, pos, &s, shift, seen);
                         let got =
-                            bounded_eval(&setup, shift, pos, &s, &mut Ops::default()).unwrap();
+                            bounded::eval(&setup, shift, pos, &s, &mut Ops::default()).unwrap();
                         let ctx = format!(
                             "UVT_SEED={seed} {tri:?} vp {vp:?} {s:?} pos {pos:?} shift {shift}"
                         );
@@ -371,10 +375,13 @@ fn exact_intermediates_fit_their_declared_widths() {
     let rowbits = |p: &str| t.find("sample", p).unwrap().bits();
     for tri in triangles(seed(), n_random()) {
         for vp in viewports() {
-            let setup = Setup::unculled(&tri, Viewport::new(vp.0 as u16, vp.1 as u16).unwrap());
+            let setup = Setup::unculled::<DefaultPrecision>(
+                &tri,
+                Viewport::new(vp.0 as u16, vp.1 as u16).unwrap(),
+            );
             for s in samples() {
                 let mut ops = Ops::default();
-                let (p, _) = crate::sample::exact::positions(&setup, &s, &mut ops);
+                let (p, _) = crate::sample::exact::positions::<Full>(&setup, &s, &mut ops);
                 for q in p.iter() {
                     for &c in &q[..3] {
                         seen.see("sample", "vertex P", i128::from(c));
@@ -395,7 +402,7 @@ fn exact_intermediates_fit_their_declared_widths() {
                         seen.see("sample", "edge normal", c);
                     }
                 }
-                let ev = sample_eval(&setup, pos, &s, &mut ops);
+                let ev = exact::eval::<Full>(&setup, pos, &s, &mut ops);
                 let ctx = format!("UVT_SEED={} {tri:?} {s:?}", seed());
                 for e in ev.e {
                     assert!(e.bit_len() < rowbits("edge value"), "E {e:?}: {ctx}");

@@ -201,7 +201,7 @@ fn finish<const MOTION: bool, const DEFOCUS: bool>(
 }
 
 /// The bounded sample test of one class on the fast datapath (`MOTION`, `DEFOCUS` fixed at
-/// compile time; dispatched once per call from the setup's class by [`bounded_eval`]); the
+/// compile time; dispatched once per call from the setup's class by [`eval`]); the
 /// general datapath for the inputs [`Fast::new`] refuses. `xs`, `ys` inside the viewport and
 /// `shift` ∈ 20..=32 (checked by the caller).
 #[inline(always)]
@@ -281,7 +281,7 @@ fn eval_general<const MOTION: bool, const DEFOCUS: bool>(
 }
 
 /// [`eval_general`] of one class: out of line, it serves only rare inputs. `xs`, `ys`
-/// inside the viewport, `shift` ∈ 20..=32 (checked by [`bounded_eval`]).
+/// inside the viewport, `shift` ∈ 20..=32 (checked by [`eval`]).
 // 256W, 256H ≤ 2^19 and xs < 256W, ys < 256H: every `Ctx` value in its range.
 #[cold]
 #[inline(never)]
@@ -322,7 +322,7 @@ fn eval_general_at<const MOTION: bool, const DEFOCUS: bool>(
     clippy::cast_possible_wrap,
     clippy::cast_sign_loss
 )]
-pub fn bounded_eval(
+pub fn eval(
     setup: &Setup,
     shift: u32,
     pos: ScreenPos,
@@ -335,7 +335,7 @@ pub fn bounded_eval(
     eval_at::<Full>(setup, shift, pos, s, ops)
 }
 
-/// [`bounded_eval`] for a `shift` ∈ [`OFFSET_SHIFT_MIN`]..=[`OFFSET_SHIFT_MAX`] (the caller's
+/// [`eval`] for a `shift` ∈ [`OFFSET_SHIFT_MIN`]..=[`OFFSET_SHIFT_MAX`] (the caller's
 /// obligation): the position check and the dispatch by class and grid.
 // 256W, 256H ≤ 2^19 and xs < 256W, ys < 256H (checked): every value in its range.
 #[inline(always)]
@@ -379,21 +379,14 @@ fn eval_at<U: Unit>(
     })
 }
 
-/// The bounded sample test: the depth on a hit (`S` = the setup's offset shift; a setup of the
-/// exact test is evaluated at the finest grid, [`OFFSET_SHIFT_MIN`]).
+/// The bounded sample test of precision `P` on unit `U`, for a setup of precision `P`: the depth
+/// on a hit. The grid is `P`'s constant `2^S` (so one grid's copy is compiled; an exact `P` is
+/// evaluated at the finest grid, [`OFFSET_SHIFT_MIN`]) and only the classes `U` accepts are
+/// instantiated; `None` (not covered) for a class `U` does not accept. `P`'s shift is in range
+/// by construction (a sealed precision whose OFF is checked at compile time), so [`eval`]'s
+/// range check is not repeated.
 #[inline]
-pub fn bounded_test(setup: &Setup, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> Option<Hit> {
-    // A setup's shift is in range by construction (`PrecisionBits::of` of a sealed precision
-    // whose OFF is checked at compile time), so `bounded_eval`'s range check is not repeated.
-    let shift = setup.prec.offset_shift().unwrap_or(OFFSET_SHIFT_MIN);
-    eval_at::<Full>(setup, shift, pos, s, ops)?.hit
-}
-
-/// [`bounded_test`] of precision `P` on unit `U`, for a setup of precision `P`: the grid is
-/// `P`'s constant (so one grid's copy is compiled) and only the classes `U` accepts are
-/// instantiated; `None` (not covered) for a class `U` does not accept.
-#[inline]
-pub fn bounded_test_unit<P: Precision, U: Unit>(
+pub fn test<P: Precision, U: Unit>(
     setup: &Setup,
     pos: ScreenPos,
     s: &Sample,

@@ -1,53 +1,6 @@
-//! The motion-specialised motion-only unit at a bounded precision: setup, per-tile time-slab
-//! cull and sample test of a static or moving, in-focus triangle and nothing else (issue 13).
-//!
-//! [`crate::Renderer`] on [`crate::MotionOnly`] runs the general machinery with the lens terms
-//! gated off: Laine's lens-corner boxes and dual-space t bounds, the frustum span, per-tile
-//! (u, v, t) intervals, class dispatch per sample and a sample interface carrying (u, v, t).
-//! [`crate::units::motion_only::render::MotionRenderer`] is this unit's renderer at every bounded precision
-//! ([`specialised`]: a constant of the precision and unit types, selected at compile time by
-//! the demo scene and its Cortex-M programs); its program links none of the general stages.
-//!
-//! | stage | computes | reads |
-//! |---|---|---|
-//! | [`motion_setup`] | [`Triangle::class`] (acceptance); per vertex and shutter end the base `(x, y, w, z)` and `r − q`; the grid factors `256W·2^(32−S)`, `256H·2^(32−S)`, `2^(32−S)`; whether the fast datapath applies to the viewport; one screen box per time slab ([`SLABS`] equal slabs of the shutter) and their union, the footprint | x, y, z, w of both shutter ends (the class: all fields) |
-//! | [`motion_tile`] | per bounds tile: the set of slabs whose box meets it (a bit mask; empty: the tile is skipped) | the tile's pixel rectangle |
-//! | [`crate::units::motion_only::sample::motion_test`] | the bounded sample test of the motion class (steps 1–8 of `bounded.rs`), bit for bit | the sample's (x, y, t) |
-//!
-//! A [`crate::config::precision::Planar`] precision's static triangles take the planar test in the full
-//! unit; here they take [`crate::units::static_only`]'s setup, tile cull and test, which are bit for
-//! bit that test (its module docs), so that configuration renders the same image too.
-//!
-//! **Slab boxes** (conservative). The bounded test decides exactly on the triangle `P'_k =
-//! (x'_k, y'_k, w_k)` whose vertices lie within `ε_x` (x), `ε_y` (y) and `ε_w` (w) of the exact
-//! vertex `P_k(t) = q_k + t·(r_k − q_k)` ([`Eps`] of the motion class: `bounded.rs` module docs;
-//! for a static triangle the same bound holds a fortiori). For t in slab `j` = `[j/K, (j+1)/K]`
-//! `P_k(t)` lies on the segment from `P_k(j/K)` to `P_k((j+1)/K)`, so `P'_k` lies in the convex
-//! hull `H_j` of the corners `(a ± ε_a, w ± ε_w)` of the six end points (per axis, `a` = x or
-//! −y; scaled by K these are the integers `(K − j)·q + j·r`, exact). Then:
-//! - if every corner of `H_j` has `w > 0`, every `w_k > 0`, and a covered sample's NDC point is
-//!   a convex combination of the projected `P'_k` (the exact test on `P'`: `E'` are positive
-//!   multiples of its edge functions); the projection `(a + w)·E/(2w)` is linear-fractional
-//!   on the hull (w > 0), so its extremes are at corners, and the sample's pixel index (the
-//!   floor of its continuous position, a monotone function) lies between the floors of the
-//!   smallest and largest corner projection: the slab's box is that range, clipped to the
-//!   viewport;
-//! - if every corner has `w ≤ 0`, every `w_k ≤ 0`: a covered direction `d` (d_w > 0) would be a
-//!   non-negative combination of the `P'_k` with `d_w = Σ λ_k w_k ≤ 0` — none is covered, and the
-//!   box is empty;
-//! - otherwise (a camera-plane crosser, a vertex at w = 0) the box is the viewport.
-//!
-//! Any arithmetic that fails its checked form gives the viewport (conservative). A sample with
-//! t in slab `j` (`j = min(⌊T·K/2^16⌋, K − 1)`; a t on a slab boundary belongs to both slabs'
-//! closed intervals) that is covered lies in box `j`: the tile cull keeps the slabs whose box
-//! meets the tile and the renderer tests only samples of those slabs. The footprint is the
-//! union of the boxes; a triangle with every box empty is culled as outside.
-//!
-//! **Same image as the full unit.** Both units' culls are conservative and both decide with the
-//! same test on the same values, so every sample is covered by the same triangles with the same
-//! depths, written in the same triangle order: image, depth, covered, written and occluded
-//! counts are equal (`tests/tests/motion_unit.rs`). The work differs: tiles visited and skipped,
-//! samples tested, culling reasons and the operation counts.
+//! The motion-only unit's setup (module docs of [`crate::units::motion_only`]): per vertex and
+//! shutter end the base and `r − q` of (x, y, w, z), the fast datapath's constants, and one
+//! screen box per time slab of the shutter with their union, the footprint.
 
 use crate::config::class::Class;
 use crate::config::formats::SUBPIXEL_BITS;
@@ -55,16 +8,11 @@ use crate::config::precision::{Precision, OFFSET_SHIFT_MAX, OFFSET_SHIFT_MIN};
 use crate::config::unit::{MotionOnly, Unit};
 use crate::input::{PixelRect, Triangle, Viewport, W, X, Y, Z};
 use crate::setup::eps::Eps;
+use crate::setup::{Cull, Outcome};
 use crate::stats::Ops;
 
 /// Number of equal time slabs of the shutter with their own screen box.
 pub const SLABS: usize = 4;
-
-/// Whether precision `P` on unit `U` renders on this module's path: a bounded (or planar)
-/// precision on the motion-only unit. A constant of the types (no run-time flag).
-pub const fn specialised<P: Precision, U: Unit>() -> bool {
-    P::OFFSET_SHIFT.is_some() && U::MOTION && !U::DEFOCUS
-}
 
 /// One static or moving in-focus triangle's data for the slab cull and the sample test. Built
 /// only by [`motion_setup`] from a checked [`Triangle`] and [`Viewport`], so every field is in
@@ -98,7 +46,7 @@ pub struct MotionSetup {
     /// of the base vertex, meaningful when `fast`; `d`'s and `base`'s x, y, w regrouped so that
     /// one vertex is read with a few LDRD / LDM)
     pub(crate) hot: [[Vfast; 3]; 2],
-    slabs: [PixelRect; SLABS],
+    pub(crate) slabs: [PixelRect; SLABS],
     footprint: PixelRect,
     class: Class,
     vp: Viewport,
@@ -135,24 +83,6 @@ pub(crate) struct Vfast {
     pub(crate) dw: i32,
     /// the base vertex's w (|.| ≤ 2^29)
     pub(crate) bw: i32,
-}
-
-/// Result of [`motion_setup`]. (No heap in core, so the large variant stays inline.)
-#[allow(clippy::large_enum_variant)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum MotionOutcome {
-    /// every slab box is empty: no sample can be covered
-    Outside,
-    /// visible
-    Visible(MotionSetup),
-}
-
-/// The slab of a sample's raw t ∈ [0, 2^16]: `min(⌊T·K/2^16⌋, K − 1)` (module docs).
-#[inline(always)]
-#[allow(clippy::arithmetic_side_effects, clippy::cast_sign_loss)]
-pub fn slab_of(t: i32) -> usize {
-    // T ∈ [0, 2^16] (a checked `Sample`): T·K ≤ 2^18, non-negative.
-    ((t.max(0) as usize * SLABS) >> 16).min(SLABS - 1)
 }
 
 /// The corners' projections at one slab end: `None` (the viewport) when some corner has
@@ -262,17 +192,17 @@ fn slab_box(a: EndBox, b: EndBox, vp: Viewport) -> PixelRect {
     }
 }
 
-/// Motion setup of `tri` in `vp` at precision `P` (module docs): `Err(class)` for a triangle
+/// Motion setup of `tri` in `vp` at precision `P` (module docs): [`Outcome::Refused`] for a triangle
 /// the motion-only unit does not accept (nothing computed beyond [`Triangle::class`]).
 #[allow(clippy::arithmetic_side_effects)]
 pub fn motion_setup<P: Precision>(
     tri: &Triangle,
     vp: Viewport,
     ops: &mut Ops,
-) -> Result<MotionOutcome, Class> {
+) -> Outcome<MotionSetup> {
     let class = tri.class();
     if !MotionOnly::accepts(class) {
-        return Err(class);
+        return Outcome::Refused(class);
     }
     let shift = P::OFFSET_SHIFT.unwrap_or(OFFSET_SHIFT_MIN);
     let eps = Eps::of(Some(shift), Class::Motion, vp);
@@ -296,7 +226,7 @@ pub fn motion_setup<P: Precision>(
         }
     }
     let Some(footprint) = fp else {
-        return Ok(MotionOutcome::Outside);
+        return Outcome::Culled(Cull::Outside);
     };
     let [q, r] = &tri.v;
     let pick = |v: &[i32; 5]| [v[X], v[Y], v[W], v[Z]];
@@ -345,7 +275,7 @@ pub fn motion_setup<P: Precision>(
         }
     }
     ops.add_setup(12);
-    Ok(MotionOutcome::Visible(MotionSetup {
+    Outcome::Visible(MotionSetup {
         base,
         d,
         swq,
@@ -363,22 +293,7 @@ pub fn motion_setup<P: Precision>(
         footprint,
         class,
         vp,
-    }))
-}
-
-/// The slabs whose box meets bounds tile `cell`, as a bit mask (bit j: slab j; 0: the tile holds
-/// no covered sample). Counts its operations in `ops.bounds`.
-pub fn motion_tile(m: &MotionSetup, cell: PixelRect, ops: &mut Ops) -> u8 {
-    // One rectangle test (4 compares) per slab.
-    const TILE_OPS: u64 = 16;
-    ops.add_bounds(TILE_OPS);
-    let mut mask = 0u8;
-    for (bit, s) in [1u8, 2, 4, 8].iter().zip(m.slabs.iter()) {
-        if !s.intersect(&cell).is_empty() {
-            mask |= bit;
-        }
-    }
-    mask
+    })
 }
 
 #[cfg(test)]

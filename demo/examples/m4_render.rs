@@ -1,4 +1,4 @@
-//! The built-in demo scene (`uvt_core::demo`) rendered through the tile framebuffer, printing the
+//! The built-in demo scene (`uvt_demo`) rendered through the tile framebuffer, printing the
 //! image checksum, the core's counters and per-stage cost.
 //!
 //! On `thumbv7em-none-eabihf` it is a bare-metal Cortex-M4F program for QEMU's `mps2-an386`, and
@@ -90,17 +90,17 @@ const SEL: usize = {
 /// `f::<P>(reps)` for the selected configuration (a constant match: one instantiation kept).
 macro_rules! with_sel {
     ($f:ident, $reps:expr) => {{
-        use uvt_core::demo::cost::$f as f;
-        use uvt_core::{Bounded, Planar, Prec};
+        use uvt_core::{Bounded, Full, Planar, Prec};
+        use uvt_demo::cost::$f as f;
         match crate::SEL {
-            0 => f::<Prec<16, 16, 16>>($reps),
-            1 => f::<Bounded<16, 16, 16, 20>>($reps),
-            2 => f::<Bounded<16, 16, 16, 22>>($reps),
-            3 => f::<Bounded<16, 16, 16, 24>>($reps),
-            4 => f::<Bounded<12, 12, 12, 24>>($reps),
-            5 => f::<Bounded<12, 12, 12, 26>>($reps),
-            6 => f::<Bounded<8, 8, 8, 28>>($reps),
-            _ => f::<Planar<16, 16, 16, 20>>($reps),
+            0 => f::<Prec<16, 16, 16>, Full, Full>($reps),
+            1 => f::<Bounded<16, 16, 16, 20>, Full, Full>($reps),
+            2 => f::<Bounded<16, 16, 16, 22>, Full, Full>($reps),
+            3 => f::<Bounded<16, 16, 16, 24>, Full, Full>($reps),
+            4 => f::<Bounded<12, 12, 12, 24>, Full, Full>($reps),
+            5 => f::<Bounded<12, 12, 12, 26>, Full, Full>($reps),
+            6 => f::<Bounded<8, 8, 8, 28>, Full, Full>($reps),
+            _ => f::<Planar<16, 16, 16, 20>, Full, Full>($reps),
         }
         .unwrap_or(0)
     }};
@@ -217,7 +217,7 @@ mod target {
     use cortex_m::peripheral::syst::SystClkSource;
     use cortex_m_rt::entry;
     use cortex_m_semihosting::{debug, hprintln};
-    use uvt_core::demo;
+    use uvt_demo as demo;
 
     const PAINT: u32 = 0x5AA5_C33C;
     /// Instructions per SysTick tick under `-icount shift=0` on mps2-an385/an386 (25 MHz SYSCLK).
@@ -287,7 +287,7 @@ mod target {
         if crate::UNIT.is_some() {
             unit_program(&mut cp.SYST, cal);
         }
-        match demo::render() {
+        match demo::render::<uvt_core::DefaultPrecision, uvt_core::Full, uvt_core::Full>() {
             Ok(r) => {
                 report!(hprintln, r);
             }
@@ -302,32 +302,41 @@ mod target {
         // one configuration measures that configuration alone, so every configuration's figures
         // come from the same code shape (more instantiations change the inlining and the count).
         if option_env!("UVT_M4_PREC").is_none() {
-            let (c, i) = ticks(&mut cp.SYST, || demo::cost::setup_all(20).unwrap_or(0));
+            let (c, i) = ticks(&mut cp.SYST, || {
+                demo::cost::setup::<uvt_core::Exact, uvt_core::Full, uvt_core::Full>(20)
+                    .unwrap_or(0)
+            });
             hprintln!("cost setup calls={} insn={}", c, i);
-            let (c, i) = ticks(&mut cp.SYST, || demo::cost::bounds_all(5).unwrap_or(0));
+            let (c, i) = ticks(&mut cp.SYST, || {
+                demo::cost::bounds::<uvt_core::Exact, uvt_core::Full, uvt_core::Full>(5)
+                    .unwrap_or(0)
+            });
             hprintln!("cost bounds calls={} insn={}", c, i);
-            let (c, i) = ticks(&mut cp.SYST, || demo::cost::samples_all(2).unwrap_or(0));
+            let (c, i) = ticks(&mut cp.SYST, || {
+                demo::cost::samples::<uvt_core::Exact, uvt_core::Full, uvt_core::Full>(2)
+                    .unwrap_or(0)
+            });
             hprintln!("cost sample calls={} insn={}", c, i);
             type B = uvt_core::BoundedPrecision;
             let (c, i) = ticks(&mut cp.SYST, || {
-                demo::cost::setup_all_with::<B>(20).unwrap_or(0)
+                demo::cost::setup::<B, uvt_core::Full, uvt_core::Full>(20).unwrap_or(0)
             });
             hprintln!("cost setup_bounded calls={} insn={}", c, i);
             let (c, i) = ticks(&mut cp.SYST, || {
-                demo::cost::bounds_all_with::<B>(5).unwrap_or(0)
+                demo::cost::bounds::<B, uvt_core::Full, uvt_core::Full>(5).unwrap_or(0)
             });
             hprintln!("cost bounds_bounded calls={} insn={}", c, i);
             let (c, i) = ticks(&mut cp.SYST, || {
-                demo::cost::samples_all_with::<B>(2).unwrap_or(0)
+                demo::cost::samples::<B, uvt_core::Full, uvt_core::Full>(2).unwrap_or(0)
             });
             hprintln!("cost sample_bounded calls={} insn={}", c, i);
         }
         hprintln!("prec {}", crate::PREC);
-        let (c, i) = ticks(&mut cp.SYST, || with_sel!(setup_all_with, 20));
+        let (c, i) = ticks(&mut cp.SYST, || with_sel!(setup, 20));
         hprintln!("cost setup_sel calls={} insn={}", c, i);
-        let (c, i) = ticks(&mut cp.SYST, || with_sel!(bounds_all_with, 5));
+        let (c, i) = ticks(&mut cp.SYST, || with_sel!(bounds, 5));
         hprintln!("cost bounds_sel calls={} insn={}", c, i);
-        let (c, i) = ticks(&mut cp.SYST, || with_sel!(samples_all_with, 2));
+        let (c, i) = ticks(&mut cp.SYST, || with_sel!(samples, 2));
         hprintln!("cost sample_sel calls={} insn={}", c, i);
         debug::exit(debug::EXIT_SUCCESS);
         loop {
@@ -428,7 +437,7 @@ mod target {
         if crate::HARNESS {
             harness_program(o, cal);
         }
-        let Ok(r) = with_unit!(demo::render_on_with,) else {
+        let Ok(r) = with_unit!(demo::render,) else {
             o.s("error rendering the unit's prims\n");
             debug::exit(debug::EXIT_FAILURE);
             loop {
@@ -468,27 +477,21 @@ mod target {
         o.s("prims ")
             .s(uvt_core::config::unit::UNIT_NAMES[crate::PRIMS_SEL])
             .s("\n");
-        let c = ticks(syst, || {
-            with_unit!(demo::cost::setup_all_on_with, 20).unwrap_or(0)
-        });
+        let c = ticks(syst, || with_unit!(demo::cost::setup, 20).unwrap_or(0));
         o.cost("setup_unit", c);
-        let c = ticks(syst, || {
-            with_unit!(demo::cost::bounds_all_on_with, 5).unwrap_or(0)
-        });
+        let c = ticks(syst, || with_unit!(demo::cost::bounds, 5).unwrap_or(0));
         o.cost("bounds_unit", c);
-        let c = ticks(syst, || {
-            with_unit!(demo::cost::samples_all_on_with, 2).unwrap_or(0)
-        });
+        let c = ticks(syst, || with_unit!(demo::cost::samples, 2).unwrap_or(0));
         o.cost("sample_unit", c);
         // The measuring loop alone (the same loop, the test replaced by `black_box`): only in
         // the calibration build (`UVT_M4_EMPTY`), so the measured programs stay as they are.
         if crate::EMPTY {
             let c = ticks(syst, || {
-                with_unit!(demo::cost::samples_empty_on_with, 2).unwrap_or(0)
+                with_unit!(demo::cost::samples_empty, 2).unwrap_or(0)
             });
             o.cost("sample_empty", c);
             let c = ticks(syst, || {
-                with_unit!(demo::cost::bounds_empty_on_with, 5).unwrap_or(0)
+                with_unit!(demo::cost::bounds_empty, 5).unwrap_or(0)
             });
             o.cost("bounds_empty", c);
         }
@@ -532,9 +535,9 @@ mod target {
 
 #[cfg(not(target_os = "none"))]
 fn main() {
-    use uvt_core::demo;
+    use uvt_demo as demo;
     if let Some(name) = UNIT {
-        match with_unit!(demo::render_on_with,) {
+        match with_unit!(demo::render,) {
             Ok(r) => report!(println, r),
             Err(e) => {
                 eprintln!("error {e}");
@@ -546,7 +549,7 @@ fn main() {
         println!("prims {}", uvt_core::config::unit::UNIT_NAMES[PRIMS_SEL]);
         return;
     }
-    match demo::render() {
+    match demo::render::<uvt_core::DefaultPrecision, uvt_core::Full, uvt_core::Full>() {
         Ok(r) => report!(println, r),
         Err(e) => {
             eprintln!("error {e}");
@@ -559,22 +562,28 @@ fn main() {
         println!("cost {name} calls={calls} ns={}", t.elapsed().as_nanos());
     };
     if option_env!("UVT_M4_PREC").is_none() {
-        time("setup", &|| demo::cost::setup_all(2000).unwrap_or(0));
-        time("bounds", &|| demo::cost::bounds_all(500).unwrap_or(0));
-        time("sample", &|| demo::cost::samples_all(200).unwrap_or(0));
+        time("setup", &|| {
+            demo::cost::setup::<uvt_core::Exact, uvt_core::Full, uvt_core::Full>(2000).unwrap_or(0)
+        });
+        time("bounds", &|| {
+            demo::cost::bounds::<uvt_core::Exact, uvt_core::Full, uvt_core::Full>(500).unwrap_or(0)
+        });
+        time("sample", &|| {
+            demo::cost::samples::<uvt_core::Exact, uvt_core::Full, uvt_core::Full>(200).unwrap_or(0)
+        });
         type B = uvt_core::BoundedPrecision;
         time("setup_bounded", &|| {
-            demo::cost::setup_all_with::<B>(2000).unwrap_or(0)
+            demo::cost::setup::<B, uvt_core::Full, uvt_core::Full>(2000).unwrap_or(0)
         });
         time("bounds_bounded", &|| {
-            demo::cost::bounds_all_with::<B>(500).unwrap_or(0)
+            demo::cost::bounds::<B, uvt_core::Full, uvt_core::Full>(500).unwrap_or(0)
         });
         time("sample_bounded", &|| {
-            demo::cost::samples_all_with::<B>(200).unwrap_or(0)
+            demo::cost::samples::<B, uvt_core::Full, uvt_core::Full>(200).unwrap_or(0)
         });
     }
     println!("prec {PREC}");
-    time("setup_sel", &|| with_sel!(setup_all_with, 2000));
-    time("bounds_sel", &|| with_sel!(bounds_all_with, 500));
-    time("sample_sel", &|| with_sel!(samples_all_with, 200));
+    time("setup_sel", &|| with_sel!(setup, 2000));
+    time("bounds_sel", &|| with_sel!(bounds, 500));
+    time("sample_sel", &|| with_sel!(samples, 200));
 }

@@ -1,9 +1,27 @@
-//! Degeneracy: whether the exact triangle's determinant vanishes at every (t, u, v), and the
-//! static edge normals of the exact test.
+//! The exact triangle's determinant: whether it vanishes at every (t, u, v) (degenerate), and
+//! the static edge normals and determinant sign of the exact test.
 
 use crate::input::{Triangle, C, W, X, Y};
-use crate::setup::StaticEdges;
 use crate::stats::Ops;
+
+/// Static in-focus edge data: normals `n_k = P_{k+1} × P_{k+2}` and `det`, raw 2·16 fraction bits.
+/// Built only by setup from a checked [`Triangle`], so |n| < 2^59 and `det_sign` is ±1.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct StaticEdges {
+    pub(crate) n: [[i128; 3]; 3],
+    pub(crate) det_sign: i32,
+}
+
+impl StaticEdges {
+    /// Edge normals (a, b, c) per edge.
+    pub fn n(&self) -> [[i128; 3]; 3] {
+        self.n
+    }
+    /// Sign of P0·(P1×P2): −1 or 1 (0 is culled).
+    pub fn det_sign(&self) -> i32 {
+        self.det_sign
+    }
+}
 
 /// det(P0, P1, P2) of raw (x, y, w) triples, exact in i128 (|P| < 2^33 here, so |det| < 2^102).
 #[inline]

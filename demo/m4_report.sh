@@ -25,7 +25,7 @@
 # default configuration or planar-16-16-16-20), e.g. `--units /tmp/m4_units_planar.json
 # planar-16-16-16-20`; without PREC the output is the default configuration's, as before.
 set -euo pipefail
-cd "$(dirname "$0")/../.."
+cd "$(dirname "$0")/.."
 tdir=${CARGO_TARGET_DIR:-target}
 # The rows of a JSON array, comma-separated (one per line, as given).
 json_items() { local n=$#; local i=0; for r in "$@"; do i=$((i + 1)); if [[ $i -lt $n ]]; then echo "$r,"; else echo "$r"; fi; done; }
@@ -42,7 +42,7 @@ if [[ "${1:-}" == "--units" ]]; then
   elf=$tdir/thumbv7em-none-eabihf/release/examples/m4_render
   # Build m4_render with the given environment assignments and run it under QEMU (stdout).
   m4run() {
-    env "$@" cargo build -q --release -p uvt-core --example m4_render --target thumbv7em-none-eabihf
+    env "$@" cargo build -q --release -p uvt-demo --example m4_render --target thumbv7em-none-eabihf
     local out
     out=$(timeout 120 qemu-system-arm -machine mps2-an386 -cpu cortex-m4 -nographic -monitor none \
         -semihosting-config enable=on,target=native -icount shift=0 -kernel "$elf")
@@ -100,7 +100,7 @@ if [[ "${1:-}" == "--units" ]]; then
   tmp=$(mktemp "$json.XXXX")
   {
     echo "{"
-    echo "  \"command\": \"bash core/examples/m4_report.sh --units${uprec:+ $json $uprec}\","
+    echo "  \"command\": \"bash demo/m4_report.sh --units${uprec:+ $json $uprec}\","
     if [[ -n "$uprec" ]]; then
       echo "  \"prec\": \"$uprec\","
     fi
@@ -124,11 +124,11 @@ if [[ "${1:-}" == "--sweep" ]]; then
   rows=()
   for n in "${names[@]}"; do
     echo "m4_report --sweep: $n" >&2
-    UVT_M4_PREC=$n cargo build -q --release -p uvt-core --example m4_render --target thumbv7em-none-eabihf
+    UVT_M4_PREC=$n cargo build -q --release -p uvt-demo --example m4_render --target thumbv7em-none-eabihf
     m4=$(timeout 120 qemu-system-arm -machine mps2-an386 -cpu cortex-m4 -nographic -monitor none \
         -semihosting-config enable=on,target=native -icount shift=0 \
         -kernel "$tdir/thumbv7em-none-eabihf/release/examples/m4_render")
-    host=$(UVT_M4_PREC=$n cargo run -q --release -p uvt-core --example m4_render)
+    host=$(UVT_M4_PREC=$n cargo run -q --release -p uvt-demo --example m4_render)
     got=$(echo "$m4" | awk '$1 == "prec" {print $2}')
     [[ "$got" == "$n" ]] || { echo "m4_render built for '$got', expected '$n'" >&2; exit 1; }
     cal=$(echo "$m4" | awk -F= '/^calibration/ {print $2}')
@@ -137,7 +137,7 @@ if [[ "${1:-}" == "--sweep" ]]; then
   tmp=$(mktemp "$json.XXXX")
   {
     echo "{"
-    echo "  \"command\": \"bash core/examples/m4_report.sh --sweep\","
+    echo "  \"command\": \"bash demo/m4_report.sh --sweep\","
     echo "  \"target\": \"Cortex-M4F (thumbv7em-none-eabihf, QEMU mps2-an386, -icount shift=0; instructions per call on the demo scene; calibration 8000002 expected)\","
     echo "  \"configs\": ["
     json_items "${rows[@]}"
@@ -148,11 +148,11 @@ if [[ "${1:-}" == "--sweep" ]]; then
 fi
 # profile: name target machine cpu
 profiles=("M4F thumbv7em-none-eabihf mps2-an386 cortex-m4" "M3 thumbv7m-none-eabi mps2-an385 cortex-m3")
-host=$(cargo run -q --release -p uvt-core --example m4_render)
+host=$(cargo run -q --release -p uvt-demo --example m4_render)
 declare -A out elf
 for p in "${profiles[@]}"; do
   read -r name target machine cpu <<<"$p"
-  cargo build -q --release -p uvt-core --example m4_render --target "$target"
+  cargo build -q --release -p uvt-demo --example m4_render --target "$target"
   elf[$name]=$tdir/$target/release/examples/m4_render
   out[$name]=$(timeout 120 qemu-system-arm -machine "$machine" -cpu "$cpu" -nographic -monitor none \
       -semihosting-config enable=on,target=native -icount shift=0 -kernel "${elf[$name]}")
