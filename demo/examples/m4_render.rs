@@ -29,34 +29,22 @@
 #![cfg_attr(target_os = "none", no_std)]
 #![cfg_attr(target_os = "none", no_main)]
 
-/// The precision sweep's configurations (names of `uvt precision`), in `SEL` order.
-const NAMES: [&str; 8] = [
-    "exact-16-16-16",
-    "bounded-16-16-16-20",
-    "bounded-16-16-16-22",
-    "bounded-16-16-16-24",
-    "bounded-12-12-12-24",
-    "bounded-12-12-12-26",
-    "bounded-8-8-8-28",
-    "planar-16-16-16-20",
-];
+use uvt_core::config::registry::{self, Config};
 
-/// Index of the planar static configuration (`uvt_core::PlanarPrecision`) in `NAMES`: not
-/// part of the sweep (`m4_report.sh --sweep` lists its own names); a unit program may be built
-/// at it (`UVT_M4_UNIT` with `UVT_M4_PREC=planar-16-16-16-20`).
-const PLANAR_SEL: usize = 7;
-
-/// The default configuration's name: the core's `DefaultPrecision` (exact or the bounded
-/// candidate).
-const DEFAULT: &str = match <uvt_core::DefaultPrecision as uvt_core::Precision>::OFFSET_SHIFT {
-    None => NAMES[0],
-    Some(_) => NAMES[1],
+/// The configuration chosen at build time: `UVT_M4_PREC`, a name of the configuration registry
+/// (`uvt_core::config::registry`; an unknown name fails the build), or the default.
+const SEL: Config = match registry::find(match option_env!("UVT_M4_PREC") {
+    Some(s) => s,
+    None => "default",
+}) {
+    Some(c) => c,
+    None => panic!("UVT_M4_PREC must name a configuration of uvt_core::config::registry"),
 };
 
-/// The configuration chosen at build time.
-const PREC: &str = match option_env!("UVT_M4_PREC") {
-    Some(s) => s,
-    None => DEFAULT,
+/// Its registry name.
+const PREC: &str = match registry::name_of(SEL) {
+    Some(n) => n,
+    None => "?",
 };
 
 const fn same(a: &str, b: &str) -> bool {
@@ -74,35 +62,15 @@ const fn same(a: &str, b: &str) -> bool {
     true
 }
 
-/// Index of `PREC` in `NAMES`; an unknown name is a build error.
-const SEL: usize = {
-    let mut i = 0;
-    while i < NAMES.len() && !same(NAMES[i], PREC) {
-        i += 1;
-    }
-    assert!(
-        i < NAMES.len(),
-        "UVT_M4_PREC must name a configuration of the sweep"
-    );
-    i
-};
-
-/// `f::<P>(reps)` for the selected configuration (a constant match: one instantiation kept).
+/// `f::<P, Full, Full>(reps)` for the selected configuration `P` (a constant condition per
+/// registry entry: one instantiation kept).
 macro_rules! with_sel {
     ($f:ident, $reps:expr) => {{
-        use uvt_core::{Bounded, Full, Planar, Prec};
+        use uvt_core::Full;
         use uvt_demo::cost::$f as f;
-        match crate::SEL {
-            0 => f::<Prec<16, 16, 16>, Full, Full>($reps),
-            1 => f::<Bounded<16, 16, 16, 20>, Full, Full>($reps),
-            2 => f::<Bounded<16, 16, 16, 22>, Full, Full>($reps),
-            3 => f::<Bounded<16, 16, 16, 24>, Full, Full>($reps),
-            4 => f::<Bounded<12, 12, 12, 24>, Full, Full>($reps),
-            5 => f::<Bounded<12, 12, 12, 26>, Full, Full>($reps),
-            6 => f::<Bounded<8, 8, 8, 28>, Full, Full>($reps),
-            _ => f::<Planar<16, 16, 16, 20>, Full, Full>($reps),
-        }
-        .unwrap_or(0)
+        uvt_core::with_config!(crate::SEL, P => f::<P, Full, Full>($reps))
+            .and_then(|r| r.ok())
+            .unwrap_or(0)
     }};
 }
 
@@ -161,9 +129,9 @@ const PRIMS_SEL: usize = match option_env!("UVT_M4_PRIMS") {
 /// (`UVT_M4_PREC=planar-16-16-16-20`); any other `UVT_M4_PREC` with `UVT_M4_UNIT` is a build
 /// error.
 const UNIT_PLANAR: bool = {
-    let planar = SEL == PLANAR_SEL;
+    let planar = SEL.same(&registry::PLANAR);
     assert!(
-        UNIT.is_none() || planar || same(PREC, DEFAULT),
+        UNIT.is_none() || planar || SEL.same(&registry::DEFAULT),
         "UVT_M4_UNIT builds the default configuration or planar-16-16-16-20 only"
     );
     planar

@@ -88,7 +88,7 @@ pub const OFFSET_SHIFT_MAX: u32 = 32;
 /// A precision with the **bounded** sample test (`bounded.rs`): `POS`, `TUV`, `BND` as in
 /// [`Prec`], and the sample-relative offsets rounded to a grid of `2^OFF` raw units
 /// (`OFF` ∈ [`OFFSET_SHIFT_MIN`]..=[`OFFSET_SHIFT_MAX`], checked at compile time). Setup and
-/// the bounds widen by the conservative epsilon the rounding needs ([`crate::setup::eps::Eps`]).
+/// the bounds widen by the conservative epsilon the rounding needs (`setup::eps::Eps`).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Bounded<const POS: u32, const TUV: u32, const BND: u32, const OFF: u32>;
 
@@ -112,7 +112,7 @@ impl<const POS: u32, const TUV: u32, const BND: u32, const OFF: u32> Precision
 /// triangles (class `Static`, camera-plane crossers included) the planar test — each vertex
 /// rounded once to 15 bits (per-vertex shift), the exact i32 edge normals of the rounded
 /// triangle, three 32 × 32 dot products per sample: watertight at edges and vertices — with a
-/// per-triangle conservative epsilon (the rounding residual, [`crate::sample::planar`]). An addition: the default
+/// per-triangle conservative epsilon (the rounding residual, `sample::planar`). An addition: the default
 /// configuration is unchanged.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct Planar<const POS: u32, const TUV: u32, const BND: u32, const OFF: u32>;

@@ -1,10 +1,10 @@
 //! Unit variants chosen at build time: which effects the rasterizer unit has hardware for.
 //!
-//! A [`Unit`] is a type parameter of [`crate::Renderer`] (default [`Full`]). Its constants
+//! A [`Unit`] is a type parameter of the renderer (`Renderer`, default [`Full`]). Its constants
 //! `MOTION` and `DEFOCUS` gate, at compile time, the setup terms, the bounds coefficients and the
 //! sample-test terms of the classes it lacks (`if U::MOTION && …`): a variant's program does not
-//! contain them. A triangle whose class ([`crate::input::Triangle::class`]) the unit does not accept is
-//! refused by [`crate::Renderer::new`] with [`crate::Error::ClassNotInUnit`], never rendered with
+//! contain them. A triangle whose class (`Triangle::class`) the unit does not accept is
+//! refused by the renderer with `Error::ClassNotInUnit`, never rendered with
 //! the terms left out. For every triangle a variant accepts, its output is bit-identical to
 //! [`Full`]'s at the same precision (`tests/tests/variants.rs`): the gated terms are exactly the
 //! ones the class does not use.

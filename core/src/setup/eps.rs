@@ -2,8 +2,11 @@
 //! (`sample::bounded` module docs derive it); setup and every bounds strategy widen by it.
 
 use crate::config::class::Class;
+use crate::config::formats::SUBPIXEL_BITS;
 use crate::input::Viewport;
-use crate::sample::bounded::datapath::SUBPIXEL_SCALE;
+
+/// 2^8: one pixel in sample-position units.
+const SUBPIXEL_SCALE: i32 = 1 << SUBPIXEL_BITS;
 
 /// The conservative epsilon of a setup: how far the bounded test's rounding can move a vertex,
 /// in raw clip units (2^-16), rounded up to integers. All zero for the exact test, so every

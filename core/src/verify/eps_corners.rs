@@ -8,10 +8,10 @@
 // Test code: plain operators on values far inside i128; an overflow panics (the failure signal).
 #![allow(clippy::arithmetic_side_effects, clippy::indexing_slicing)]
 
-use crate::bounds::compose::{best, hull_lens};
 use crate::bounds::hull::{eps_margin, swept_points};
 use crate::bounds::hyper::Hyper;
 use crate::bounds::lens_time::LensTime;
+use crate::bounds::registry::{best, hull_lens};
 use crate::bounds::strategy::BoundsStrategy;
 use crate::config::precision::{Bounded, OFFSET_SHIFT_MAX};
 use crate::config::unit::Full;

@@ -20,7 +20,7 @@ use crate::config::formats::PixelCoord;
 use crate::input::{Triangle, Vertex, C, W, X, Y};
 use crate::setup::boxes::{corner_boxes, crosses_camera_plane, hull_meets_ray, project, AxisBoxes};
 use crate::stats::Ops;
-use crate::verify::rng::{cases, seed, Rng};
+use uvt_testkit::{cases, seed, Rng};
 
 const LIM: i32 = 1 << 29;
 

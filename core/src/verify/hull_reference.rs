@@ -21,7 +21,7 @@ use crate::input::{PixelRect, Triangle, Viewport};
 use crate::setup::{setup, Outcome, Setup};
 use crate::stats::Ops;
 use crate::verify::hyper_reference::random_tri;
-use crate::verify::rng::{cases, seed, Rng};
+use uvt_testkit::{cases, seed, Rng};
 
 /// The faces exactly as `HullCull::prepare` builds them before the per-tile form.
 fn faces(s: &Setup) -> HullCoeffs {

@@ -24,7 +24,7 @@ use crate::config::unit::Full;
 use crate::input::{PixelRect, Triangle, Vertex, Viewport};
 use crate::setup::{setup, Outcome, Setup};
 use crate::stats::Ops;
-use crate::verify::rng::{cases, seed, Rng};
+use uvt_testkit::{cases, seed, Rng};
 
 /// The replaced per-tile computation, verbatim: corner values for tile ends [x0, x1] ⊆ [ξa, ξb],
 /// lower = min of the two ends of each bounding line, upper = max, scaled by ξb − ξa.

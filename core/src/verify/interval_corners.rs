@@ -37,8 +37,8 @@ fn recip_i128(d: i64) -> (i128, i128) {
 
 #[test]
 fn recip_matches_i128() {
-    let seed = crate::verify::rng::seed();
-    let mut rng = crate::verify::rng::Rng(seed ^ 0x7ec1);
+    let seed = uvt_testkit::seed();
+    let mut rng = uvt_testkit::Rng(seed ^ 0x7ec1);
     let mut ds: Vec<i64> = vec![0, 1, -1, 2, 3, 7, 1 << 32, (1 << 32) + 1, (1 << 59) - 1];
     for e in 0..64 {
         let p = 1i64.checked_shl(e).unwrap_or(i64::MAX);
@@ -50,7 +50,7 @@ fn recip_matches_i128() {
         ]);
     }
     ds.extend([i64::MAX, i64::MIN, i64::MIN + 1]);
-    for _ in 0..crate::verify::rng::cases(20_000, 2_000_000) {
+    for _ in 0..uvt_testkit::cases(20_000, 2_000_000) {
         ds.push(rng.signed(1 << 59));
     }
     for d in ds {
@@ -71,8 +71,8 @@ fn recip_matches_i128() {
 #[test]
 fn recip_solve_matches_i128_product() {
     // The split product against the i128 product and divide by 2^64 it replaced.
-    let seed = crate::verify::rng::seed();
-    let mut rng = crate::verify::rng::Rng(seed ^ 0x5017);
+    let seed = uvt_testkit::seed();
+    let mut rng = uvt_testkit::Rng(seed ^ 0x5017);
     let mut pairs: Vec<(i64, i64)> = Vec::new();
     for d in [
         1i64,
@@ -98,7 +98,7 @@ fn recip_solve_matches_i128_product() {
             pairs.push((d, n));
         }
     }
-    for _ in 0..crate::verify::rng::cases(50_000, 2_000_000) {
+    for _ in 0..uvt_testkit::cases(50_000, 2_000_000) {
         let d = rng.signed(1 << 62);
         let n = match rng.next_u64() % 3 {
             0 => rng.signed(1 << 62),
@@ -142,8 +142,8 @@ fn recip_solve_matches_i128_product() {
 
 #[test]
 fn frac_div_matches_i128() {
-    let seed = crate::verify::rng::seed();
-    let mut rng = crate::verify::rng::Rng(seed ^ 0xf7ac);
+    let seed = uvt_testkit::seed();
+    let mut rng = uvt_testkit::Rng(seed ^ 0xf7ac);
     let mut cases = vec![
         (0u64, 1u64),
         (1, 2),
@@ -151,7 +151,7 @@ fn frac_div_matches_i128() {
         ((1 << 63) - 1, 1 << 63),
         (2, 3),
     ];
-    for _ in 0..crate::verify::rng::cases(20_000, 2_000_000) {
+    for _ in 0..uvt_testkit::cases(20_000, 2_000_000) {
         let d = rng.signed(1 << 62).unsigned_abs().max(1) * 2;
         let n = rng.next_u64() % d;
         cases.push((n, d));
@@ -178,8 +178,8 @@ fn frac_div_matches_i128() {
 fn solve_le_matches_i128_division() {
     // The three quotient paths (64-bit divide, shift-subtract, i128 divide) against the
     // i128 division, at the ends of each path's range and on seeded random operands.
-    let seed = crate::verify::rng::seed();
-    let mut rng = crate::verify::rng::Rng(seed ^ 0x501e);
+    let seed = uvt_testkit::seed();
+    let mut rng = uvt_testkit::Rng(seed ^ 0x501e);
     let want = |d: i128, n: i128| -> Option<Interval> {
         let one = i128::from(TUV_ONE);
         if d > 0 {
@@ -206,7 +206,7 @@ fn solve_le_matches_i128_division() {
             cases.extend([(d, n), (-d, -n)]);
         }
     }
-    for _ in 0..crate::verify::rng::cases(20_000, 2_000_000) {
+    for _ in 0..uvt_testkit::cases(20_000, 2_000_000) {
         let d = i128::from(rng.signed(1 << 62)) * 2 + 1;
         let n = i128::from(rng.next_u64() >> 1) % d.abs();
         cases.extend([(d, n.copysign_like(d)), (d, -n), (d, n)]);

@@ -1,8 +1,8 @@
 //! Test-only verification of the core, apart from the product code: domain-corner drives of
 //! every stage against wide shadow computations (`*_corners`), the frozen contracts of the
 //! bounded and planar datapaths with their committed hashes (`*_frozen`), the direct references
-//! the optimised hull and surface strategies are compared with (`*_reference`), and the seeded
-//! random numbers of the core's tests ([`rng`]).
+//! the optimised hull and surface strategies are compared with (`*_reference`). The seeded random
+//! numbers (`UVT_SEED`, `UVT_EXTENSIVE`) are `uvt-testkit`'s, shared with the integration tests.
 
 mod bounded_corners;
 pub(crate) mod bounded_frozen;
@@ -14,5 +14,4 @@ pub(crate) mod hyper_reference;
 mod interval_corners;
 mod planar_corners;
 pub(crate) mod planar_frozen;
-pub(crate) mod rng;
 mod width_corners;

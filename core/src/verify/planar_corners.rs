@@ -24,7 +24,7 @@ use crate::sample::planar;
 use crate::sample::pos::{direction, ScreenPos};
 use crate::setup::Setup;
 use crate::stats::Ops;
-use crate::verify::rng::{cases, seed, Rng};
+use uvt_testkit::{cases, seed, Rng};
 
 const LIM: i32 = 1 << 29;
 const VALUES: [i32; 9] = [-LIM, -LIM + 1, -1, 0, 1, LIM - 1, LIM, LIM / 2, -LIM / 3];

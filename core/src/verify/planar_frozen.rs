@@ -290,7 +290,7 @@ mod planar_frozen_tests {
     use crate::config::precision::PlanarPrecision;
     use crate::input::Vertex;
     use crate::setup::Setup;
-    use crate::verify::rng::{cases, seed, Rng};
+    use uvt_testkit::{cases, seed, Rng};
 
     const LIM: i64 = 1 << 29;
 

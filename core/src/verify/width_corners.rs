@@ -25,13 +25,15 @@ use std::vec::Vec;
 
 use crate::config::formats::{Lens, SubPixel, Time};
 use crate::config::precision::{Bounded, DefaultPrecision, OFFSET_SHIFT_MAX, OFFSET_SHIFT_MIN};
+use crate::config::registry::Config;
 use crate::config::unit::Full;
 use crate::input::{Sample, Triangle, Vertex, Viewport, C, W, X, Y, Z};
 use crate::sample::pos::ScreenPos;
 use crate::sample::{bounded, exact};
 use crate::setup::Setup;
 use crate::stats::Ops;
-use crate::widths::{table, Config, Table};
+use crate::widths::row::Table;
+use crate::widths::stages::table;
 
 const LIM: i32 = 1 << 29;
 const ONE: i32 = 1 << 16;
@@ -241,7 +243,7 @@ fn shadow_bounded(
     let depth = covered.then(|| {
         let big = e.iter().map(|x| x.unsigned_abs()).max().unwrap();
         let len = 128 - big.leading_zeros();
-        let sh = len.saturating_sub(crate::widths::BOUNDED_DEPTH_EDGE_BITS);
+        let sh = len.saturating_sub(crate::widths::row::BOUNDED_DEPTH_EDGE_BITS);
         let (mut num, mut den) = (0i128, 0i128);
         for k in 0..3 {
             let ek = e[k] >> sh;
@@ -425,7 +427,7 @@ fn setup_and_bounds_products_fit_their_declared_widths() {
             Some(_) => Config::of::<Bounded<16, 16, 16, 32>>(),
         };
         let t = table(&cfg);
-        let (ex, ew) = cfg.eps_max();
+        let (ex, ew) = crate::widths::row::eps_max(&cfg);
         let (ex, ew) = (i128::from(ex), i128::from(ew));
         let mut seen = Seen::default();
         let e = i128::from(crate::config::formats::MAX_VIEWPORT);

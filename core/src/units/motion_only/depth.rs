@@ -134,14 +134,14 @@ pub(crate) fn depth(e: &[i64; 3], wz: &[(i32, i32); 3], sign: i64) -> i32 {
 #[allow(clippy::cast_possible_truncation, clippy::arithmetic_side_effects)]
 mod tests {
     use super::*;
-    use crate::verify::rng::Rng;
+    use uvt_testkit::Rng;
 
     /// [`depth`] against `bounded::depth` (on the host: its 128-bit quotient) on extreme
     /// edge values (±(2^61 − 1), single bits, zeros) and (w, z) (±2^29, ±1, 0), and on random
     /// covered configurations. Prints the inputs on a failure.
     #[test]
     fn depth_is_bounded_depth() {
-        let seed = crate::verify::rng::seed();
+        let seed = uvt_testkit::seed();
         let mut rng = Rng(seed);
         let ends: [i32; 7] = [1 << 29, -(1 << 29), 1, -1, 0, 12345, -(1 << 28) + 7];
         let check = |e: [i64; 3], wz: [(i32, i32); 3], sign: i64| {
@@ -166,7 +166,7 @@ mod tests {
                 }
             }
         }
-        for _ in 0..crate::verify::rng::cases(200_000, 5_000_000) {
+        for _ in 0..uvt_testkit::cases(200_000, 5_000_000) {
             let sign = if rng.next_u64() & 1 == 0 { -1i64 } else { 1 };
             let e = [0; 3].map(|_| rng.signed((1 << 61) - 1).abs() * sign);
             let wz = [0; 3].map(|_| {

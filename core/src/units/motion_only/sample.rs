@@ -309,7 +309,7 @@ fn general(m: &MotionSetup, xs: i32, ys: i32, t: i32) -> Option<Hit> {
 #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
 mod tests {
     use super::*;
-    use crate::verify::rng::{cases, seed, Rng};
+    use uvt_testkit::{cases, seed, Rng};
 
     /// [`edge`] (`a_i·b_j + a_j·(−b_i)`) against the bounded test's form `a_i·b_j − a_j·b_i`
     /// evaluated in i128, bit for bit: every combination of the offset corners (±(2^30 − 1),

@@ -300,7 +300,7 @@ pub fn motion_setup<P: Precision>(
 #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
 mod tests {
     use super::*;
-    use crate::verify::rng::{cases, seed, Rng};
+    use uvt_testkit::{cases, seed, Rng};
 
     /// [`corner_range`] (two chosen corners) against the floors of all four corners'
     /// projections, on extreme and seeded random operands: the ranges `end_box` feeds it

@@ -1,0 +1,132 @@
+//! Every named bounds strategy, defined once: the composed ones (swept-hull tile culling in front
+//! of the others) and [`STRATEGIES`], the names every command, table and report takes, with
+//! [`with_strategy!`](crate::with_strategy) binding a name to its strategy value.
+//!
+//! | name | strategy |
+//! |---|---|
+//! | `bbox` | [`BboxScan`]: every sample of the footprint |
+//! | `laine2011` | [`Laine2011`] |
+//! | `hull` | [`hull()`]: swept-hull tile culling in front of Laine 2011 |
+//! | `lens-t` | [`LensTime`] with [`BEST_SLABS`] lens slabs |
+//! | `hyper` | [`Hyper`] |
+//! | `hull+lens-t` | [`hull_lens()`] |
+//! | `hull+edge-t` | [`hull_edge()`] |
+//! | `best` | [`best()`] |
+//!
+//! [`BboxScan`]: crate::bounds::bbox::BboxScan
+
+use crate::bounds::edge_time::EdgeTime;
+use crate::bounds::hull::HullCull;
+use crate::bounds::hyper::Hyper;
+use crate::bounds::laine::Laine2011;
+use crate::bounds::lens_time::LensTime;
+
+/// Lens slabs of "lens-t" and "hull+lens-t".
+pub const BEST_SLABS: usize = 4;
+
+/// Swept-hull tile culling in front of Laine 2011 ("hull").
+pub const fn hull() -> HullCull<Laine2011> {
+    HullCull::new(Laine2011, "hull")
+}
+
+/// Swept-hull tile culling in front of lens-dependent time bounds ("hull+lens-t").
+pub const fn hull_lens() -> HullCull<LensTime<BEST_SLABS>> {
+    HullCull::new(LensTime, "hull+lens-t")
+}
+
+/// Swept-hull tile culling in front of edge-direction time bounds on Laine 2011
+/// ("hull+edge-t").
+pub const fn hull_edge() -> HullCull<EdgeTime<Laine2011>> {
+    HullCull::new(EdgeTime::new(Laine2011, "edge-t"), "hull+edge-t")
+}
+
+/// The combined strategy: swept-hull tile culling in front of the edge-direction time bound
+/// (motion-only triangles) on the bilinear (u, t) / (v, t) surfaces ("best": the highest STE of
+/// the bench-ste rows; the edge bound adds 34 ops per tile on motion-only triangles only).
+pub const fn best() -> HullCull<EdgeTime<Hyper>> {
+    HullCull::new(EdgeTime::new(Hyper, "edge-t+hyper"), "best")
+}
+
+/// The name of every strategy of the registry, in the order of the tables (module docs).
+pub const STRATEGIES: [&str; 8] = [
+    "bbox",
+    "laine2011",
+    "hull",
+    "lens-t",
+    "hyper",
+    "hull+lens-t",
+    "hull+edge-t",
+    "best",
+];
+
+/// `with_strategy!(name, s => body)`: `Some(body)` with `s` bound to the strategy named `name`
+/// (one of [`STRATEGIES`]), `None` for any other name. The only place a strategy's name meets
+/// its value:
+///
+/// ```
+/// use uvt_core::{with_strategy, BoundsStrategy};
+/// assert_eq!(with_strategy!("hull+edge-t", s => s.name()), Some("hull+edge-t"));
+/// assert_eq!(with_strategy!("laine", s => s.name()), None);
+/// ```
+#[macro_export]
+macro_rules! with_strategy {
+    ($name:expr, $s:ident => $body:expr) => {
+        match $name {
+            "bbox" => {
+                let $s = $crate::bounds::bbox::BboxScan;
+                ::core::option::Option::Some($body)
+            }
+            "laine2011" => {
+                let $s = $crate::bounds::laine::Laine2011;
+                ::core::option::Option::Some($body)
+            }
+            "hull" => {
+                let $s = $crate::bounds::registry::hull();
+                ::core::option::Option::Some($body)
+            }
+            "lens-t" => {
+                let $s =
+                    $crate::bounds::lens_time::LensTime::<{ $crate::bounds::registry::BEST_SLABS }>;
+                ::core::option::Option::Some($body)
+            }
+            "hyper" => {
+                let $s = $crate::bounds::hyper::Hyper;
+                ::core::option::Option::Some($body)
+            }
+            "hull+lens-t" => {
+                let $s = $crate::bounds::registry::hull_lens();
+                ::core::option::Option::Some($body)
+            }
+            "hull+edge-t" => {
+                let $s = $crate::bounds::registry::hull_edge();
+                ::core::option::Option::Some($body)
+            }
+            "best" => {
+                let $s = $crate::bounds::registry::best();
+                ::core::option::Option::Some($body)
+            }
+            _ => ::core::option::Option::None,
+        }
+    };
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bounds::strategy::BoundsStrategy;
+
+    /// Every listed name dispatches to a strategy of that name; no other name does.
+    #[test]
+    fn every_name_is_its_strategy() {
+        for name in STRATEGIES {
+            assert_eq!(
+                crate::with_strategy!(name, s => s.name()),
+                Some(name),
+                "{name}"
+            );
+        }
+        for bad in ["", "laine", "Laine2011", "hull+hyper", "edge-t"] {
+            assert_eq!(crate::with_strategy!(bad, s => s.name()), None, "{bad:?}");
+        }
+    }
+}
