@@ -226,6 +226,7 @@ pub fn setup_scaled<P: Precision>(
 /// accepts the outcome is the full unit's. The terms of the classes `U` lacks are compiled out: the stages read the
 /// unit's view of the triangle ([`unit_view`]: t0 fields only without motion, no CoC without
 /// defocus), which equals the triangle for every class `U` accepts.
+#[inline(always)]
 pub fn setup<P: Precision, U: Unit>(tri: &Triangle, vp: Viewport, ops: &mut Ops) -> Outcome {
     let class = tri.class();
     if !U::accepts(class) {

@@ -38,6 +38,7 @@ impl<B: BoundsStrategy, P: Precision, U: Unit> Pipeline for General<B, P, U> {
         }
     }
 
+    #[inline(always)]
     fn setup(&self, tri: &Triangle, vp: Viewport, ops: &mut Ops) -> Outcome<Self::Entry> {
         match setup::<P, U>(tri, vp, ops) {
             Outcome::Visible(s) => {
@@ -57,6 +58,7 @@ impl<B: BoundsStrategy, P: Precision, U: Unit> Pipeline for General<B, P, U> {
         entry.0.footprint()
     }
 
+    #[inline(always)]
     fn tile(&self, entry: &Self::Entry, cell: PixelRect, ops: &mut Ops) -> Option<B::Tile> {
         let (s, c) = entry;
         self.bounds.tile::<U>(s, c, cell, ops)

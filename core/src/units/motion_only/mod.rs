@@ -119,6 +119,7 @@ impl<B: BoundsStrategy, P: Precision> Pipeline for MotionPipeline<B, P> {
 
     /// A static triangle at a planar precision takes the static-only unit's setup (the planar
     /// test), every other accepted triangle the motion setup.
+    #[inline(always)]
     fn setup(&self, tri: &Triangle, vp: Viewport, ops: &mut Ops) -> Outcome<MotionEntry> {
         if P::PLANAR && tri.class() == Class::Static {
             match static_setup(tri, vp, ops) {

@@ -106,6 +106,7 @@ impl<B: BoundsStrategy> Pipeline for StaticPipeline<B> {
         }
     }
 
+    #[inline(always)]
     fn setup(&self, tri: &Triangle, vp: Viewport, ops: &mut Ops) -> Outcome<StaticSetup> {
         static_setup(tri, vp, ops)
     }
