@@ -17,9 +17,9 @@ use uvt_core::{
     sample_test, setup_scaled, Bounded, Eps, Laine2011, Ops, Outcome, PixelRect, Precision,
     ScreenPos, Setup, Triangle,
 };
-use uvt_host::pattern::Pattern;
 use uvt_host::reference;
-use uvt_host::scenes::{bench, Bench, Row};
+use uvt_host::scene::builtin::{bench_scene, Bench, Blur};
+use uvt_host::scene::pattern::Pattern;
 
 /// ε scale levels (num/den of the analytic ε), largest first.
 const LEVELS: [(u32, u32); 7] = [(1, 1), (1, 2), (1, 4), (1, 8), (1, 16), (1, 64), (0, 1)];
@@ -101,8 +101,8 @@ fn run<P: Precision + Sync>() {
     println!("|---|---|---|---|---|---|---|---|---|---|");
     let mut total = Acc::default();
     for kind in [Bench::Game, Bench::Dense] {
-        for row in Row::ALL {
-            let s = bench(kind, row, true);
+        for row in Blur::ALL {
+            let s = bench_scene(kind, row, true);
             let pat = Pattern::new(s.pattern, s.spp, s.seed);
             let vp = s.core_viewport();
             let v = s.viewport;
@@ -123,7 +123,7 @@ fn run<P: Precision + Sync>() {
                         LEVELS.iter().map(|&l| prepared::<P>(ct, vp, l)).collect();
                     let exact_cfg = prepared::<uvt_core::DefaultPrecision>(ct, vp, (1, 1));
                     let rf = reference::setup::setup(st, v).ok();
-                    let Some(region) = uvt_host::compare::footprint_union(
+                    let Some(region) = uvt_host::frame::compare::footprint_union(
                         levels[0].as_ref().map(|x| x.0.footprint()),
                         rf.as_ref().map(|x| x.footprint),
                     ) else {

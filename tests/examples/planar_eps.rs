@@ -1,4 +1,4 @@
-//! How many static triangles of the bench scenes (`host/src/scenes.rs`, full and quick size)
+//! How many static triangles of the bench scenes (`host/src/scene/builtin.rs`, full and quick size)
 //! get a larger conservative epsilon at the planar static configuration (`planar.rs`,
 //! per triangle) than at the default configuration (`Eps::of`, per viewport), and how many the
 //! planar setup culls because rounding made them degenerate (det P' = 0; the exact configuration
@@ -10,14 +10,14 @@ use uvt_core::setup::classify;
 use uvt_core::{
     setup_with, Class, DefaultPrecision, Exact, Outcome, PlanarPrecision, Precision, Triangle,
 };
-use uvt_host::scenes::{self, Bench, Row};
+use uvt_host::scene::builtin::{self, Bench, Blur};
 
 fn main() {
     println!("| scene | size | static triangles visible (exact) | planar ε > default ε | planar culled (exact visible) | largest planar ε (raw) | default ε (raw) | planar ε_w > 0 | hull faces dropped (a vertex w ≤ ε_w) |");
     println!("|---|---|---|---|---|---|---|---|---|");
     for quick in [false, true] {
         for bench in [Bench::Game, Bench::Dense] {
-            let scene = scenes::bench(bench, Row::Static, quick);
+            let scene = builtin::bench_scene(bench, Blur::Static, quick);
             let vp = scene.core_viewport();
             let tris = scene.core_tris().expect("built-in scene converts");
             let dflt = Eps::of(

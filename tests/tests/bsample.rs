@@ -263,9 +263,9 @@ fn rtl_sample_test_unit_matches_other_configurations() {
 #[test]
 fn rtl_multiplier_is_exact_and_tiles_as_the_cost_model_counts() {
     use uvt_core::widths::{table, Config};
-    use uvt_host::cost::{dsp48e1_tiling, ecp5_tiling, Tiling};
+    use uvt_host::config::multipliers::{dsp48e1_tiling, ecp5_tiling, Tiling};
     let mut pairs: Vec<(u32, u32)> = Vec::new();
-    for name in uvt_host::cost::SWEEP
+    for name in uvt_host::config::multipliers::SWEEP
         .iter()
         .filter(|n| n.starts_with("bounded"))
     {

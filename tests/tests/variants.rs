@@ -1,10 +1,10 @@
 //! Unit variants (`uvt_core::unit`): each variant renders every primitive list it accepts
-//! bit-identically to the full unit at the same precision — every sample's colour and depth,
-//! every pixel's counters and the renderer's `Stats` (operation counts included) — at the
-//! default bounded precision, at `Exact` and at `PlanarPrecision`. Scenes: the built-in benchmark scenes (quick size)
-//! and the default scene of `host/src/scenes.rs`, the demo scene, and seeded random triangles
-//! per class (`UVT_SEED`; more in `UVT_EXTENSIVE=1` mode), each filtered to the classes the
-//! variant accepts. And a primitive a variant cannot handle is refused with
+//! bit-identically to the full unit at the same precision — every sample's colour and depth, every
+//! pixel's counters and the renderer's `Stats` (operation counts included) — at the default bounded
+//! precision, at `Exact` and at `PlanarPrecision`. Scenes: the built-in benchmark scenes (quick
+//! size) and the default scene of `host/src/scene/builtin.rs`, the demo scene, and seeded random
+//! triangles per class (`UVT_SEED`; more in `UVT_EXTENSIVE=1` mode), each filtered to the classes
+//! the variant accepts. And a primitive a variant cannot handle is refused with
 //! `Error::ClassNotInUnit` naming index, class and unit.
 
 use rand::SeedableRng;
@@ -15,9 +15,9 @@ use uvt_core::{
     PlanarPrecision, Precision, Prim, Renderer, Rgb888, StaticOnly, Stats, TileBuffer, Triangle,
     Unit, Viewport,
 };
-use uvt_host::pattern::Pattern;
-use uvt_host::scene::Scene;
-use uvt_host::scenes::{self, Bench, Row};
+use uvt_host::scene::builtin::{self, Bench, Blur};
+use uvt_host::scene::file::Scene;
+use uvt_host::scene::pattern::Pattern;
 
 /// Most visible triangles a test scene has (the quick game scenes have ≈ 2 600).
 const CAP: usize = 4096;
@@ -189,19 +189,19 @@ fn big_stack(f: impl FnOnce() + Send + 'static) {
 fn builtin_scenes_render_identically_on_every_accepting_unit() {
     big_stack(|| {
         for row in [
-            Row::Static,
-            Row::Motion,
-            Row::Motion2,
-            Row::Defocus,
-            Row::Defocus2,
+            Blur::Static,
+            Blur::Motion,
+            Blur::Motion2,
+            Blur::Defocus,
+            Blur::Defocus2,
         ] {
-            let scene = scenes::bench(Bench::Game, row, true);
+            let scene = builtin::bench_scene(Bench::Game, row, true);
             let n = check_scene(&scene);
             // Each row is one class: the matching variants see every triangle, the others none.
             let t = scene.tris.len();
             let want = match row {
-                Row::Static => [t, t, t],
-                Row::Motion | Row::Motion2 => [t, 0, 0],
+                Blur::Static => [t, t, t],
+                Blur::Motion | Blur::Motion2 => [t, 0, 0],
                 _ => [0, t, 0],
             };
             assert_eq!(
@@ -210,7 +210,7 @@ fn builtin_scenes_render_identically_on_every_accepting_unit() {
                 scene.name
             );
         }
-        let scene = scenes::default_scene();
+        let scene = builtin::default_scene();
         assert!(
             scene_prims(&scene)
                 .iter()
@@ -242,7 +242,7 @@ fn demo_scene_renders_identically_on_every_accepting_unit() {
     });
 }
 
-/// Seeded random triangles of every class (kinds 0–5 of `scenes::random_tri`: static,
+/// Seeded random triangles of every class (kinds 0–5 of `builtin::random_tri`: static,
 /// motion, defocus, both, camera-plane crossing, huge), filtered per variant.
 #[test]
 fn random_triangles_render_identically_on_every_accepting_unit() {
@@ -250,14 +250,14 @@ fn random_triangles_render_identically_on_every_accepting_unit() {
         let seed = uvt_tests::seed();
         let mut rng = rand_pcg::Pcg64::seed_from_u64(seed ^ 0x7a21);
         let vp = Viewport::new(40, 24).unwrap();
-        let pattern = Pattern::new(uvt_host::scene::PatternKind::Random, 4, seed);
+        let pattern = Pattern::new(uvt_host::scene::pattern::PatternKind::Random, 4, seed);
         let pat = pattern.core();
         let mut totals = [0usize; 3];
         for case in 0..uvt_tests::cases(6, 60) {
             let prims: Vec<Prim> = (0..24)
                 .map(|i| {
                     let kind = (i % 6) as u32;
-                    let t = scenes::random_tri(&mut rng, kind)
+                    let t = builtin::random_tri(&mut rng, kind)
                         .to_core()
                         .expect("random triangle in the domain");
                     Prim {

@@ -16,7 +16,9 @@ use uvt_core::{
     Setup, SubPixel, Time, Triangle, Vertex, Viewport,
 };
 
-use super::format::Rec;
+use super::cases::named_cases;
+use super::format::{to_text, Rec};
+use crate::scene::builtin::random_tri;
 
 /// A bounded configuration: offset shift and the fraction bits of positions and t/u/v.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -209,7 +211,7 @@ pub fn run_bsample(w: &[u32]) -> Result<(uvt_core::BoundedEval, Rec), String> {
 /// What a bounded set exercises (counted by the generator, written to the manifest, asserted
 /// non-zero by the tests).
 #[derive(Clone, Debug, Default, Serialize)]
-pub struct Coverage {
+pub struct BCoverage {
     /// records
     pub records: u64,
     /// records per triangle class (static, motion, defocus, both)
@@ -240,7 +242,7 @@ pub struct BSet {
     /// output records
     pub out: Vec<Rec>,
     /// coverage counts
-    pub cov: Coverage,
+    pub cov: BCoverage,
 }
 
 /// w of vertex k at the sample's t, as `bounded.rs` step 1 forms it.
@@ -435,17 +437,17 @@ pub fn frame(
 /// A unit-level bounded set of configuration `g` (the named edge cases and 48 seeded random
 /// triangles of every kind, inputs rounded onto `g`'s grids), written as `bsample_in.hex` and
 /// `bsample_out.hex` into `dir`: the RTL test's vectors for the unit's other parameter values.
-pub fn export_grid(dir: &std::path::Path, g: Grid, seed: u64) -> anyhow::Result<Coverage> {
+pub fn export_grid(dir: &std::path::Path, g: Grid, seed: u64) -> anyhow::Result<BCoverage> {
     let mut rng = rand_pcg::Pcg64::seed_from_u64(seed);
     let mut tris = Vec::new();
-    for (_, list, side) in super::export::named_cases() {
+    for (_, list, side) in named_cases() {
         let vp = Viewport::new(side, side).map_err(|e| anyhow::anyhow!("{e}"))?;
         tris.extend(list.into_iter().map(|t| (t, vp)));
     }
     for i in 0..48u32 {
         let vp = Viewport::new([8u16, 17, 32, 61][i as usize % 4], 24)
             .map_err(|e| anyhow::anyhow!("{e}"))?;
-        let t = crate::scenes::random_tri(&mut rng, i % 6)
+        let t = random_tri(&mut rng, i % 6)
             .to_core()
             .map_err(|e| anyhow::anyhow!("{e}"))?;
         tris.push((t, vp));
@@ -454,7 +456,7 @@ pub fn export_grid(dir: &std::path::Path, g: Grid, seed: u64) -> anyhow::Result<
     std::fs::create_dir_all(dir)?;
     for (name, recs) in [("bsample_in.hex", &set.inp), ("bsample_out.hex", &set.out)] {
         let p = dir.join(name);
-        std::fs::write(&p, super::format::to_text(recs))
+        std::fs::write(&p, to_text(recs))
             .map_err(|e| anyhow::anyhow!("writing {}: {e}", p.display()))?;
     }
     Ok(set.cov)
