@@ -22,8 +22,8 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 echo "== core for Cortex-M4F (thumbv7em-none-eabihf) and Cortex-M3 (thumbv7m-none-eabi, no FPU)"
-cargo build --locked -p uvt-core --target thumbv7em-none-eabihf --release
-cargo build --locked -p uvt-core --target thumbv7m-none-eabi --release
+cargo build --locked -p uvt-core -p uvt-demo --target thumbv7em-none-eabihf --release
+cargo build --locked -p uvt-core -p uvt-demo --target thumbv7m-none-eabi --release
 
 echo "== rustfmt"
 rustup component add rustfmt >/dev/null 2>&1 || true
@@ -31,8 +31,8 @@ cargo fmt --all --check
 
 echo "== clippy (warnings are errors), host and the bare-metal program"
 cargo clippy --locked --workspace --all-targets -- -D warnings
-cargo clippy --locked -p uvt-core --example m4_render --target thumbv7em-none-eabihf -- -D warnings
-cargo clippy --locked -p uvt-core --example m4_render --target thumbv7m-none-eabi -- -D warnings
+cargo clippy --locked -p uvt-demo --example m4_render --target thumbv7em-none-eabihf -- -D warnings
+cargo clippy --locked -p uvt-demo --example m4_render --target thumbv7m-none-eabi -- -D warnings
 
 echo "== tests"
 cargo test --locked --workspace

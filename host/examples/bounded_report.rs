@@ -13,13 +13,15 @@ use std::time::Instant;
 
 use rayon::prelude::*;
 use uvt_core::bounds::strategy::BoundsStrategy;
+use uvt_core::config::precision::DefaultPrecision;
+use uvt_core::config::unit::Full;
 use uvt_core::{
-    sample_test, setup_scaled, Bounded, Eps, Laine2011, Ops, Outcome, PixelRect, Precision,
-    ScreenPos, Setup, Triangle,
+    sample, setup_scaled, Bounded, Eps, Laine2011, Ops, Outcome, PixelRect, Precision, ScreenPos,
+    Setup, Triangle,
 };
-use uvt_host::pattern::Pattern;
 use uvt_host::reference;
-use uvt_host::scenes::{bench, Bench, Row};
+use uvt_host::scene::builtin::{bench_scene, Bench, Blur};
+use uvt_host::scene::pattern::Pattern;
 
 /// ε scale levels (num/den of the analytic ε), largest first.
 const LEVELS: [(u32, u32); 7] = [(1, 1), (1, 2), (1, 4), (1, 8), (1, 16), (1, 64), (0, 1)];
@@ -74,10 +76,10 @@ fn prepared<P: Precision>(t: &Triangle, vp: uvt_core::Viewport, l: (u32, u32)) -
     let mut ops = Ops::default();
     match setup_scaled::<P>(t, vp, l.0, l.1, &mut ops) {
         Outcome::Visible(s) => {
-            let c = Laine2011.prepare(&s, &mut ops);
+            let c = Laine2011.prepare::<Full>(&s, &mut ops);
             Some((s, c))
         }
-        Outcome::Culled(_) => None,
+        Outcome::Culled(_) | Outcome::Refused(_) => None,
     }
 }
 
@@ -88,7 +90,7 @@ fn tested(p: &Prepared, px: u16, py: u16, bt: u16, q: &uvt_core::Sample) -> bool
         return false;
     }
     let cl = cell(px, py, s.footprint(), bt);
-    match Laine2011.tile(s, c, cl, &mut Ops::default()) {
+    match Laine2011.tile::<Full>(s, c, cl, &mut Ops::default()) {
         Some(b) => b.contains(q.u().to_bits(), q.v().to_bits(), q.t().to_bits()),
         None => false,
     }
@@ -101,8 +103,8 @@ fn run<P: Precision + Sync>() {
     println!("|---|---|---|---|---|---|---|---|---|---|");
     let mut total = Acc::default();
     for kind in [Bench::Game, Bench::Dense] {
-        for row in Row::ALL {
-            let s = bench(kind, row, true);
+        for row in Blur::ALL {
+            let s = bench_scene(kind, row, true);
             let pat = Pattern::new(s.pattern, s.spp, s.seed);
             let vp = s.core_viewport();
             let v = s.viewport;
@@ -123,7 +125,7 @@ fn run<P: Precision + Sync>() {
                         LEVELS.iter().map(|&l| prepared::<P>(ct, vp, l)).collect();
                     let exact_cfg = prepared::<uvt_core::DefaultPrecision>(ct, vp, (1, 1));
                     let rf = reference::setup::setup(st, v).ok();
-                    let Some(region) = uvt_host::compare::footprint_union(
+                    let Some(region) = uvt_host::frame::compare::footprint_union(
                         levels[0].as_ref().map(|x| x.0.footprint()),
                         rf.as_ref().map(|x| x.footprint),
                     ) else {
@@ -134,8 +136,8 @@ fn run<P: Precision + Sync>() {
                         (region.x1 + 2).min(vp.width()),
                         (region.y1 + 2).min(vp.height()),
                     );
-                    let fb = Setup::unculled_with::<P>(ct, vp);
-                    let fe = Setup::unculled(ct, vp);
+                    let fb = Setup::unculled::<P>(ct, vp);
+                    let fe = Setup::unculled::<DefaultPrecision>(ct, vp);
                     let mut ops = Ops::default();
                     for py in y0..y1 {
                         for px in x0..x1 {
@@ -143,8 +145,10 @@ fn run<P: Precision + Sync>() {
                                 let idx = pat.index(px, py, si);
                                 let (q, e) = (&pat.quant[idx], &pat.exact[idx]);
                                 let pos = ScreenPos::of(px, py, q);
-                                let hb = sample_test(&fb, pos, q, &mut ops).is_some();
-                                let he = sample_test(&fe, pos, q, &mut ops).is_some();
+                                let hb = sample::test::<P, Full>(&fb, pos, q, &mut ops).is_some();
+                                let he =
+                                    sample::test::<DefaultPrecision, Full>(&fe, pos, q, &mut ops)
+                                        .is_some();
                                 let (x, y) = (px as f64 + e[0], py as f64 + e[1]);
                                 let hr =
                                     reference::sample::sample_test(st, v, x, y, e[2], e[3], e[4])
@@ -205,7 +209,7 @@ fn run<P: Precision + Sync>() {
                         for px in fp.x0..fp.x1 {
                             for si in 0..pat.spp as usize {
                                 let q = &pat.quant[pat.index(px, py, si)];
-                                let h = sample_test(
+                                let h = sample::test::<P, Full>(
                                     black_box(st),
                                     ScreenPos::of(px, py, q),
                                     q,

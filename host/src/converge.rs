@@ -11,15 +11,16 @@ use std::path::{Path, PathBuf};
 use anyhow::{anyhow, Result};
 use serde::Serialize;
 
-use crate::bench::{run_strategy_image, StratResult};
-use crate::frame::{run, Reference, RunOpts};
-use crate::pattern::Pattern;
-use crate::scene::Scene;
+use crate::bench::strategy::{run_strategy_image, StratResult};
+use crate::frame::driver::{run, RunOpts};
+use crate::frame::pipelines::Reference;
+use crate::scene::file::Scene;
+use crate::scene::pattern::Pattern;
 
 /// Sample counts of the sweep.
-pub const SPP: [u16; 7] = [1, 2, 4, 8, 16, 32, 64];
+pub const SPP_SWEEP: [u16; 7] = [1, 2, 4, 8, 16, 32, 64];
 /// Strategies of the sweep.
-pub const STRATEGIES: [&str; 6] = ["bbox", "laine2011", "hull", "lens-t", "hyper", "best"];
+pub const STRATEGY_SWEEP: [&str; 6] = ["bbox", "laine2011", "hull", "lens-t", "hyper", "best"];
 /// Independent 64-spp f64 frames averaged into the reference (256 spp in all).
 pub const REF_FRAMES: u64 = 4;
 
@@ -73,13 +74,13 @@ pub fn sweep(scene: &Scene, repeats: usize) -> Result<Vec<Point>> {
         }
     }
     let mut out = Vec::new();
-    for spp in SPP {
+    for spp in SPP_SWEEP {
         let pat = Pattern::new(scene.pattern, spp, scene.seed);
         let o = RunOpts {
             spp,
             ..base.clone()
         };
-        for name in STRATEGIES {
+        for name in STRATEGY_SWEEP {
             let mut runs: Vec<(StratResult, Vec<[u8; 3]>)> = Vec::new();
             for _ in 0..repeats.max(1) {
                 let (r, img) = run_strategy_image(name, vp, &core, &pat, &o)
@@ -109,17 +110,17 @@ pub fn sweep(scene: &Scene, repeats: usize) -> Result<Vec<Point>> {
 /// The sweep as a Markdown table: one row per spp, per strategy RMSE / ms / sample tests.
 pub fn table_md(points: &[Point]) -> String {
     let mut s = String::from("| spp | RMSE (0..255) |");
-    for n in STRATEGIES {
+    for n in STRATEGY_SWEEP {
         s += &format!(" {n} ms / tests |");
     }
     s += "\n|---|---|";
-    s += &"---|".repeat(STRATEGIES.len());
+    s += &"---|".repeat(STRATEGY_SWEEP.len());
     s += "\n";
-    for spp in SPP {
+    for spp in SPP_SWEEP {
         let row: Vec<&Point> = points.iter().filter(|p| p.spp == spp).collect();
         let Some(first) = row.first() else { continue };
         s += &format!("| {spp} | {:.3} |", first.rmse);
-        for n in STRATEGIES {
+        for n in STRATEGY_SWEEP {
             if let Some(p) = row.iter().find(|p| p.strategy == n) {
                 s += &format!(" {:.0} / {} |", p.ms, p.tested);
             }
@@ -158,7 +159,7 @@ pub fn plot_svg(points: &[Point], title: &str, path: &Path) -> Result<()> {
         .draw()
         .map_err(|x| e(&x))?;
     let colors = [BLACK, BLUE, RED, GREEN, MAGENTA, CYAN];
-    for (n, c) in STRATEGIES.iter().zip(colors) {
+    for (n, c) in STRATEGY_SWEEP.iter().zip(colors) {
         let pts: Vec<(f64, f64)> = points
             .iter()
             .filter(|p| p.strategy == *n)

@@ -3,30 +3,38 @@
 //! What users run on a workstation: scenes, sample patterns, an independent f64 reference of
 //! every stage, a frame driver that runs the fixed-point core and the reference side by side,
 //! images, reports and the STE benchmark table. The binary is `uvt` (`src/main.rs`).
+//!
+//! Modules by what they do, from the bottom up; a file uses only files of the modules listed
+//! before its own (or earlier files of its own folder, as that folder's `mod.rs` lists them),
+//! never a `mod.rs` nor this root, so there is no import circle (`tests/tests/imports.rs`
+//! checks it):
+//!
+//! - [`scene`]: scene input — scene files, meshes, built-in scenes, memory budget, sample
+//!   patterns (its budget sizes the frame driver's per-triangle entry from the leaf
+//!   [`frame::pipeline`]);
+//! - [`reference`](mod@reference): the independent f64 reference of every stage;
+//! - [`frame`]: the frame engine — the driver that runs a pipeline over a frame, and the
+//!   sample-by-sample comparison of the core with the reference;
+//! - [`config`]: configurations and their costs — the multiplier model, the unit variants'
+//!   sample-test cost, the documented error distance d_q, the planar static configuration;
+//! - [`oracle`]: the axis-aligned limit of `bench-ste`;
+//! - [`bench`](mod@bench): `uvt bench-ste`, and one bounds strategy over a frame by name;
+//! - [`converge`]: `uvt converge`;
+//! - [`fit`]: `uvt fit` and `uvt units`;
+//! - [`precision`]: `uvt precision`;
+//! - [`render`]: `uvt render`;
+//! - [`vectors`]: `uvt vectors`, the golden test vectors for RTL.
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
 pub mod bench;
-pub mod budget;
-pub mod compare;
+pub mod config;
 pub mod converge;
-pub mod cost;
 pub mod fit;
-pub mod fit_confirm;
-pub mod fit_report;
 pub mod frame;
-pub mod heatmap;
-pub mod json;
-pub mod mesh;
 pub mod oracle;
-pub mod pattern;
-pub mod planar;
 pub mod precision;
-pub mod precision_cost;
 pub mod reference;
 pub mod render;
-pub mod report;
 pub mod scene;
-pub mod scenes;
-pub mod synth;
 pub mod vectors;

@@ -8,8 +8,9 @@ use std::process::ExitCode;
 
 use anyhow::{anyhow, bail, Context, Result};
 use clap::{Parser, Subcommand};
-use uvt_host::scene::{LoadOpts, Scene};
-use uvt_host::{bench, budget, render, scenes};
+use uvt_host::scene::budget;
+use uvt_host::scene::builtin::{self, Bench, Blur};
+use uvt_host::scene::file::{LoadOpts, Scene};
 
 #[derive(Parser)]
 #[command(
@@ -221,7 +222,7 @@ enum VecCmd {
         #[arg(long)]
         out: PathBuf,
         /// seed of the unit-level random inputs
-        #[arg(long, default_value_t = uvt_host::vectors::DEFAULT_SEED)]
+        #[arg(long, default_value_t = uvt_host::vectors::committed::DEFAULT_SEED)]
         seed: u64,
     },
     /// Re-run the core on the vectors in DIR and compare bit for bit.
@@ -278,38 +279,39 @@ fn parse_viewport(s: &str) -> Result<(u16, u16)> {
 fn builtin(name: &str) -> Result<Scene> {
     let names = builtin_names();
     if name == "default" {
-        return Ok(scenes::default_scene());
+        return Ok(builtin::default_scene());
     }
     let (base, quick) = match name.strip_suffix("-quick") {
         Some(b) => (b, true),
         None => (name, false),
     };
-    for kind in [scenes::Bench::Game, scenes::Bench::Dense] {
-        for row in scenes::Row::ALL {
+    for kind in [Bench::Game, Bench::Dense] {
+        for row in Blur::ALL {
             if bench_name(kind, row) == base {
-                let mut s = scenes::bench(kind, row, quick);
+                let mut s = builtin::bench_scene(kind, row, quick);
                 s.name = name.to_string();
                 return Ok(s);
             }
         }
     }
-    let hint = uvt_host::json::nearest(name, &names.iter().map(String::as_str).collect::<Vec<_>>())
-        .map_or(String::new(), |n| format!("did you mean {n:?}? "));
+    let hint =
+        uvt_host::scene::json::nearest(name, &names.iter().map(String::as_str).collect::<Vec<_>>())
+            .map_or(String::new(), |n| format!("did you mean {n:?}? "));
     bail!("unknown built-in scene {name:?}; {hint}(see `uvt scene list`)")
 }
 
-fn bench_name(kind: scenes::Bench, row: scenes::Row) -> String {
+fn bench_name(kind: Bench, row: Blur) -> String {
     let k = match kind {
-        scenes::Bench::Game => "game",
-        scenes::Bench::Dense => "dense",
+        Bench::Game => "game",
+        Bench::Dense => "dense",
     };
     format!("{k}-{}", row.label().replace(" x", ""))
 }
 
 fn builtin_names() -> Vec<String> {
     let mut v = vec!["default".to_string()];
-    for kind in [scenes::Bench::Game, scenes::Bench::Dense] {
-        for row in scenes::Row::ALL {
+    for kind in [Bench::Game, Bench::Dense] {
+        for row in Blur::ALL {
             v.push(bench_name(kind, row));
         }
     }
@@ -329,10 +331,11 @@ fn run(cli: Cli) -> Result<()> {
             precision,
             mem_budget,
         } => {
-            render::check_out_dir(&out)?;
-            let opts = render::RenderOpts {
-                bounds: render::Strategy::from_name(&bounds).context("--bounds")?,
-                precision: render::precision_from_name(&precision).context("--precision")?,
+            uvt_host::render::scene_render::check_out_dir(&out)?;
+            let opts = uvt_host::render::opts::RenderOpts {
+                bounds: uvt_host::render::opts::Strategy::from_name(&bounds).context("--bounds")?,
+                precision: uvt_host::render::opts::precision_from_name(&precision)
+                    .context("--precision")?,
                 progress: true,
             };
             if let Some(n) = spp.filter(|n| !(1..=64).contains(n)) {
@@ -355,7 +358,7 @@ fn run(cli: Cli) -> Result<()> {
                     l.scene
                 }
                 None => {
-                    let mut s = scenes::default_scene();
+                    let mut s = builtin::default_scene();
                     s.viewport = load.viewport.unwrap_or(s.viewport);
                     s.spp = spp.unwrap_or(s.spp);
                     s
@@ -363,9 +366,9 @@ fn run(cli: Cli) -> Result<()> {
             };
             s.tile = tile.unwrap_or(s.tile);
             s.seed = seed.unwrap_or(s.seed);
-            let r = render::render_with(&s, &opts)?;
-            let files = render::write(&r, &s, &out)?;
-            say(&render::report_md(&r))?;
+            let r = uvt_host::render::scene_render::render_with(&s, &opts)?;
+            let files = uvt_host::render::scene_render::write(&r, &s, &out)?;
+            say(&uvt_host::render::report::report_md(&r))?;
             for f in files {
                 say(&format!("wrote {}\n", f.display()))?;
             }
@@ -392,25 +395,24 @@ fn run(cli: Cli) -> Result<()> {
             precision,
         } => {
             let effort = match limit_effort.as_deref() {
-                None => bench::ORACLE_EFFORT,
-                Some(e) => {
-                    bench::parse_effort(e).map_err(|m| anyhow!("--limit-effort {e:?}: {m}"))?
-                }
+                None => uvt_host::bench::ste_table::ORACLE_EFFORT,
+                Some(e) => uvt_host::bench::ste_table::parse_effort(e)
+                    .map_err(|m| anyhow!("--limit-effort {e:?}: {m}"))?,
             };
-            let kinds: Vec<scenes::Bench> = match scene.as_deref() {
-                None => vec![scenes::Bench::Game, scenes::Bench::Dense],
-                Some("game") => vec![scenes::Bench::Game],
-                Some("dense") => vec![scenes::Bench::Dense],
+            let kinds: Vec<Bench> = match scene.as_deref() {
+                None => vec![Bench::Game, Bench::Dense],
+                Some("game") => vec![Bench::Game],
+                Some("dense") => vec![Bench::Dense],
                 Some(o) => bail!("--scene: unknown scene {o:?} (game, dense)"),
             };
-            let rows_sel: Vec<scenes::Row> = match row.as_deref() {
-                None => scenes::Row::ALL.to_vec(),
-                Some(r) => vec![scenes::Row::ALL
+            let rows_sel: Vec<Blur> = match row.as_deref() {
+                None => Blur::ALL.to_vec(),
+                Some(r) => vec![Blur::ALL
                     .into_iter()
                     .find(|x| x.label().replace(" x", "") == r)
                     .ok_or_else(|| anyhow!("--row: unknown row {r:?} (static, motion, motion2, defocus, defocus2, both, both2)"))?],
             };
-            let rows = bench::run_table_at(
+            let rows = uvt_host::bench::ste_table::run_table_at(
                 &precision,
                 quick,
                 &kinds,
@@ -418,7 +420,7 @@ fn run(cli: Cli) -> Result<()> {
                 tile_sweep,
                 (!no_limit).then_some(effort),
             )?;
-            say(&bench::table_md(&rows))?;
+            say(&uvt_host::bench::ste_table::table_md(&rows))?;
             if let Some(p) = json {
                 write_atomic(&p, (serde_json::to_string_pretty(&rows)? + "\n").as_bytes())?;
             }
@@ -430,7 +432,7 @@ fn run(cli: Cli) -> Result<()> {
         } => {
             let s = match scene {
                 Some(p) => Scene::load(&p)?,
-                None => scenes::default_scene(),
+                None => builtin::default_scene(),
             };
             let pts = uvt_host::converge::sweep(&s, repeats)?;
             say(&uvt_host::converge::table_md(&pts))?;
@@ -450,7 +452,7 @@ fn run(cli: Cli) -> Result<()> {
             if shrink == Some(0) {
                 bail!("--shrink must be at least 1");
             }
-            let all = uvt_host::precision::CONFIGS;
+            let all = uvt_host::precision::row::CONFIGS;
             let chosen: Vec<&'static str> = match configs {
                 None => all.to_vec(),
                 Some(list) => list
@@ -467,33 +469,33 @@ fn run(cli: Cli) -> Result<()> {
                     .collect::<Result<_>>()?,
             };
             let sw = if quick {
-                uvt_host::precision::Sweep {
+                uvt_host::precision::sweep::Sweep {
                     configs: chosen.clone(),
-                    scenes: vec![scenes::Bench::Game, scenes::Bench::Dense],
-                    rows: vec![scenes::Row::Static, scenes::Row::Both],
+                    scenes: vec![Bench::Game, Bench::Dense],
+                    rows: vec![Blur::Static, Blur::Both],
                     tiles: vec![1, 4],
                     shrink: shrink.unwrap_or(2),
                 }
             } else {
-                uvt_host::precision::Sweep {
+                uvt_host::precision::sweep::Sweep {
                     configs: chosen.clone(),
-                    scenes: vec![scenes::Bench::Game, scenes::Bench::Dense],
-                    rows: scenes::Row::ALL.to_vec(),
+                    scenes: vec![Bench::Game, Bench::Dense],
+                    rows: Blur::ALL.to_vec(),
                     tiles: vec![1, 2, 4, 8],
                     shrink: shrink.unwrap_or(1),
                 }
             };
-            let costs = uvt_host::precision_cost::Costs::load(&m4, &synth)?;
-            render::check_out_dir(&out)?;
-            let rows: Vec<uvt_host::precision::PrecRow> = match replot {
+            let costs = uvt_host::precision::costs::Costs::load(&m4, &synth)?;
+            uvt_host::render::scene_render::check_out_dir(&out)?;
+            let rows: Vec<uvt_host::precision::row::PrecRow> = match replot {
                 Some(p) => serde_json::from_str(
                     &std::fs::read_to_string(&p)
                         .with_context(|| format!("cannot read {}", p.display()))?,
                 )
                 .map_err(|e| anyhow!("{}: not a precision.json: {e}", p.display()))?,
-                None => uvt_host::precision::sweep(&sw),
+                None => uvt_host::precision::sweep::sweep(&sw),
             };
-            let md = uvt_host::precision::table_md(&rows, &costs);
+            let md = uvt_host::precision::tables::table_md(&rows, &costs);
             std::fs::create_dir_all(&out)
                 .with_context(|| format!("cannot create {}", out.display()))?;
             write_atomic(&out.join("precision.md"), md.as_bytes())?;
@@ -501,7 +503,7 @@ fn run(cli: Cli) -> Result<()> {
                 &out.join("precision.json"),
                 (serde_json::to_string_pretty(&rows)? + "\n").as_bytes(),
             )?;
-            uvt_host::precision_cost::plot_svg(&rows, &costs, &out.join("precision.svg"))
+            uvt_host::precision::costs::plot_svg(&rows, &costs, &out.join("precision.svg"))
                 .with_context(|| format!("writing {}", out.join("precision.svg").display()))?;
             say(&md)?;
         }
@@ -510,18 +512,18 @@ fn run(cli: Cli) -> Result<()> {
             match config {
                 Some(name) => {
                     let cfg = parse_config(&name)?;
-                    uvt_core::widths::write_markdown(&mut md, &cfg)?;
+                    uvt_core::widths::markdown::write_markdown(&mut md, &cfg)?;
                 }
-                None => uvt_core::widths::write_readme(&mut md)?,
+                None => uvt_core::widths::markdown::write_readme(&mut md)?,
             }
             say(&md)?;
         }
         Cmd::Cost { config } => match config {
             Some(name) => {
                 let cfg = parse_config(&name)?;
-                say(&uvt_host::cost::cost_md(&cfg))?;
+                say(&uvt_host::config::multipliers::cost_md(&cfg))?;
             }
-            None => say(&uvt_host::cost::summary_md())?,
+            None => say(&uvt_host::config::multipliers::summary_md())?,
         },
         Cmd::Fit {
             scene,
@@ -533,11 +535,11 @@ fn run(cli: Cli) -> Result<()> {
         } => {
             let tol = tolerance
                 .as_deref()
-                .map(uvt_host::fit::parse_tolerance)
+                .map(uvt_host::fit::select::parse_tolerance)
                 .transpose()?;
-            render::check_out_dir(&out)?;
-            let m4 = uvt_host::fit::load_m4_units(&m4_units)?;
-            let m4_planar = uvt_host::fit::load_m4_units(&m4_units_planar)?;
+            uvt_host::render::scene_render::check_out_dir(&out)?;
+            let m4 = uvt_host::fit::m4::load_m4_units(&m4_units)?;
+            let m4_planar = uvt_host::fit::m4::load_m4_units(&m4_units_planar)?;
             let load = LoadOpts {
                 mem_budget: budget::parse_size(&mem_budget).context("--mem-budget")?,
                 ..LoadOpts::default()
@@ -546,7 +548,7 @@ fn run(cli: Cli) -> Result<()> {
             for w in &l.warnings {
                 eprintln!("uvt: warning: {}: {w}", scene.display());
             }
-            let f = uvt_host::fit_report::fit(
+            let f = uvt_host::fit::report::fit(
                 &l.scene,
                 tol,
                 m4,
@@ -555,7 +557,7 @@ fn run(cli: Cli) -> Result<()> {
                 &m4_units_planar,
             )
             .with_context(|| format!("uvt fit {}", scene.display()))?;
-            let md = uvt_host::fit_report::fit_md(&f);
+            let md = uvt_host::fit::report::fit_md(&f);
             std::fs::create_dir_all(&out)
                 .with_context(|| format!("cannot create {}", out.display()))?;
             write_atomic(&out.join("fit.md"), md.as_bytes())?;
@@ -578,30 +580,30 @@ fn run(cli: Cli) -> Result<()> {
             synth,
         } => {
             let cfg = parse_config(&config)?;
-            let m4 = uvt_host::fit::load_m4_units(&m4_units)?;
-            let syn = uvt_host::synth::load_units(&synth)?;
-            say(&uvt_host::fit::units_md(
+            let m4 = uvt_host::fit::m4::load_m4_units(&m4_units)?;
+            let syn = uvt_host::fit::synth::load_units(&synth)?;
+            say(&uvt_host::fit::units_table::units_md(
                 &cfg,
                 m4.as_ref().map(|m| m.0.as_slice()),
                 &m4_units,
                 syn.as_deref(),
                 &synth,
             ))?;
-            say(&uvt_host::synth::planar_md(syn.as_deref(), &synth))?;
+            say(&uvt_host::fit::synth::planar_md(syn.as_deref(), &synth))?;
         }
         Cmd::Stress { dir } => {
-            let scenes = uvt_host::precision::stress_scenes(&dir)?;
+            let scenes = uvt_host::precision::sweep::stress_scenes(&dir)?;
             let rows: Vec<_> = scenes
                 .iter()
                 .map(|s| {
                     (
                         s.name.clone(),
                         s.tris.len(),
-                        uvt_host::precision::stress_row(s),
+                        uvt_host::precision::sweep::stress_row(s),
                     )
                 })
                 .collect();
-            say(&uvt_host::precision::stress_md(&rows))?;
+            say(&uvt_host::precision::tables::stress_md(&rows))?;
             let bad: Vec<_> = rows
                 .iter()
                 .filter(|r| r.2.violations > 0 || r.2.beyond_bound > 0 || r.2.lost > 0)
@@ -615,10 +617,10 @@ fn run(cli: Cli) -> Result<()> {
             }
         }
         Cmd::Vectors(VecCmd::Export { scene, out, seed }) => {
-            render::check_out_dir(&out)?;
+            uvt_host::render::scene_render::check_out_dir(&out)?;
             match scene {
-                Some(p) => uvt_host::vectors::export_scene(&p, &out)?,
-                None => uvt_host::vectors::export_default(&out, seed)?,
+                Some(p) => uvt_host::vectors::committed::export_scene(&p, &out)?,
+                None => uvt_host::vectors::committed::export_default(&out, seed)?,
             }
             say(&format!("wrote vectors to {}\n", out.display()))?;
         }
@@ -661,8 +663,8 @@ fn write_atomic(path: &std::path::Path, bytes: &[u8]) -> Result<()> {
 }
 
 /// A configuration name of `--config`, or an error naming it.
-fn parse_config(name: &str) -> anyhow::Result<uvt_core::widths::Config> {
-    uvt_core::widths::Config::parse(name).ok_or_else(|| {
+fn parse_config(name: &str) -> anyhow::Result<uvt_core::config::registry::Config> {
+    uvt_core::config::registry::Config::parse(name).ok_or_else(|| {
         anyhow!(
             "--config {name:?}: not a configuration (exact-P-T-B or bounded-P-T-B-O; P and T in 2..=16, B in 0..=16, O in 20..=32)"
         )

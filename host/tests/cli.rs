@@ -474,7 +474,10 @@ fn report_explains_itself_and_nulls_what_is_not_counted() {
     let heat = image::open(out.join("heat.png")).unwrap().to_rgb8();
     assert_eq!(
         (heat.width(), heat.height()),
-        (uvt_host::heatmap::MIN_W, 24 + uvt_host::heatmap::LEGEND_H)
+        (
+            uvt_host::render::heatmap::MIN_W,
+            24 + uvt_host::render::heatmap::LEGEND_H
+        )
     );
     assert_eq!(heat.get_pixel(heat.width() - 5, 24 + 18).0, [255, 255, 255]);
 }
@@ -529,10 +532,10 @@ fn scene_export_writes_a_loadable_scene() {
         f.to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
-    let s = uvt_host::scene::Scene::load(&f).unwrap();
-    let b = uvt_host::scenes::bench(
-        uvt_host::scenes::Bench::Game,
-        uvt_host::scenes::Row::Motion,
+    let s = uvt_host::scene::file::Scene::load(&f).unwrap();
+    let b = uvt_host::scene::builtin::bench_scene(
+        uvt_host::scene::builtin::Bench::Game,
+        uvt_host::scene::builtin::Blur::Motion,
         true,
     );
     assert_eq!((s.viewport, s.tris.len()), (b.viewport, b.tris.len()));

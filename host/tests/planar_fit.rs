@@ -6,9 +6,9 @@
 
 use std::path::Path;
 
-use uvt_host::fit::{classes, config_fits, DEFAULT_TOLERANCE_PX};
-use uvt_host::precision::planar_decisions;
-use uvt_host::scene::Scene;
+use uvt_host::fit::select::{classes, config_fits, DEFAULT_TOLERANCE_PX};
+use uvt_host::precision::measure::planar_decisions;
+use uvt_host::scene::file::Scene;
 
 /// A static scene from its triangles' t0 vertices `[x, y, z, w]`.
 fn scene(name: &str, vp: (u16, u16), spp: u16, tris: &[[[f64; 4]; 3]]) -> Scene {
@@ -33,9 +33,9 @@ fn scene(name: &str, vp: (u16, u16), spp: u16, tris: &[[[f64; 4]; 3]]) -> Scene 
 
 /// `uvt fit` on a loaded scene with no M4 figures (the confirmation renders; only the M4 rows of
 /// the report are "not measured").
-fn fit_without_m4(s: &Scene, tol: Option<f64>) -> uvt_host::fit_report::Fit {
+fn fit_without_m4(s: &Scene, tol: Option<f64>) -> uvt_host::fit::report::Fit {
     let none = Path::new("/nonexistent");
-    uvt_host::fit_report::fit(s, tol, None, none, None, none).unwrap()
+    uvt_host::fit::report::fit(s, tol, None, none, None, none).unwrap()
 }
 
 /// Guard band: two vertices at x = ±8000 clip units, w = 1 (NDC ±8000), y = 0.37 — their
@@ -119,7 +119,7 @@ fn fit_never_picks_planar_beyond_the_tolerance() {
     let planar = |tol: f64| {
         let (fits, _) = config_fits(&s, &cls, (false, false), tol);
         fits.into_iter()
-            .find(|f| f.config == uvt_host::planar::NAME)
+            .find(|f| f.config == uvt_host::config::planar_static::NAME)
             .expect("fit lists the planar configuration")
     };
     // The exact configuration reaches ≈ 1.96 px here (w's input rounding times the guard-band
@@ -133,14 +133,19 @@ fn fit_never_picks_planar_beyond_the_tolerance() {
     );
     let f = fit_without_m4(&s, Some(tol));
     assert_eq!(f.unit, "static-only");
-    assert_ne!(f.config, uvt_host::planar::NAME, "{}", f.config);
+    assert_ne!(
+        f.config,
+        uvt_host::config::planar_static::NAME,
+        "{}",
+        f.config
+    );
     assert!(f.ok, "{:?}", f.confirm);
     println!("guard band at {tol} px: fit picks {}", f.config);
     // Above the planar d_q it meets and, the cheapest static-only sample test, is picked.
     let tol = pl.d_q_px * 1.01;
     assert!(planar(tol).meets);
     let f = fit_without_m4(&s, Some(tol));
-    assert_eq!(f.config, uvt_host::planar::NAME);
+    assert_eq!(f.config, uvt_host::config::planar_static::NAME);
     assert!(f.ok, "{:?}", f.confirm);
     println!("guard band at {tol:.4} px: fit picks {}", f.config);
 }
@@ -161,10 +166,10 @@ fn fit_picks_planar_for_a_benign_static_scene_when_cheapest() {
     }
     let pl = fits
         .iter()
-        .find(|f| f.config == uvt_host::planar::NAME)
+        .find(|f| f.config == uvt_host::config::planar_static::NAME)
         .unwrap();
     assert!(pl.meets, "planar d_q {} px", pl.d_q_px);
-    let key = |f: &uvt_host::fit::ConfigFit| {
+    let key = |f: &uvt_host::fit::select::ConfigFit| {
         f.unit_cost
             .as_ref()
             .map(|c| (c.dsp48e1, c.bit_products))

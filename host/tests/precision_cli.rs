@@ -58,7 +58,7 @@ fn precision_quick_prints_the_sweep_with_costs() {
     assert!(names.len() >= 6, "configurations: {names:?}");
     let mut dsp = Vec::new();
     for r in &rows {
-        if r[cfgc] == uvt_host::planar::NAME {
+        if r[cfgc] == uvt_host::config::planar_static::NAME {
             // `m4_report.sh --sweep` (host/report/m4.json) does not build the planar
             // configuration: its M4 cell says so ("–"); its model DSP cell is checked below.
             assert_eq!(r[m4c], "–", "planar M4 cell");

@@ -3,11 +3,11 @@
 
 use std::path::Path;
 
-use uvt_host::scene::{LoadOpts, Scene};
+use uvt_host::scene::file::{LoadOpts, Scene};
 
 const BASE: &str = r#""format":"uvt-scene","version":1"#;
 
-fn parse(body: &str) -> anyhow::Result<uvt_host::scene::Loaded> {
+fn parse(body: &str) -> anyhow::Result<uvt_host::scene::file::Loaded> {
     Scene::parse_with(
         &format!("{{{BASE},{body}}}"),
         "t",
@@ -216,7 +216,7 @@ fn memory_budget_refuses_before_allocating() {
     }
     // Running totals: two meshes that fit alone but not together name the second one.
     let opts = LoadOpts {
-        mem_budget: uvt_host::budget::estimate(2000, (8, 6), 16),
+        mem_budget: uvt_host::scene::budget::estimate(2000, (8, 6), 16),
         ..LoadOpts::default()
     };
     let two = format!(
@@ -260,7 +260,7 @@ fn obj_files_must_be_regular_and_small() {
     let big = dir.path().join("big.obj");
     std::fs::File::create(&big)
         .unwrap()
-        .set_len(uvt_host::budget::FILE_MAX_BYTES + 1)
+        .set_len(uvt_host::scene::budget::FILE_MAX_BYTES + 1)
         .unwrap();
     let e = Scene::parse(&scene("big.obj"), "t", dir.path()).unwrap_err();
     assert!(
@@ -280,10 +280,10 @@ fn obj_files_must_be_regular_and_small() {
 #[test]
 fn exported_builtin_scenes_read_back_bit_for_bit() {
     for s in [
-        uvt_host::scenes::default_scene(),
-        uvt_host::scenes::bench(
-            uvt_host::scenes::Bench::Game,
-            uvt_host::scenes::Row::Both,
+        uvt_host::scene::builtin::default_scene(),
+        uvt_host::scene::builtin::bench_scene(
+            uvt_host::scene::builtin::Bench::Game,
+            uvt_host::scene::builtin::Blur::Both,
             true,
         ),
     ] {
@@ -294,7 +294,7 @@ fn exported_builtin_scenes_read_back_bit_for_bit() {
         assert_eq!(back.pattern, s.pattern);
         assert_eq!(back.tris.len(), s.tris.len());
         for (i, (a, b)) in s.tris.iter().zip(&back.tris).enumerate() {
-            let bits = |t: &uvt_host::scene::SceneTri| {
+            let bits = |t: &uvt_host::scene::tri::SceneTri| {
                 t.t0.iter()
                     .chain(&t.t1)
                     .flat_map(|v| v.map(f64::to_bits))

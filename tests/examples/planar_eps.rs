@@ -1,22 +1,23 @@
-//! How many static triangles of the bench scenes (`host/src/scenes.rs`, full and quick size)
+//! How many static triangles of the bench scenes (`host/src/scene/builtin.rs`, full and quick size)
 //! get a larger conservative epsilon at the planar static configuration (`planar.rs`,
 //! per triangle) than at the default configuration (`Eps::of`, per viewport), and how many the
 //! planar setup culls because rounding made them degenerate (det P' = 0; the exact configuration
 //! keeps them). Every triangle is made static (its t0 vertices, CoC 0), so every row counts.
 //! Run: `cargo run --release -p uvt-tests --example planar_eps`.
 
+use uvt_core::config::unit::Full;
 use uvt_core::setup::eps::Eps;
 use uvt_core::{
-    setup_with, Class, DefaultPrecision, Exact, Outcome, PlanarPrecision, Precision, Triangle,
+    setup, Class, DefaultPrecision, Exact, Outcome, PlanarPrecision, Precision, Triangle,
 };
-use uvt_host::scenes::{self, Bench, Row};
+use uvt_host::scene::builtin::{self, Bench, Blur};
 
 fn main() {
     println!("| scene | size | static triangles visible (exact) | planar ε > default ε | planar culled (exact visible) | largest planar ε (raw) | default ε (raw) | planar ε_w > 0 | hull faces dropped (a vertex w ≤ ε_w) |");
     println!("|---|---|---|---|---|---|---|---|---|");
     for quick in [false, true] {
         for bench in [Bench::Game, Bench::Dense] {
-            let scene = scenes::bench(bench, Row::Static, quick);
+            let scene = builtin::bench_scene(bench, Blur::Static, quick);
             let vp = scene.core_viewport();
             let tris = scene.core_tris().expect("built-in scene converts");
             let dflt = Eps::of(
@@ -34,11 +35,11 @@ fn main() {
                 let t = Triangle::new_static(v).expect("static");
                 assert_eq!(t.class(), Class::Static);
                 let ops = &mut Default::default();
-                if !matches!(setup_with::<Exact>(&t, vp, ops), Outcome::Visible(_)) {
+                if !matches!(setup::<Exact, Full>(&t, vp, ops), Outcome::Visible(_)) {
                     continue;
                 }
                 vis += 1;
-                match setup_with::<PlanarPrecision>(&t, vp, ops) {
+                match setup::<PlanarPrecision, Full>(&t, vp, ops) {
                     Outcome::Visible(s) => {
                         let e = s.eps();
                         let m = e.x()[0].max(e.x()[1]).max(e.w());
@@ -54,7 +55,7 @@ fn main() {
                             e.x()[0] > dflt.x()[0] || e.x()[1] > dflt.x()[1] || e.w() > dflt.w(),
                         );
                     }
-                    Outcome::Culled(_) => culled += 1,
+                    Outcome::Culled(_) | Outcome::Refused(_) => culled += 1,
                 }
             }
             println!(

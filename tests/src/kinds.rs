@@ -2,8 +2,9 @@
 //! row-span, planar and static-unit tests and the bounded-margin measurement
 //! (`examples/bounded_margin.rs`).
 
-use crate::{c, tri, Rng};
 use uvt_core::Triangle;
+
+use crate::{c, tri, Rng};
 
 /// Triangle kinds of the conservativeness tests.
 #[derive(Clone, Copy, Debug)]

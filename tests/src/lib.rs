@@ -7,64 +7,15 @@ pub mod kinds;
 pub mod tiles;
 
 use uvt_core::bounds::strategy::{BoundsStrategy, TileBounds};
+use uvt_core::config::unit::Full;
 use uvt_core::{
-    sample_test, Coord, Lens, Outcome, PixelRect, Sample, SamplePattern, ScreenPos, Setup, Stats,
-    SubPixel, Time, Triangle, Vertex, Viewport,
+    Coord, Lens, Outcome, PixelRect, Sample, SamplePattern, ScreenPos, Setup, Stats, SubPixel,
+    Time, Triangle, Vertex, Viewport,
 };
 
-/// Environment variable holding the seed of the seeded-random tests.
-pub const SEED_VAR: &str = "UVT_SEED";
-/// Environment variable that switches on the slow extensive mode.
-pub const EXTENSIVE_VAR: &str = "UVT_EXTENSIVE";
-
-/// The seed for seeded-random tests: `UVT_SEED` or a fixed default.
-pub fn seed() -> u64 {
-    std::env::var(SEED_VAR)
-        .ok()
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(0x5eed_0001)
-}
-
-/// Whether the slow extensive mode is on.
-pub fn extensive() -> bool {
-    std::env::var(EXTENSIVE_VAR).is_ok_and(|v| v != "0")
-}
-
-/// Number of cases: `quick` normally, `slow` in extensive mode.
-pub fn cases(quick: u32, slow: u32) -> u32 {
-    if extensive() {
-        slow
-    } else {
-        quick
-    }
-}
-
-/// SplitMix64: small, well-known, deterministic.
-#[derive(Clone, Debug)]
-pub struct Rng(pub u64);
-
-impl Rng {
-    /// Next 64 random bits.
-    pub fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-        z ^ (z >> 31)
-    }
-    /// Uniform in [0, 1).
-    pub fn unit(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
-    }
-    /// Uniform in [lo, hi).
-    pub fn range(&mut self, lo: f64, hi: f64) -> f64 {
-        lo + (hi - lo) * self.unit()
-    }
-    /// Uniform integer in [0, n).
-    pub fn below(&mut self, n: u64) -> u64 {
-        self.next_u64() % n.max(1)
-    }
-}
+pub use uvt_testkit::{cases, extensive, seed, Rng, EXTENSIVE_VAR, SEED_VAR};
+// The one seeded RNG and its switches (`UVT_SEED`, `UVT_EXTENSIVE`), shared with the core's
+// unit tests.
 
 /// I16F16 from f64, rounded to nearest and clamped to the declared domain.
 pub fn c(v: f64) -> Coord {
@@ -211,11 +162,11 @@ pub fn check_conservative_scaled<B: BoundsStrategy, P: uvt_core::Precision>(
     scale: (u32, u32),
 ) -> Result<u64, String> {
     let mut ops = Default::default();
-    let full = Setup::unculled_with::<P>(t, vp);
+    let full = Setup::unculled::<P>(t, vp);
     let out = uvt_core::setup_scaled::<P>(t, vp, scale.0, scale.1, &mut ops);
     let visible = match out {
-        Outcome::Visible(s) => Some((s, strat.prepare(&s, &mut ops))),
-        Outcome::Culled(_) => None,
+        Outcome::Visible(s) => Some((s, strat.prepare::<Full>(&s, &mut ops))),
+        Outcome::Culled(_) | Outcome::Refused(_) => None,
     };
     let mut covered = 0;
     for py in 0..vp.height() {
@@ -242,7 +193,7 @@ pub fn check_conservative_scaled<B: BoundsStrategy, P: uvt_core::Precision>(
                         };
                         let span = strat.row_span(s, co, row, bt, &mut ops);
                         if span.admits(&cell) {
-                            strat.span_tile_unit::<uvt_core::Full>(s, co, &span, cell, &mut ops)
+                            strat.span_tile::<uvt_core::Full>(s, co, &span, cell, &mut ops)
                         } else {
                             None
                         }
@@ -250,7 +201,12 @@ pub fn check_conservative_scaled<B: BoundsStrategy, P: uvt_core::Precision>(
                 )
             });
             for (si, smp) in pat.pixel(px, py).iter().enumerate() {
-                let hit = sample_test(&full, ScreenPos::of(px, py, smp), smp, &mut ops);
+                let hit = uvt_core::sample::test::<P, uvt_core::Full>(
+                    &full,
+                    ScreenPos::of(px, py, smp),
+                    smp,
+                    &mut ops,
+                );
                 if hit.is_none() {
                     continue;
                 }
@@ -291,10 +247,7 @@ pub fn coverage_counts_with<P: uvt_core::Precision>(
     vp: Viewport,
     pat: &SamplePattern<'_>,
 ) -> Vec<u8> {
-    let setups: Vec<Setup> = tris
-        .iter()
-        .map(|t| Setup::unculled_with::<P>(t, vp))
-        .collect();
+    let setups: Vec<Setup> = tris.iter().map(|t| Setup::unculled::<P>(t, vp)).collect();
     let mut ops = Default::default();
     let mut out = Vec::new();
     for py in 0..vp.height() {
@@ -304,7 +257,10 @@ pub fn coverage_counts_with<P: uvt_core::Precision>(
                 out.push(
                     setups
                         .iter()
-                        .filter(|s| sample_test(s, pos, smp, &mut ops).is_some())
+                        .filter(|s| {
+                            uvt_core::sample::test::<P, uvt_core::Full>(s, pos, smp, &mut ops)
+                                .is_some()
+                        })
                         .count() as u8,
                 );
             }
@@ -437,4 +393,13 @@ pub fn snap_samples<P: uvt_core::Precision>(s: &[Sample]) -> Vec<Sample> {
             )
         })
         .collect()
+}
+
+/// The name of the pipeline `uvt_core::units::select` picks for precision `P` on unit `U`
+/// (`Renderer`: the general one; `StaticRenderer`, `MotionRenderer`: the units' own).
+pub fn pipeline_name<P, U>() -> &'static str
+where
+    (P, U): uvt_core::Select<uvt_core::Laine2011>,
+{
+    <uvt_core::PipelineOf<uvt_core::Laine2011, P, U> as uvt_core::Pipeline>::NAME
 }

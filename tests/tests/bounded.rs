@@ -2,15 +2,17 @@
 //! agreement with the exact test — decisions may differ only where the derived vertex
 //! perturbation can move an edge across the sample (seeded random, `UVT_SEED`).
 
+use uvt_core::config::unit::Full;
+use uvt_core::sample::bounded;
 use uvt_core::{
-    bounded_eval, sample_test, Bounded, BoundedPrecision, Eps, Precision, Sample, SamplePattern,
-    ScreenPos, Setup, Triangle, Viewport,
+    Bounded, BoundedPrecision, Eps, Exact, Precision, Sample, SamplePattern, ScreenPos, Setup,
+    Triangle, Viewport,
 };
 use uvt_tests::*;
 
 fn eval(t: &Triangle, vp: Viewport, px: u16, py: u16, s: &Sample) -> uvt_core::BoundedEval {
-    let setup = Setup::unculled_with::<BoundedPrecision>(t, vp);
-    bounded_eval(
+    let setup = Setup::unculled::<BoundedPrecision>(t, vp);
+    bounded::eval(
         &setup,
         20,
         ScreenPos::of(px, py, s),
@@ -111,8 +113,8 @@ fn hand_picked_rare_orientation_path() {
     let det: i64 = e[0] + e[1] - e[2]; // w' = (1, 1, −1) in units of 65536
     assert_eq!(ev.det_sign, det.signum(), "{ev:?}");
     // Same decision as the exact test on this unrounded-representable case.
-    let exact = sample_test(
-        &Setup::unculled(&t, vp),
+    let exact = uvt_core::sample::test::<Exact, Full>(
+        &Setup::unculled::<Exact>(&t, vp),
         ScreenPos::of(1, 1, &s),
         &s,
         &mut Default::default(),
@@ -185,8 +187,8 @@ fn agreement<P: Precision>(seed: u64, cases: u32) -> Result<(u64, u64, f64), Str
             };
         }
         let t = tri(ends[0], ends[1]);
-        let exact = Setup::unculled(&t, vp);
-        let bounded = Setup::unculled_with::<P>(&t, vp);
+        let exact = Setup::unculled::<Exact>(&t, vp);
+        let bounded = Setup::unculled::<P>(&t, vp);
         let class = bounded.class();
         let (ex, ey) = (
             eps_real(shift, class.motion(), class.defocus(), 64) / 65536.0,
@@ -205,8 +207,9 @@ fn agreement<P: Precision>(seed: u64, cases: u32) -> Result<(u64, u64, f64), Str
                 for s in pat.pixel(px, py) {
                     let pos = ScreenPos::of(px, py, s);
                     let mut ops = Default::default();
-                    let a = sample_test(&exact, pos, s, &mut ops).is_some();
-                    let b = sample_test(&bounded, pos, s, &mut ops).is_some();
+                    let a =
+                        uvt_core::sample::test::<Exact, Full>(&exact, pos, s, &mut ops).is_some();
+                    let b = uvt_core::sample::test::<P, Full>(&bounded, pos, s, &mut ops).is_some();
                     n += 1;
                     if a == b {
                         continue;

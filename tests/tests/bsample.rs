@@ -9,6 +9,7 @@
 //! runs every configuration of the precision sweep instead of two.
 
 use std::path::{Path, PathBuf};
+
 use uvt_host::vectors::bsample::{export_grid, Grid};
 use uvt_host::vectors::check::check;
 use uvt_host::vectors::format::sha256;
@@ -262,10 +263,11 @@ fn rtl_sample_test_unit_matches_other_configurations() {
 /// (`uvt_host::cost`) counts, for the DSP48E1 (25 × 18) and ECP5 (18 × 18) ports.
 #[test]
 fn rtl_multiplier_is_exact_and_tiles_as_the_cost_model_counts() {
-    use uvt_core::widths::{table, Config};
-    use uvt_host::cost::{dsp48e1_tiling, ecp5_tiling, Tiling};
+    use uvt_core::config::registry::Config;
+    use uvt_core::widths::stages::table;
+    use uvt_host::config::multipliers::{dsp48e1_tiling, ecp5_tiling, Tiling};
     let mut pairs: Vec<(u32, u32)> = Vec::new();
-    for name in uvt_host::cost::SWEEP
+    for name in uvt_host::config::multipliers::SWEEP
         .iter()
         .filter(|n| n.starts_with("bounded"))
     {

@@ -5,9 +5,9 @@
 //! (`UVT_SEED`, printed on failure; `UVT_EXTENSIVE=1` for many more cases).
 
 use proptest::prelude::*;
-use uvt_core::bounds::compose::{best, hull, hull_lens};
 use uvt_core::bounds::hyper::Hyper;
 use uvt_core::bounds::lens_time::LensTime;
+use uvt_core::bounds::registry::{best, hull, hull_lens};
 use uvt_core::{BboxScan, Laine2011, SamplePattern, Viewport};
 use uvt_tests::kinds::{make, Kind, ALL_KINDS, NP};
 use uvt_tests::*;

@@ -63,13 +63,13 @@ fn far_saturated_depth_is_written() {
 }
 
 /// The stress scene whose triangle crosses the camera plane: no covered sample that reaches an
-/// empty slot is lost (independent count in `uvt_host::precision::lost_samples`).
+/// empty slot is lost (independent count in `uvt_host::precision::measure::lost_samples`).
 #[test]
 fn crossing_camera_plane_loses_nothing() {
     let path = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"))
         .join("../host/stress/crossing_camera_plane.json");
-    let scene = uvt_host::scene::Scene::load(&path).unwrap();
-    let (reached, lost) = uvt_host::precision::lost_samples(&scene);
+    let scene = uvt_host::scene::file::Scene::load(&path).unwrap();
+    let (reached, lost) = uvt_host::precision::measure::lost_samples(&scene);
     assert!(reached > 0, "the scene covers samples");
     assert_eq!(
         lost, 0,

@@ -3,6 +3,9 @@
 
 use proptest::prelude::*;
 use uvt_core::bounds::strategy::BoundsStrategy;
+use uvt_core::config::precision::DefaultPrecision;
+use uvt_core::config::unit::Full;
+use uvt_core::setup::Outcome;
 use uvt_core::*;
 use uvt_tests::*;
 
@@ -216,21 +219,21 @@ proptest! {
         let t = Triangle::new(v0, v1).unwrap();
         let vp = Viewport::new(2048, 2048).unwrap();
         let mut ops = Ops::default();
-        if let Outcome::Visible(s) = setup(&t, vp, &mut ops) {
-            let co = Laine2011.prepare(&s, &mut ops);
+        if let Outcome::Visible(s) = setup::<DefaultPrecision, Full>(&t, vp, &mut ops) {
+            let co = Laine2011.prepare::<Full>(&s, &mut ops);
             let fp = s.footprint();
             for bt in [1u16, 2, 4, 8] {
                 for (x, y) in [(fp.x0, fp.y0), (fp.x1 - 1, fp.y1 - 1), ((fp.x0 + fp.x1) / 2, (fp.y0 + fp.y1) / 2)] {
                     let cell = PixelRect { x0: x - x % bt, y0: y - y % bt, x1: x - x % bt + bt, y1: y - y % bt + bt }.intersect(&fp);
-                    let _ = Laine2011.tile(&s, &co, cell, &mut ops);
+                    let _ = Laine2011.tile::<Full>(&s, &co, cell, &mut ops);
                 }
             }
         }
-        let full = Setup::unculled(&t, vp);
+        let full = Setup::unculled::<DefaultPrecision>(&t, vp);
         for s in &smps {
-            let _ = sample_test(&full, ScreenPos::of(px, py, s), s, &mut ops);
-            let _ = sample_test(&full, ScreenPos::of(2047, 2047, s), s, &mut ops);
-            let _ = sample_test(&full, ScreenPos::of(0, 0, s), s, &mut ops);
+            let _ = uvt_core::sample::test::<DefaultPrecision, Full>(&full, ScreenPos::of(px, py, s), s, &mut ops);
+            let _ = uvt_core::sample::test::<DefaultPrecision, Full>(&full, ScreenPos::of(2047, 2047, s), s, &mut ops);
+            let _ = uvt_core::sample::test::<DefaultPrecision, Full>(&full, ScreenPos::of(0, 0, s), s, &mut ops);
         }
     }
 

@@ -8,10 +8,11 @@
 //! a hand-picked direction; and a known case the edge bound must tighten (it fails without it).
 
 use proptest::prelude::*;
-use uvt_core::bounds::compose::{best, hull_edge};
 use uvt_core::bounds::edge_time::EdgeTime;
+use uvt_core::bounds::registry::{best, hull_edge};
+use uvt_core::config::unit::Full;
 use uvt_core::{
-    setup_with, Bounded, BoundsStrategy, Exact, Laine2011, Outcome, PixelRect, SamplePattern,
+    setup, Bounded, BoundsStrategy, Exact, Laine2011, Outcome, PixelRect, SamplePattern,
     TileBounds, Triangle, Vertex, Viewport,
 };
 use uvt_tests::kinds::{make, Kind, ALL_KINDS, NP};
@@ -34,9 +35,9 @@ fn edge_t() -> EdgeTime<Laine2011> {
 /// oblique edge that setup keeps).
 fn active<P: uvt_core::Precision>(t: &Triangle, vp: Viewport) -> bool {
     let mut ops = Default::default();
-    match setup_with::<P>(t, vp, &mut ops) {
-        Outcome::Visible(s) => edge_t().prepare(&s, &mut ops).edge().is_some(),
-        Outcome::Culled(_) => false,
+    match setup::<P, Full>(t, vp, &mut ops) {
+        Outcome::Visible(s) => edge_t().prepare::<Full>(&s, &mut ops).edge().is_some(),
+        Outcome::Culled(_) | Outcome::Refused(_) => false,
     }
 }
 
@@ -156,10 +157,10 @@ fn edge_direction_hand_picked() {
     let vp = Viewport::new(64, 64).unwrap();
     let dir = |t: &Triangle| {
         let mut ops = Default::default();
-        let Outcome::Visible(s) = setup_with::<Exact>(t, vp, &mut ops) else {
+        let Outcome::Visible(s) = setup::<Exact, Full>(t, vp, &mut ops) else {
             panic!("visible")
         };
-        edge_t().prepare(&s, &mut ops).edge().map(|e| e.n())
+        edge_t().prepare::<Full>(&s, &mut ops).edge().map(|e| e.n())
     };
     // Legs (10,10)–(30,10) and (10,10)–(10,30): hypotenuse (30,10)–(10,30), direction (−1, 1),
     // normal ∝ (1, 1).
@@ -183,11 +184,11 @@ fn admitted<B: BoundsStrategy>(
     pat: &SamplePattern<'_>,
 ) -> (u64, u64) {
     let mut ops = Default::default();
-    let Outcome::Visible(set) = setup_with::<Exact>(t, vp, &mut ops) else {
+    let Outcome::Visible(set) = setup::<Exact, Full>(t, vp, &mut ops) else {
         panic!("visible")
     };
-    let full = uvt_core::Setup::unculled_with::<Exact>(t, vp);
-    let co = s.prepare(&set, &mut ops);
+    let full = uvt_core::Setup::unculled::<Exact>(t, vp);
+    let co = s.prepare::<Full>(&set, &mut ops);
     let fp = set.footprint();
     let (mut adm, mut cov) = (0, 0);
     for py in fp.y0..fp.y1 {
@@ -198,9 +199,9 @@ fn admitted<B: BoundsStrategy>(
                 x1: px + 1,
                 y1: py + 1,
             };
-            let b = s.tile(&set, &co, cell, &mut ops);
+            let b = s.tile::<Full>(&set, &co, cell, &mut ops);
             for smp in pat.pixel(px, py) {
-                let hit = uvt_core::sample_test(
+                let hit = uvt_core::sample::test::<Exact, uvt_core::Full>(
                     &full,
                     uvt_core::ScreenPos::of(px, py, smp),
                     smp,

@@ -5,17 +5,19 @@
 
 use embedded_graphics_core::pixelcolor::RgbColor;
 use uvt_core::{Laine2011, Prim, Renderer, Rgb888};
-use uvt_host::compare::compare;
-use uvt_host::frame::{run, Fixed, RunOpts};
-use uvt_host::pattern::Pattern;
+use uvt_host::frame::compare::compare;
+use uvt_host::frame::driver::{run, RunOpts};
+use uvt_host::frame::pipelines::Fixed;
 use uvt_host::reference;
-use uvt_host::scene::{PatternKind, Scene, SceneTri};
-use uvt_host::scenes;
+use uvt_host::scene::builtin;
+use uvt_host::scene::file::Scene;
+use uvt_host::scene::pattern::{Pattern, PatternKind};
+use uvt_host::scene::tri::SceneTri;
 use uvt_tests::*;
 
 /// A random f64 triangle of the generator's kinds (static, moving, defocused, both, crossing).
 fn random_tri(rng: &mut rand_pcg::Pcg64, kind: u64) -> SceneTri {
-    uvt_host::scenes::random_tri(rng, kind as u32)
+    uvt_host::scene::builtin::random_tri(rng, kind as u32)
 }
 
 #[test]
@@ -80,7 +82,7 @@ fn core_agrees_with_reference_beyond_quantization_distance() {
     let seed = seed();
     let mut rng = <rand_pcg::Pcg64 as rand::SeedableRng>::seed_from_u64(seed ^ 0xabc);
     // The built-in default scene, and random triangles of every kind.
-    let s = scenes::default_scene();
+    let s = builtin::default_scene();
     let pat = Pattern::new(s.pattern, s.spp, s.seed);
     let d = compare(&s.tris, &s.core_tris().unwrap(), s.core_viewport(), &pat);
     assert!(d.compared > 1_000_000, "{d:?}");
@@ -122,7 +124,7 @@ fn host_driver_matches_core_renderer() {
 }
 
 fn driver_matches() {
-    let s = scenes::default_scene();
+    let s = builtin::default_scene();
     let core = s.core_tris().unwrap();
     let vp = s.core_viewport();
     let pat = Pattern::new(s.pattern, s.spp, s.seed);
@@ -195,10 +197,10 @@ fn driver_matches() {
 /// sample would lower the count) and tests no more than the bounding-box scan.
 #[test]
 fn bench_rows_fixed_and_f64_ste_within_two_percent() {
-    let rows = uvt_host::bench::run_table(
+    let rows = uvt_host::bench::ste_table::run_table(
         true,
-        &[scenes::Bench::Game, scenes::Bench::Dense],
-        &scenes::Row::ALL,
+        &[builtin::Bench::Game, builtin::Bench::Dense],
+        &builtin::Blur::ALL,
         false,
         None,
     );
@@ -242,12 +244,12 @@ fn bench_rows_fixed_and_f64_ste_within_two_percent() {
 /// which would mean the strategy culled coverage that the search found.
 #[test]
 fn axis_aligned_limit_converged_and_below_axis_aligned_strategies() {
-    let rows = uvt_host::bench::run_table(
+    let rows = uvt_host::bench::ste_table::run_table(
         true,
-        &[scenes::Bench::Game],
-        &[scenes::Row::Both2],
+        &[builtin::Bench::Game],
+        &[builtin::Blur::Both2],
         false,
-        Some(uvt_host::bench::ORACLE_EFFORT),
+        Some(uvt_host::bench::ste_table::ORACLE_EFFORT),
     );
     let r = &rows[0];
     let l = &r.limit;
@@ -287,11 +289,11 @@ fn axis_aligned_limit_converged_and_below_axis_aligned_strategies() {
 #[test]
 fn bench_rows_every_strategy_conservative_at_the_bounded_precision() {
     use uvt_core::BoundedPrecision;
-    let rows = uvt_host::bench::run_table_at(
+    let rows = uvt_host::bench::ste_table::run_table_at(
         "bounded-16-16-16-20",
         true,
-        &[scenes::Bench::Game, scenes::Bench::Dense],
-        &[scenes::Row::Static, scenes::Row::Both2],
+        &[builtin::Bench::Game, builtin::Bench::Dense],
+        &[builtin::Blur::Static, builtin::Blur::Both2],
         false,
         None,
     )
@@ -299,7 +301,7 @@ fn bench_rows_every_strategy_conservative_at_the_bounded_precision() {
     assert_eq!(rows.len(), 4);
     for r in &rows {
         assert_eq!(r.precision, "bounded-16-16-16-20");
-        let s = scenes::bench(r.scene, r.row, true);
+        let s = builtin::bench_scene(r.scene, r.row, true);
         let pattern = Pattern::new(s.pattern, s.spp, s.seed);
         let core = s.core_tris().expect("built-in scene converts");
         let colors = s.colors();
@@ -307,7 +309,7 @@ fn bench_rows_every_strategy_conservative_at_the_bounded_precision() {
             tile: 1,
             ..RunOpts::for_scene(&s, &colors)
         };
-        let bbox = uvt_host::bench::run_strategy_at::<BoundedPrecision>(
+        let bbox = uvt_host::bench::strategy::run_strategy_at::<BoundedPrecision>(
             "bbox",
             s.core_viewport(),
             &core,
@@ -327,7 +329,7 @@ fn bench_rows_every_strategy_conservative_at_the_bounded_precision() {
         }
         // The gain is kept: hull culling on every row, slabs and surfaces on the "both" rows.
         let mut gains = vec!["hull", "best", "hull+lens-t", "hull+edge-t"];
-        if matches!(r.row, scenes::Row::Both | scenes::Row::Both2) {
+        if matches!(r.row, builtin::Blur::Both | builtin::Blur::Both2) {
             gains.extend(["lens-t", "hyper"]);
         }
         for name in gains {

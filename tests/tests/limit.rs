@@ -1,6 +1,7 @@
 //! The axis-aligned limit's box search (`uvt_host::oracle::search`) on a set with a known exact
 //! box, and the limit's convergence on a dense benchmark row.
 
+use uvt_core::config::unit::Full;
 use uvt_host::oracle::search::{BoxSearch, Effort, P5};
 
 /// 5×5 integer determinant (Laplace expansion; entries ≤ 2^17, so every partial product of five
@@ -135,9 +136,9 @@ fn box_search_finds_the_exact_box_of_a_thin_simplex() {
 /// scene is fixed) keeps the test short.
 #[test]
 fn face_search_tightens_the_limit_on_dense_both_x2() {
-    use uvt_host::scenes::{bench, Bench, Row};
-    let s = bench(Bench::Dense, Row::Both2, true);
-    let pattern = uvt_host::pattern::Pattern::new(s.pattern, s.spp, s.seed);
+    use uvt_host::scene::builtin::{bench_scene, Bench, Blur};
+    let s = bench_scene(Bench::Dense, Blur::Both2, true);
+    let pattern = uvt_host::scene::pattern::Pattern::new(s.pattern, s.spp, s.seed);
     let tris: Vec<_> = s
         .core_tris()
         .expect("built-in scene converts")
@@ -145,24 +146,25 @@ fn face_search_tightens_the_limit_on_dense_both_x2() {
         .step_by(16)
         .collect();
     // The efforts the 5D limit was benchmarked at (the bench's default before the clip search).
-    let effort: [Effort; 2] = uvt_host::bench::parse_effort("64:64,256:256").expect("valid");
+    let effort: [Effort; 2] =
+        uvt_host::bench::ste_table::parse_effort("64:64,256:256").expect("valid");
     let dense_only = effort.map(|e| Effort { steps: 0, ..e });
     let vp = s.core_viewport();
-    let l = uvt_host::oracle::axis_aligned_limit(
+    let l = uvt_host::oracle::limit::axis_aligned_limit(
         &tris,
         vp,
         &pattern,
         1,
         effort,
-        uvt_host::oracle::Method::Points5,
+        uvt_host::oracle::limit::Method::Points5,
     );
-    let d = uvt_host::oracle::axis_aligned_limit(
+    let d = uvt_host::oracle::limit::axis_aligned_limit(
         &tris,
         vp,
         &pattern,
         1,
         dense_only,
-        uvt_host::oracle::Method::Points5,
+        uvt_host::oracle::limit::Method::Points5,
     );
     println!("with search {l:?}\ndense only {d:?}");
     assert!(l.covered > 1000 && l.covered == d.covered, "{l:?} {d:?}");
@@ -194,7 +196,7 @@ fn face_search_tightens_the_limit_on_dense_both_x2() {
 /// naming what is wrong.
 #[test]
 fn limit_effort_parses_and_refuses_bad_values() {
-    let e = uvt_host::bench::parse_effort("32:16,128:512").expect("valid");
+    let e = uvt_host::bench::ste_table::parse_effort("32:16,128:512").expect("valid");
     assert_eq!(
         e,
         [
@@ -218,7 +220,7 @@ fn limit_effort_parses_and_refuses_bad_values() {
         ("0:4,64:4", "1 ≤ D0"),
         ("64:4,70000:4", "≤ 65536"),
     ] {
-        let err = uvt_host::bench::parse_effort(bad).expect_err(bad);
+        let err = uvt_host::bench::ste_table::parse_effort(bad).expect_err(bad);
         assert!(err.contains(needle), "{bad:?}: {err:?} lacks {needle:?}");
     }
 }
@@ -231,23 +233,25 @@ fn clip_edge_model_agrees_with_the_core() {
     use rand::{Rng, SeedableRng};
     use uvt_core::bounds::strategy::BoundsStrategy;
     use uvt_host::oracle::clip::{core_covers, TileCover};
-    use uvt_host::scenes::{bench, Bench, Row};
+    use uvt_host::scene::builtin::{bench_scene, Bench, Blur};
     let seed: u64 = std::env::var("UVT_SEED")
         .ok()
         .and_then(|s| s.parse().ok())
         .unwrap_or(11);
     let mut rng = rand_pcg::Pcg64::seed_from_u64(seed);
-    let s = bench(Bench::Dense, Row::Both2, true);
+    let s = bench_scene(Bench::Dense, Blur::Both2, true);
     let vp = s.core_viewport();
     let (mut agree, mut inside, mut near) = (0u64, 0u64, 0u64);
     for tri in s.core_tris().expect("converts").into_iter().step_by(64) {
         let mut ops = uvt_core::Ops::default();
-        let uvt_core::Outcome::Visible(st) = uvt_core::setup(&tri, vp, &mut ops) else {
+        let uvt_core::Outcome::Visible(st) =
+            uvt_core::setup::<uvt_core::DefaultPrecision, uvt_core::Full>(&tri, vp, &mut ops)
+        else {
             continue;
         };
-        let co = uvt_core::Laine2011.prepare(&st, &mut ops);
+        let co = uvt_core::Laine2011.prepare::<Full>(&st, &mut ops);
         for cell in st.footprint().cells(1) {
-            let Some(b) = uvt_core::Laine2011.tile(&st, &co, cell, &mut ops) else {
+            let Some(b) = uvt_core::Laine2011.tile::<Full>(&st, &co, cell, &mut ops) else {
                 continue;
             };
             let cover = TileCover::new(&st, cell);
@@ -287,15 +291,15 @@ fn clip_edge_model_agrees_with_the_core() {
 
 /// Every 16th triangle of a quick benchmark row with its frame's pattern.
 fn subset(
-    scene: uvt_host::scenes::Bench,
-    row: uvt_host::scenes::Row,
+    scene: uvt_host::scene::builtin::Bench,
+    row: uvt_host::scene::builtin::Blur,
 ) -> (
     Vec<uvt_core::Triangle>,
     uvt_core::Viewport,
-    uvt_host::pattern::Pattern,
+    uvt_host::scene::pattern::Pattern,
 ) {
-    let s = uvt_host::scenes::bench(scene, row, true);
-    let pattern = uvt_host::pattern::Pattern::new(s.pattern, s.spp, s.seed);
+    let s = uvt_host::scene::builtin::bench_scene(scene, row, true);
+    let pattern = uvt_host::scene::pattern::Pattern::new(s.pattern, s.spp, s.seed);
     let tris = s
         .core_tris()
         .expect("built-in scene converts")
@@ -312,10 +316,10 @@ fn subset(
 /// Points5 at 16:32,64:128 misses several tenths of a percent).
 #[test]
 fn clip_search_finds_boxes_the_5d_points_miss() {
-    use uvt_host::oracle::{axis_aligned_limit, Method};
-    use uvt_host::scenes::{Bench, Row};
-    let (tris, vp, pattern) = subset(Bench::Dense, Row::Both2);
-    let effort = uvt_host::bench::parse_effort("16:32,64:128").expect("valid");
+    use uvt_host::oracle::limit::{axis_aligned_limit, Method};
+    use uvt_host::scene::builtin::{Bench, Blur};
+    let (tris, vp, pattern) = subset(Bench::Dense, Blur::Both2);
+    let effort = uvt_host::bench::ste_table::parse_effort("16:32,64:128").expect("valid");
     let c = axis_aligned_limit(&tris, vp, &pattern, 1, effort, Method::Clip3);
     let p = axis_aligned_limit(&tris, vp, &pattern, 1, effort, Method::Points5);
     println!("clip {c:?}\npoints {p:?}");
@@ -344,26 +348,29 @@ fn clip_search_finds_boxes_the_5d_points_miss() {
 #[test]
 fn every_face_of_the_clip_box_is_attained_by_a_covered_point() {
     use uvt_core::bounds::strategy::BoundsStrategy;
-    use uvt_host::oracle::{clip::core_covers, tile_limit, Method};
-    use uvt_host::scenes::{Bench, Row};
-    let effort = uvt_host::bench::parse_effort("8:16,16:32").expect("valid");
+    use uvt_host::oracle::clip::core_covers;
+    use uvt_host::oracle::limit::{tile_limit, Method};
+    use uvt_host::scene::builtin::{Bench, Blur};
+    let effort = uvt_host::bench::ste_table::parse_effort("8:16,16:32").expect("valid");
     for (scene, row) in [
-        (Bench::Dense, Row::Static),
-        (Bench::Dense, Row::Motion2),
-        (Bench::Dense, Row::Defocus2),
-        (Bench::Dense, Row::Both2),
-        (Bench::Game, Row::Both2),
+        (Bench::Dense, Blur::Static),
+        (Bench::Dense, Blur::Motion2),
+        (Bench::Dense, Blur::Defocus2),
+        (Bench::Dense, Blur::Both2),
+        (Bench::Game, Blur::Both2),
     ] {
         let (tris, vp, _) = subset(scene, row);
         let mut faces = 0u64;
         for (ti, tri) in tris.iter().enumerate().step_by(4) {
             let mut ops = uvt_core::Ops::default();
-            let uvt_core::Outcome::Visible(s) = uvt_core::setup(tri, vp, &mut ops) else {
+            let uvt_core::Outcome::Visible(s) =
+                uvt_core::setup::<uvt_core::DefaultPrecision, uvt_core::Full>(tri, vp, &mut ops)
+            else {
                 continue;
             };
-            let co = uvt_core::Laine2011.prepare(&s, &mut ops);
+            let co = uvt_core::Laine2011.prepare::<Full>(&s, &mut ops);
             for cell in s.footprint().cells(1) {
-                let Some(b) = uvt_core::Laine2011.tile(&s, &co, cell, &mut ops) else {
+                let Some(b) = uvt_core::Laine2011.tile::<Full>(&s, &co, cell, &mut ops) else {
                     continue;
                 };
                 let (boxes, _) =
@@ -407,13 +414,13 @@ fn every_face_of_the_clip_box_is_attained_by_a_covered_point() {
 /// boxes are at least about as large).
 #[test]
 fn line_search_converges_where_the_clip_search_did_not() {
-    use uvt_host::oracle::{axis_aligned_limit, Limit, Method};
-    use uvt_host::scenes::{Bench, Row};
-    let (tris, vp, pattern) = subset(Bench::Dense, Row::Both2);
-    let effort = uvt_host::bench::ORACLE_EFFORT;
+    use uvt_host::oracle::limit::{axis_aligned_limit, Limit, Method};
+    use uvt_host::scene::builtin::{Bench, Blur};
+    let (tris, vp, pattern) = subset(Bench::Dense, Blur::Both2);
+    let effort = uvt_host::bench::ste_table::ORACLE_EFFORT;
     assert_eq!(
         effort,
-        uvt_host::bench::parse_effort("16:16,64:64").expect("valid")
+        uvt_host::bench::ste_table::parse_effort("16:16,64:64").expect("valid")
     );
     let converged = |l: &Limit| {
         let gap = l.ste(0) / l.ste(1) - 1.0;

@@ -1,4 +1,4 @@
-//! The core on both emulated thumbv7 profiles: `core/examples/m4_render.rs` is built for
+//! The core on both emulated thumbv7 profiles: `demo/examples/m4_render.rs` is built for
 //! `thumbv7em-none-eabihf` (Cortex-M4F, QEMU `mps2-an386`) and for `thumbv7m-none-eabi`
 //! (Cortex-M3 without FPU, QEMU `mps2-an385`), run under `qemu-system-arm` with a time limit, and
 //! its checksum and counters must equal the host's for the same scene through the same core.
@@ -22,10 +22,13 @@ fn root() -> PathBuf {
 
 /// The lines the program prints for checksum and counters, computed on the host.
 fn host_lines() -> (String, String) {
-    lines(uvt_core::demo::render().expect("demo renders on the host"))
+    lines(
+        uvt_demo::render::<uvt_core::DefaultPrecision, uvt_core::Full, uvt_core::Full>()
+            .expect("demo renders on the host"),
+    )
 }
 
-fn lines(r: uvt_core::demo::DemoResult) -> (String, String) {
+fn lines(r: uvt_demo::DemoResult) -> (String, String) {
     let s = r.stats;
     (
         format!("checksum {:#010x}", r.checksum),
@@ -77,7 +80,7 @@ fn build_and_run_at(
             "build",
             "--release",
             "-p",
-            "uvt-core",
+            "uvt-demo",
             "--example",
             "m4_render",
             "--target",
@@ -165,14 +168,26 @@ fn cortex_m3_under_qemu_is_bit_exact_with_host() {
 /// configuration) against the host render of the same prims on the same unit.
 #[test]
 fn cortex_m4f_unit_programs_are_bit_exact_with_host() {
-    use uvt_core::demo::render_unit;
     use uvt_core::{DefocusOnly, Full, MotionOnly, StaticOnly, Unit};
+    use uvt_demo::render;
     let _one = M4F.lock().unwrap_or_else(|e| e.into_inner());
     let host = [
-        (Full::NAME, render_unit::<Full>()),
-        (MotionOnly::NAME, render_unit::<MotionOnly>()),
-        (DefocusOnly::NAME, render_unit::<DefocusOnly>()),
-        (StaticOnly::NAME, render_unit::<StaticOnly>()),
+        (
+            Full::NAME,
+            render::<uvt_core::DefaultPrecision, Full, Full>(),
+        ),
+        (
+            MotionOnly::NAME,
+            render::<uvt_core::DefaultPrecision, MotionOnly, MotionOnly>(),
+        ),
+        (
+            DefocusOnly::NAME,
+            render::<uvt_core::DefaultPrecision, DefocusOnly, DefocusOnly>(),
+        ),
+        (
+            StaticOnly::NAME,
+            render::<uvt_core::DefaultPrecision, StaticOnly, StaticOnly>(),
+        ),
     ];
     for (name, r) in host {
         let r = r.unwrap_or_else(|e| panic!("unit {name}: host render: {e}"));
@@ -189,7 +204,7 @@ fn cortex_m4f_unit_programs_are_bit_exact_with_host() {
         let cpu = format!("cortex-m4 (unit {name})");
         check_output(&text, lines(r), "thumbv7em-none-eabihf", "mps2-an386", &cpu);
         if name == MotionOnly::NAME {
-            let full = uvt_core::demo::render_on::<Full, MotionOnly>()
+            let full = uvt_demo::render::<uvt_core::DefaultPrecision, Full, MotionOnly>()
                 .unwrap_or_else(|e| panic!("full unit on the motion-only prims: {e}"));
             matches_full(&text, &full, "motion-only program");
         }
@@ -198,7 +213,7 @@ fn cortex_m4f_unit_programs_are_bit_exact_with_host() {
 
 /// A specialised unit program's output has the full unit's checksum and covered count on the
 /// same prims (`full`).
-fn matches_full(text: &str, full: &uvt_core::demo::DemoResult, what: &str) {
+fn matches_full(text: &str, full: &uvt_demo::DemoResult, what: &str) {
     let want = format!("checksum {:#010x}", full.checksum);
     assert!(
         text.lines().any(|l| l == want),
@@ -220,18 +235,18 @@ fn matches_full(text: &str, full: &uvt_core::demo::DemoResult, what: &str) {
 /// their prims (checksum and covered count).
 #[test]
 fn cortex_m4f_planar_unit_programs_are_bit_exact_with_host() {
-    use uvt_core::demo::render_on_with;
     use uvt_core::{Full, MotionOnly, PlanarPrecision, StaticOnly, Unit};
+    use uvt_demo::render;
     let _one = M4F.lock().unwrap_or_else(|e| e.into_inner());
     let host = [
-        (Full::NAME, render_on_with::<PlanarPrecision, Full, Full>()),
+        (Full::NAME, render::<PlanarPrecision, Full, Full>()),
         (
             MotionOnly::NAME,
-            render_on_with::<PlanarPrecision, MotionOnly, MotionOnly>(),
+            render::<PlanarPrecision, MotionOnly, MotionOnly>(),
         ),
         (
             StaticOnly::NAME,
-            render_on_with::<PlanarPrecision, StaticOnly, StaticOnly>(),
+            render::<PlanarPrecision, StaticOnly, StaticOnly>(),
         ),
     ];
     for (name, r) in host {
@@ -252,9 +267,9 @@ fn cortex_m4f_planar_unit_programs_are_bit_exact_with_host() {
         // The specialised programs (static-only: `static_unit.rs`, motion-only:
         // `motion_unit.rs`): image and covered count are the full unit's on the same prims.
         let full = if name == StaticOnly::NAME {
-            render_on_with::<PlanarPrecision, Full, StaticOnly>()
+            render::<PlanarPrecision, Full, StaticOnly>()
         } else if name == MotionOnly::NAME {
-            render_on_with::<PlanarPrecision, Full, MotionOnly>()
+            render::<PlanarPrecision, Full, MotionOnly>()
         } else {
             continue;
         };

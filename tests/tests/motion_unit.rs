@@ -7,15 +7,17 @@
 //! boxes never dropping a covered sample (brute force over whole viewports); refusal of the
 //! other classes. Seed: `UVT_SEED`; more cases with `UVT_EXTENSIVE=1`.
 
+use uvt_core::sample::bounded;
+use uvt_core::setup::Outcome;
+use uvt_core::units::motion_only::cull::slab_of;
 use uvt_core::units::motion_only::sample::motion_test;
-use uvt_core::units::motion_only::setup::{
-    motion_setup, slab_of, specialised, MotionOutcome, SLABS,
-};
+use uvt_core::units::motion_only::setup::{motion_setup, SLABS};
 use uvt_core::{
-    bounded_test, demo, Bounded, Class, DefaultPrecision, DefocusOnly, Error, Exact, Full,
-    Laine2011, MotionOnly, MotionRenderer, Ops, PlanarPrecision, Precision, Prim, Renderer, Rgb888,
-    Sample, SamplePattern, ScreenPos, Setup, StaticOnly, TileBuffer, Triangle, Viewport,
+    Bounded, Class, DefaultPrecision, DefocusOnly, Error, Exact, Full, Laine2011, MotionOnly,
+    MotionRenderer, Ops, PlanarPrecision, Precision, Prim, Renderer, Rgb888, Sample, SamplePattern,
+    ScreenPos, Select, Setup, StaticOnly, TileBuffer, Triangle, Viewport,
 };
+use uvt_demo as demo;
 use uvt_tests::kinds::{make, Kind, ALL_KINDS, NP};
 use uvt_tests::{c, cases, dump, dump_sample, random_samples, sample_raw, seed, Rng};
 
@@ -116,13 +118,18 @@ fn compare<P: Precision>(
     pat: &SamplePattern<'_>,
     bt: u8,
     tiles: Option<&[(u16, u16)]>,
-) -> Result<(), String> {
+) -> Result<(), String>
+where
+    (P, Full): Select<Laine2011>,
+    (P, MotionOnly): Select<Laine2011>,
+{
     let mut full = Box::new(
         Renderer::<Laine2011, CAP, P, Full>::new(Laine2011, vp, prims)
             .map_err(|e| format!("full unit: {e}"))?,
     );
     let mut mo = Box::new(
-        MotionRenderer::<CAP, P>::new(vp, prims).map_err(|e| format!("motion unit: {e}"))?,
+        MotionRenderer::<CAP, P>::new(Laine2011, vp, prims)
+            .map_err(|e| format!("motion unit: {e}"))?,
     );
     let clear = Rgb888::new(1, 2, 3);
     let mut fa = Box::new(TileBuffer::<8, 8, 4>::new(clear));
@@ -150,9 +157,13 @@ fn compare<P: Precision>(
 /// with a random pattern and every bounds-tile size.
 #[test]
 fn demo_prims_render_identically() {
-    fn at<P: Precision>(name: &str) {
-        let full = demo::render_on_with::<P, Full, MotionOnly>().expect("full");
-        let mo = demo::render_on_with::<P, MotionOnly, MotionOnly>().expect("motion");
+    fn at<P: Precision>(name: &str)
+    where
+        (P, Full): Select<Laine2011>,
+        (P, MotionOnly): Select<Laine2011>,
+    {
+        let full = demo::render::<P, Full, MotionOnly>().expect("full");
+        let mo = demo::render::<P, MotionOnly, MotionOnly>().expect("motion");
         assert_eq!(
             mo.checksum, full.checksum,
             "{name}: checksum: motion {:#010x}, full {:#010x}",
@@ -187,7 +198,11 @@ fn demo_prims_render_identically() {
 /// one (S = 24) and the planar configuration.
 #[test]
 fn seeded_motion_scenes_render_identically() {
-    fn run<P: Precision>(name: &str, n: u32, salt: u64) {
+    fn run<P: Precision>(name: &str, n: u32, salt: u64)
+    where
+        (P, Full): Select<Laine2011>,
+        (P, MotionOnly): Select<Laine2011>,
+    {
         let mut rng = Rng(seed() ^ salt);
         let mut mix = Mix::default();
         for case in 0..n {
@@ -280,7 +295,11 @@ fn edge_sample(rng: &mut Rng) -> Sample {
 /// 2048-pixel ones.
 #[test]
 fn sample_test_is_bounded_test_and_slab_boxes_conservative() {
-    fn run<P: Precision>(name: &str, n: u32, salt: u64) {
+    fn run<P: Precision>(name: &str, n: u32, salt: u64)
+    where
+        (P, Full): Select<Laine2011>,
+        (P, MotionOnly): Select<Laine2011>,
+    {
         let mut rng = Rng(seed() ^ salt);
         let mut hits = 0u64;
         let mut mix = Mix::default();
@@ -294,14 +313,16 @@ fn sample_test_is_bounded_test_and_slab_boxes_conservative() {
             .expect("vp");
             let tris: Vec<Triangle> = scene(&mut rng, 1, &mut mix).iter().map(|p| p.tri).collect();
             for tri in tris {
-                let full = Setup::unculled_with::<P>(&tri, vp);
-                let out = motion_setup::<P>(&tri, vp, &mut Ops::default())
-                    .unwrap_or_else(|c| panic!("{name}: refused class {c:?}"));
+                let full = Setup::unculled::<P>(&tri, vp);
+                let out = motion_setup::<P>(&tri, vp, &mut Ops::default());
+                if let Some(c) = out.refused() {
+                    panic!("{name}: refused class {c:?}");
+                }
                 let mut probe = |px: u16, py: u16, s: &Sample| {
                     let pos = ScreenPos::of(px, py, s);
-                    let want = bounded_test(&full, pos, s, &mut Ops::default());
+                    let want = bounded::test::<P, Full>(&full, pos, s, &mut Ops::default());
                     let Some(h) = want else {
-                        if let MotionOutcome::Visible(m) = &out {
+                        if let Outcome::Visible(m) = &out {
                             let got = motion_test::<P>(m, pos, s);
                             assert!(got.is_none(), "{name}: motion covers, bounded does not");
                         }
@@ -321,7 +342,7 @@ fn sample_test_is_bounded_test_and_slab_boxes_conservative() {
                             dump(&tri)
                         )
                     };
-                    let MotionOutcome::Visible(m) = &out else {
+                    let Outcome::Visible(m) = &out else {
                         fail("covered sample of a triangle culled as outside");
                         return;
                     };
@@ -394,17 +415,23 @@ fn domain_corners_are_exact_and_conservative() {
     let ts = [0, 1, 32767, 32768, 32769, 49152, 65535, 65536];
     for (i, (a, b)) in cases.iter().enumerate() {
         let tri = Triangle::new(*a, *b).expect("corner triangle");
-        let full = Setup::unculled_with::<DefaultPrecision>(&tri, vp);
-        let out = motion_setup::<DefaultPrecision>(&tri, vp, &mut Ops::default()).expect("class");
+        let full = Setup::unculled::<DefaultPrecision>(&tri, vp);
+        let out = motion_setup::<DefaultPrecision>(&tri, vp, &mut Ops::default());
+        assert_eq!(out.refused(), None, "class");
         let mut hits = 0;
         for py in 0..64u16 {
             for px in 0..64u16 {
                 for (k, &t) in ts.iter().enumerate() {
                     let s = sample_raw((k * 37) as u8, (k * 91) as u8, 0, 0, t);
                     let pos = ScreenPos::of(px, py, &s);
-                    let want = bounded_test(&full, pos, &s, &mut Ops::default());
+                    let want = bounded::test::<DefaultPrecision, Full>(
+                        &full,
+                        pos,
+                        &s,
+                        &mut Ops::default(),
+                    );
                     let got = match &out {
-                        MotionOutcome::Visible(m) => {
+                        Outcome::Visible(m) => {
                             let in_box = m.slab(slab_of(t)).is_some_and(|b| b.contains(px, py));
                             assert!(
                                 want.is_none() || in_box,
@@ -412,7 +439,7 @@ fn domain_corners_are_exact_and_conservative() {
                             );
                             motion_test::<DefaultPrecision>(m, pos, &s)
                         }
-                        MotionOutcome::Outside => None,
+                        Outcome::Culled(_) | Outcome::Refused(_) => None,
                     };
                     hits += u32::from(want.is_some());
                     assert_eq!(
@@ -453,8 +480,7 @@ fn slab_of_and_crossers() {
     )
     .expect("crosser");
     let vp = Viewport::new(40, 24).expect("vp");
-    let MotionOutcome::Visible(m) =
-        motion_setup::<DefaultPrecision>(&tri, vp, &mut Ops::default()).expect("class")
+    let Outcome::Visible(m) = motion_setup::<DefaultPrecision>(&tri, vp, &mut Ops::default())
     else {
         panic!("crosser culled");
     };
@@ -483,7 +509,7 @@ fn slab_of_and_crossers() {
 fn refuses_other_classes_and_is_selected_at_compile_time() {
     let prims = demo::prims().expect("prims");
     let vp = demo::viewport().expect("vp");
-    let err = MotionRenderer::<8, DefaultPrecision>::new(vp, &prims).err();
+    let err = MotionRenderer::<8, DefaultPrecision>::new(Laine2011, vp, &prims).err();
     assert_eq!(
         err,
         Some(Error::ClassNotInUnit {
@@ -498,7 +524,7 @@ fn refuses_other_classes_and_is_selected_at_compile_time() {
     );
     let both: Vec<Prim> = prims[3..].to_vec();
     assert_eq!(
-        MotionRenderer::<8, PlanarPrecision>::new(vp, &both).err(),
+        MotionRenderer::<8, PlanarPrecision>::new(Laine2011, vp, &both).err(),
         Some(Error::ClassNotInUnit {
             index: 0,
             class: Class::MotionDefocus,
@@ -506,14 +532,18 @@ fn refuses_other_classes_and_is_selected_at_compile_time() {
         })
     );
     assert_eq!(
-        motion_setup::<DefaultPrecision>(&prims[2].tri, vp, &mut Ops::default()).err(),
+        motion_setup::<DefaultPrecision>(&prims[2].tri, vp, &mut Ops::default()).refused(),
         Some(Class::Defocus)
     );
-    assert!(specialised::<DefaultPrecision, MotionOnly>());
-    assert!(specialised::<PlanarPrecision, MotionOnly>());
-    assert!(specialised::<Bounded<16, 16, 16, 32>, MotionOnly>());
-    assert!(!specialised::<Exact, MotionOnly>());
-    assert!(!specialised::<DefaultPrecision, Full>());
-    assert!(!specialised::<DefaultPrecision, StaticOnly>());
-    assert!(!specialised::<DefaultPrecision, DefocusOnly>());
+    use uvt_tests::pipeline_name as name;
+    assert_eq!(name::<DefaultPrecision, MotionOnly>(), "MotionRenderer");
+    assert_eq!(name::<PlanarPrecision, MotionOnly>(), "MotionRenderer");
+    assert_eq!(
+        name::<Bounded<16, 16, 16, 32>, MotionOnly>(),
+        "MotionRenderer"
+    );
+    assert_eq!(name::<Exact, MotionOnly>(), "Renderer");
+    assert_eq!(name::<DefaultPrecision, Full>(), "Renderer");
+    assert_eq!(name::<DefaultPrecision, StaticOnly>(), "Renderer");
+    assert_eq!(name::<DefaultPrecision, DefocusOnly>(), "Renderer");
 }

@@ -7,11 +7,12 @@
 //! sufficient for every strategy (brute force); every unit identical to the full unit is in
 //! `variants.rs`. Seeded (`UVT_SEED`, printed on failure), more cases with `UVT_EXTENSIVE=1`.
 
-use uvt_core::bounds::compose::{best, hull, hull_edge, hull_lens};
 use uvt_core::bounds::edge_time::EdgeTime;
 use uvt_core::bounds::hyper::Hyper;
 use uvt_core::bounds::lens_time::LensTime;
-use uvt_core::sample::planar::planar_eval;
+use uvt_core::bounds::registry::{best, hull, hull_edge, hull_lens};
+use uvt_core::config::unit::Full;
+use uvt_core::sample::planar;
 use uvt_core::setup::planar::PlanarEdges;
 use uvt_core::{
     BboxScan, Coord, Exact, Laine2011, Outcome, PlanarPrecision, Sample, SamplePattern, ScreenPos,
@@ -114,7 +115,7 @@ fn exact_on(q: &[[i128; 3]; 3], d: [i64; 3]) -> bool {
 }
 
 fn setup_pl(t: &Triangle, vp: Viewport) -> Outcome {
-    uvt_core::setup_with::<Pl>(t, vp, &mut Default::default())
+    uvt_core::setup::<Pl, Full>(t, vp, &mut Default::default())
 }
 
 fn raw_tri(v: [[i32; 4]; 3]) -> Triangle {
@@ -156,7 +157,7 @@ fn hand_picked_cases_bit_for_bit() {
     let mut ops = Default::default();
     let s = |xs: u32, ys: u32| ScreenPos { xs, ys };
     // Pixel (0, 3) centre: d = (−3072, −3072, 4096).
-    let ev = planar_eval(&sa, s(128, 896), &mut ops).unwrap();
+    let ev = planar::eval(&sa, s(128, 896), &mut ops).unwrap();
     let k = 1i64 << 29;
     assert_eq!(ev.e, [6144 * k, 1024 * k, 1024 * k], "E at (0,3) centre");
     assert_eq!(
@@ -165,17 +166,17 @@ fn hand_picked_cases_bit_for_bit() {
         "depth 0.5 = 0x800000"
     );
     // On the diagonal (xs = ys = 512): E_0 = 0; a < 0 so A leaves it, B (−n) takes it.
-    let ev = planar_eval(&sa, s(512, 512), &mut ops).unwrap();
+    let ev = planar::eval(&sa, s(512, 512), &mut ops).unwrap();
     assert_eq!(ev.e[0], 0, "E_0 on the diagonal");
     assert_eq!(ev.hit, None, "A does not take the diagonal");
-    let evb = planar_eval(&sb, s(512, 512), &mut ops).unwrap();
+    let evb = planar::eval(&sb, s(512, 512), &mut ops).unwrap();
     assert_eq!(
         evb.hit.map(|h| h.depth),
         Some(1 << 23),
         "B takes the diagonal"
     );
     // Outside the viewport: no answer.
-    assert!(planar_eval(&sa, s(1024, 0), &mut ops).is_none());
+    assert!(planar::eval(&sa, s(1024, 0), &mut ops).is_none());
     // By hand: x = 131077 (m = x, bitlen 18, s = 3): (131077 + 4) >> 3 = 16385, residual 3;
     // y = 65542 (s = 2): 16385.5 ties away to 16386, residual 2; the rest exact.
     let c = raw_tri([[131077, -o, 0, o], [-o, 65542, 0, o], [-o, -o, 0, o]]);
@@ -205,7 +206,7 @@ fn coverage_is_the_exact_test_on_the_rounded_triangle() {
     let (mut checked, mut culled) = (0u64, 0u64);
     for i in 0..cases(60, 1200) {
         let t = random_static(&mut rng, i);
-        let s = Setup::unculled_with::<Pl>(&t, vp);
+        let s = Setup::unculled::<Pl>(&t, vp);
         let (q, sh) = rounded(&t);
         let det: i128 = (0..3).map(|j| q[0][j] * cross128(q[1], q[2])[j]).sum();
         let Some(pl) = s.planar() else {
@@ -243,7 +244,7 @@ fn coverage_is_the_exact_test_on_the_rounded_triangle() {
             for px in 0..vp.width() {
                 for smp in pat.pixel(px, py) {
                     let pos = ScreenPos::of(px, py, smp);
-                    let got = planar_eval(&s, pos, &mut Default::default())
+                    let got = planar::eval(&s, pos, &mut Default::default())
                         .unwrap()
                         .hit
                         .is_some();
@@ -314,8 +315,8 @@ fn agrees_with_exact_within_the_derived_distance() {
         } else {
             random_static(&mut rng, i)
         };
-        let ex = Setup::unculled_with::<Exact>(&t, vp);
-        let ps = Setup::unculled_with::<Pl>(&t, vp);
+        let ex = Setup::unculled::<Exact>(&t, vp);
+        let ps = Setup::unculled::<Pl>(&t, vp);
         let n = ex.edges().expect("static").n();
         let p = raw(&t).map(|v| [v[0], v[1], v[3]]);
         let (q, sh) = rounded(&t);
@@ -344,8 +345,18 @@ fn agrees_with_exact_within_the_derived_distance() {
             for px in 0..vp.width() {
                 for smp in pat.pixel(px, py) {
                     let pos = ScreenPos::of(px, py, smp);
-                    let want = uvt_core::sample_test(&ex, pos, smp, &mut Default::default());
-                    let got = uvt_core::sample_test(&ps, pos, smp, &mut Default::default());
+                    let want = uvt_core::sample::test::<Exact, uvt_core::Full>(
+                        &ex,
+                        pos,
+                        smp,
+                        &mut Default::default(),
+                    );
+                    let got = uvt_core::sample::test::<Pl, uvt_core::Full>(
+                        &ps,
+                        pos,
+                        smp,
+                        &mut Default::default(),
+                    );
                     total += 1;
                     if let (Some(g), Some(w), Some(pl)) = (got, want, ps.planar()) {
                         depth_err = depth_err.max(check_depth(&t, vp, pos, &pl, g.depth, i));
@@ -508,7 +519,7 @@ fn shared_edges_negate(tris: &[Triangle], vp: Viewport, ctx: &str) -> usize {
     use std::collections::HashMap;
     let mut edges: HashMap<([i32; 5], [i32; 5]), [i32; 3]> = HashMap::new();
     for t in tris {
-        let s = Setup::unculled_with::<Pl>(t, vp);
+        let s = Setup::unculled::<Pl>(t, vp);
         let Some(pl) = s.planar() else { continue };
         let v = t.vertices(0).map(|x| x.bits());
         for k in 0..3 {
@@ -813,9 +824,9 @@ fn depth_within_the_derived_bound_of_exact() {
             1 => guard_band(&mut rng),
             _ => random_static(&mut rng, i),
         };
-        let ps = Setup::unculled_with::<Pl>(&t, vp);
+        let ps = Setup::unculled::<Pl>(&t, vp);
         let Some(pl) = ps.planar() else { continue };
-        let ex = Setup::unculled_with::<Exact>(&t, vp);
+        let ex = Setup::unculled::<Exact>(&t, vp);
         let r = raw(&t);
         let p = r.map(|v| [v[0], v[1], v[3]]);
         let z = r.map(|v| v[2]);
@@ -850,8 +861,12 @@ fn depth_within_the_derived_bound_of_exact() {
             for px in 0..vp.width() {
                 for smp in pat.pixel(px, py) {
                     let pos = ScreenPos::of(px, py, smp);
-                    let Some(g) = uvt_core::sample_test(&ps, pos, smp, &mut Default::default())
-                    else {
+                    let Some(g) = uvt_core::sample::test::<Pl, uvt_core::Full>(
+                        &ps,
+                        pos,
+                        smp,
+                        &mut Default::default(),
+                    ) else {
                         continue;
                     };
                     hits += 1;
@@ -883,7 +898,12 @@ fn depth_within_the_derived_bound_of_exact() {
                     );
                     max_err = max_err.max(err);
                     max_ratio = max_ratio.max(err / bound);
-                    if let Some(w) = uvt_core::sample_test(&ex, pos, smp, &mut Default::default()) {
+                    if let Some(w) = uvt_core::sample::test::<Exact, uvt_core::Full>(
+                        &ex,
+                        pos,
+                        smp,
+                        &mut Default::default(),
+                    ) {
                         max_vs_exact = max_vs_exact.max((g.depth as i64 - w.depth as i64).abs());
                     }
                 }

@@ -1,10 +1,11 @@
 //! Precision as a parameter: the sweep stays conservative at every precision, its errors shrink
 //! toward the default, and the stress scenes hold (no panic, no violation, differences from f64
-//! only where the derived quantization bound of `host/src/compare.rs` allows).
+//! only where the derived quantization bound of `host/src/frame/compare.rs` allows).
 
 use uvt_core::{Error, Interval, Prec, Precision, Sample, SamplePattern, Triangle, Vertex};
-use uvt_host::precision::{stress_row, stress_scenes, sweep, Sweep, CONFIGS};
-use uvt_host::scenes::{Bench, Row};
+use uvt_host::precision::row::CONFIGS;
+use uvt_host::precision::sweep::{stress_row, stress_scenes, sweep, Sweep};
+use uvt_host::scene::builtin::{Bench, Blur};
 
 #[test]
 fn sweep_is_conservative_and_converges_to_the_default() {
@@ -12,7 +13,7 @@ fn sweep_is_conservative_and_converges_to_the_default() {
     let rows = sweep(&Sweep {
         configs: configs.clone(),
         scenes: vec![Bench::Game, Bench::Dense],
-        rows: vec![Row::Both],
+        rows: vec![Blur::Both],
         tiles: vec![1, 2, 4, 8],
         shrink: 4,
     });
@@ -22,7 +23,7 @@ fn sweep_is_conservative_and_converges_to_the_default() {
         assert_eq!(r.beyond_bound, 0, "{r:?}");
         assert!(r.compared > 10_000, "{r:?}");
     }
-    let rate = |r: &uvt_host::precision::PrecRow| r.differ as f64 / r.compared as f64;
+    let rate = |r: &uvt_host::precision::row::PrecRow| r.differ as f64 / r.compared as f64;
     let at = |cfg: &str, tile: u8| {
         rows.iter()
             .find(|r| r.config == cfg && r.tile == tile)

@@ -7,6 +7,7 @@
 //! field, or an input field the unit reads — is caught and reported with record and field.
 
 use std::path::{Path, PathBuf};
+
 use uvt_host::vectors::check::check;
 use uvt_host::vectors::format::sha256;
 use uvt_tests::icarus;

@@ -5,10 +5,11 @@
 //! scaled down 16×.
 
 use uvt_core::Prec;
-use uvt_host::compare::{check_sample, compare, compare_with, CoverageDiff, Rounding};
-use uvt_host::pattern::Pattern;
+use uvt_host::frame::compare::{check_sample, compare, compare_with, CoverageDiff, Rounding};
 use uvt_host::reference::sample::{direction, positions};
-use uvt_host::scene::{Scene, SceneTri};
+use uvt_host::scene::file::Scene;
+use uvt_host::scene::pattern::Pattern;
+use uvt_host::scene::tri::SceneTri;
 use uvt_tests::*;
 
 fn stress(name: &str) -> Scene {
@@ -35,7 +36,7 @@ fn bound_contains_every_admissible_rounding() {
     let mut worst: f64 = 0.0;
     for case in 0..cases(4000, 80_000) {
         let kind = case % 6;
-        let tri = uvt_host::scenes::random_tri(&mut rng, kind);
+        let tri = uvt_host::scene::builtin::random_tri(&mut rng, kind);
         let rd = match case % 3 {
             0 => Rounding::at(16, 16),
             1 => Rounding::at(8, 8),

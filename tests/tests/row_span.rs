@@ -11,11 +11,12 @@
 //! - Renderer: `best()` and the same strategy without a row step (every tile face-tested)
 //!   render identical images and identical counters except the bounds and row op counts.
 
-use uvt_core::bounds::compose::{best, hull};
 use uvt_core::bounds::hull::HullTiles;
+use uvt_core::bounds::registry::{best, hull};
+use uvt_core::config::unit::Full;
 use uvt_core::{
-    setup_with, BoundsStrategy, DefaultPrecision, Exact, Ops, Outcome, PixelRect, Precision, Prim,
-    Renderer, Rgb888, SamplePattern, Setup, Stats, Triangle, Viewport,
+    setup, BoundsStrategy, DefaultPrecision, Exact, Ops, Outcome, PixelRect, Precision, Prim,
+    Renderer, Rgb888, SamplePattern, Setup, Stats, Triangle, Unit, Viewport,
 };
 use uvt_tests::kinds::{make, ALL_KINDS, NP};
 use uvt_tests::*;
@@ -34,9 +35,9 @@ struct Seen {
 /// Hull faces of `t` at precision `P` on `vp`, with its setup.
 fn faces<P: Precision>(t: &Triangle, vp: Viewport) -> Option<(Setup, HullTiles)> {
     let mut ops = Ops::default();
-    match setup_with::<P>(t, vp, &mut ops) {
-        Outcome::Visible(s) => Some((s, hull().prepare(&s, &mut ops).0)),
-        Outcome::Culled(_) => None,
+    match setup::<P, Full>(t, vp, &mut ops) {
+        Outcome::Visible(s) => Some((s, hull().prepare::<Full>(&s, &mut ops).0)),
+        Outcome::Culled(_) | Outcome::Refused(_) => None,
     }
 }
 
@@ -153,17 +154,17 @@ impl<S: BoundsStrategy> BoundsStrategy for NoSpan<S> {
     fn name(&self) -> &'static str {
         "no-span"
     }
-    fn prepare(&self, setup: &Setup, ops: &mut Ops) -> S::Coeffs {
-        self.0.prepare(setup, ops)
+    fn prepare<U: Unit>(&self, setup: &Setup, ops: &mut Ops) -> S::Coeffs {
+        self.0.prepare::<U>(setup, ops)
     }
-    fn tile(
+    fn tile<U: Unit>(
         &self,
         setup: &Setup,
         c: &S::Coeffs,
         tile: PixelRect,
         ops: &mut Ops,
     ) -> Option<S::Tile> {
-        self.0.tile(setup, c, tile, ops)
+        self.0.tile::<U>(setup, c, tile, ops)
     }
 }
 

@@ -5,7 +5,9 @@
 
 use uvt_core::bounds::strategy::BoundsStrategy;
 use uvt_core::config::formats::{DEPTH_EMPTY, DEPTH_FAR, DEPTH_NEAR};
+use uvt_core::config::unit::Full;
 use uvt_core::setup::boxes::AxisBoxes;
+use uvt_core::setup::{Cull, Outcome};
 use uvt_core::*;
 use uvt_tests::*;
 
@@ -19,7 +21,7 @@ fn same(what: &str, t: &Triangle, expected: i128, observed: i128) {
 }
 
 fn visible(t: &Triangle, vp: Viewport) -> Setup {
-    match setup_with::<Exact>(t, vp, &mut Ops::default()) {
+    match setup::<Exact, Full>(t, vp, &mut Ops::default()) {
         Outcome::Visible(s) => s,
         o => panic!("expected visible, got {o:?}\n{}", dump(t)),
     }
@@ -153,24 +155,24 @@ fn setup_classify_and_cull() {
         [0.5, 0.0, 0.0, 1.0, 0.0],
     ];
     assert_eq!(
-        setup_with::<Exact>(&stat(line), vp, &mut ops),
+        setup::<Exact, Full>(&stat(line), vp, &mut ops),
         Outcome::Culled(Cull::Degenerate)
     );
     // zero area at t = 0 only → visible
     assert!(matches!(
-        setup_with::<Exact>(&tri(line, base), vp, &mut ops),
+        setup::<Exact, Full>(&tri(line, base), vp, &mut ops),
         Outcome::Visible(_)
     ));
     // wholly right of the frustum for the whole shutter → outside
     let right = base.map(|v| [v[0] + 3.0, v[1], v[2], v[3], v[4]]);
     assert_eq!(
-        setup_with::<Exact>(&tri(right, right), vp, &mut ops),
+        setup::<Exact, Full>(&tri(right, right), vp, &mut ops),
         Outcome::Culled(Cull::Outside)
     );
     // all behind the camera → outside
     let behind = base.map(|v| [v[0], v[1], v[2], -1.0, v[4]]);
     assert_eq!(
-        setup_with::<Exact>(&stat(behind), vp, &mut ops),
+        setup::<Exact, Full>(&stat(behind), vp, &mut ops),
         Outcome::Culled(Cull::Outside)
     );
 }
@@ -191,9 +193,9 @@ fn bounds_lens_intervals() {
     let s = visible(&t, vp);
     assert_eq!(s.class(), Class::Defocus);
     let mut ops = Ops::default();
-    let co = Laine2011.prepare(&s, &mut ops);
+    let co = Laine2011.prepare::<Full>(&s, &mut ops);
     let b = Laine2011
-        .tile(
+        .tile::<Full>(
             &s,
             &co,
             PixelRect {
@@ -212,7 +214,7 @@ fn bounds_lens_intervals() {
     assert_eq!(b.t, Interval::UNIT);
     // A column the box never reaches at any lens point: [14, 15) needs 7 + 4s ≥ 14 → empty.
     assert_eq!(
-        Laine2011.tile(
+        Laine2011.tile::<Full>(
             &s,
             &co,
             PixelRect {
@@ -256,9 +258,9 @@ fn bounds_time_interval_dual_space() {
         }
     );
     let mut ops = Ops::default();
-    let co = Laine2011.prepare(&s, &mut ops);
+    let co = Laine2011.prepare::<Full>(&s, &mut ops);
     let b = Laine2011
-        .tile(
+        .tile::<Full>(
             &s,
             &co,
             PixelRect {
@@ -292,10 +294,11 @@ fn sample_test_coverage_and_depth() {
     let s = visible(&t, vp);
     let mut ops = Ops::default();
     let s0 = smp(0, 0, 0, 0, 0);
-    let hit = sample_test(&s, ScreenPos::of(8, 8, &s0), &s0, &mut ops).expect("centre covered");
+    let hit = uvt_core::sample::test::<Exact, Full>(&s, ScreenPos::of(8, 8, &s0), &s0, &mut ops)
+        .expect("centre covered");
     same("depth", &t, 0x400000, hit.depth as i128);
     assert_eq!(
-        sample_test(&s, ScreenPos::of(1, 1, &s0), &s0, &mut ops),
+        uvt_core::sample::test::<Exact, Full>(&s, ScreenPos::of(1, 1, &s0), &s0, &mut ops),
         None
     );
     // Same triangle moving +1 NDC in x over the shutter, z = w/2 at t = 1: at t = ½ it has
@@ -317,14 +320,21 @@ fn sample_test_coverage_and_depth() {
     let sm = visible(&m, vp);
     let half = smp(0, 0, 0, 0, 32768);
     let hit =
-        sample_test(&sm, ScreenPos::of(11, 8, &half), &half, &mut ops).expect("covered at t=½");
+        uvt_core::sample::test::<Exact, Full>(&sm, ScreenPos::of(11, 8, &half), &half, &mut ops)
+            .expect("covered at t=½");
     same("depth at t=½", &m, 0x600000, hit.depth as i128);
     let (early, late) = (smp(0, 0, 0, 0, 0), smp(0, 0, 0, 0, 65536));
     assert_eq!(
-        sample_test(&sm, ScreenPos::of(14, 10, &early), &early, &mut ops),
+        uvt_core::sample::test::<Exact, Full>(&sm, ScreenPos::of(14, 10, &early), &early, &mut ops),
         None
     );
-    assert!(sample_test(&sm, ScreenPos::of(14, 10, &late), &late, &mut ops).is_some());
+    assert!(uvt_core::sample::test::<Exact, Full>(
+        &sm,
+        ScreenPos::of(14, 10, &late),
+        &late,
+        &mut ops
+    )
+    .is_some());
 }
 
 /// Two triangles sharing the vertical edge x = 0: a sample exactly on it goes to the right-hand
@@ -336,8 +346,8 @@ fn sample_test_fill_rule_shared_edge() {
     let left = stat([top, bot, [-0.5, 0.0, 0.0, 1.0, 0.1]]);
     let right = stat([bot, top, [0.5, 0.0, 0.0, 1.0, 0.1]]);
     let (l, r) = (
-        Setup::unculled_with::<Exact>(&left, vp),
-        Setup::unculled_with::<Exact>(&right, vp),
+        Setup::unculled::<Exact>(&left, vp),
+        Setup::unculled::<Exact>(&right, vp),
     );
     let mut ops = Ops::default();
     // u = 0: the edge stays at x = 0 (pixel column 8, sub-pixel 0); also u = ±1 moves it by
@@ -346,8 +356,8 @@ fn sample_test_fill_rule_shared_edge() {
         let s0 = smp(0, 0, 0, v, 0);
         let pos = ScreenPos::of(8, py, &s0);
         let (hl, hr) = (
-            sample_test(&l, pos, &s0, &mut ops),
-            sample_test(&r, pos, &s0, &mut ops),
+            uvt_core::sample::test::<Exact, Full>(&l, pos, &s0, &mut ops),
+            uvt_core::sample::test::<Exact, Full>(&r, pos, &s0, &mut ops),
         );
         assert!(
             hl.is_none() && hr.is_some(),
@@ -414,15 +424,14 @@ fn tile_render_into_draw_target() {
             Ok(())
         }
     }
-    let prims = uvt_core::demo::prims().unwrap();
-    let pattern = SamplePattern::new(4, 4, &uvt_core::demo::SAMPLES).unwrap();
+    let prims = uvt_demo::prims().unwrap();
+    let pattern = SamplePattern::new(4, 4, &uvt_demo::SAMPLES).unwrap();
     let mut r =
-        Renderer::<Laine2011, 8>::new(Laine2011, uvt_core::demo::viewport().unwrap(), &prims)
-            .unwrap();
+        Renderer::<Laine2011, 8>::new(Laine2011, uvt_demo::viewport().unwrap(), &prims).unwrap();
     let mut img = Img(vec![Rgb888::BLACK; 32 * 32]);
     r.render::<_, 8, 8, 4>(
         &pattern,
-        uvt_core::demo::BOUNDS_TILE,
+        uvt_demo::BOUNDS_TILE,
         Rgb888::new(16, 16, 24),
         &mut img,
     )
@@ -433,5 +442,10 @@ fn tile_render_into_draw_target() {
             h = (h ^ b as u32).wrapping_mul(0x0100_0193);
         }
     }
-    assert_eq!(h, uvt_core::demo::render().unwrap().checksum);
+    assert_eq!(
+        h,
+        uvt_demo::render::<uvt_core::DefaultPrecision, uvt_core::Full, uvt_core::Full>()
+            .unwrap()
+            .checksum
+    );
 }

@@ -6,16 +6,18 @@
 //! dropping a covered sample (brute force over whole viewports). Seed: `UVT_SEED`; more cases
 //! with `UVT_EXTENSIVE=1`.
 
-use uvt_core::demo;
-use uvt_core::sample::planar::planar_test;
-use uvt_core::units::static_only::{
-    specialised, static_setup, static_test, static_tile, StaticOutcome, StaticRenderer,
-};
+use uvt_core::raster::renderer::StaticRenderer;
+use uvt_core::sample::planar;
+use uvt_core::setup::Outcome;
+use uvt_core::units::static_only::cull::static_tile;
+use uvt_core::units::static_only::sample::static_test;
+use uvt_core::units::static_only::setup::static_setup;
 use uvt_core::{
     Bounded, Class, DefocusOnly, Error, Exact, Full, Laine2011, MotionOnly, PixelRect,
     PlanarPrecision, Prim, Renderer, Rgb888, SamplePattern, ScreenPos, Setup, StaticOnly,
     TileBuffer, Triangle, Viewport,
 };
+use uvt_demo as demo;
 use uvt_tests::kinds::{make_static, STATIC_KINDS};
 use uvt_tests::{c, cases, dump, planar_mesh, random_samples, seed, tri, Rng};
 
@@ -147,8 +149,10 @@ fn compare(prims: &[Prim], vp: Viewport, pat: &SamplePattern<'_>, bt: u8) -> Res
         Renderer::<Laine2011, CAP, PlanarPrecision, Full>::new(Laine2011, vp, prims)
             .map_err(|e| format!("full unit: {e}"))?,
     );
-    let mut st =
-        Box::new(StaticRenderer::<CAP>::new(vp, prims).map_err(|e| format!("static unit: {e}"))?);
+    let mut st = Box::new(
+        StaticRenderer::<CAP>::new(Laine2011, vp, prims)
+            .map_err(|e| format!("static unit: {e}"))?,
+    );
     let clear = Rgb888::new(1, 2, 3);
     let mut fa = Box::new(TileBuffer::<8, 8, 4>::new(clear));
     let mut fb = Box::new(TileBuffer::<8, 8, 4>::new(clear));
@@ -168,8 +172,8 @@ fn compare(prims: &[Prim], vp: Viewport, pat: &SamplePattern<'_>, bt: u8) -> Res
 /// M4 program runs) renders the checksum and covered counts of the full unit on the same prims.
 #[test]
 fn demo_prims_render_identically() {
-    let full = demo::render_on_with::<PlanarPrecision, Full, StaticOnly>().expect("full");
-    let st = demo::render_on_with::<PlanarPrecision, StaticOnly, StaticOnly>().expect("static");
+    let full = demo::render::<PlanarPrecision, Full, StaticOnly>().expect("full");
+    let st = demo::render::<PlanarPrecision, StaticOnly, StaticOnly>().expect("static");
     assert_eq!(
         st.checksum, full.checksum,
         "checksum: static {:#010x}, full {:#010x}",
@@ -264,13 +268,14 @@ fn static_test_is_the_planar_test_and_nothing_covered_is_culled() {
         let vp = Viewport::new(8 + rng.below(30) as u16, 8 + rng.below(30) as u16).expect("vp");
         for p in scene(&mut rng, 6, vp, &mut mix) {
             let t = p.tri;
-            let planar = Setup::unculled_with::<PlanarPrecision>(&t, vp);
+            let planar = Setup::unculled::<PlanarPrecision>(&t, vp);
             let mut ops = uvt_core::Ops::default();
-            let st = static_setup(&t, vp, &mut ops).expect("a static triangle is accepted");
+            let st = static_setup(&t, vp, &mut ops);
+            assert_eq!(st.refused(), None, "a static triangle is accepted");
             for py in 0..vp.height() {
                 for px in 0..vp.width() {
                     for pos in probes(&mut rng, px, py) {
-                        let want = planar_test(&planar, pos, &mut uvt_core::Ops::default());
+                        let want = planar::test(&planar, pos, &mut uvt_core::Ops::default());
                         let ctx = || {
                             format!(
                                 "case {case}, UVT_SEED={}, viewport {}x{}, position xs {} ys {} \
@@ -285,7 +290,7 @@ fn static_test_is_the_planar_test_and_nothing_covered_is_culled() {
                                 dump(&t)
                             )
                         };
-                        let StaticOutcome::Visible(s) = st else {
+                        let Outcome::Visible(s) = st else {
                             assert!(want.is_none(), "culled ({st:?}) but covered: {}", ctx());
                             continue;
                         };
@@ -338,7 +343,7 @@ fn static_test_is_the_planar_test_and_nothing_covered_is_culled() {
 fn refuses_every_other_class() {
     let prims = demo::prims().expect("prims");
     let vp = demo::viewport().expect("viewport");
-    let err = StaticRenderer::<8>::new(vp, &prims).err();
+    let err = StaticRenderer::<8>::new(Laine2011, vp, &prims).err();
     assert_eq!(
         err,
         Some(Error::ClassNotInUnit {
@@ -350,7 +355,7 @@ fn refuses_every_other_class() {
     let mut ops = uvt_core::Ops::default();
     let classes: Vec<_> = prims
         .iter()
-        .map(|p| static_setup(&p.tri, vp, &mut ops).err())
+        .map(|p| static_setup(&p.tri, vp, &mut ops).refused())
         .collect();
     assert_eq!(
         classes,
@@ -369,12 +374,13 @@ fn refuses_every_other_class() {
 /// The path is chosen by the types: the static-only unit at a planar precision only.
 #[test]
 fn specialised_only_at_planar_on_the_static_only_unit() {
-    assert!(specialised::<PlanarPrecision, StaticOnly>());
-    assert!(!specialised::<PlanarPrecision, Full>());
-    assert!(!specialised::<PlanarPrecision, MotionOnly>());
-    assert!(!specialised::<PlanarPrecision, DefocusOnly>());
-    assert!(!specialised::<Bounded<16, 16, 16, 20>, StaticOnly>());
-    assert!(!specialised::<Exact, StaticOnly>());
+    use uvt_tests::pipeline_name as name;
+    assert_eq!(name::<PlanarPrecision, StaticOnly>(), "StaticRenderer");
+    assert_eq!(name::<PlanarPrecision, Full>(), "Renderer");
+    assert_eq!(name::<PlanarPrecision, MotionOnly>(), "MotionRenderer");
+    assert_eq!(name::<PlanarPrecision, DefocusOnly>(), "Renderer");
+    assert_eq!(name::<Bounded<16, 16, 16, 20>, StaticOnly>(), "Renderer");
+    assert_eq!(name::<Exact, StaticOnly>(), "Renderer");
 }
 
 /// Domain corners: vertex components at 0, ±1 and ±2^29 raw (the checked maximum) in
@@ -404,15 +410,17 @@ fn domain_corners() {
         let (w, h) = vps[rng.below(vps.len() as u64) as usize];
         let vp = Viewport::new(w, h).expect("viewport");
         let mut ops = uvt_core::Ops::default();
-        let StaticOutcome::Visible(s) = static_setup(&t, vp, &mut ops).expect("static") else {
+        let out = static_setup(&t, vp, &mut ops);
+        assert_eq!(out.refused(), None, "static");
+        let Outcome::Visible(s) = out else {
             continue;
         };
         visible += 1;
-        let planar = Setup::unculled_with::<PlanarPrecision>(&t, vp);
+        let planar = Setup::unculled::<PlanarPrecision>(&t, vp);
         let (xe, ye) = (u32::from(w) * 256 - 1, u32::from(h) * 256 - 1);
         for (xs, ys) in [(0, 0), (xe, 0), (0, ye), (xe, ye), (xe / 2, ye / 2)] {
             let pos = ScreenPos { xs, ys };
-            let want = planar_test(&planar, pos, &mut uvt_core::Ops::default());
+            let want = planar::test(&planar, pos, &mut uvt_core::Ops::default());
             assert_eq!(
                 static_test(&s, pos),
                 want,

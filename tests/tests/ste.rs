@@ -63,7 +63,7 @@ fn static_triangle_hull_culls_pixels_outside() {
         color: Rgb888::new(255, 255, 255),
     }];
     let laine = render_stats(Laine2011, &prims, vp, &pat, 1);
-    let hull = render_stats(uvt_core::bounds::compose::hull(), &prims, vp, &pat, 1);
+    let hull = render_stats(uvt_core::bounds::registry::hull(), &prims, vp, &pat, 1);
     assert_eq!(
         laine.samples_covered, hull.samples_covered,
         "hull culled coverage"
@@ -103,7 +103,7 @@ fn moving_defocused_triangle_lens_slabs_beat_laine() {
         &pat,
         1,
     );
-    let best = render_stats(uvt_core::bounds::compose::best(), &prims, vp, &pat, 1);
+    let best = render_stats(uvt_core::bounds::registry::best(), &prims, vp, &pat, 1);
     assert_eq!(laine.by_class, [0, 0, 0, 1]);
     for s in [&lens, &best] {
         assert_eq!(s.samples_covered, laine.samples_covered, "coverage differs");

@@ -1,26 +1,26 @@
 //! Unit variants (`uvt_core::config::unit`): each variant renders every primitive list it accepts
-//! bit-identically to the full unit at the same precision — every sample's colour and depth,
-//! every pixel's counters and the renderer's `Stats` (operation counts included) — at the
-//! default bounded precision, at `Exact` and at `PlanarPrecision`. Scenes: the built-in benchmark scenes (quick size)
-//! and the default scene of `host/src/scenes.rs`, the demo scene, and seeded random triangles
-//! per class (`UVT_SEED`; more in `UVT_EXTENSIVE=1` mode), each filtered to the classes the
-//! variant accepts. And a primitive a variant cannot handle is refused with
+//! bit-identically to the full unit at the same precision — every sample's colour and depth, every
+//! pixel's counters and the renderer's `Stats` (operation counts included) — at the default bounded
+//! precision, at `Exact` and at `PlanarPrecision`. Scenes: the built-in benchmark scenes (quick
+//! size) and the default scene of `host/src/scene/builtin.rs`, the demo scene, and seeded random
+//! triangles per class (`UVT_SEED`; more in `UVT_EXTENSIVE=1` mode), each filtered to the classes
+//! the variant accepts. And a primitive a variant cannot handle is refused with
 //! `Error::ClassNotInUnit` naming index, class and unit.
 
+use embedded_graphics_core::pixelcolor::RgbColor;
 use rand::SeedableRng;
 use uvt_core::input::SamplePattern;
 use uvt_core::{
-    demo, DefaultPrecision, DefocusOnly, Error, Exact, Full, Laine2011, MotionOnly, PixelStats,
-    PlanarPrecision, Precision, Prim, Renderer, Rgb888, StaticOnly, Stats, TileBuffer, Triangle,
-    Unit, Viewport,
+    DefaultPrecision, DefocusOnly, Error, Exact, Full, General, Laine2011, MotionOnly, PixelStats,
+    PlanarPrecision, Precision, Prim, Raster, Renderer, Rgb888, StaticOnly, Stats, TileBuffer,
+    Triangle, Unit, Viewport,
 };
-use uvt_host::pattern::Pattern;
-use uvt_host::scene::Scene;
-use uvt_host::scenes::{self, Bench, Row};
-
+use uvt_demo as demo;
+use uvt_host::scene::builtin::{self, Bench, Blur};
+use uvt_host::scene::file::Scene;
+use uvt_host::scene::pattern::Pattern;
 /// Most visible triangles a test scene has (the quick game scenes have ≈ 2 600).
 const CAP: usize = 4096;
-
 /// Everything a render produces: per sample (colour, depth) in tile-walk order, per pixel
 /// counters, and the renderer's counters.
 #[derive(PartialEq, Eq)]
@@ -29,16 +29,19 @@ struct Out {
     pixels: Vec<PixelStats>,
     stats: Stats,
 }
-
-/// Render `prims` on unit `U` at precision `P` with Laine2011, 8×8 screen tiles, reading every
-/// sample of every tile back.
+/// Render `prims` with the general pipeline on unit `U` at precision `P` (Laine2011, the unit's
+/// missing effects compiled out; `Renderer` itself runs the static-only and motion-only units'
+/// own pipelines at planar and bounded precisions, `static_unit.rs` and `motion_unit.rs`), 8×8
+/// screen tiles, reading every sample of every tile back.
 fn render<P: Precision, U: Unit, const S: usize>(
     prims: &[Prim],
     vp: Viewport,
     pat: &SamplePattern<'_>,
     bt: u8,
 ) -> Result<Out, Error> {
-    let mut r = Box::new(Renderer::<Laine2011, CAP, P, U>::new(Laine2011, vp, prims)?);
+    let mut r = Box::new(Raster::<General<Laine2011, P, U>, CAP>::new(
+        Laine2011, vp, prims,
+    )?);
     let clear = Rgb888::new(7, 8, 9);
     let mut fb = Box::new(TileBuffer::<8, 8, S>::new(clear));
     let mut out = Out {
@@ -64,8 +67,6 @@ fn render<P: Precision, U: Unit, const S: usize>(
     out.stats = r.stats;
     Ok(out)
 }
-
-use embedded_graphics_core::pixelcolor::RgbColor;
 
 /// `prims` filtered to the classes `U` accepts.
 fn accepted<U: Unit>(prims: &[Prim]) -> Vec<Prim> {
@@ -188,19 +189,19 @@ fn big_stack(f: impl FnOnce() + Send + 'static) {
 fn builtin_scenes_render_identically_on_every_accepting_unit() {
     big_stack(|| {
         for row in [
-            Row::Static,
-            Row::Motion,
-            Row::Motion2,
-            Row::Defocus,
-            Row::Defocus2,
+            Blur::Static,
+            Blur::Motion,
+            Blur::Motion2,
+            Blur::Defocus,
+            Blur::Defocus2,
         ] {
-            let scene = scenes::bench(Bench::Game, row, true);
+            let scene = builtin::bench_scene(Bench::Game, row, true);
             let n = check_scene(&scene);
             // Each row is one class: the matching variants see every triangle, the others none.
             let t = scene.tris.len();
             let want = match row {
-                Row::Static => [t, t, t],
-                Row::Motion | Row::Motion2 => [t, 0, 0],
+                Blur::Static => [t, t, t],
+                Blur::Motion | Blur::Motion2 => [t, 0, 0],
                 _ => [0, t, 0],
             };
             assert_eq!(
@@ -209,7 +210,7 @@ fn builtin_scenes_render_identically_on_every_accepting_unit() {
                 scene.name
             );
         }
-        let scene = scenes::default_scene();
+        let scene = builtin::default_scene();
         assert!(
             scene_prims(&scene)
                 .iter()
@@ -241,7 +242,7 @@ fn demo_scene_renders_identically_on_every_accepting_unit() {
     });
 }
 
-/// Seeded random triangles of every class (kinds 0–5 of `scenes::random_tri`: static,
+/// Seeded random triangles of every class (kinds 0–5 of `builtin::random_tri`: static,
 /// motion, defocus, both, camera-plane crossing, huge), filtered per variant.
 #[test]
 fn random_triangles_render_identically_on_every_accepting_unit() {
@@ -249,14 +250,14 @@ fn random_triangles_render_identically_on_every_accepting_unit() {
         let seed = uvt_tests::seed();
         let mut rng = rand_pcg::Pcg64::seed_from_u64(seed ^ 0x7a21);
         let vp = Viewport::new(40, 24).unwrap();
-        let pattern = Pattern::new(uvt_host::scene::PatternKind::Random, 4, seed);
+        let pattern = Pattern::new(uvt_host::scene::pattern::PatternKind::Random, 4, seed);
         let pat = pattern.core();
         let mut totals = [0usize; 3];
         for case in 0..uvt_tests::cases(6, 60) {
             let prims: Vec<Prim> = (0..24)
                 .map(|i| {
                     let kind = (i % 6) as u32;
-                    let t = scenes::random_tri(&mut rng, kind)
+                    let t = builtin::random_tri(&mut rng, kind)
                         .to_core()
                         .expect("random triangle in the domain");
                     Prim {

@@ -4,7 +4,10 @@
 //! vectors agree with the renderer; and an RTL unit consumes them under Icarus Verilog.
 
 use std::path::{Path, PathBuf};
-use uvt_host::vectors::{self, check::check, format::sha256};
+
+use uvt_host::vectors;
+use uvt_host::vectors::check::check;
+use uvt_host::vectors::format::sha256;
 use uvt_tests::icarus;
 
 fn committed() -> PathBuf {
@@ -31,7 +34,7 @@ fn committed_vectors_match_the_core() {
 #[test]
 fn regenerated_vectors_are_byte_identical() {
     let dir = tempfile::tempdir().unwrap();
-    vectors::export_default(dir.path(), vectors::DEFAULT_SEED).unwrap();
+    vectors::committed::export_default(dir.path(), vectors::committed::DEFAULT_SEED).unwrap();
     for set in SETS {
         for e in std::fs::read_dir(dir.path().join(set)).unwrap() {
             let p = e.unwrap().path();
@@ -47,7 +50,7 @@ fn regenerated_vectors_are_byte_identical() {
     }
     // Deterministic: a second export is identical too.
     let again = tempfile::tempdir().unwrap();
-    vectors::export_default(again.path(), vectors::DEFAULT_SEED).unwrap();
+    vectors::committed::export_default(again.path(), vectors::committed::DEFAULT_SEED).unwrap();
     let a = std::fs::read(dir.path().join("unit/sample_out.hex")).unwrap();
     let b = std::fs::read(again.path().join("unit/sample_out.hex")).unwrap();
     assert_eq!(sha256(&a), sha256(&b));
@@ -140,10 +143,14 @@ fn out_of_domain_input_records_are_refused_with_file_record_and_field() {
 /// Frame vectors' resolved pixels (trace) equal the renderer's image for the same scene.
 #[test]
 fn frame_vectors_agree_with_the_renderer() {
-    use uvt_host::frame::{run, Fixed, RunOpts};
-    for (set, text) in [("frame_a", vectors::FRAME_A), ("frame_b", vectors::FRAME_B)] {
-        let s = uvt_host::scene::Scene::parse(text, set, Path::new(".")).unwrap();
-        let pat = uvt_host::pattern::Pattern::new(s.pattern, s.spp, s.seed);
+    use uvt_host::frame::driver::{run, RunOpts};
+    use uvt_host::frame::pipelines::Fixed;
+    for (set, text) in [
+        ("frame_a", vectors::committed::FRAME_A),
+        ("frame_b", vectors::committed::FRAME_B),
+    ] {
+        let s = uvt_host::scene::file::Scene::parse(text, set, Path::new(".")).unwrap();
+        let pat = uvt_host::scene::pattern::Pattern::new(s.pattern, s.spp, s.seed);
         let core = s.core_tris().unwrap();
         let colors = s.colors();
         let o = RunOpts {

@@ -162,6 +162,23 @@ pub enum Outcome<S = Setup> {
     Refused(Class),
 }
 
+impl<S> Outcome<S> {
+    /// The visible triangle's setup; `None` if culled or refused.
+    pub fn visible(self) -> Option<S> {
+        match self {
+            Outcome::Visible(s) => Some(s),
+            Outcome::Culled(_) | Outcome::Refused(_) => None,
+        }
+    }
+    /// The class of a refused triangle; `None` if the unit accepted it (visible or culled).
+    pub fn refused(&self) -> Option<Class> {
+        match self {
+            Outcome::Refused(c) => Some(*c),
+            Outcome::Visible(_) | Outcome::Culled(_) => None,
+        }
+    }
+}
+
 impl Setup {
     /// The sample-test data of a triangle at precision `P` without culling or bounds
     /// (footprint = whole viewport, span = [0, 1]). For verification only: it lets tests and

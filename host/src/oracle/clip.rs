@@ -21,7 +21,9 @@
 //! core's rounded test may still cover, are tried too); otherwise the polygon's vertex centroid
 //! and the points halfway from it to each vertex. At most [`CORE_TESTS_MAX`] core tests per call.
 
-use uvt_core::{sample_test, Lens, Ops, PixelRect, Sample, ScreenPos, Setup, SubPixel, Time};
+use uvt_core::config::precision::DefaultPrecision;
+use uvt_core::config::unit::Full;
+use uvt_core::{sample, Lens, Ops, PixelRect, Sample, ScreenPos, Setup, SubPixel, Time};
 
 /// Bounding boxes with at most this many grid points are enumerated.
 pub const ENUMERATE_MAX: i64 = 64;
@@ -59,7 +61,9 @@ pub fn sample_at(xs: u32, ys: u32, uvt: [i32; 3]) -> Option<(ScreenPos, Sample)>
 
 /// Whether the core covers grid point (xs, ys) at (u, v, t).
 pub fn core_covers(s: &Setup, xs: u32, ys: u32, uvt: [i32; 3], ops: &mut Ops) -> bool {
-    sample_at(xs, ys, uvt).is_some_and(|(pos, smp)| sample_test(s, pos, &smp, ops).is_some())
+    sample_at(xs, ys, uvt).is_some_and(|(pos, smp)| {
+        sample::test::<DefaultPrecision, Full>(s, pos, &smp, ops).is_some()
+    })
 }
 
 impl<'a> TileCover<'a> {

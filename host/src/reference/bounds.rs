@@ -5,11 +5,11 @@
 
 use uvt_core::PixelRect;
 
-use super::setup::{axis, solve_le, Setup};
+use super::setup::{axis, solve_le, RefSetup};
 
 /// A (u, v, t) box in reals.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct UvtBox {
+pub struct RefBox {
     /// lens u
     pub u: (f64, f64),
     /// lens v
@@ -18,7 +18,7 @@ pub struct UvtBox {
     pub t: (f64, f64),
 }
 
-impl UvtBox {
+impl RefBox {
     /// Whether (u, v, t) is inside (closed).
     pub fn contains(&self, u: f64, v: f64, t: f64) -> bool {
         let i = |r: (f64, f64), x: f64| r.0 <= x && x <= r.1;
@@ -32,7 +32,7 @@ fn meet(a: (f64, f64), b: (f64, f64)) -> Option<(f64, f64)> {
 }
 
 /// s ∈ [0,1] (lens parameter) for which the interpolated box of one axis overlaps [x0, x1].
-fn lens_s(s: &Setup, ax: usize, x0: f64, x1: f64) -> Option<(f64, f64)> {
+fn lens_s(s: &RefSetup, ax: usize, x0: f64, x1: f64) -> Option<(f64, f64)> {
     let b = s.axes[ax];
     let mut r = (0.0, 1.0);
     if let Some([m0, m1]) = b.lo {
@@ -45,7 +45,7 @@ fn lens_s(s: &Setup, ax: usize, x0: f64, x1: f64) -> Option<(f64, f64)> {
 }
 
 /// t interval of one axis for pixel range [x0, x1] inside the footprint.
-fn dual_t(s: &Setup, ax: usize, x0: f64, x1: f64) -> Option<(f64, f64)> {
+fn dual_t(s: &RefSetup, ax: usize, x0: f64, x1: f64) -> Option<(f64, f64)> {
     let (fa, fb) = if ax == 0 {
         (s.footprint.x0 as f64, s.footprint.x1 as f64)
     } else {
@@ -79,8 +79,8 @@ fn dual_t(s: &Setup, ax: usize, x0: f64, x1: f64) -> Option<(f64, f64)> {
 }
 
 /// Laine 2011 bounds of one tile (pixels `cell`, clipped to the footprint).
-pub fn tile(s: &Setup, cell: PixelRect) -> Option<UvtBox> {
-    let mut b = UvtBox {
+pub fn tile(s: &RefSetup, cell: PixelRect) -> Option<RefBox> {
+    let mut b = RefBox {
         u: (-1.0, 1.0),
         v: (-1.0, 1.0),
         t: s.span,

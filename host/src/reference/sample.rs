@@ -8,7 +8,7 @@
 
 use glam::DVec3;
 
-use crate::scene::SceneTri;
+use crate::scene::tri::SceneTri;
 
 /// Vertices `(x, y, w)` and z at (t, u, v).
 pub fn positions(tri: &SceneTri, t: f64, u: f64, v: f64) -> ([DVec3; 3], [f64; 3]) {

@@ -8,11 +8,11 @@
 
 use uvt_core::{Class, Cull, PixelRect};
 
-use crate::scene::SceneTri;
+use crate::scene::tri::SceneTri;
 
 /// Lens-corner boxes of one axis in pixels; `None` = unbounded side.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct AxisBoxes {
+pub struct RefAxisBoxes {
     /// box minimum at lens −1 and +1
     pub lo: Option<[f64; 2]>,
     /// box maximum at lens −1 and +1
@@ -21,7 +21,7 @@ pub struct AxisBoxes {
 
 /// Reference setup result.
 #[derive(Clone, Copy, Debug)]
-pub struct Setup {
+pub struct RefSetup {
     /// class
     pub class: Class,
     /// pixels to visit
@@ -29,7 +29,7 @@ pub struct Setup {
     /// t span in the frustum
     pub span: (f64, f64),
     /// boxes `[x, y]`
-    pub axes: [AxisBoxes; 2],
+    pub axes: [RefAxisBoxes; 2],
     /// the triangle
     pub tri: SceneTri,
     /// viewport (W, H)
@@ -140,7 +140,7 @@ pub fn crosses(pts: &[(f64, f64)], dir: f64) -> bool {
     false
 }
 
-fn boxes(t: &SceneTri, ax: usize, e: f64) -> AxisBoxes {
+fn boxes(t: &SceneTri, ax: usize, e: f64) -> RefAxisBoxes {
     let all: Vec<[f64; 5]> = t.t0.iter().chain(t.t1.iter()).copied().collect();
     let ext = |sgn: f64| {
         all.iter()
@@ -161,20 +161,20 @@ fn boxes(t: &SceneTri, ax: usize, e: f64) -> AxisBoxes {
             hi[k] = hi[k].max(x);
         }
     }
-    AxisBoxes {
+    RefAxisBoxes {
         lo: (front && !crosses(&ext(-1.0), -1.0)).then_some(lo),
         hi: (front && !crosses(&ext(1.0), 1.0)).then_some(hi),
     }
 }
 
-fn range(b: &AxisBoxes, e: f64) -> (u16, u16) {
+fn range(b: &RefAxisBoxes, e: f64) -> (u16, u16) {
     let p0 = b.lo.map_or(0.0, |l| l[0].min(l[1]).floor());
     let p1 = b.hi.map_or(e, |h| h[0].max(h[1]).floor() + 1.0);
     (p0.clamp(0.0, e) as u16, p1.clamp(0.0, e) as u16)
 }
 
 /// Setup one triangle.
-pub fn setup(t: &SceneTri, vp: (u16, u16)) -> Result<Setup, Cull> {
+pub fn setup(t: &SceneTri, vp: (u16, u16)) -> Result<RefSetup, Cull> {
     let class = classify(t);
     let span = span(t).ok_or(Cull::Outside)?;
     if degenerate(t) {
@@ -188,7 +188,7 @@ pub fn setup(t: &SceneTri, vp: (u16, u16)) -> Result<Setup, Cull> {
     if footprint.is_empty() {
         return Err(Cull::Outside);
     }
-    Ok(Setup {
+    Ok(RefSetup {
         class,
         footprint,
         span,

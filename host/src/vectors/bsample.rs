@@ -10,12 +10,17 @@
 
 use rand::{Rng, SeedableRng};
 use serde::Serialize;
+use uvt_core::config::unit::Full;
+use uvt_core::sample::bounded;
 use uvt_core::{
-    bounded_eval, setup_with, BoundedPrecision, Lens, Ops, Outcome, Precision, Sample, ScreenPos,
-    Setup, SubPixel, Time, Triangle, Vertex, Viewport,
+    setup, BoundedPrecision, Lens, Ops, Outcome, Precision, Sample, ScreenPos, Setup, SubPixel,
+    Time, Triangle, Vertex, Viewport,
 };
 
-use super::format::Rec;
+use crate::scene::builtin::random_tri;
+
+use super::cases::named_cases;
+use super::format::{to_text, Rec};
 
 /// A bounded configuration: offset shift and the fraction bits of positions and t/u/v.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
@@ -192,8 +197,8 @@ pub fn run_bsample(w: &[u32]) -> Result<(uvt_core::BoundedEval, Rec), String> {
     let i = dec_bsample_in(w)?;
     // bounded_eval reads the setup's triangle, class and viewport only; the precision type
     // fixes nothing else here (the shift is the record's).
-    let s = Setup::unculled_with::<BoundedPrecision>(&i.tri, i.vp);
-    let e = bounded_eval(&s, i.grid.off, i.pos, &i.sample, &mut Ops::default())
+    let s = Setup::unculled::<BoundedPrecision>(&i.tri, i.vp);
+    let e = bounded::eval(&s, i.grid.off, i.pos, &i.sample, &mut Ops::default())
         .ok_or("bounded_eval refused the record (position or shift out of range)")?;
     let mut r = Rec::default()
         .packed(&[(e.hit.is_some() as i64, 1), (e.det_sign, 2)])
@@ -211,7 +216,7 @@ pub fn run_bsample(w: &[u32]) -> Result<(uvt_core::BoundedEval, Rec), String> {
 /// What a bounded set exercises (counted by the generator, written to the manifest, asserted
 /// non-zero by the tests).
 #[derive(Clone, Debug, Default, Serialize)]
-pub struct Coverage {
+pub struct BCoverage {
     /// records
     pub records: u64,
     /// records per triangle class (static, motion, defocus, both)
@@ -242,7 +247,7 @@ pub struct BSet {
     /// output records
     pub out: Vec<Rec>,
     /// coverage counts
-    pub cov: Coverage,
+    pub cov: BCoverage,
 }
 
 /// w of vertex k at the sample's t, as `bounded.rs` step 1 forms it.
@@ -307,7 +312,7 @@ fn rand_sample(rng: &mut rand_pcg::Pcg64) -> Sample {
 /// The footprint of the setup at precision `P` in 1/256 px, or the whole viewport for a
 /// culled triangle.
 pub(super) fn area<P: Precision>(t: &Triangle, vp: Viewport) -> (u32, u32, u32, u32) {
-    match setup_with::<P>(t, vp, &mut Ops::default()) {
+    match setup::<P, Full>(t, vp, &mut Ops::default()) {
         Outcome::Visible(s) => {
             let f = s.footprint();
             (
@@ -317,7 +322,9 @@ pub(super) fn area<P: Precision>(t: &Triangle, vp: Viewport) -> (u32, u32, u32, 
                 256 * f.y1 as u32,
             )
         }
-        Outcome::Culled(_) => (0, 0, 256 * vp.width() as u32, 256 * vp.height() as u32),
+        Outcome::Culled(_) | Outcome::Refused(_) => {
+            (0, 0, 256 * vp.width() as u32, 256 * vp.height() as u32)
+        }
     }
 }
 
@@ -390,8 +397,9 @@ pub fn unit(tris: &[(Triangle, Viewport)], seed: u64, g: Grid) -> BSet {
             } else {
                 s
             };
-            let probe = Setup::unculled_with::<BoundedPrecision>(&g.tri(t), *vp);
-            let Some(e) = bounded_eval(&probe, g.off, p, &g.sample(&s), &mut Ops::default()) else {
+            let probe = Setup::unculled::<BoundedPrecision>(&g.tri(t), *vp);
+            let Some(e) = bounded::eval(&probe, g.off, p, &g.sample(&s), &mut Ops::default())
+            else {
                 continue;
             };
             let rare_hit = crossing
@@ -439,17 +447,17 @@ pub fn frame(
 /// A unit-level bounded set of configuration `g` (the named edge cases and 48 seeded random
 /// triangles of every kind, inputs rounded onto `g`'s grids), written as `bsample_in.hex` and
 /// `bsample_out.hex` into `dir`: the RTL test's vectors for the unit's other parameter values.
-pub fn export_grid(dir: &std::path::Path, g: Grid, seed: u64) -> anyhow::Result<Coverage> {
+pub fn export_grid(dir: &std::path::Path, g: Grid, seed: u64) -> anyhow::Result<BCoverage> {
     let mut rng = rand_pcg::Pcg64::seed_from_u64(seed);
     let mut tris = Vec::new();
-    for (_, list, side) in super::export::named_cases() {
+    for (_, list, side) in named_cases() {
         let vp = Viewport::new(side, side).map_err(|e| anyhow::anyhow!("{e}"))?;
         tris.extend(list.into_iter().map(|t| (t, vp)));
     }
     for i in 0..48u32 {
         let vp = Viewport::new([8u16, 17, 32, 61][i as usize % 4], 24)
             .map_err(|e| anyhow::anyhow!("{e}"))?;
-        let t = crate::scenes::random_tri(&mut rng, i % 6)
+        let t = random_tri(&mut rng, i % 6)
             .to_core()
             .map_err(|e| anyhow::anyhow!("{e}"))?;
         tris.push((t, vp));
@@ -458,7 +466,7 @@ pub fn export_grid(dir: &std::path::Path, g: Grid, seed: u64) -> anyhow::Result<
     std::fs::create_dir_all(dir)?;
     for (name, recs) in [("bsample_in.hex", &set.inp), ("bsample_out.hex", &set.out)] {
         let p = dir.join(name);
-        std::fs::write(&p, super::format::to_text(recs))
+        std::fs::write(&p, to_text(recs))
             .map_err(|e| anyhow::anyhow!("writing {}: {e}", p.display()))?;
     }
     Ok(set.cov)

@@ -5,22 +5,27 @@ use std::collections::BTreeMap;
 use std::path::Path;
 
 use anyhow::{anyhow, Context, Result};
+use embedded_graphics_core::pixelcolor::RgbColor;
 use rand::{Rng, SeedableRng};
 use serde_json::json;
 use uvt_core::bounds::laine::LaineCoeffs;
+use uvt_core::config::unit::Full;
 use uvt_core::{
     Lens, PixelRect, Rgb888, Sample, Setup, SubPixel, TileBuffer, Time, Triangle, UvtBox, Viewport,
 };
 
-use super::bsample::{BSet, Coverage, Grid};
-use super::format::{layout, sha256, to_text, Rec, FORMAT_VERSION, STAGES};
-use super::stages::*;
-use crate::pattern::Pattern;
-use crate::scene::Scene;
+use crate::scene::builtin::random_tri;
+use crate::scene::file::Scene;
+use crate::scene::pattern::Pattern;
 
+use super::bsample::{BCoverage, BSet, Grid};
+use super::cases::{base_tri, named_cases, tri};
+use super::format::{layout, sha256, to_text, Rec, FORMAT_VERSION, STAGES};
+use super::psample::{PCase, PCoverage, PSet};
+use super::stages::*;
+use super::{bsample, planar_cases, psample};
 /// Samples per pixel of the unit-level resolve records.
 pub const UNIT_RESOLVE_SPP: u32 = 16;
-
 /// A named range of setup records.
 #[derive(Clone, Debug, serde::Serialize)]
 pub struct Case {
@@ -29,7 +34,6 @@ pub struct Case {
     /// first and last setup record (inclusive)
     pub setup_records: [usize; 2],
 }
-
 /// The records of one vector set, by file.
 #[derive(Default)]
 pub struct Set {
@@ -48,13 +52,12 @@ pub struct Set {
     /// triangles and viewports by index (the bounded records' sources)
     tris: Vec<(Triangle, Viewport)>,
     /// what the bounded sample-test records cover
-    pub bcov: Option<Coverage>,
+    pub bcov: Option<BCoverage>,
     /// what the planar sample-test records cover
-    pub pcov: Option<super::psample::Coverage>,
+    pub pcov: Option<PCoverage>,
     /// named groups of the planar records
-    pub pcases: Vec<super::psample::Case>,
+    pub pcases: Vec<PCase>,
 }
-
 impl Set {
     fn push(&mut self, file: &str, r: Rec) {
         self.files.entry(file.into()).or_default().push(r);
@@ -73,7 +76,7 @@ impl Set {
         self.files.insert("bsample_out".into(), b.out);
         self.bcov = Some(b.cov);
     }
-    fn planar(&mut self, p: super::psample::PSet) {
+    fn planar(&mut self, p: PSet) {
         self.files.insert("psample_in".into(), p.inp);
         self.files.insert("psample_out".into(), p.out);
         self.pcov = Some(p.cov);
@@ -119,22 +122,6 @@ impl Set {
         Rgb888::new((w >> 16) as u8, (w >> 8) as u8, w as u8)
     }
 }
-
-fn v(a: [f64; 5]) -> uvt_core::Vertex {
-    let q = crate::scene::quantize;
-    uvt_core::Vertex {
-        x: q(a[0]),
-        y: q(a[1]),
-        z: q(a[2]),
-        w: q(a[3]),
-        coc: q(a[4]),
-    }
-}
-
-fn tri(a: [[f64; 5]; 3], b: [[f64; 5]; 3]) -> Triangle {
-    Triangle::new(a.map(v), b.map(v)).expect("generator triangle inside the domain")
-}
-
 fn random_sample(rng: &mut rand_pcg::Pcg64, b: Option<&UvtBox>) -> Sample {
     let mut pick = |lo: i32, hi: i32| rng.gen_range(lo..=hi);
     let (u, vv, t) = match b {
@@ -154,177 +141,6 @@ fn random_sample(rng: &mut rand_pcg::Pcg64, b: Option<&UvtBox>) -> Sample {
     )
     .expect("drawn inside the domain or a core box")
 }
-
-/// Named edge cases: (name, triangles, viewport side).
-/// A triangle around the centre at w = 1 (the named cases' base).
-fn base_tri() -> [[f64; 5]; 3] {
-    [
-        [-0.5, -0.5, 0.25, 1.0, 0.0],
-        [0.5, -0.5, 0.25, 1.0, 0.0],
-        [0.0, 0.5, 0.25, 1.0, 0.0],
-    ]
-}
-
-pub(super) fn named_cases() -> Vec<(&'static str, Vec<Triangle>, u16)> {
-    let base = [
-        [-0.5, -0.5, 0.25, 1.0, 0.0],
-        [0.5, -0.5, 0.25, 1.0, 0.0],
-        [0.0, 0.5, 0.25, 1.0, 0.0],
-    ];
-    let with = |f: &dyn Fn([f64; 5]) -> [f64; 5]| base.map(f);
-    let m = 8191.9;
-    vec![
-        (
-            "camera-plane crossing during the shutter",
-            vec![
-                tri(
-                    with(&|v| [v[0], v[1], v[2], 1.0, 0.0]),
-                    with(&|v| [v[0] + 0.3, v[1], v[2], -0.5, 0.0]),
-                ),
-                tri(
-                    with(&|v| [v[0], v[1], v[2], 2.0, 0.1]),
-                    [
-                        [-0.5, -0.5, 0.2, -1.0, -0.1],
-                        [0.5, -0.5, 0.2, 1.5, 0.05],
-                        [0.0, 0.5, 0.2, 0.5, 0.0],
-                    ],
-                ),
-            ],
-            32,
-        ),
-        (
-            "a vertex at w = 0",
-            vec![
-                tri(
-                    [
-                        [0.3, 0.2, 0.0, 0.0, 0.0],
-                        [0.5, -0.5, 0.25, 1.0, 0.0],
-                        [-0.5, -0.5, 0.25, 1.0, 0.0],
-                    ],
-                    [
-                        [0.3, 0.2, 0.0, 0.0, 0.0],
-                        [0.5, -0.5, 0.25, 1.0, 0.0],
-                        [-0.5, -0.5, 0.25, 1.0, 0.0],
-                    ],
-                ),
-                tri(
-                    [
-                        [0.0, 0.0, 0.0, 0.0, 0.0],
-                        [0.5, -0.5, 0.25, 1.0, 0.0],
-                        [-0.5, -0.5, 0.25, 1.0, 0.0],
-                    ],
-                    [
-                        [0.2, 0.0, 0.1, 0.5, 0.0],
-                        [0.5, -0.5, 0.25, 1.0, 0.0],
-                        [-0.5, -0.5, 0.25, 1.0, 0.0],
-                    ],
-                ),
-            ],
-            32,
-        ),
-        (
-            "zero area (always, and at one end only)",
-            vec![
-                tri(
-                    [
-                        [-0.5, 0.0, 0.2, 1.0, 0.0],
-                        [0.0, 0.0, 0.2, 1.0, 0.0],
-                        [0.5, 0.0, 0.2, 1.0, 0.0],
-                    ],
-                    [
-                        [-0.5, 0.0, 0.2, 1.0, 0.0],
-                        [0.0, 0.0, 0.2, 1.0, 0.0],
-                        [0.5, 0.0, 0.2, 1.0, 0.0],
-                    ],
-                ),
-                tri(
-                    [
-                        [-0.5, 0.0, 0.2, 1.0, 0.0],
-                        [0.0, 0.0, 0.2, 1.0, 0.0],
-                        [0.5, 0.0, 0.2, 1.0, 0.0],
-                    ],
-                    base,
-                ),
-            ],
-            32,
-        ),
-        (
-            "shared-edge ties (samples exactly on the shared edge x = 0)",
-            vec![
-                tri(
-                    [
-                        [0.0, 0.5, 0.2, 1.0, 0.0],
-                        [0.0, -0.5, 0.2, 1.0, 0.0],
-                        [-0.5, 0.0, 0.2, 1.0, 0.0],
-                    ],
-                    [
-                        [0.0, 0.5, 0.2, 1.0, 0.0],
-                        [0.0, -0.5, 0.2, 1.0, 0.0],
-                        [-0.5, 0.0, 0.2, 1.0, 0.0],
-                    ],
-                ),
-                tri(
-                    [
-                        [0.0, -0.5, 0.2, 1.0, 0.0],
-                        [0.0, 0.5, 0.2, 1.0, 0.0],
-                        [0.5, 0.0, 0.2, 1.0, 0.0],
-                    ],
-                    [
-                        [0.0, -0.5, 0.2, 1.0, 0.0],
-                        [0.0, 0.5, 0.2, 1.0, 0.0],
-                        [0.5, 0.0, 0.2, 1.0, 0.0],
-                    ],
-                ),
-            ],
-            32,
-        ),
-        (
-            "huge motion (across the whole domain)",
-            vec![tri(
-                with(&|v| [v[0] * 10.0 - 8000.0, v[1] * 10.0, v[2], 10.0, 0.0]),
-                with(&|v| [v[0] * 10.0 + 8000.0, v[1] * 10.0, v[2], 10.0, 0.0]),
-            )],
-            64,
-        ),
-        (
-            "huge CoC (|c| at the domain limit)",
-            vec![
-                tri(
-                    with(&|v| [v[0], v[1], v[2], 1.0, m]),
-                    with(&|v| [v[0], v[1], v[2], 1.0, m]),
-                ),
-                tri(
-                    with(&|v| [v[0], v[1], v[2], 1.0, -m]),
-                    with(&|v| [v[0] + 0.5, v[1], v[2], 1.0, m]),
-                ),
-            ],
-            64,
-        ),
-        (
-            "domain limits (every coordinate near ±8192, viewport 2048)",
-            vec![
-                tri(
-                    [[-m, -m, m, m, m], [m, -m, -m, m, -m], [0.0, m, m, m, m]],
-                    [[m, m, -m, m, -m], [-m, m, m, m, m], [0.0, -m, -m, m, -m]],
-                ),
-                tri(
-                    [
-                        [m, m, m, 1.0 / 65536.0, 0.0],
-                        [-m, m, m, m, 0.0],
-                        [m, -m, m, m, 0.0],
-                    ],
-                    [
-                        [m, m, m, 1.0 / 65536.0, 0.0],
-                        [-m, m, m, m, 0.0],
-                        [m, -m, m, m, 0.0],
-                    ],
-                ),
-            ],
-            2048,
-        ),
-    ]
-}
-
 /// The unit-level set.
 pub fn unit(seed: u64) -> Result<Set> {
     let mut rng = rand_pcg::Pcg64::seed_from_u64(seed);
@@ -348,7 +164,7 @@ pub fn unit(seed: u64) -> Result<Set> {
     for i in 0..180u32 {
         let side = [8u16, 17, 32, 61][i as usize % 4];
         let vp = Viewport::new(side, side + 3).map_err(|e| anyhow!("{e}"))?;
-        let t = crate::scenes::random_tri(&mut rng, i % 6)
+        let t = random_tri(&mut rng, i % 6)
             .to_core()
             .map_err(|e| anyhow!("{e}"))?;
         set.tri(&t, vp)?;
@@ -424,7 +240,7 @@ pub fn unit(seed: u64) -> Result<Set> {
         let big = base_tri().map(|v| [v[0], v[1], z, v[3], v[4]]);
         btris.push((tri(big, big), vp32));
     }
-    set.bounded(super::bsample::unit(&btris, seed, Grid::DEFAULT));
+    set.bounded(bsample::unit(&btris, seed, Grid::DEFAULT));
     // Resolve: random colors, and the rounding edges (all 0, all 255, exact halves).
     let colors = |rng: &mut rand_pcg::Pcg64| {
         (0..UNIT_RESOLVE_SPP)
@@ -456,21 +272,21 @@ pub fn unit(seed: u64) -> Result<Set> {
         "the t0 frames of the setup and bounded records' triangles (named cases, seeded random, depth saturation), CoC dropped".to_string(),
         btris
             .iter()
-            .map(|(t, vp)| (super::psample::static_of(t), *vp))
+            .map(|(t, vp)| (psample::static_of(t), *vp))
             .collect::<Vec<_>>(),
     )];
-    for (name, list, side) in super::psample::named_cases() {
+    for (name, list, side) in planar_cases::named_cases() {
         let vp = Viewport::new(side, side).map_err(|e| anyhow!("{e}"))?;
         groups.push((name.into(), list.into_iter().map(|t| (t, vp)).collect()));
     }
     groups.push((
         format!("domain-end random static triangles and viewports (seed {seed})"),
-        super::psample::domain_random(&mut prng, 120),
+        planar_cases::domain_random(&mut prng, 120),
     ));
-    let mut pset = super::psample::unit(&groups, seed);
+    let mut pset = psample::unit(&groups, seed);
     let first = pset.inp.len();
-    super::psample::boundary_search(&mut pset, &mut prng, 3);
-    pset.cases.push(super::psample::Case {
+    psample::boundary_search(&mut pset, &mut prng, 3);
+    pset.cases.push(PCase {
         name: "found by search: unclamped depth at 2^31 − 2, 2^31 − 1, −2^31, −2^31 − 1; f ≥ 63 with |acc| ≥ 2^62".into(),
         triangles: 0,
         records: [first, pset.inp.len()],
@@ -478,7 +294,6 @@ pub fn unit(seed: u64) -> Result<Set> {
     set.planar(pset);
     Ok(set)
 }
-
 /// A frame-level set: every stage of one frame, in the renderer's order (8×8 screen tiles in
 /// raster order; triangles in submission order; bounds tiles aligned to the bounds-tile grid and
 /// clipped to footprint ∩ screen tile), plus `trace.jsonl`.
@@ -506,7 +321,7 @@ pub fn frame(scene: &Scene, scene_json: &str) -> Result<Set> {
                 "span": [s.span().lo() as f64 / 65536.0, s.span().hi() as f64 / 65536.0]})
             }
             None => {
-                let o = uvt_core::setup_with::<uvt_core::Exact>(t, vp, &mut Default::default());
+                let o = uvt_core::setup::<uvt_core::Exact, Full>(t, vp, &mut Default::default());
                 json!({"type": "setup", "tri": i, "culled": match o { uvt_core::Outcome::Culled(uvt_core::Cull::Degenerate) => "degenerate", _ => "outside" }})
             }
         };
@@ -552,7 +367,7 @@ pub fn frame(scene: &Scene, scene_json: &str) -> Result<Set> {
                                     set.sample(i as u32, px, py, smp)?
                                 } else {
                                     // Trace only: the sample test outside the box (must miss).
-                                    uvt_core::sample_test(
+                                    uvt_core::sample::test::<uvt_core::Exact, Full>(
                                         &s,
                                         uvt_core::ScreenPos::of(px, py, smp),
                                         smp,
@@ -587,13 +402,11 @@ pub fn frame(scene: &Scene, scene_json: &str) -> Result<Set> {
         }
     }
     set.trace = Some(trace);
-    let b = super::bsample::frame(&core, vp, &q, 320);
+    let b = bsample::frame(&core, vp, &q, 320);
     set.bounded(b);
-    set.planar(super::psample::frame(&core, vp, &q, 320));
+    set.planar(psample::frame(&core, vp, &q, 320));
     Ok(set)
 }
-
-use embedded_graphics_core::pixelcolor::RgbColor;
 
 /// Write a set into `dir` (created): hex files, manifest, trace and scene. Files are written to
 /// temporary names first and renamed at the end.
@@ -628,7 +441,7 @@ pub fn write(set: &Set, dir: &Path, kind: &str, seed: u64) -> Result<()> {
         "cases": set.cases, "files": files,
         "bsample_config": {"name": Grid::DEFAULT.name(), "grid": Grid::DEFAULT, "core": "uvt_core::bounded_eval with uvt_core::BoundedPrecision = Bounded<16, 16, 16, 20>"},
         "bsample_coverage": set.bcov,
-        "psample_config": {"name": super::psample::CONFIG, "core": "uvt_core::sample::planar::planar_eval on the planar setup of uvt_core::PlanarPrecision = Planar<16, 16, 16, 20> (static triangles; culled ones have no record)"},
+        "psample_config": {"name": psample::CONFIG, "core": "uvt_core::sample::planar::planar_eval on the planar setup of uvt_core::PlanarPrecision = Planar<16, 16, 16, 20> (static triangles; culled ones have no record)"},
         "psample_coverage": set.pcov,
         "psample_cases": set.pcases,
     });

@@ -19,7 +19,7 @@ pub const FORMAT_VERSION: u32 = 3;
 
 /// One field of a record.
 #[derive(Clone, Debug, Serialize, PartialEq, Eq)]
-pub struct Field {
+pub struct RecField {
     /// name
     pub name: String,
     /// first (most significant) word
@@ -34,7 +34,7 @@ pub struct Field {
     pub frac: u32,
 }
 
-impl Field {
+impl RecField {
     /// Words the field spans.
     pub fn words(&self) -> u32 {
         if self.width <= 32 {
@@ -49,7 +49,7 @@ impl Field {
 #[derive(Default)]
 pub struct Layout {
     /// fields in word order
-    pub fields: Vec<Field>,
+    pub fields: Vec<RecField>,
     /// words per record
     pub words: u32,
 }
@@ -57,7 +57,7 @@ pub struct Layout {
 impl Layout {
     /// A whole-word field (or several words for width > 32).
     pub fn w(mut self, name: &str, width: u32, signed: bool, frac: u32) -> Self {
-        let f = Field {
+        let f = RecField {
             name: name.into(),
             word: self.words,
             bit: 0,
@@ -73,7 +73,7 @@ impl Layout {
     pub fn packed(mut self, subs: &[(&str, u32, bool)]) -> Self {
         let mut bit = 0;
         for (name, width, signed) in subs {
-            self.fields.push(Field {
+            self.fields.push(RecField {
                 name: (*name).into(),
                 word: self.words,
                 bit,
@@ -311,7 +311,7 @@ impl Rec {
 
 /// Raw value of a field as a signed big integer (as i128 for ≤ 128 bits; wider fields are
 /// returned as their top 128 bits plus a flag that lower bits exist — enough for messages).
-pub fn field_value(f: &Field, words: &[u32]) -> (i128, Option<u64>) {
+pub fn field_value(f: &RecField, words: &[u32]) -> (i128, Option<u64>) {
     if f.width <= 32 {
         let w = words.get(f.word as usize).copied().unwrap_or(0);
         let raw = (w >> f.bit) as u64
@@ -345,7 +345,7 @@ pub fn field_value(f: &Field, words: &[u32]) -> (i128, Option<u64>) {
 }
 
 /// A field's raw value as hex and decoded, for messages.
-pub fn show_field(f: &Field, words: &[u32]) -> String {
+pub fn show_field(f: &RecField, words: &[u32]) -> String {
     let n = f.words() as usize;
     let hex: Vec<String> = (0..n)
         .map(|i| {
@@ -411,7 +411,7 @@ pub fn sha256(bytes: &[u8]) -> String {
 pub fn layout_md(file: &str, spp: u32) -> String {
     let l = layout(file, spp);
     let mut s = format!("`{file}.hex`: {} words per record\n\n| word | bits (MSB..LSB) | field | signed | frac |\n|---|---|---|---|---|\n", l.words);
-    let mut fields: Vec<&Field> = l.fields.iter().collect();
+    let mut fields: Vec<&RecField> = l.fields.iter().collect();
     fields.sort_by_key(|f| (f.word, std::cmp::Reverse(f.bit)));
     for f in fields {
         let (w, bits) = if f.width > 32 {

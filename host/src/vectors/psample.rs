@@ -16,10 +16,12 @@
 
 use rand::{Rng, SeedableRng};
 use serde::Serialize;
-use uvt_core::sample::planar::{planar_eval, PlanarEval};
+use uvt_core::sample::planar;
+use uvt_core::sample::planar::PlanarEval;
 use uvt_core::setup::planar::PlanarEdges;
 use uvt_core::{Ops, PlanarPrecision, SamplePattern, ScreenPos, Setup, Triangle, Vertex, Viewport};
 
+use super::bsample::area;
 use super::format::Rec;
 
 /// The configuration of the records.
@@ -91,11 +93,11 @@ pub fn run_psample(w: &[u32]) -> Result<(Rec, PlanarEval, Rec), String> {
             vp.height()
         ));
     }
-    let s = Setup::unculled_with::<PlanarPrecision>(&tri, vp);
+    let s = Setup::unculled::<PlanarPrecision>(&tri, vp);
     let pl = s.planar().ok_or(
         "the planar setup culls this triangle (det P' = 0 after the vertex rounding): a culled triangle has no record",
     )?;
-    let e = planar_eval(&s, pos, &mut Ops::default())
+    let e = planar::eval(&s, pos, &mut Ops::default())
         .ok_or("planar_eval refused the record (position outside the viewport)")?;
     let out = Rec::default()
         .packed(&[(e.hit.is_some() as i64, 1)])
@@ -109,7 +111,7 @@ pub fn run_psample(w: &[u32]) -> Result<(Rec, PlanarEval, Rec), String> {
 /// What a planar set exercises (counted by the generator, written to the manifest as
 /// `psample_coverage`, asserted by the tests).
 #[derive(Clone, Debug, Default, Serialize)]
-pub struct Coverage {
+pub struct PCoverage {
     /// records
     pub records: u64,
     /// triangles with records
@@ -162,7 +164,7 @@ pub struct Coverage {
 
 /// A named group of records (`psample_cases` in the manifest).
 #[derive(Clone, Debug, Serialize)]
-pub struct Case {
+pub struct PCase {
     /// what it exercises
     pub name: String,
     /// triangles offered (culled ones included)
@@ -179,16 +181,16 @@ pub struct PSet {
     /// output records
     pub out: Vec<Rec>,
     /// coverage counts
-    pub cov: Coverage,
+    pub cov: PCoverage,
     /// named groups (unit sets)
-    pub cases: Vec<Case>,
+    pub cases: Vec<PCase>,
 }
 
 impl PSet {
     /// Add one record of the static triangle `t`; `None` (nothing added) when the planar setup
     /// culls it.
     pub fn push(&mut self, t: &Triangle, vp: Viewport, pos: ScreenPos) -> Option<PlanarEval> {
-        let pl = Setup::unculled_with::<PlanarPrecision>(t, vp).planar()?;
+        let pl = Setup::unculled::<PlanarPrecision>(t, vp).planar()?;
         let (input, e, out) =
             run_psample(&enc_psample_in(t, vp, &pl, pos).0).expect("generator records are valid");
         let c = &mut self.cov;
@@ -310,7 +312,7 @@ pub fn boundary_search(set: &mut PSet, rng: &mut rand_pcg::Pcg64, per: u64) {
         let Ok(t) = Triangle::new_static(v) else {
             continue;
         };
-        let probe = Setup::unculled_with::<PlanarPrecision>(&t, vp);
+        let probe = Setup::unculled::<PlanarPrecision>(&t, vp);
         let Some(pl) = probe.planar() else { continue };
         let (sw, sh) = (256 * u32::from(vp.width()), 256 * u32::from(vp.height()));
         for k in 0..40 {
@@ -325,7 +327,7 @@ pub fn boundary_search(set: &mut PSet, rng: &mut rand_pcg::Pcg64, per: u64) {
                     ys: rng.gen_range(0..sh),
                 }
             };
-            let Some(e) = planar_eval(&probe, pos, &mut Ops::default()) else {
+            let Some(e) = planar::eval(&probe, pos, &mut Ops::default()) else {
                 continue;
             };
             if e.hit.is_none() {
@@ -362,7 +364,7 @@ pub fn unit(groups: &[(String, Vec<(Triangle, Viewport)>)], seed: u64) -> PSet {
         for (t, vp) in tris {
             unit_tri(&mut set, &mut rng, t, *vp);
         }
-        set.cases.push(Case {
+        set.cases.push(PCase {
             name: name.clone(),
             triangles: tris.len(),
             records: [first, set.inp.len()],
@@ -374,7 +376,7 @@ pub fn unit(groups: &[(String, Vec<(Triangle, Viewport)>)], seed: u64) -> PSet {
 fn unit_tri(set: &mut PSet, rng: &mut rand_pcg::Pcg64, t: &Triangle, vp: Viewport) {
     {
         let vp = &vp;
-        if Setup::unculled_with::<PlanarPrecision>(t, *vp)
+        if Setup::unculled::<PlanarPrecision>(t, *vp)
             .planar()
             .is_none()
         {
@@ -382,7 +384,7 @@ fn unit_tri(set: &mut PSet, rng: &mut rand_pcg::Pcg64, t: &Triangle, vp: Viewpor
             return;
         }
         set.cov.triangles += 1;
-        let (x0, y0, x1, y1) = super::bsample::area::<PlanarPrecision>(t, *vp);
+        let (x0, y0, x1, y1) = area::<PlanarPrecision>(t, *vp);
         let (sw, sh) = (256 * vp.width() as u32, 256 * vp.height() as u32);
         for _ in 0..4 {
             let p = ScreenPos {
@@ -394,7 +396,7 @@ fn unit_tri(set: &mut PSet, rng: &mut rand_pcg::Pcg64, t: &Triangle, vp: Viewpor
         for (xs, ys) in [(0, 0), (sw - 1, 0), (0, sh - 1), (sw - 1, sh - 1)] {
             set.push(t, *vp, ScreenPos { xs, ys });
         }
-        let probe = Setup::unculled_with::<PlanarPrecision>(t, *vp);
+        let probe = Setup::unculled::<PlanarPrecision>(t, *vp);
         let (mut ties, mut hits) = (0, 0);
         for _ in 0..600 {
             if ties >= 3 && hits >= 3 {
@@ -409,7 +411,7 @@ fn unit_tri(set: &mut PSet, rng: &mut rand_pcg::Pcg64, t: &Triangle, vp: Viewpor
                 xs: p.xs & mask,
                 ys: p.ys & mask,
             };
-            let Some(e) = planar_eval(&probe, p, &mut Ops::default()) else {
+            let Some(e) = planar::eval(&probe, p, &mut Ops::default()) else {
                 continue;
             };
             let tie = e.e.contains(&0) && ties < 3;
@@ -432,15 +434,12 @@ pub fn frame(tris: &[Triangle], vp: Viewport, pattern: &SamplePattern<'_>, per_t
         if t.class() != uvt_core::Class::Static {
             continue;
         }
-        if Setup::unculled_with::<PlanarPrecision>(t, vp)
-            .planar()
-            .is_none()
-        {
+        if Setup::unculled::<PlanarPrecision>(t, vp).planar().is_none() {
             set.cov.culled_degenerate += 1;
             continue;
         }
         set.cov.triangles += 1;
-        let (x0, y0, x1, y1) = super::bsample::area::<PlanarPrecision>(t, vp);
+        let (x0, y0, x1, y1) = area::<PlanarPrecision>(t, vp);
         let mut all = Vec::new();
         for py in (y0 / 256) as u16..(y1 / 256) as u16 {
             for px in (x0 / 256) as u16..(x1 / 256) as u16 {
@@ -455,192 +454,4 @@ pub fn frame(tris: &[Triangle], vp: Viewport, pattern: &SamplePattern<'_>, per_t
         }
     }
     set
-}
-
-fn tri(v: [[f64; 4]; 3]) -> Triangle {
-    let q = |a: f64| crate::scene::quantize(a).to_bits();
-    Triangle::new_static(v.map(|p| Vertex::from_bits([q(p[0]), q(p[1]), q(p[2]), q(p[3]), 0])))
-        .expect("named planar case inside the domain")
-}
-
-/// The planar configuration's own named cases: (name, static triangles, viewport side).
-pub fn named_cases() -> Vec<(&'static str, Vec<Triangle>, u16)> {
-    let m = 8191.9;
-    vec![
-        (
-            "slivers: degenerate after the vertex rounding (culled, no record) and thin but kept",
-            vec![
-                // y = 0.1 clip units at w = 8000 rounds to 0 with shift 15: all on y' = 0.
-                tri([
-                    [-4000.0, 0.0, 0.5, 8000.0],
-                    [0.0, 0.1, 0.5, 8000.0],
-                    [4000.0, 0.0, 0.5, 8000.0],
-                ]),
-                tri([
-                    [-4000.0, 0.0, 0.5, 8000.0],
-                    [0.0, 0.3, 0.5, 8000.0],
-                    [4000.0, 0.0, 0.5, 8000.0],
-                ]),
-                tri([
-                    [-0.9, -0.9, 0.5, 1.0],
-                    [0.9, 0.9, 0.5, 1.0],
-                    [0.9, 0.9001, 0.5, 1.0],
-                ]),
-            ],
-            64,
-        ),
-        (
-            "camera-plane crossers and w = 0 vertices (static)",
-            vec![
-                tri([
-                    [-0.5, -0.5, 0.2, -1.0],
-                    [0.5, -0.5, 0.2, 1.5],
-                    [0.0, 0.5, 0.2, 0.5],
-                ]),
-                tri([
-                    [0.3, 0.2, 0.0, 0.0],
-                    [0.5, -0.5, 0.25, 1.0],
-                    [-0.5, -0.5, 0.25, 1.0],
-                ]),
-                tri([
-                    [0.0, 0.0, 0.0, 0.0],
-                    [-0.5, -0.5, 0.25, 1.0],
-                    [0.5, -0.5, 0.25, 1.0],
-                ]),
-                tri([
-                    [-1.0, -1.0, 0.5, -2.0],
-                    [1.0, -1.0, 0.5, -2.0],
-                    [0.0, 1.0, 0.5, 1.0],
-                ]),
-                tri([
-                    [-1.0, -1.0, 0.5, -1.0],
-                    [1.0, -1.0, 0.5, -1.0],
-                    [0.0, 1.0, 0.5, -1.0],
-                ]),
-            ],
-            32,
-        ),
-        (
-            "guard band (vertices far off-screen, |x/w| up to 8000)",
-            vec![
-                tri([
-                    [-8000.0, -0.5, 0.5, 1.0],
-                    [8000.0, -0.5, 0.5, 1.0],
-                    [0.0, 4000.0, 0.5, 1.0],
-                ]),
-                tri([[-m, -m, 0.5, 0.01], [m, -m, 0.5, 0.01], [0.0, m, 0.5, 0.01]]),
-            ],
-            61,
-        ),
-        (
-            "fill-rule ties: shared vertical and horizontal edges through the viewport centre",
-            vec![
-                tri([
-                    [0.0, 0.5, 0.2, 1.0],
-                    [0.0, -0.5, 0.2, 1.0],
-                    [-0.5, 0.0, 0.2, 1.0],
-                ]),
-                tri([
-                    [0.0, -0.5, 0.2, 1.0],
-                    [0.0, 0.5, 0.2, 1.0],
-                    [0.5, 0.0, 0.2, 1.0],
-                ]),
-                tri([
-                    [-0.5, 0.0, 0.2, 1.0],
-                    [0.5, 0.0, 0.2, 1.0],
-                    [0.0, 0.5, 0.2, 1.0],
-                ]),
-                tri([
-                    [0.5, 0.0, 0.2, 1.0],
-                    [-0.5, 0.0, 0.2, 1.0],
-                    [0.0, -0.5, 0.2, 1.0],
-                ]),
-            ],
-            32,
-        ),
-        (
-            "2048-pixel domain corners (coordinates near ±8192, shift 15)",
-            vec![
-                tri([[-m, -m, m, m], [m, -m, -m, m], [0.0, m, m, m]]),
-                tri([[m, m, m, 1.0 / 65536.0], [-m, m, m, m], [m, -m, m, m]]),
-                tri([[-m, -m, -m, m], [m, m, -m, m], [m, -m, m, m]]),
-            ],
-            2048,
-        ),
-        (
-            "saturating depths (z/w beyond ±128) and extreme depth-plane exponents",
-            vec![
-                tri([
-                    [-0.5, -0.5, 8000.0, 1.0],
-                    [0.5, -0.5, 8000.0, 1.0],
-                    [0.0, 0.5, 8000.0, 1.0],
-                ]),
-                tri([
-                    [-0.5, -0.5, -8000.0, 1.0],
-                    [0.5, -0.5, -8000.0, 1.0],
-                    [0.0, 0.5, -8000.0, 1.0],
-                ]),
-                tri([
-                    [-0.5, -0.5, 200.0, 1.0],
-                    [0.5, -0.5, -129.0, 1.0],
-                    [0.0, 0.5, 0.25, 1.0],
-                ]),
-                tri([
-                    [-0.001, -0.001, m, 0.001],
-                    [0.001, -0.001, -m, 0.001],
-                    [0.0, 0.001, m, 0.001],
-                ]),
-            ],
-            1,
-        ),
-        (
-            "depth-plane exponent f >= 63 (z of one LSB on a large triangle)",
-            vec![
-                tri([
-                    [-m, -m, 1.0 / 65536.0, m],
-                    [m, -m, 1.0 / 65536.0, m],
-                    [0.0, m, 1.0 / 65536.0, m],
-                ]),
-                tri([
-                    [-m, -m, -1.0 / 65536.0, m],
-                    [m, m, 1.0 / 65536.0, m],
-                    [m, -m, 0.0, m],
-                ]),
-            ],
-            2048,
-        ),
-    ]
-}
-
-/// Domain-end random static triangles (as the frozen planar contract's test draws them):
-/// coordinates anywhere in ±2^29 raw, or a regular triangle whose NDC corners are random at one
-/// w or at random w of either sign; viewports of side 1, 2048 or random.
-pub fn domain_random(rng: &mut rand_pcg::Pcg64, n: usize) -> Vec<(Triangle, Viewport)> {
-    const LIM: i64 = 1 << 29;
-    let mut out = Vec::new();
-    while out.len() < n {
-        let kind = rng.gen_range(0..3);
-        let w0 = rng.gen_range(1..=LIM);
-        let mut v = [[0i32; 5]; 3];
-        for p in v.iter_mut() {
-            let mut s = |l: i64| rng.gen_range(-l..=l);
-            *p = if kind == 0 {
-                [s(LIM), s(LIM), s(LIM), s(LIM), 0].map(|x| x as i32)
-            } else {
-                let w = if kind == 1 { w0 } else { s(LIM) };
-                let (nx, ny, z) = (s(1 << 16), s(1 << 16), s(LIM));
-                [(nx * w) >> 16, (ny * w) >> 16, z, w, 0].map(|x| x as i32)
-            };
-        }
-        let side = |rng: &mut rand_pcg::Pcg64| match rng.gen_range(0..4) {
-            0 => 2048,
-            1 => 1,
-            _ => rng.gen_range(1..=2048u16),
-        };
-        let vp = Viewport::new(side(rng), side(rng)).expect("sides in 1..=2048");
-        if let Ok(t) = Triangle::new_static(v.map(Vertex::from_bits)) {
-            out.push((t, vp));
-        }
-    }
-    out
 }

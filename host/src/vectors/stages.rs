@@ -4,10 +4,11 @@
 use embedded_graphics_core::pixelcolor::RgbColor;
 use uvt_core::bounds::laine::LaineCoeffs;
 use uvt_core::bounds::strategy::BoundsStrategy;
+use uvt_core::config::unit::Full;
+use uvt_core::sample::exact;
 use uvt_core::{
-    resolve_colors, sample_eval, setup_with, Cull, Exact, Interval, Laine2011, Lens, Ops, Outcome,
-    PixelRect, Rgb888, Sample, ScreenPos, Setup, SubPixel, Time, Triangle, UvtBox, Vertex,
-    Viewport,
+    resolve_colors, setup, Cull, Exact, Interval, Laine2011, Lens, Ops, Outcome, PixelRect, Rgb888,
+    Sample, ScreenPos, Setup, SubPixel, Time, Triangle, UvtBox, Vertex, Viewport,
 };
 
 use super::format::Rec;
@@ -46,11 +47,12 @@ pub fn run_setup(w: &[u32]) -> Result<(Option<(Setup, LaineCoeffs)>, Rec), Strin
     let (tri, vp) = dec_setup_in(w)?;
     let mut ops = Ops::default();
     // The committed vectors are of the exact configuration (`Exact`), whatever the default.
-    let out = setup_with::<Exact>(&tri, vp, &mut ops);
+    let out = setup::<Exact, Full>(&tri, vp, &mut ops);
     let (vis, cull) = match out {
-        Outcome::Visible(s) => (Some((s, Laine2011.prepare(&s, &mut ops))), 0),
+        Outcome::Visible(s) => (Some((s, Laine2011.prepare::<Full>(&s, &mut ops))), 0),
         Outcome::Culled(Cull::Outside) => (None, 1),
         Outcome::Culled(Cull::Degenerate) => (None, 2),
+        Outcome::Refused(_) => unreachable!("the full unit accepts every class"),
     };
     let mut r = Rec::default();
     let Some((s, c)) = &vis else {
@@ -149,7 +151,7 @@ pub fn run_bounds(setups: SetupLookup<'_>, w: &[u32]) -> Result<(Option<UvtBox>,
             "tile {cell:?} is not a non-empty part of the footprint {fp:?}"
         ));
     }
-    let b = Laine2011.tile(&s, &c, cell, &mut Ops::default());
+    let b = Laine2011.tile::<Full>(&s, &c, cell, &mut Ops::default());
     let r = match b {
         Some(b) => Rec::default()
             .packed(&[(1, 1)])
@@ -227,7 +229,7 @@ pub fn run_sample(setups: SetupLookup<'_>, w: &[u32]) -> Result<(Option<i32>, Re
     if px >= s.viewport().width() || py >= s.viewport().height() {
         return Err(format!("pixel ({px},{py}) outside the viewport"));
     }
-    let e = sample_eval(&s, ScreenPos::of(px, py, &smp), &smp, &mut Ops::default());
+    let e = exact::eval::<Full>(&s, ScreenPos::of(px, py, &smp), &smp, &mut Ops::default());
     let mut r = Rec::default()
         .packed(&[(e.hit.is_some() as i64, 1), (e.det.signum() as i64, 2)])
         .i32(e.hit.map_or(0, |h| h.depth));

@@ -1,0 +1,15 @@
+//! Configurations and what they cost: the multiplier model of a configuration's stages, the
+//! unit variants' sample-test cost, the documented error distance d_q of a primitive, and the
+//! planar static configuration. `uvt fit`, `uvt precision`, `uvt units` and `bench-ste` use these.
+//! Its files from the bottom up, each using only files listed before it (and nothing of this
+//! `mod.rs`):
+//!
+//! - [`multipliers`]: hard multipliers (DSP48E1, ECP5) and LUT bits of a configuration's stages;
+//! - [`units`]: the unit variants and their sample-test multipliers at a configuration;
+//! - [`dq`]: the documented error distance d_q of a primitive (uses [`crate::frame::compare`]);
+//! - [`planar_static`]: the planar static configuration `planar-16-16-16-20`.
+
+pub mod dq;
+pub mod multipliers;
+pub mod planar_static;
+pub mod units;

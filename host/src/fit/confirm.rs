@@ -1,0 +1,605 @@
+//! The measuring half of `uvt fit` ([`super::select`] has the selection): the strategy and
+//! tile-size search on the bench machinery's counters, and the confirmation render
+//! — a brute-force pass over every footprint sample (conservativeness of the chosen strategy and
+//! tile size, decisions against the f64 reference, `compare.rs`'s rigorous per-sample check) and
+//! the chosen unit's `uvt_core::Renderer<B, N, P, U>` against the full unit's, sample by sample.
+//!
+//! **Cost of a bounds strategy and tile size** (from the bench machinery's counters, one frame
+//! of the scene at the chosen configuration): `setup ops + tile-bounds ops + per-sample predicate
+//! ops + sample tests × s`, with `s` the counted operations per sample test of that frame times
+//! the sample test's width factor `Σ bit-products / (products · 32 · 32)` of the chosen unit and
+//! configuration (its products in units of a 32 × 32 product; the counters count ≤ 32-bit
+//! operations). Every strategy covers the same samples (bounds are conservative), so the score —
+//! covered samples per unit of cost, i.e. STE per unit of per-test cost — ranks by total cost;
+//! ties go to the earlier strategy of [`crate::bench::strategy::STRATEGIES`] and the smaller tile.
+
+use embedded_graphics_core::pixelcolor::RgbColor;
+use rayon::prelude::*;
+use serde::Serialize;
+use uvt_core::bounds::hyper::Hyper;
+use uvt_core::bounds::lens_time::LensTime;
+use uvt_core::bounds::registry::{best, hull, hull_edge, hull_lens, BEST_SLABS};
+use uvt_core::bounds::strategy::{BoundsStrategy, TileBounds};
+use uvt_core::{
+    Bounded, DefocusOnly, Full, General, Laine2011, MotionOnly, Ops, Outcome, Pipeline, PipelineOf,
+    PixelRect, Prec, Precision, Prim, Raster, Rgb888, SamplePattern, ScreenPos, Select, Setup,
+    StaticOnly, Triangle, Unit,
+};
+
+use crate::bench::strategy::{run_strategy_at, STRATEGIES};
+use crate::frame::compare::{check_sample_eps, eps_of, footprint_union, Rounding};
+use crate::frame::driver::{run, RunOpts};
+use crate::frame::pipelines::Fixed;
+use crate::reference;
+use crate::scene::file::Scene;
+use crate::scene::pattern::Pattern;
+
+use super::select::TILES;
+
+/// Visible setups the confirmation renderer holds (`Renderer<_, CAPACITY>`, on a thread with a
+/// large stack); a scene with more is reported as not confirmed.
+pub const CAPACITY: usize = 4096;
+
+/// Calls `$body` with `$P` bound to the precision of sweep configuration `$name` or of the
+/// planar static configuration (`crate::config::planar_static::NAME`).
+macro_rules! with_config {
+    ($name:expr, $P:ident, $body:expr) => {
+        match $name {
+            "exact-16-16-16" => {
+                type $P = Prec<16, 16, 16>;
+                Some($body)
+            }
+            "bounded-16-16-16-20" => {
+                type $P = Bounded<16, 16, 16, 20>;
+                Some($body)
+            }
+            "bounded-16-16-16-22" => {
+                type $P = Bounded<16, 16, 16, 22>;
+                Some($body)
+            }
+            "bounded-16-16-16-24" => {
+                type $P = Bounded<16, 16, 16, 24>;
+                Some($body)
+            }
+            "bounded-12-12-12-24" => {
+                type $P = Bounded<12, 12, 12, 24>;
+                Some($body)
+            }
+            "bounded-12-12-12-26" => {
+                type $P = Bounded<12, 12, 12, 26>;
+                Some($body)
+            }
+            "bounded-8-8-8-28" => {
+                type $P = Bounded<8, 8, 8, 28>;
+                Some($body)
+            }
+            "planar-16-16-16-20" => {
+                type $P = uvt_core::PlanarPrecision;
+                Some($body)
+            }
+            _ => None,
+        }
+    };
+}
+
+/// Calls `$body` with `$s` bound to the strategy value named `$name` (`bench::STRATEGIES`).
+macro_rules! with_strategy {
+    ($name:expr, $s:ident, $body:expr) => {
+        match $name {
+            "laine2011" => {
+                let $s = Laine2011;
+                Some($body)
+            }
+            "hull" => {
+                let $s = hull();
+                Some($body)
+            }
+            "lens-t" => {
+                let $s = LensTime::<BEST_SLABS>;
+                Some($body)
+            }
+            "hyper" => {
+                let $s = Hyper;
+                Some($body)
+            }
+            "hull+lens-t" => {
+                let $s = hull_lens();
+                Some($body)
+            }
+            "hull+edge-t" => {
+                let $s = hull_edge();
+                Some($body)
+            }
+            "best" => {
+                let $s = best();
+                Some($body)
+            }
+            _ => None,
+        }
+    };
+}
+
+/// One strategy and tile size of the search.
+#[derive(Clone, Debug, Serialize)]
+pub struct StratCost {
+    /// strategy name
+    pub strategy: String,
+    /// bounds-tile size
+    pub tile: u8,
+    /// STE (covered / tested)
+    pub ste: f64,
+    /// samples covered
+    pub covered: u64,
+    /// samples tested
+    pub tested: u64,
+    /// setup ops (incl. the strategy's preparation)
+    pub ops_setup: u64,
+    /// tile-bounds ops
+    pub ops_tile: u64,
+    /// per-sample predicate ops
+    pub ops_predicate: u64,
+    /// counted ops per sample test
+    pub ops_per_test: f64,
+    /// total cost (module docs)
+    pub cost: f64,
+    /// covered samples per unit of cost
+    pub score: f64,
+}
+
+/// Run every strategy at every tile size at configuration `config`; `width` is the sample
+/// test's width factor. `None` for a configuration outside the sweep.
+pub fn search_strategies(
+    scene: &Scene,
+    config: &str,
+    width: f64,
+) -> Option<anyhow::Result<Vec<StratCost>>> {
+    with_config!(config, P, search_at::<P>(scene, width))
+}
+
+fn search_at<P: Precision + Sync>(scene: &Scene, width: f64) -> anyhow::Result<Vec<StratCost>> {
+    let (core, pat) = inputs::<P>(scene)?;
+    let colors = scene.colors();
+    let mut out = Vec::new();
+    for name in STRATEGIES {
+        for tile in TILES {
+            let o = RunOpts {
+                tile,
+                ..RunOpts::for_scene(scene, &colors)
+            };
+            let (r, _) = run_strategy_at::<P>(name, scene.core_viewport(), &core, &pat, &o)
+                .ok_or_else(|| anyhow::anyhow!("unknown strategy {name}"))?;
+            let s = &r.stats;
+            let per_test = s.ops_sample as f64 / s.samples_tested.max(1) as f64;
+            let cost = (s.ops_setup + s.ops_bounds + s.ops_predicate) as f64
+                + s.samples_tested as f64 * per_test * width;
+            out.push(StratCost {
+                strategy: name.to_string(),
+                tile,
+                ste: s.ste(),
+                covered: s.samples_covered,
+                tested: s.samples_tested,
+                ops_setup: s.ops_setup,
+                ops_tile: s.ops_bounds,
+                ops_predicate: s.ops_predicate,
+                ops_per_test: per_test,
+                cost,
+                score: s.samples_covered as f64 / cost.max(1.0),
+            });
+        }
+    }
+    Ok(out)
+}
+
+/// The scene's core triangles and sample table on `P`'s grids.
+pub(crate) fn inputs<P: Precision>(scene: &Scene) -> anyhow::Result<(Vec<Triangle>, Pattern)> {
+    let core = scene
+        .tris
+        .iter()
+        .enumerate()
+        .map(|(i, t)| {
+            t.to_core_with::<P>()
+                .map_err(|e| anyhow::anyhow!("triangles[{i}]: {e}"))
+        })
+        .collect::<anyhow::Result<Vec<_>>>()?;
+    let pat = Pattern::new(scene.pattern, scene.spp, scene.seed).with_tuv(P::TUV_FRAC);
+    Ok((core, pat))
+}
+
+/// What the confirmation measured.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Confirm {
+    /// (triangle, sample) pairs compared with the f64 reference
+    pub compared: u64,
+    /// decisions differing from the reference
+    pub differ: u64,
+    /// covered samples outside the chosen strategy's bounds at the chosen tile size, or culled
+    /// by setup (must be 0)
+    pub violations: u64,
+    /// differing decisions that no input rounding or datapath perturbation explains
+    /// (`compare.rs`'s rigorous check; must be 0)
+    pub beyond_bound: u64,
+    /// differing decisions of primitives with a screen-space bound farther than the tolerance
+    /// from the nearest edge (must be 0)
+    pub beyond_tolerance: u64,
+    /// largest distance (px) of such a difference from the nearest edge
+    pub max_distance_px: f64,
+    /// differing decisions of primitives without a screen-space bound (reported, not bounded)
+    pub differ_unbounded: u64,
+    /// their largest distance (px) from the nearest edge
+    pub max_distance_unbounded_px: f64,
+    /// the chosen unit's renderer produced the full unit's colour at every sample, the same
+    /// resolved image and the same tested / covered counts
+    pub identical_to_full: Option<bool>,
+    /// why the renderer comparison could not run (e.g. a refused class, too many setups)
+    pub renderer_error: Option<String>,
+    /// the chosen unit's image equals the host frame driver's (`crate::frame::driver`) for the same
+    /// configuration, strategy and tile size
+    pub matches_host_driver: Option<bool>,
+    /// samples tested and covered by the chosen unit's renderer
+    pub unit_tested_covered: [u64; 2],
+    /// the unit's specialised renderer at this configuration (`uvt_core::StaticRenderer` for
+    /// the static-only unit at a planar configuration, `uvt_core::MotionRenderer` for the
+    /// motion-only unit at a bounded or planar one — the renderers of the unit's Cortex-M
+    /// programs, with their own tile cull): its name, whether it produced the full unit's
+    /// colour at every sample and the same image, and its tested / covered counts; `None`
+    /// when the unit has none at this configuration
+    pub specialised: Option<Specialised>,
+}
+
+/// The specialised renderer's comparison with the full unit ([`Confirm::specialised`]).
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Specialised {
+    /// `StaticRenderer` or `MotionRenderer`
+    pub renderer: &'static str,
+    /// every sample's colour and the resolved image equal the full unit's (the counters differ:
+    /// its own tile cull tests other samples)
+    pub identical_to_full: Option<bool>,
+    /// why it could not run
+    pub error: Option<String>,
+    /// samples tested and covered by it
+    pub tested_covered: [u64; 2],
+}
+
+impl Confirm {
+    /// Every confirmation holds.
+    pub fn ok(&self) -> bool {
+        self.violations == 0
+            && self.beyond_bound == 0
+            && self.beyond_tolerance == 0
+            && self.identical_to_full == Some(true)
+            && self.matches_host_driver == Some(true)
+            && self
+                .specialised
+                .as_ref()
+                .map_or(true, |x| x.identical_to_full == Some(true))
+    }
+}
+
+/// Confirm the choice (module docs); `bounded[i]`: primitive i has a screen-space bound.
+pub fn confirm(
+    scene: &Scene,
+    config: &str,
+    strategy: &str,
+    tile: u8,
+    unit: &str,
+    tol: f64,
+    bounded: &[bool],
+) -> Option<anyhow::Result<Confirm>> {
+    with_config!(
+        config,
+        P,
+        with_strategy!(
+            strategy,
+            s,
+            confirm_at::<P, _>(scene, s, tile, unit, tol, bounded)
+        )?
+    )
+}
+
+fn confirm_at<P: Precision + Sync, B>(
+    scene: &Scene,
+    strat: B,
+    tile: u8,
+    unit: &str,
+    tol: f64,
+    bounded: &[bool],
+) -> anyhow::Result<Confirm>
+where
+    B: BoundsStrategy + Sync + Send + Copy + 'static,
+    B::Coeffs: Send + Sync,
+    (P, StaticOnly): Select<B>,
+    (P, MotionOnly): Select<B>,
+{
+    let (core, pat) = inputs::<P>(scene)?;
+    let mut c = brute_force::<P, B>(scene, &core, &pat, strat, tile, tol, bounded);
+    // The host driver's image for the same choice.
+    let colors = scene.colors();
+    let o = RunOpts {
+        tile,
+        clear: CLEAR,
+        image: true,
+        ..RunOpts::for_scene(scene, &colors)
+    };
+    let host = run(
+        &Fixed::<_, P>::new_at(strat, scene.core_viewport(), &core, &pat),
+        &pat,
+        &o,
+    );
+    let prims: Vec<Prim> = core
+        .iter()
+        .zip(&colors)
+        .map(|(t, k)| Prim {
+            tri: *t,
+            color: Rgb888::new(k[0], k[1], k[2]),
+        })
+        .collect();
+    let vp = scene.core_viewport();
+    let unit = unit.to_string();
+    // The no-heap renderer keeps CAPACITY setups inline: run on a thread with a large stack.
+    let run = move || -> Result<(Frame, Frame, Option<Specialised>), String> {
+        let full = render::<P, B, Full>(strat, vp, &prims, &pat, tile)?;
+        let mine = match unit.as_str() {
+            "full" => render::<P, B, Full>(strat, vp, &prims, &pat, tile),
+            "motion-only" => render::<P, B, MotionOnly>(strat, vp, &prims, &pat, tile),
+            "defocus-only" => render::<P, B, DefocusOnly>(strat, vp, &prims, &pat, tile),
+            "static-only" => render::<P, B, StaticOnly>(strat, vp, &prims, &pat, tile),
+            u => Err(format!("unknown unit {u}")),
+        }?;
+        let spec = match unit.as_str() {
+            "static-only" => specialised::<P, B, StaticOnly>(strat, vp, &prims, &pat, tile),
+            "motion-only" => specialised::<P, B, MotionOnly>(strat, vp, &prims, &pat, tile),
+            _ => None,
+        };
+        let spec = spec.map(|(renderer, got)| match got {
+            Ok(f) => Specialised {
+                renderer,
+                identical_to_full: Some(f.samples == full.samples && f.image == full.image),
+                error: None,
+                tested_covered: [f.tested, f.covered],
+            },
+            Err(e) => Specialised {
+                renderer,
+                identical_to_full: None,
+                error: Some(e),
+                tested_covered: [0, 0],
+            },
+        });
+        Ok((full, mine, spec))
+    };
+    let joined = std::thread::Builder::new()
+        .stack_size(1 << 30)
+        .spawn(run)
+        .map_err(|e| anyhow::anyhow!("cannot start the renderer thread: {e}"))?
+        .join()
+        .map_err(|_| anyhow::anyhow!("the renderer thread panicked"))?;
+    match joined {
+        Ok((full, mine, spec)) => {
+            c.specialised = spec;
+            c.identical_to_full = Some(full == mine);
+            c.unit_tested_covered = [mine.tested, mine.covered];
+            let img: Vec<[u8; 3]> = mine.image.iter().map(|p| [p.r(), p.g(), p.b()]).collect();
+            c.matches_host_driver = Some(img == host.image);
+        }
+        Err(e) => c.renderer_error = Some(e),
+    }
+    Ok(c)
+}
+
+/// Background of the confirmation renders (as `uvt render`).
+const CLEAR: [u8; 3] = [24, 24, 32];
+
+/// One render of the core renderer: every sample's colour, the resolved image, the counters.
+#[derive(PartialEq)]
+struct Frame {
+    samples: Vec<Rgb888>,
+    image: Vec<Rgb888>,
+    tested: u64,
+    covered: u64,
+}
+
+/// Render with pipeline `L` (`Raster<L, CAPACITY>`), one pass per sample index (the tile
+/// buffer's sample count is a compile-time constant; each pass holds sample `si` of every
+/// pixel, and depth tests never mix samples, so the passes together are the frame), 8×8 screen
+/// tiles.
+fn render_with<L: Pipeline>(
+    strat: L::Bounds,
+    vp: uvt_core::Viewport,
+    prims: &[Prim],
+    pat: &Pattern,
+    tile: u8,
+) -> Result<Frame, String> {
+    let mut r = Raster::<L, CAPACITY>::new(strat, vp, prims).map_err(|e| e.to_string())?;
+    render_passes(vp, pat, |sp, out| {
+        r.render_with::<8, 8, 1>(sp, tile, clear_color(), out)
+    })
+}
+
+/// [`render_with`] the general pipeline on unit `U` (bounds strategy `B`; the unit's missing
+/// effects compiled out).
+fn render<P: Precision, B: BoundsStrategy, U: Unit>(
+    strat: B,
+    vp: uvt_core::Viewport,
+    prims: &[Prim],
+    pat: &Pattern,
+    tile: u8,
+) -> Result<Frame, String> {
+    render_with::<General<B, P, U>>(strat, vp, prims, pat, tile)
+}
+
+/// The renderer a user instantiates for unit `U` at precision `P`, `Renderer<B, CAPACITY, P,
+/// U>`, when it runs the unit's own pipeline (`uvt_core::units::select`): its name and frame;
+/// `None` where it runs the general pipeline.
+fn specialised<P: Precision, B: BoundsStrategy, U: Unit>(
+    strat: B,
+    vp: uvt_core::Viewport,
+    prims: &[Prim],
+    pat: &Pattern,
+    tile: u8,
+) -> Option<(&'static str, Result<Frame, String>)>
+where
+    (P, U): Select<B>,
+{
+    let name = <PipelineOf<B, P, U> as Pipeline>::NAME;
+    (name != <General<B, P, U> as Pipeline>::NAME).then(|| {
+        (
+            name,
+            render_with::<PipelineOf<B, P, U>>(strat, vp, prims, pat, tile),
+        )
+    })
+}
+
+/// [`CLEAR`] as a colour.
+fn clear_color() -> Rgb888 {
+    Rgb888::new(CLEAR[0], CLEAR[1], CLEAR[2])
+}
+
+/// One pass per sample index through `pass(pattern, out)` (a renderer's `render_with` with a
+/// one-sample pattern), collected into a [`Frame`].
+fn render_passes(
+    vp: uvt_core::Viewport,
+    pat: &Pattern,
+    mut pass: impl FnMut(
+        &SamplePattern<'_>,
+        &mut dyn FnMut(u16, u16, Rgb888, uvt_core::PixelStats),
+    ) -> Result<(), uvt_core::Error>,
+) -> Result<Frame, String> {
+    let (w, h) = (usize::from(vp.width()), usize::from(vp.height()));
+    let spp = usize::from(pat.spp);
+    let n = usize::from(pat.block);
+    let clear = Rgb888::new(CLEAR[0], CLEAR[1], CLEAR[2]);
+    let mut samples = vec![clear; w * h * spp];
+    let (mut tested, mut covered) = (0u64, 0u64);
+    for si in 0..spp {
+        let table: Vec<_> = (0..n * n).map(|p| pat.quant[p * spp + si]).collect();
+        let sp = SamplePattern::new(pat.block, 1, &table).map_err(|e| e.to_string())?;
+        pass(&sp, &mut |x, y, c, ps| {
+            samples[(usize::from(y) * w + usize::from(x)) * spp + si] = c;
+            tested += u64::from(ps.tested);
+            covered += u64::from(ps.covered);
+        })
+        .map_err(|e| e.to_string())?;
+    }
+    let image = samples.chunks(spp).map(uvt_core::resolve_colors).collect();
+    Ok(Frame {
+        samples,
+        image,
+        tested,
+        covered,
+    })
+}
+
+/// Every footprint sample of every triangle: decisions against the reference, the rigorous
+/// check, distances, and conservativeness of `strat` at `tile`.
+fn brute_force<P: Precision + Sync, B: BoundsStrategy + Sync>(
+    scene: &Scene,
+    core: &[Triangle],
+    pat: &Pattern,
+    strat: B,
+    tile: u8,
+    tol: f64,
+    bounded: &[bool],
+) -> Confirm
+where
+    B::Coeffs: Send + Sync,
+{
+    let vp = scene.core_viewport();
+    let v = scene.viewport;
+    let rounding = Rounding::at(P::POS_FRAC, P::TUV_FRAC);
+    let bt = u16::from(tile);
+    scene
+        .tris
+        .par_iter()
+        .zip(core.par_iter())
+        .enumerate()
+        .map(|(i, (st, ct))| {
+            let mut c = Confirm::default();
+            let mut ops = Ops::default();
+            let fx = match uvt_core::setup::<P, Full>(ct, vp, &mut ops) {
+                Outcome::Visible(x) => Some((x, strat.prepare::<Full>(&x, &mut ops))),
+                Outcome::Culled(_) | Outcome::Refused(_) => None,
+            };
+            let rf = reference::setup::setup(st, v).ok();
+            let Some(region) = footprint_union(
+                fx.as_ref().map(|x| x.0.footprint()),
+                rf.as_ref().map(|x| x.footprint),
+            ) else {
+                return c;
+            };
+            let full = Setup::unculled::<P>(ct, vp);
+            let eps = eps_of(&full);
+            let has_bound = bounded.get(i).copied().unwrap_or(false);
+            for py in region.y0..region.y1 {
+                for px in region.x0..region.x1 {
+                    let tb = fx.as_ref().and_then(|(x, k)| {
+                        let fp = x.footprint();
+                        if !fp.contains(px, py) {
+                            return None;
+                        }
+                        let cell = PixelRect {
+                            x0: px - px % bt,
+                            y0: py - py % bt,
+                            x1: px - px % bt + bt,
+                            y1: py - py % bt + bt,
+                        }
+                        .intersect(&fp);
+                        // Row → span → tile, as the renderer walks (ops here are not reported).
+                        let row = PixelRect {
+                            x0: fp.x0,
+                            x1: fp.x1,
+                            ..cell
+                        };
+                        let span = strat.row_span(x, k, row, bt, &mut ops);
+                        if !span.admits(&cell) {
+                            return None;
+                        }
+                        strat.span_tile::<uvt_core::Full>(x, k, &span, cell, &mut ops)
+                    });
+                    for si in 0..usize::from(pat.spp) {
+                        let idx = pat.index(px, py, si);
+                        let (q, e) = (&pat.quant[idx], &pat.exact[idx]);
+                        let hf = uvt_core::sample::test::<P, Full>(
+                            &full,
+                            ScreenPos::of(px, py, q),
+                            q,
+                            &mut ops,
+                        );
+                        let (x, y) = (f64::from(px) + e[0], f64::from(py) + e[1]);
+                        let hr = reference::sample::sample_test(st, v, x, y, e[2], e[3], e[4]);
+                        c.compared += 1;
+                        if hf.is_some() != hr.is_some() {
+                            c.differ += 1;
+                            let d =
+                                reference::sample::edge_distance_px(st, v, x, y, e[2], e[3], e[4]);
+                            let k = check_sample_eps(st, v, x, y, e[2], e[3], e[4], &rounding, eps);
+                            c.beyond_bound += u64::from(k.ratio > 1.0);
+                            if has_bound {
+                                c.max_distance_px = c.max_distance_px.max(d);
+                                c.beyond_tolerance += u64::from(d > tol);
+                            } else {
+                                c.differ_unbounded += 1;
+                                c.max_distance_unbounded_px = c.max_distance_unbounded_px.max(d);
+                            }
+                        }
+                        if hf.is_some() {
+                            let (u, vv, t) = (q.u().to_bits(), q.v().to_bits(), q.t().to_bits());
+                            let inside = tb.as_ref().is_some_and(|b| b.admits(u, vv, t, &mut ops));
+                            c.violations += u64::from(!inside);
+                        }
+                    }
+                }
+            }
+            c
+        })
+        .reduce(Confirm::default, |mut a, b| {
+            a.compared += b.compared;
+            a.differ += b.differ;
+            a.violations += b.violations;
+            a.beyond_bound += b.beyond_bound;
+            a.beyond_tolerance += b.beyond_tolerance;
+            a.max_distance_px = a.max_distance_px.max(b.max_distance_px);
+            a.differ_unbounded += b.differ_unbounded;
+            a.max_distance_unbounded_px =
+                a.max_distance_unbounded_px.max(b.max_distance_unbounded_px);
+            a
+        })
+}

@@ -1,0 +1,328 @@
+//! The host's frame driver: runs one pipeline (the fixed-point core or the f64 reference) over a
+//! whole frame with the same tile walk as `uvt_core::Renderer<_, N>` with 8×8 screen tiles, in
+//! parallel over bands of 8 rows (rayon), and measures it.
+//!
+//! Per triangle and band: bounds tiles aligned to the bounds-tile grid, clipped to footprint ∩
+//! band (identical cells to the core renderer's, since 1, 2, 4, 8 divide 8); samples inside the
+//! tile's intervals are tested; covered ones are depth-tested (strictly nearer wins, triangles in
+//! submission order) and resolved with round-half-up like `TileBuffer::resolve`.
+//! Also counted: the bounding-box scan's tests (every sample of the footprint) and the oracle's —
+//! per bounds tile, the samples inside the tightest axis-aligned (u, v, t) box around the samples
+//! the pipeline actually covered there and around [`ORACLE_POINTS`] dense points of the tile's
+//! (x, y, u, v, t) box that the exact triangle covers (dense points are drawn only in tiles where
+//! the pattern covered a sample, and only inside the pipeline's own box). This in-band box is
+//! kept for `uvt render`'s report; it overstates the reachable STE (tiles with no covered pattern
+//! sample count nothing). The axis-aligned limit that `bench-ste` reports is
+//! [`crate::oracle::limit::axis_aligned_limit`]: dense sampling in every tile Laine keeps.
+
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::{Duration, Instant};
+
+use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
+use rayon::prelude::*;
+use uvt_core::bounds::strategy::RowSpan;
+use uvt_core::{Cull, Ops, PixelRect};
+
+use crate::reference;
+use crate::scene::file::Scene;
+use crate::scene::pattern::Pattern;
+use crate::scene::tri::SceneTri;
+
+use super::counters::{Frame, FrameStats};
+use super::pipeline::{FramePipeline, SetupOut};
+
+/// Options of a frame run.
+#[derive(Clone)]
+pub struct RunOpts<'a> {
+    /// viewport (W, H)
+    pub vp: (u16, u16),
+    /// samples per pixel
+    pub spp: u16,
+    /// bounds tile size
+    pub tile: u8,
+    /// triangle colors
+    pub colors: &'a [[u8; 3]],
+    /// background
+    pub clear: [u8; 3],
+    /// keep the image
+    pub image: bool,
+    /// label for the progress bar (shown only when the frame takes more than a second)
+    pub label: &'a str,
+    /// exact triangles for the oracle's dense sampling (`None`: no oracle)
+    pub oracle: Option<&'a [SceneTri]>,
+}
+
+impl<'a> RunOpts<'a> {
+    /// Options for `scene` with its own viewport, spp and tile size, label = its name, black
+    /// background, no image, no oracle; `colors` is `scene.colors()`.
+    pub fn for_scene(scene: &'a Scene, colors: &'a [[u8; 3]]) -> RunOpts<'a> {
+        RunOpts {
+            vp: scene.viewport,
+            spp: scene.spp,
+            tile: scene.tile,
+            colors,
+            clear: [0; 3],
+            image: false,
+            label: &scene.name,
+            oracle: None,
+        }
+    }
+}
+
+/// Dense points per bounds tile for the oracle box (5D Sobol, Owen-scrambled, fixed seed).
+pub const ORACLE_POINTS: u32 = 16;
+
+fn oracle_points() -> Vec<[f64; 5]> {
+    (0..ORACLE_POINTS)
+        .map(|i| [0, 1, 2, 3, 4].map(|d| sobol_burley::sample(i, d, 0x0ac1e) as f64))
+        .collect()
+}
+
+const BAND: u16 = 8;
+
+/// Run a pipeline over a frame.
+pub fn run<P: FramePipeline>(p: &P, pattern: &Pattern, o: &RunOpts<'_>) -> Frame {
+    let start = Instant::now();
+    let n = o.colors.len();
+    // First pass: every triangle's setup, keeping only its outcome and footprint (for the band
+    // lists) and its ops. The setups themselves are not kept: each band recomputes the setups of
+    // its triangles (deterministic, the same values; their ops are counted here, once). Keeping
+    // them cost ~1 KB per triangle for the core (> 800 MiB on the dense scenes at full size),
+    // written once and read back once per frame, most of it fresh pages the kernel had to zero.
+    let setups: Vec<(SetupOut<PixelRect>, Ops)> = (0..n)
+        .into_par_iter()
+        .map(|i| {
+            let mut ops = Ops::default();
+            let s = match p.setup(i, &mut ops) {
+                SetupOut::Visible(s, class) => SetupOut::Visible(p.footprint(&s), class),
+                SetupOut::Culled(c) => SetupOut::Culled(c),
+            };
+            (s, ops)
+        })
+        .collect();
+    let mut stats = FrameStats {
+        triangles: n as u64,
+        ..Default::default()
+    };
+    let (w, h) = (o.vp.0 as usize, o.vp.1 as usize);
+    let bands = h.div_ceil(BAND as usize);
+    let mut bins: Vec<Vec<u32>> = vec![Vec::new(); bands];
+    for (i, (s, ops)) in setups.iter().enumerate() {
+        stats.add_ops(ops);
+        match s {
+            SetupOut::Culled(Cull::Outside) => stats.culled_outside += 1,
+            SetupOut::Culled(Cull::Degenerate) => stats.culled_degenerate += 1,
+            SetupOut::Visible(fp, class) => {
+                stats.by_class[class.index()] += 1;
+                stats.footprint_samples +=
+                    (fp.x1 - fp.x0) as u64 * (fp.y1 - fp.y0) as u64 * o.spp as u64;
+                for bin in &mut bins[(fp.y0 / BAND) as usize..=((fp.y1 - 1) / BAND) as usize] {
+                    bin.push(i as u32);
+                }
+            }
+        }
+    }
+    let done = AtomicUsize::new(0);
+    let bar = ProgressBar::with_draw_target(Some(bands as u64), ProgressDrawTarget::hidden());
+    let shown = std::sync::Once::new();
+    let results: Vec<(FrameStats, Vec<[u8; 3]>, Vec<u32>)> = bins
+        .par_iter()
+        .enumerate()
+        .map(|(b, list)| {
+            let r = band(p, pattern, o, &setups, b as u16, list);
+            done.fetch_add(1, Ordering::Relaxed);
+            if start.elapsed() > Duration::from_secs(1) {
+                shown.call_once(|| {
+                    bar.set_draw_target(ProgressDrawTarget::stderr());
+                    bar.set_style(
+                        ProgressStyle::with_template(
+                            "{msg:>14} [{bar:40}] {pos}/{len} bands {elapsed}",
+                        )
+                        .unwrap_or_else(|_| ProgressStyle::default_bar()),
+                    );
+                    bar.set_message(o.label.to_string());
+                });
+            }
+            bar.set_position(done.load(Ordering::Relaxed) as u64);
+            r
+        })
+        .collect();
+    bar.finish_and_clear();
+    let mut image = if o.image {
+        Vec::with_capacity(w * h)
+    } else {
+        Vec::new()
+    };
+    let mut heat = Vec::with_capacity(w * h);
+    for (s, img, ht) in results {
+        stats.add(&s);
+        image.extend(img);
+        heat.extend(ht);
+    }
+    Frame {
+        stats,
+        image,
+        heat,
+        time: start.elapsed(),
+    }
+}
+
+fn band<P: FramePipeline>(
+    p: &P,
+    pat: &Pattern,
+    o: &RunOpts<'_>,
+    setups: &[(SetupOut<PixelRect>, Ops)],
+    b: u16,
+    list: &[u32],
+) -> (FrameStats, Vec<[u8; 3]>, Vec<u32>) {
+    let (w, s) = (o.vp.0 as usize, o.spp as usize);
+    let y0 = b * BAND;
+    let y1 = (y0 + BAND).min(o.vp.1);
+    let rows = (y1 - y0) as usize;
+    let mut depth = vec![p.far(); w * rows * s];
+    let mut color = vec![o.clear; if o.image { w * rows * s } else { 0 }];
+    let mut heat = vec![0u32; w * rows];
+    let mut st = FrameStats::default();
+    let mut ops = Ops::default();
+    let screen = PixelRect {
+        x0: 0,
+        y0,
+        x1: o.vp.0,
+        y1,
+    };
+    let bt = o.tile as u16;
+    // Only with the oracle: the tested samples of the current cell (for its in-band box count).
+    let oracle = o.oracle.is_some();
+    let mut tested_samples: Vec<usize> = Vec::new();
+    let dense = if o.oracle.is_some() {
+        oracle_points()
+    } else {
+        Vec::new()
+    };
+    for &i in list {
+        let SetupOut::Visible(fp, _) = &setups[i as usize].0 else {
+            continue;
+        };
+        let region = fp.intersect(&screen);
+        if region.is_empty() {
+            continue;
+        }
+        // The setup again (the first pass counted its ops); the same outcome, so visible.
+        let SetupOut::Visible(setup, _) = p.setup(i as usize, &mut Ops::default()) else {
+            continue;
+        };
+        let setup = &setup;
+        let col = o.colors[i as usize];
+        // Row → span → tiles (`uvt_core::walk_tiles`): the same cells in the same order as
+        // `region.cells(bt)`; a cell outside its row's span counts as visited and skipped.
+        // A row starts where a cell's y0 changes; its span is computed once, at its first cell.
+        let mut row_span: Option<RowSpan> = None;
+        for cell in region.cells(bt) {
+            let span = match row_span {
+                Some(sp) if sp.cols().y0 == cell.y0 => sp,
+                _ => {
+                    let row = PixelRect {
+                        x0: region.x0,
+                        x1: region.x1,
+                        ..cell
+                    };
+                    let sp = p.row(setup, row, bt, &mut ops);
+                    row_span = Some(sp);
+                    sp
+                }
+            };
+            st.tiles_visited += 1;
+            let bounds = if span.admits(&cell) {
+                p.bounds(setup, &span, cell, &mut ops)
+            } else {
+                None
+            };
+            let Some(bounds) = bounds else {
+                st.tiles_skipped += 1;
+                continue;
+            };
+            tested_samples.clear();
+            let mut lo = [f64::MAX; 3];
+            let mut hi = [f64::MIN; 3];
+            for py in cell.y0..cell.y1 {
+                for px in cell.x0..cell.x1 {
+                    let pix = (py - y0) as usize * w + px as usize;
+                    // The pixel's samples are consecutive in the table (`Pattern::index`).
+                    let base = pat.index(px, py, 0);
+                    for si in 0..s {
+                        let idx = base + si;
+                        if !p.inside(&bounds, idx, &mut ops) {
+                            continue;
+                        }
+                        st.samples_tested += 1;
+                        heat[pix] += 1;
+                        if oracle {
+                            tested_samples.push(idx);
+                        }
+                        let hit = p.test(setup, px, py, idx, &mut ops);
+                        if let Some(d) = hit {
+                            st.samples_covered += 1;
+                            if oracle {
+                                let uvt = p.uvt(idx);
+                                for k in 0..3 {
+                                    lo[k] = lo[k].min(uvt[k]);
+                                    hi[k] = hi[k].max(uvt[k]);
+                                }
+                            }
+                            let slot = pix * s + si;
+                            if d < depth[slot] {
+                                depth[slot] = d;
+                                if o.image {
+                                    color[slot] = col;
+                                }
+                            }
+                        }
+                    }
+                }
+            }
+            // Oracle: the box also grows around densely sampled covered points of the tile
+            // (exact geometry, f64 ray test), so it approaches the covered region's true box.
+            if let (Some(tris), true) = (o.oracle, lo[0] <= hi[0]) {
+                let r = p.ranges(&bounds);
+                let tri = &tris[i as usize];
+                for d in &dense {
+                    let x = cell.x0 as f64 + d[0] * (cell.x1 - cell.x0) as f64;
+                    let y = cell.y0 as f64 + d[1] * (cell.y1 - cell.y0) as f64;
+                    let uvt = [0, 1, 2].map(|k| r[k].0 + d[k + 2] * (r[k].1 - r[k].0));
+                    if reference::sample::sample_test(tri, o.vp, x, y, uvt[0], uvt[1], uvt[2])
+                        .is_some()
+                    {
+                        for k in 0..3 {
+                            lo[k] = lo[k].min(uvt[k]);
+                            hi[k] = hi[k].max(uvt[k]);
+                        }
+                    }
+                }
+            }
+            st.oracle_tested += tested_samples
+                .iter()
+                .filter(|&&idx| {
+                    let uvt = p.uvt(idx);
+                    (0..3).all(|k| lo[k] <= uvt[k] && uvt[k] <= hi[k])
+                })
+                .count() as u64;
+        }
+    }
+    st.add_ops(&ops);
+    let image = if o.image {
+        (0..w * rows)
+            .map(|pix| {
+                let mut sum = [0u32; 3];
+                for c in &color[pix * s..pix * s + s] {
+                    for k in 0..3 {
+                        sum[k] += c[k] as u32;
+                    }
+                }
+                sum.map(|v| ((v + s as u32 / 2) / s as u32).min(255) as u8)
+            })
+            .collect()
+    } else {
+        Vec::new()
+    };
+    (st, image, heat)
+}

@@ -1,0 +1,233 @@
+//! `uvt render`: one scene with the core (Laine bounds and the bounding-box scan) and with the f64
+//! reference; PNGs, a Markdown and a JSON report. Files are written to temporary names and
+//! renamed, so a failed run leaves no half-written output.
+
+use std::path::{Path, PathBuf};
+
+use anyhow::{anyhow, Context, Result};
+use uvt_core::bounds::strategy::BoundsStrategy;
+use uvt_core::{BboxScan, Laine2011, Precision};
+
+use crate::frame::compare::compare;
+use crate::frame::driver::{run, RunOpts};
+use crate::frame::pipelines::{Fixed, Reference};
+use crate::precision::measure::decisions;
+use crate::scene::file::Scene;
+use crate::scene::pattern::Pattern;
+
+use super::heatmap;
+use super::opts::{precision_from_name, Decisions, RenderOpts, Rendered, Strategy};
+use super::report::{report_json, report_md};
+
+/// Render a scene with all pipelines at the default options.
+pub fn render(scene: &Scene) -> Result<Rendered> {
+    render_with(scene, &RenderOpts::default())
+}
+
+/// Render a scene with all pipelines, the core at `o.precision` with `o.bounds`.
+pub fn render_with(scene: &Scene, o: &RenderOpts) -> Result<Rendered> {
+    use uvt_core::Prec;
+    match o.precision {
+        (6, 6, 2) => with_prec::<Prec<6, 6, 2>>(scene, o),
+        (8, 8, 4) => with_prec::<Prec<8, 8, 4>>(scene, o),
+        (12, 12, 8) => with_prec::<Prec<12, 12, 8>>(scene, o),
+        (16, 16, 16) => with_prec::<uvt_core::DefaultPrecision>(scene, o),
+        (a, b, c) => Err(precision_from_name(&format!("{a}/{b}/{c}")).unwrap_err()),
+    }
+}
+
+fn with_prec<P: Precision + Sync>(scene: &Scene, o: &RenderOpts) -> Result<Rendered> {
+    match o.bounds {
+        Strategy::Laine2011 => pipelines::<P, _>(scene, o, Laine2011),
+        Strategy::Bbox => pipelines::<P, _>(scene, o, BboxScan),
+    }
+}
+
+fn pipelines<P: Precision + Sync, B: BoundsStrategy + Sync>(
+    scene: &Scene,
+    o: &RenderOpts,
+    strat: B,
+) -> Result<Rendered>
+where
+    B::Coeffs: Send + Sync,
+{
+    let say = |k: u32, what: &str| {
+        if o.progress {
+            eprintln!("render: [{k}/4] {what}");
+        }
+    };
+    let default = o.precision == (16, 16, 16);
+    let exact = Pattern::new(scene.pattern, scene.spp, scene.seed);
+    let pattern = if default {
+        exact.clone()
+    } else {
+        exact.with_tuv(P::TUV_FRAC)
+    };
+    let core = scene
+        .tris
+        .iter()
+        .enumerate()
+        .map(|(i, t)| {
+            t.to_core_with::<P>()
+                .map_err(|e| anyhow!("triangles[{i}]: {e}"))
+        })
+        .collect::<Result<Vec<_>>>()?;
+    let vp = scene.core_viewport();
+    let colors = scene.colors();
+    let opts = |label| RunOpts {
+        clear: [24, 24, 32],
+        image: true,
+        label,
+        ..RunOpts::for_scene(scene, &colors)
+    };
+    let fixed = Fixed::<_, P> {
+        prec: std::marker::PhantomData,
+        strat,
+        vp,
+        tris: &core,
+        pattern: &pattern,
+    };
+    say(1, "core with its bounds, and the oracle's dense sampling");
+    let fixed = run(
+        &fixed,
+        &pattern,
+        &RunOpts {
+            oracle: Some(&scene.tris),
+            ..opts("uvt fixed")
+        },
+    );
+    say(2, "f64 reference");
+    let f64 = run(
+        &Reference {
+            vp: scene.viewport,
+            tris: &scene.tris,
+            pattern: &exact,
+        },
+        &pattern,
+        &opts("uvt f64"),
+    );
+    say(3, "core with the bounding-box scan");
+    let bbox = run(
+        &Fixed::<_, P> {
+            prec: std::marker::PhantomData,
+            strat: BboxScan,
+            vp,
+            tris: &core,
+            pattern: &pattern,
+        },
+        &pattern,
+        &opts("bbox scan"),
+    );
+    say(4, "comparing core and reference sample by sample");
+    let coverage = if default {
+        Decisions::from_diff(&compare(&scene.tris, &core, vp, &pattern))
+    } else {
+        let r = decisions::<P>(scene, &core, &pattern);
+        Decisions {
+            compared: r.compared,
+            differ: r.differ,
+            fixed_only: None,
+            f64_only: None,
+            beyond_bound: r.beyond_bound,
+            max_distance_px: r.max_differ_px,
+            max_bound_px: None,
+            violations: Some(r.violations),
+        }
+    };
+    let report = report_json(scene, o, &fixed, &f64, &bbox, &coverage);
+    Ok(Rendered {
+        fixed,
+        f64,
+        bbox,
+        coverage,
+        opts: *o,
+        report,
+    })
+}
+
+fn png(path: &Path, w: u16, h: u16, px: &[[u8; 3]]) -> Result<()> {
+    let buf: Vec<u8> = px.iter().flatten().copied().collect();
+    let img = image::RgbImage::from_raw(w as u32, h as u32, buf).context("image size")?;
+    img.save_with_format(path, image::ImageFormat::Png)
+        .with_context(|| format!("writing {}", path.display()))
+}
+
+/// `dir` is usable as an output directory: absent (it will be created) or a directory.
+pub fn check_out_dir(dir: &Path) -> Result<()> {
+    match std::fs::metadata(dir) {
+        Ok(m) if !m.is_dir() => Err(anyhow!(
+            "--out {}: exists and is not a directory",
+            dir.display()
+        )),
+        _ => Ok(()),
+    }
+}
+
+/// Write all outputs into `dir` (created if needed); temp names, then renames.
+pub fn write(r: &Rendered, scene: &Scene, dir: &Path) -> Result<Vec<PathBuf>> {
+    check_out_dir(dir)?;
+    std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
+    let (w, h) = scene.viewport;
+    let diff: Vec<[u8; 3]> = r
+        .fixed
+        .image
+        .iter()
+        .zip(&r.f64.image)
+        .map(|(a, b)| {
+            let d = (0..3).map(|k| a[k].abs_diff(b[k])).max().unwrap_or(0);
+            if d == 0 {
+                [0, 0, 0]
+            } else {
+                [255, (255 - d.saturating_mul(4)).min(200), 0]
+            }
+        })
+        .collect();
+    let heat = heatmap::draw(w, h, &r.fixed.heat);
+    type Writer<'a> = Box<dyn Fn(&Path) -> Result<()> + 'a>;
+    let files: Vec<(&str, Writer<'_>)> = vec![
+        (
+            "fixed.png",
+            Box::new(|p: &Path| png(p, w, h, &r.fixed.image)),
+        ),
+        ("f64.png", Box::new(|p: &Path| png(p, w, h, &r.f64.image))),
+        ("diff.png", Box::new(|p: &Path| png(p, w, h, &diff))),
+        (
+            "heat.png",
+            Box::new(|p: &Path| {
+                heat.save_with_format(p, image::ImageFormat::Png)
+                    .with_context(|| format!("writing {}", p.display()))
+            }),
+        ),
+        (
+            "report.json",
+            Box::new(|p: &Path| {
+                Ok(std::fs::write(
+                    p,
+                    serde_json::to_string_pretty(&r.report)? + "\n",
+                )?)
+            }),
+        ),
+        (
+            "report.md",
+            Box::new(|p: &Path| Ok(std::fs::write(p, report_md(r))?)),
+        ),
+    ];
+    let mut tmp = Vec::new();
+    for (name, f) in &files {
+        let t = dir.join(format!(".{name}.tmp"));
+        if let Err(e) = f(&t) {
+            for t in tmp.iter().chain(std::iter::once(&t)) {
+                let _ = std::fs::remove_file(t);
+            }
+            return Err(e);
+        }
+        tmp.push(t);
+    }
+    let mut out = Vec::new();
+    for ((name, _), t) in files.iter().zip(tmp) {
+        let dst = dir.join(name);
+        std::fs::rename(&t, &dst).with_context(|| format!("renaming to {}", dst.display()))?;
+        out.push(dst);
+    }
+    Ok(out)
+}
