@@ -277,3 +277,53 @@ fn cortex_m4f_planar_unit_programs_are_bit_exact_with_host() {
         matches_full(&text, &full, &format!("{name} planar program"));
     }
 }
+
+/// The symbol names (raw, mangled) of the unit program `unit` built at `prec` for the
+/// Cortex-M4F (the build of [`build_and_run_at`], read with `readelf`).
+fn symbols_of(unit: &str, prec: Option<&str>) -> String {
+    let _ = build_and_run_at("thumbv7em-none-eabihf", "mps2-an386", "cortex-m4", Some(unit), prec);
+    let elf = root()
+        .join("target")
+        .join("m4-test")
+        .join("thumbv7em-none-eabihf/release/examples/m4_render");
+    let out = Command::new("readelf")
+        .args(["-sW"])
+        .arg(&elf)
+        .output()
+        .expect("readelf not runnable (Debian package binutils)");
+    assert!(out.status.success(), "readelf {}", elf.display());
+    String::from_utf8_lossy(&out.stdout).into_owned()
+}
+
+/// What `Renderer<_, _, P, U>` links is the pipeline `uvt_core::units::select` picks, checked
+/// by symbol in the Cortex-M4F unit programs: the static-only program at the planar
+/// configuration links the static-only unit's code and no bounded sample test, no general
+/// pipeline and no Laine 2011 bounds; the motion-only programs (default and planar) link the
+/// motion-only unit's code and neither the general pipeline nor Laine 2011 bounds. The full
+/// unit's program links the symbols the others must not (so each absence is a real one).
+#[test]
+fn cortex_m4f_unit_programs_link_the_picked_pipeline() {
+    let _one = M4F.lock().unwrap_or_else(|e| e.into_inner());
+    const BOUNDED: &str = "6sample7bounded";
+    const GENERAL: &str = "5units7general";
+    const LAINE: &str = "Laine2011";
+    const STATIC: &str = "5units11static_only";
+    const MOTION: &str = "5units11motion_only";
+    let planar = Some("planar-16-16-16-20");
+    let full = symbols_of("full", planar);
+    for s in [BOUNDED, LAINE] {
+        assert!(full.contains(s), "the full unit's program has no symbol with {s:?}");
+    }
+    let st = symbols_of("static-only", planar);
+    assert!(st.contains(STATIC), "static-only@planar: no static-only unit symbol");
+    for s in [BOUNDED, GENERAL, LAINE, MOTION] {
+        assert!(!st.contains(s), "static-only@planar links a symbol with {s:?}");
+    }
+    for prec in [None, planar] {
+        let mo = symbols_of("motion-only", prec);
+        assert!(mo.contains(MOTION), "motion-only ({prec:?}): no motion-only unit symbol");
+        for s in [GENERAL, LAINE] {
+            assert!(!mo.contains(s), "motion-only ({prec:?}) links a symbol with {s:?}");
+        }
+    }
+}

@@ -11,7 +11,7 @@
 //! - Renderer: `best()` and the same strategy without a row step (every tile face-tested)
 //!   render identical images and identical counters except the bounds and row op counts.
 
-use uvt_core::bounds::hull::HullTiles;
+use uvt_core::bounds::hull::tiles::HullTiles;
 use uvt_core::bounds::registry::{best, hull};
 use uvt_core::config::unit::Full;
 use uvt_core::{

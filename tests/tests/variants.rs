@@ -10,7 +10,7 @@
 use embedded_graphics_core::pixelcolor::RgbColor;
 use rand::SeedableRng;
 use uvt_core::input::SamplePattern;
-use uvt_core::{
+use uvt_core::{Select, 
     DefaultPrecision, DefocusOnly, Error, Exact, Full, General, Laine2011, MotionOnly, PixelStats,
     PlanarPrecision, Precision, Prim, Raster, Renderer, Rgb888, StaticOnly, Stats, TileBuffer,
     Triangle, Unit, Viewport,
@@ -344,4 +344,58 @@ fn a_class_outside_the_unit_is_refused() {
     assert!(
         Renderer::<Laine2011, 4, DefaultPrecision, DefocusOnly>::new(Laine2011, vp, &prims).is_ok()
     );
+}
+
+/// The demo scene: prim 0 static, 1 motion, 2 defocus, 3–5 motion + defocus, 6 static
+/// (culled). On every precision kind — where `Renderer` runs the general pipeline and where it
+/// runs a unit's own (static-only at planar, motion-only at bounded and planar) — each unit
+/// refuses the first prim it cannot handle, naming index, class and unit, before any setup.
+#[test]
+fn renderer_refuses_the_first_class_outside_the_unit() {
+    fn at<P>()
+    where
+        (P, Full): Select<Laine2011>,
+        (P, MotionOnly): Select<Laine2011>,
+        (P, DefocusOnly): Select<Laine2011>,
+        (P, StaticOnly): Select<Laine2011>,
+    {
+        let prims = demo::prims().unwrap();
+        let vp = demo::viewport().unwrap();
+        let err = |e: Error| (e, e.to_string());
+        let st = Renderer::<Laine2011, 8, P, StaticOnly>::new(Laine2011, vp, &prims);
+        let mo = Renderer::<Laine2011, 8, P, MotionOnly>::new(Laine2011, vp, &prims);
+        let de = Renderer::<Laine2011, 8, P, DefocusOnly>::new(Laine2011, vp, &prims);
+        let full = Renderer::<Laine2011, 8, P, Full>::new(Laine2011, vp, &prims);
+        assert!(full.is_ok());
+        let cases = [
+            (
+                st.err(),
+                1,
+                uvt_core::Class::Motion,
+                "static-only",
+                "primitive 1: class motion is not accepted by the static-only unit",
+            ),
+            (
+                mo.err(),
+                2,
+                uvt_core::Class::Defocus,
+                "motion-only",
+                "primitive 2: class defocus is not accepted by the motion-only unit",
+            ),
+            (
+                de.err(),
+                1,
+                uvt_core::Class::Motion,
+                "defocus-only",
+                "primitive 1: class motion is not accepted by the defocus-only unit",
+            ),
+        ];
+        for (got, index, class, unit, msg) in cases {
+            let want = Error::ClassNotInUnit { index, class, unit };
+            assert_eq!(got.map(err), Some((want, msg.to_string())), "unit {unit}");
+        }
+    }
+    at::<DefaultPrecision>();
+    at::<Exact>();
+    at::<PlanarPrecision>();
 }

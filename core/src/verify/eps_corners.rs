@@ -8,7 +8,7 @@
 // Test code: plain operators on values far inside i128; an overflow panics (the failure signal).
 #![allow(clippy::arithmetic_side_effects, clippy::indexing_slicing)]
 
-use crate::bounds::hull::{eps_margin, swept_points};
+use crate::bounds::hull::faces::{eps_margin, swept_points};
 use crate::bounds::hyper::Hyper;
 use crate::bounds::lens_time::LensTime;
 use crate::bounds::registry::{best, hull_lens};

@@ -12,16 +12,16 @@
     clippy::cast_possible_truncation
 )]
 
-use crate::bounds::hull::{
-    eps_margin, face_culls, hull_faces, swept_points, HullCoeffs, HullTiles,
-};
+use uvt_testkit::{cases, seed, Rng};
+
+use crate::bounds::hull::faces::{eps_margin, face_culls, hull_faces, swept_points, HullCoeffs};
+use crate::bounds::hull::tiles::HullTiles;
 use crate::config::precision::{Bounded, Exact, Precision};
 use crate::config::unit::Full;
 use crate::input::{PixelRect, Triangle, Viewport};
 use crate::setup::{setup, Outcome, Setup};
 use crate::stats::Ops;
 use crate::verify::hyper_reference::random_tri;
-use uvt_testkit::{cases, seed, Rng};
 
 /// The faces exactly as `HullCull::prepare` builds them before the per-tile form.
 fn faces(s: &Setup) -> HullCoeffs {
@@ -190,13 +190,13 @@ fn folded_corner_is_exact_at_zero() {
                             256 * i128::from(y0)
                         };
                         for d in [0i128, -1] {
-                            let f = crate::bounds::hull::HullFace {
+                            let f = crate::bounds::hull::faces::HullFace {
                                 a,
                                 b,
                                 c: d - a * xs - b * ys,
                             };
                             let want = face_culls(&f, tile, &mut Ops::default());
-                            let t = crate::bounds::hull::TileFace::of(&f).unwrap();
+                            let t = crate::bounds::hull::tiles::TileFace::of(&f).unwrap();
                             let got = t.culls(tile);
                             assert_eq!(got, want, "face {f:?} tile {tile:?}");
                             at[usize::from(want)] += 1;

@@ -7,6 +7,7 @@
 mod bounded_corners;
 pub(crate) mod bounded_frozen;
 mod corners;
+mod edge_time_corners;
 mod eps_corners;
 mod fast_corners;
 pub(crate) mod hull_reference;
