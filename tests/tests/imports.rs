@@ -8,7 +8,8 @@
 //! resolves to the deepest existing module file (`a/b.rs` or `a/b/mod.rs`); `crate::X` naming a
 //! root re-export resolves to `lib.rs`, and as the root declares every module, any import of it is
 //! a circle (`x.rs -> lib.rs (X) -> x.rs`). `mod x;` declarations are not edges (the root's own
-//! `pub use` facade is not checked either); an edge from a file to itself is ignored. Every circle
+//! `pub use` facade is not checked either), nor is `$crate::…` in a macro body (it resolves where
+//! the macro is expanded); an edge from a file to itself is ignored. Every circle
 //! (strongly connected component, Tarjan) is printed as `a.rs -> b.rs (names a.rs uses) -> … ->
 //! a.rs`, one line per edge of the circle.
 //!
@@ -305,7 +306,10 @@ fn paths(src: &str, file_mod: &[String], modules: &BTreeSet<Vec<String>>) -> Vec
         let Tok::Ident(s) = &t[i] else { return None };
         let after_path = i > 0 && (t[i - 1] == Tok::Path || t[i - 1] == Tok::Punct('.'));
         let visibility = i > 1 && is(t.get(i - 1), "in") && t[i - 2] == Tok::Punct('('); // pub(in crate::x)
-        if after_path || visibility || t.get(i + 1) != Some(&Tok::Path) {
+                                                                                         // `$crate::…` in a macro's body names the crate where the macro is expanded, not a
+                                                                                         // module the defining file imports.
+        let macro_crate = i > 0 && t[i - 1] == Tok::Punct('$');
+        if after_path || visibility || macro_crate || t.get(i + 1) != Some(&Tok::Path) {
             return None;
         }
         let scope = &at[i];

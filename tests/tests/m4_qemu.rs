@@ -281,7 +281,13 @@ fn cortex_m4f_planar_unit_programs_are_bit_exact_with_host() {
 /// The symbol names (raw, mangled) of the unit program `unit` built at `prec` for the
 /// Cortex-M4F (the build of [`build_and_run_at`], read with `readelf`).
 fn symbols_of(unit: &str, prec: Option<&str>) -> String {
-    let _ = build_and_run_at("thumbv7em-none-eabihf", "mps2-an386", "cortex-m4", Some(unit), prec);
+    let _ = build_and_run_at(
+        "thumbv7em-none-eabihf",
+        "mps2-an386",
+        "cortex-m4",
+        Some(unit),
+        prec,
+    );
     let elf = root()
         .join("target")
         .join("m4-test")
@@ -312,18 +318,33 @@ fn cortex_m4f_unit_programs_link_the_picked_pipeline() {
     let planar = Some("planar-16-16-16-20");
     let full = symbols_of("full", planar);
     for s in [BOUNDED, LAINE] {
-        assert!(full.contains(s), "the full unit's program has no symbol with {s:?}");
+        assert!(
+            full.contains(s),
+            "the full unit's program has no symbol with {s:?}"
+        );
     }
     let st = symbols_of("static-only", planar);
-    assert!(st.contains(STATIC), "static-only@planar: no static-only unit symbol");
+    assert!(
+        st.contains(STATIC),
+        "static-only@planar: no static-only unit symbol"
+    );
     for s in [BOUNDED, GENERAL, LAINE, MOTION] {
-        assert!(!st.contains(s), "static-only@planar links a symbol with {s:?}");
+        assert!(
+            !st.contains(s),
+            "static-only@planar links a symbol with {s:?}"
+        );
     }
     for prec in [None, planar] {
         let mo = symbols_of("motion-only", prec);
-        assert!(mo.contains(MOTION), "motion-only ({prec:?}): no motion-only unit symbol");
+        assert!(
+            mo.contains(MOTION),
+            "motion-only ({prec:?}): no motion-only unit symbol"
+        );
         for s in [GENERAL, LAINE] {
-            assert!(!mo.contains(s), "motion-only ({prec:?}) links a symbol with {s:?}");
+            assert!(
+                !mo.contains(s),
+                "motion-only ({prec:?}) links a symbol with {s:?}"
+            );
         }
     }
 }

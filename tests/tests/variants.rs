@@ -10,10 +10,10 @@
 use embedded_graphics_core::pixelcolor::RgbColor;
 use rand::SeedableRng;
 use uvt_core::input::SamplePattern;
-use uvt_core::{Select, 
+use uvt_core::{
     DefaultPrecision, DefocusOnly, Error, Exact, Full, General, Laine2011, MotionOnly, PixelStats,
-    PlanarPrecision, Precision, Prim, Raster, Renderer, Rgb888, StaticOnly, Stats, TileBuffer,
-    Triangle, Unit, Viewport,
+    PlanarPrecision, Precision, Prim, Raster, Renderer, Rgb888, Select, StaticOnly, Stats,
+    TileBuffer, Triangle, Unit, Viewport,
 };
 use uvt_demo as demo;
 use uvt_host::scene::builtin::{self, Bench, Blur};
