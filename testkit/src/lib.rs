@@ -59,6 +59,19 @@ impl Rng {
     pub fn below(&mut self, n: u64) -> u64 {
         self.next_u64() % n.max(1)
     }
+    /// Uniform-ish integer in `[lo, hi]` (`lo ≤ hi`; the remainder of the next 64 bits).
+    pub fn int_range(&mut self, lo: i64, hi: i64) -> i64 {
+        lo + (self.next_u64() % ((hi - lo + 1) as u64)) as i64
+    }
+    /// In `[lo, hi]`, a third of the time one of the ends or the neighbour of `lo`.
+    pub fn biased(&mut self, lo: i64, hi: i64) -> i64 {
+        match self.next_u64() % 9 {
+            0 => lo,
+            1 => hi,
+            2 => (lo + 1).min(hi),
+            _ => self.int_range(lo, hi),
+        }
+    }
     /// In `[-m, m]` with a bias to the ends and to small values (`m ≥ 1`): the domain-corner
     /// draws of the core's tests.
     pub fn signed(&mut self, m: i64) -> i64 {
@@ -76,5 +89,21 @@ impl Rng {
         } else {
             mag
         }
+    }
+}
+
+impl rand_core::RngCore for Rng {
+    fn next_u32(&mut self) -> u32 {
+        (self.next_u64() >> 32) as u32
+    }
+    fn next_u64(&mut self) -> u64 {
+        Rng::next_u64(self)
+    }
+    fn fill_bytes(&mut self, dest: &mut [u8]) {
+        rand_core::impls::fill_bytes_via_next(self, dest)
+    }
+    fn try_fill_bytes(&mut self, dest: &mut [u8]) -> Result<(), rand_core::Error> {
+        self.fill_bytes(dest);
+        Ok(())
     }
 }

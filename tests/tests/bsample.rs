@@ -19,16 +19,7 @@ fn committed() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../vectors")
 }
 
-fn seed() -> u64 {
-    std::env::var("UVT_SEED")
-        .ok()
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(7)
-}
-
-fn extensive() -> bool {
-    std::env::var("UVT_EXTENSIVE").is_ok_and(|v| v == "1")
-}
+use uvt_tests::{extensive, seed};
 
 /// Compile the testbench for configuration `g` into `dir`, with the unit's multipliers tiled
 /// for hard multipliers of `ports` (25 × 18: DSP48E1, the default; 18 × 18: ECP5).

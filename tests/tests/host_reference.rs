@@ -16,14 +16,14 @@ use uvt_host::scene::tri::SceneTri;
 use uvt_tests::*;
 
 /// A random f64 triangle of the generator's kinds (static, moving, defocused, both, crossing).
-fn random_tri(rng: &mut rand_pcg::Pcg64, kind: u64) -> SceneTri {
+fn random_tri(rng: &mut Rng, kind: u64) -> SceneTri {
     uvt_host::scene::builtin::random_tri(rng, kind as u32)
 }
 
 #[test]
 fn reference_bounds_conservative_against_brute_force() {
     let seed = seed();
-    let mut rng = <rand_pcg::Pcg64 as rand::SeedableRng>::seed_from_u64(seed);
+    let mut rng = Rng(seed);
     let vp = (24u16, 20u16);
     let pat = Pattern::new(PatternKind::Random, 8, seed);
     let mut covered = 0;
@@ -80,7 +80,7 @@ fn reference_bounds_conservative_against_brute_force() {
 #[test]
 fn core_agrees_with_reference_beyond_quantization_distance() {
     let seed = seed();
-    let mut rng = <rand_pcg::Pcg64 as rand::SeedableRng>::seed_from_u64(seed ^ 0xabc);
+    let mut rng = Rng(seed ^ 0xabc);
     // The built-in default scene, and random triangles of every kind.
     let s = builtin::default_scene();
     let pat = Pattern::new(s.pattern, s.spp, s.seed);

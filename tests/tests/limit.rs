@@ -230,15 +230,12 @@ fn limit_effort_parses_and_refuses_bad_values() {
 /// from every edge.
 #[test]
 fn clip_edge_model_agrees_with_the_core() {
-    use rand::{Rng, SeedableRng};
+    use rand::Rng as _;
     use uvt_core::bounds::strategy::BoundsStrategy;
     use uvt_host::oracle::clip::{core_covers, TileCover};
     use uvt_host::scene::builtin::{bench_scene, Bench, Blur};
-    let seed: u64 = std::env::var("UVT_SEED")
-        .ok()
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(11);
-    let mut rng = rand_pcg::Pcg64::seed_from_u64(seed);
+    let seed = uvt_tests::seed();
+    let mut rng = uvt_tests::Rng(seed);
     let s = bench_scene(Bench::Dense, Blur::Both2, true);
     let vp = s.core_viewport();
     let (mut agree, mut inside, mut near) = (0u64, 0u64, 0u64);

@@ -8,7 +8,6 @@
 //! `Error::ClassNotInUnit` naming index, class and unit.
 
 use embedded_graphics_core::pixelcolor::RgbColor;
-use rand::SeedableRng;
 use uvt_core::input::SamplePattern;
 use uvt_core::{
     DefaultPrecision, DefocusOnly, Error, Exact, Full, General, Laine2011, MotionOnly, PixelStats,
@@ -248,7 +247,7 @@ fn demo_scene_renders_identically_on_every_accepting_unit() {
 fn random_triangles_render_identically_on_every_accepting_unit() {
     big_stack(|| {
         let seed = uvt_tests::seed();
-        let mut rng = rand_pcg::Pcg64::seed_from_u64(seed ^ 0x7a21);
+        let mut rng = uvt_tests::Rng(seed ^ 0x7a21);
         let vp = Viewport::new(40, 24).unwrap();
         let pattern = Pattern::new(uvt_host::scene::pattern::PatternKind::Random, 4, seed);
         let pat = pattern.core();

@@ -207,39 +207,16 @@ mod tests {
     use crate::setup::Setup;
     use crate::stats::Ops;
 
-    /// splitmix64.
-    struct Rng(u64);
-    impl Rng {
-        fn next(&mut self) -> u64 {
-            self.0 = self.0.wrapping_add(0x9e37_79b9_7f4a_7c15);
-            let mut z = self.0;
-            z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
-            z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
-            z ^ (z >> 31)
-        }
-        /// Uniform in [lo, hi].
-        fn range(&mut self, lo: i64, hi: i64) -> i64 {
-            lo + (self.next() % ((hi - lo + 1) as u64)) as i64
-        }
-        /// In [lo, hi], a third of the time one of the ends or a neighbour of them.
-        fn biased(&mut self, lo: i64, hi: i64) -> i64 {
-            match self.next() % 9 {
-                0 => lo,
-                1 => hi,
-                2 => (lo + 1).min(hi),
-                _ => self.range(lo, hi),
-            }
-        }
-    }
+    use uvt_testkit::Rng;
 
     const LIM: i64 = 1 << 29;
     const ONE: i64 = 1 << 16;
 
     fn viewport(r: &mut Rng) -> Viewport {
-        let mut side = || match r.next() % 4 {
+        let mut side = || match r.next_u64() % 4 {
             0 => 1,
             1 => 2048,
-            _ => r.range(1, 2048) as u16,
+            _ => r.int_range(1, 2048) as u16,
         };
         Viewport::new(side(), side()).unwrap()
     }
@@ -260,20 +237,20 @@ mod tests {
     /// rare orientation path, depth saturation).
     #[allow(clippy::needless_range_loop)]
     fn triangle(r: &mut Rng, g: (f64, f64)) -> Triangle {
-        let (motion, defocus) = (r.next() % 2 == 0, r.next() % 2 == 0);
-        let wide = r.next() % 2 == 0;
+        let (motion, defocus) = (r.next_u64() % 2 == 0, r.next_u64() % 2 == 0);
+        let wide = r.next_u64() % 2 == 0;
         let mut ends = [[[0i32; 5]; 3]; 2];
-        let size = [ONE / 64, ONE / 4, 4 * ONE][r.next() as usize % 3];
+        let size = [ONE / 64, ONE / 4, 4 * ONE][r.next_u64() as usize % 3];
         for k in 0..3 {
             let v0 = if wide {
                 [0; 5].map(|_| r.biased(-LIM, LIM))
             } else {
-                let w = r.range(-ONE, 8 * ONE);
-                let x = (g.0 * w as f64) as i64 + r.range(-size, size);
-                let y = (g.1 * w as f64) as i64 + r.range(-size, size);
-                let z = [r.range(-2 * w.abs(), 2 * w.abs()), r.biased(-LIM, LIM)]
-                    [r.next() as usize % 2];
-                [x, y, z, w, r.range(-ONE / 8, ONE / 8)]
+                let w = r.int_range(-ONE, 8 * ONE);
+                let x = (g.0 * w as f64) as i64 + r.int_range(-size, size);
+                let y = (g.1 * w as f64) as i64 + r.int_range(-size, size);
+                let z = [r.int_range(-2 * w.abs(), 2 * w.abs()), r.biased(-LIM, LIM)]
+                    [r.next_u64() as usize % 2];
+                [x, y, z, w, r.int_range(-ONE / 8, ONE / 8)]
             };
             let mut v1 = v0;
             if motion {
@@ -281,7 +258,7 @@ mod tests {
                     *f = if wide {
                         r.biased(-LIM, LIM)
                     } else {
-                        (*f + r.range(-ONE / 2, ONE / 2)).clamp(-LIM, LIM)
+                        (*f + r.int_range(-ONE / 2, ONE / 2)).clamp(-LIM, LIM)
                     };
                 }
             }
@@ -350,10 +327,10 @@ mod tests {
             );
             let tri = triangle(&mut r, g);
             let setup = Setup::unculled::<DefaultPrecision>(&tri, vp);
-            let shift = if r.next() % 2 == 0 {
+            let shift = if r.next_u64() % 2 == 0 {
                 20
             } else {
-                r.range(19, 33) as u32
+                r.int_range(19, 33) as u32
             };
             let old = frozen_eval(&setup, shift, pos, &s, &mut Ops::default());
             let new = bounded::eval(&setup, shift, pos, &s, &mut Ops::default());
@@ -382,14 +359,7 @@ mod tests {
     }
 
     fn seed() -> u64 {
-        std::env::var("UVT_SEED")
-            .ok()
-            .and_then(|s| s.parse().ok())
-            .unwrap_or_else(|| {
-                std::time::SystemTime::now()
-                    .duration_since(std::time::UNIX_EPOCH)
-                    .map_or(1, |d| d.as_nanos() as u64)
-            })
+        uvt_testkit::seed()
     }
 
     /// The fixed-seed hash of the frozen copy's outputs, committed: it pins the contract (a', b',
@@ -418,11 +388,7 @@ mod tests {
             "{mix:?}"
         );
         let seed = seed();
-        let cases = if std::env::var("UVT_EXTENSIVE").is_ok_and(|v| v == "1") {
-            5_000_000
-        } else {
-            100_000
-        };
+        let cases = uvt_testkit::cases(100_000, 5_000_000);
         let (_, mix) = compare(seed, cases);
         println!("seed {seed}: {mix:?}");
     }
@@ -478,12 +444,12 @@ mod tests {
             }
         }
         for _ in 0..200_000 {
-            let den = (r.next() >> (9 + r.next() % 54)).max(1) as i64;
+            let den = (r.next_u64() >> (9 + r.next_u64() % 54)).max(1) as i64;
             let lim = 128 * den - 1;
-            let num = match r.next() % 4 {
+            let num = match r.next_u64() % 4 {
                 0 => r.biased(-lim, lim),
-                1 => r.range(-den, den),
-                _ => r.range(-lim, lim) >> (r.next() % 40),
+                1 => r.int_range(-den, den),
+                _ => r.int_range(-lim, lim) >> (r.next_u64() % 40),
             };
             check(num, den);
         }

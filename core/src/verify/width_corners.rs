@@ -73,17 +73,7 @@ fn verify(t: &Table, seen: &Seen, narrow: Option<&str>) -> Vec<String> {
 }
 
 fn seed() -> u64 {
-    std::env::var("UVT_SEED")
-        .ok()
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(0x5eed_0010)
-}
-
-fn xorshift(s: &mut u64) -> u64 {
-    *s ^= *s << 13;
-    *s ^= *s >> 7;
-    *s ^= *s << 17;
-    *s
+    uvt_testkit::seed()
 }
 
 /// Hand-picked extreme triangles and seeded random ones whose every field is an extreme raw
@@ -108,11 +98,11 @@ fn triangles(seed: u64, n: usize) -> Vec<Triangle> {
     .flatten()
     .collect();
     let vals = [LIM, -LIM, LIM - 1, 1 - LIM, 1, -1, 0];
-    let mut s = seed | 1;
+    let mut rng = uvt_testkit::Rng(seed);
     while out.len() < n {
         let mut v = [[[0i32; 5]; 3]; 2];
         for f in v.iter_mut().flatten().flatten() {
-            *f = vals[(xorshift(&mut s) % vals.len() as u64) as usize];
+            *f = vals[(rng.next_u64() % vals.len() as u64) as usize];
         }
         if let Some(t) = mk(v[0], v[1]) {
             out.push(t);
@@ -314,11 +304,7 @@ fn drive_bounded(n: usize) -> BTreeMap<u32, Seen> {
 }
 
 fn n_random() -> usize {
-    if std::env::var("UVT_EXTENSIVE").is_ok_and(|v| v == "1") {
-        2000
-    } else {
-        60
-    }
+    uvt_testkit::cases(60, 2000) as usize
 }
 
 #[test]
