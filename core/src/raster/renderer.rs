@@ -63,6 +63,9 @@ impl<L: Pipeline, const N: usize> Raster<L, N> {
     /// primitive's class is not accepted by the unit — every class is checked before any setup
     /// — or with [`Error::TooManyTriangles`] if more than `N` triangles are visible. No renderer
     /// is returned on an error.
+    // Inlined into the caller, which holds the renderer: out of line its frame would hold a
+    // second copy of every entry while the result is returned (the Cortex-M programs' peak stack).
+    #[inline(always)]
     pub fn new(bounds: L::Bounds, vp: Viewport, prims: &[Prim]) -> Result<Self, Error> {
         for (index, p) in prims.iter().enumerate() {
             let class = p.tri.class();
