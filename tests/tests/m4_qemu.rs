@@ -1,4 +1,4 @@
-//! The core on both emulated thumbv7 profiles: `demo/examples/m4_render.rs` is built for
+//! The core on both emulated thumbv7 profiles: `demo/examples/m4_render/main.rs` is built for
 //! `thumbv7em-none-eabihf` (Cortex-M4F, QEMU `mps2-an386`) and for `thumbv7m-none-eabi`
 //! (Cortex-M3 without FPU, QEMU `mps2-an385`), run under `qemu-system-arm` with a time limit, and
 //! its checksum and counters must equal the host's for the same scene through the same core.
