@@ -237,7 +237,9 @@ where
 {
     let prims = unit_prims::<V>()?;
     let pattern = SamplePattern::new(BLOCK, SPP_U16, &SAMPLE_TABLE)?;
-    let mut r = Renderer::<Laine2011, NTRIS, P, U>::new(Laine2011, viewport()?, &prims)?;
+    // Loaded in place: this frame holds the only copy of the entries.
+    let mut r = Renderer::<Laine2011, NTRIS, P, U>::empty(Laine2011, viewport()?);
+    r.load(&prims)?;
     let mut image = [[0u8; 3]; NPIXELS];
     r.render_with::<8, 8, SPP>(
         &pattern,

@@ -32,13 +32,14 @@ fn pages() -> Vec<PathBuf> {
 /// Repository paths named in backticks: a top-level folder of the repository, then a path of
 /// file-name characters (globs and placeholders like `{a,b}` or `*` are not paths).
 fn named_paths(text: &str) -> Vec<String> {
-    const TOP: [&str; 7] = ["core/", "host/", "demo/", "tests/", "testkit/", "vectors/", "docs/"];
+    const TOP: [&str; 7] = [
+        "core/", "host/", "demo/", "tests/", "testkit/", "vectors/", "docs/",
+    ];
     let mut out = Vec::new();
     for span in text.split('`').skip(1).step_by(2) {
         let word = span.split_whitespace().next().unwrap_or("");
         let ok = |c: char| c.is_ascii_alphanumeric() || "/._-".contains(c);
-        if TOP.iter().any(|t| word.starts_with(t)) && word.chars().all(ok) && word.contains('.')
-        {
+        if TOP.iter().any(|t| word.starts_with(t)) && word.chars().all(ok) && word.contains('.') {
             out.push(word.trim_end_matches('.').to_string());
         }
     }
@@ -82,7 +83,10 @@ fn every_named_path_and_link_exists() {
             }
         }
     }
-    assert!(checked > 100, "only {checked} paths and links found: the scan is broken");
+    assert!(
+        checked > 100,
+        "only {checked} paths and links found: the scan is broken"
+    );
     assert!(
         missing.is_empty(),
         "paths and links that do not exist:\n{}",
@@ -94,13 +98,19 @@ fn every_named_path_and_link_exists() {
 fn readme_is_short_and_starts_with_the_two_commands() {
     let text = std::fs::read_to_string(root().join("README.md")).expect("README.md");
     let n = text.lines().count();
-    assert!(n <= 200, "README.md has {n} lines (at most 200; the rest belongs in docs/)");
+    assert!(
+        n <= 200,
+        "README.md has {n} lines (at most 200; the rest belongs in docs/)"
+    );
     let head: String = text.lines().take(40).collect::<Vec<_>>().join("\n");
     for cmd in [
         "cargo run --release -p uvt-host -- render --out out",
         "bash tests/run.sh",
     ] {
-        assert!(head.contains(cmd), "README.md's first 40 lines lack `{cmd}`");
+        assert!(
+            head.contains(cmd),
+            "README.md's first 40 lines lack `{cmd}`"
+        );
     }
 }
 

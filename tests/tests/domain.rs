@@ -178,6 +178,50 @@ fn renderer_errors() {
     );
 }
 
+/// `Raster::load` replaces the triangles and counters; on an error nothing half-loaded stays
+/// (no triangle, so the tile is the clear color), and a renderer loaded in place equals `new`'s.
+#[test]
+fn renderer_load_in_place() {
+    let vp = Viewport::new(8, 8).unwrap();
+    let v = [
+        [-0.5, -0.5, 0.0, 1.0, 0.0],
+        [0.5, -0.5, 0.0, 1.0, 0.0],
+        [0.0, 0.5, 0.0, 1.0, 0.0],
+    ];
+    let p = Prim {
+        tri: tri(v, v),
+        color: Rgb888::new(1, 2, 3),
+    };
+    let samples = [Sample::default(); 4];
+    let pat = SamplePattern::new(1, 4, &samples).unwrap();
+    let clear = Rgb888::new(9, 9, 9);
+    let image = |r: &mut Renderer<Laine2011, 1>| {
+        let mut fb = TileBuffer::<8, 8, 4>::new(clear);
+        r.render_tile(0, 0, &pat, 1, clear, &mut fb).unwrap();
+        (0..8u16)
+            .flat_map(|y| (0..8u16).map(move |x| (x, y)))
+            .map(|(x, y)| fb.resolve(x.into(), y.into()))
+            .collect::<Vec<_>>()
+    };
+    let mut fresh = Renderer::<Laine2011, 1>::new(Laine2011, vp, &[p]).unwrap();
+    let mut r = Renderer::<Laine2011, 1>::empty(Laine2011, vp);
+    assert_eq!(r.entries().count(), 0);
+    assert!(image(&mut r).iter().all(|c| *c == clear));
+    r.load(&[p]).unwrap();
+    assert_eq!(r.stats, fresh.stats);
+    assert_eq!(image(&mut r), image(&mut fresh));
+    assert!(image(&mut r).contains(&p.color));
+    assert_eq!(
+        r.load(&[p, p]),
+        Err(Error::TooManyTriangles { capacity: 1 })
+    );
+    assert_eq!(r.entries().count(), 0);
+    assert!(image(&mut r).iter().all(|c| *c == clear));
+    r.load(&[p]).unwrap();
+    assert_eq!(r.entries().count(), 1);
+    assert_eq!(r.stats.triangles, 1);
+}
+
 /// Raw values biased toward the domain's edges and the singular spots (0, ±1 LSB).
 fn raw() -> impl Strategy<Value = i32> {
     prop_oneof![

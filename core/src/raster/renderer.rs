@@ -62,42 +62,74 @@ impl<L: Pipeline, const N: usize> Raster<L, N> {
     /// [`Error::ClassNotInUnit`] (naming the first such primitive, culled or not) if a
     /// primitive's class is not accepted by the unit — every class is checked before any setup
     /// — or with [`Error::TooManyTriangles`] if more than `N` triangles are visible. No renderer
-    /// is returned on an error.
-    // Inlined into the caller, which holds the renderer: out of line its frame would hold a
-    // second copy of every entry while the result is returned (the Cortex-M programs' peak stack).
+    /// is returned on an error. [`Raster::empty`] and [`Raster::load`] do the same in place.
     #[inline(always)]
     pub fn new(bounds: L::Bounds, vp: Viewport, prims: &[Prim]) -> Result<Self, Error> {
+        let mut r = Self::empty(bounds, vp);
+        r.load(prims)?;
+        Ok(r)
+    }
+
+    /// A renderer with no triangle (it renders the clear color), to be [`Raster::load`]ed in
+    /// place: the caller's frame then holds the only copy of the entries.
+    pub fn empty(bounds: L::Bounds, vp: Viewport) -> Self {
+        Raster {
+            pipe: L::new(bounds),
+            vp,
+            entries: heapless::Vec::new(),
+            stats: Stats::default(),
+        }
+    }
+
+    /// Replace the triangles by `prims`, set up as in [`Raster::new`], and reset the counters.
+    /// On an error the renderer is left with no triangle and the counters of the setups done
+    /// before it (nothing half-loaded is rendered).
+    #[inline(never)]
+    pub fn load(&mut self, prims: &[Prim]) -> Result<(), Error> {
+        self.entries.clear();
+        self.stats = Stats::default();
         for (index, p) in prims.iter().enumerate() {
             let class = p.tri.class();
             if !<L::Unit as Unit>::accepts(class) {
                 return Err(refused::<L>(index, class));
             }
         }
-        let mut r = Raster {
-            pipe: L::new(bounds),
-            vp,
-            entries: heapless::Vec::new(),
-            stats: Stats::default(),
-        };
+        let vp = self.vp;
+        let Raster {
+            pipe,
+            entries,
+            stats,
+            ..
+        } = self;
         for (index, p) in prims.iter().enumerate() {
-            Stats::inc(&mut r.stats.triangles);
+            Stats::inc(&mut stats.triangles);
             // Every class is accepted (checked above): `Err` cannot occur; were it to, the
             // primitive is refused, never rendered.
-            match r.pipe.setup(&p.tri, vp, &mut r.stats.ops) {
-                Outcome::Refused(class) => return Err(refused::<L>(index, class)),
-                Outcome::Culled(Cull::Outside) => Stats::inc(&mut r.stats.culled_outside),
-                Outcome::Culled(Cull::Degenerate) => Stats::inc(&mut r.stats.culled_degenerate),
+            let pushed = match pipe.setup(&p.tri, vp, &mut stats.ops) {
+                Outcome::Refused(class) => Err(refused::<L>(index, class)),
+                Outcome::Culled(Cull::Outside) => {
+                    Stats::inc(&mut stats.culled_outside);
+                    Ok(())
+                }
+                Outcome::Culled(Cull::Degenerate) => {
+                    Stats::inc(&mut stats.culled_degenerate);
+                    Ok(())
+                }
                 Outcome::Visible(e) => {
-                    if let Some(c) = r.stats.by_class.get_mut(L::class(&e).index()) {
+                    if let Some(c) = stats.by_class.get_mut(L::class(&e).index()) {
                         Stats::inc(c);
                     }
-                    r.entries
+                    entries
                         .push((e, p.color))
-                        .map_err(|_| Error::TooManyTriangles { capacity: N })?;
+                        .map_err(|_| Error::TooManyTriangles { capacity: N })
                 }
+            };
+            if let Err(e) = pushed {
+                entries.clear();
+                return Err(e);
             }
         }
-        Ok(r)
+        Ok(())
     }
 
     /// The visible triangles' pipeline entries (the general pipeline's: setup and the

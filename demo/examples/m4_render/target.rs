@@ -90,18 +90,15 @@ fn main() -> ! {
     // come from the same code shape (more instantiations change the inlining and the count).
     if option_env!("UVT_M4_PREC").is_none() {
         let (c, i) = ticks(&mut cp.SYST, || {
-            demo::cost::setup::<uvt_core::Exact, uvt_core::Full, uvt_core::Full>(20)
-                .unwrap_or(0)
+            demo::cost::setup::<uvt_core::Exact, uvt_core::Full, uvt_core::Full>(20).unwrap_or(0)
         });
         hprintln!("cost setup calls={} insn={}", c, i);
         let (c, i) = ticks(&mut cp.SYST, || {
-            demo::cost::bounds::<uvt_core::Exact, uvt_core::Full, uvt_core::Full>(5)
-                .unwrap_or(0)
+            demo::cost::bounds::<uvt_core::Exact, uvt_core::Full, uvt_core::Full>(5).unwrap_or(0)
         });
         hprintln!("cost bounds calls={} insn={}", c, i);
         let (c, i) = ticks(&mut cp.SYST, || {
-            demo::cost::samples::<uvt_core::Exact, uvt_core::Full, uvt_core::Full>(2)
-                .unwrap_or(0)
+            demo::cost::samples::<uvt_core::Exact, uvt_core::Full, uvt_core::Full>(2).unwrap_or(0)
         });
         hprintln!("cost sample calls={} insn={}", c, i);
         type B = uvt_core::BoundedPrecision;
