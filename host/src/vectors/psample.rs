@@ -1,6 +1,6 @@
 //! Planar sample-test records (`psample_in.hex` / `psample_out.hex`) of the planar static
-//! configuration `planar-16-16-16-20` (`uvt_core::PlanarPrecision`, `core/src/planar.rs`):
-//! self-contained inputs of `uvt_core::sample::planar::planar_eval` — the static triangle's raw t0
+//! configuration (`uvt_core::config::registry::PLANAR`: `uvt_core::PlanarPrecision`,
+//! `core/src/planar.rs`): self-contained inputs of `uvt_core::sample::planar::planar_eval` — the static triangle's raw t0
 //! vertices (x, y, z, w; CoC 0, t1 = t0), the viewport, **what the planar setup hands the
 //! per-sample test** (the edge normals `n_k = (a, b, c)`, the orientation σ, the depth plane `G`
 //! and its exponent `f`) and one sample position (xs, ys) — and its outputs: coverage, depth
@@ -23,9 +23,6 @@ use uvt_core::{Ops, PlanarPrecision, SamplePattern, ScreenPos, Setup, Triangle, 
 
 use super::bsample::area;
 use super::format::Rec;
-
-/// The configuration of the records.
-pub const CONFIG: &str = "planar-16-16-16-20";
 
 /// The static triangle of `t`'s t0 vertices (CoC 0): what the planar test reads of any
 /// triangle.
