@@ -9,7 +9,6 @@ use embedded_graphics_core::pixelcolor::RgbColor;
 use rand::{Rng, SeedableRng};
 use serde_json::json;
 use uvt_core::bounds::laine::LaineCoeffs;
-use uvt_core::config::registry::PLANAR;
 use uvt_core::config::unit::Full;
 use uvt_core::{
     Lens, PixelRect, Rgb888, Sample, Setup, SubPixel, TileBuffer, Time, Triangle, UvtBox, Viewport,
@@ -442,7 +441,7 @@ pub fn write(set: &Set, dir: &Path, kind: &str, seed: u64) -> Result<()> {
         "cases": set.cases, "files": files,
         "bsample_config": {"name": Grid::DEFAULT.name(), "grid": Grid::DEFAULT, "core": "uvt_core::bounded_eval with uvt_core::BoundedPrecision = Bounded<16, 16, 16, 20>"},
         "bsample_coverage": set.bcov,
-        "psample_config": {"name": PLANAR.to_string(), "core": "uvt_core::sample::planar::planar_eval on the planar setup of uvt_core::PlanarPrecision = Planar<16, 16, 16, 20> (static triangles; culled ones have no record)"},
+        "psample_config": {"name": psample::CONFIG, "core": "uvt_core::planar::planar_eval on the planar setup of uvt_core::PlanarPrecision = Planar<16, 16, 16, 20> (static triangles; culled ones have no record)"},
         "psample_coverage": set.pcov,
         "psample_cases": set.pcases,
     });
