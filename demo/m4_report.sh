@@ -6,9 +6,10 @@
 # readelf (binutils). Honours CARGO_TARGET_DIR.
 #
 # `m4_report.sh --sweep [OUT.json]` instead builds m4_render once per configuration of the
-# precision sweep (UVT_M4_PREC=NAME), runs each on the Cortex-M4F under QEMU and on the host, and
-# writes instructions (and host ns) per setup / tile bounds / sample test to OUT.json (default
-# host/report/m4.json), which `uvt precision` reads.
+# precision sweep (UVT_M4_PREC=NAME; the names from the registry, `uvt configs --sweep`), runs
+# each on the Cortex-M4F under QEMU and on the host, and writes instructions (and host ns) per
+# setup / tile bounds / sample test to OUT.json (default host/report/m4.json), which `uvt
+# precision` reads.
 #
 # `m4_report.sh --units [OUT.json]` builds m4_render once per unit variant (UVT_M4_UNIT=NAME:
 # the default configuration and the demo prims the unit accepts only), runs each on the
@@ -118,8 +119,10 @@ if [[ "${1:-}" == "--units" ]]; then
 fi
 if [[ "${1:-}" == "--sweep" ]]; then
   json=${2:-host/report/m4.json}
-  names=(exact-16-16-16 bounded-16-16-16-20 bounded-16-16-16-22 bounded-16-16-16-24
-         bounded-12-12-12-24 bounded-12-12-12-26 bounded-8-8-8-28)
+  # The sweep's names, one per line, from the configuration registry (uvt_core::config::registry).
+  sweep=$(cargo run -q --release -p uvt-host -- configs --sweep)
+  mapfile -t names <<<"$sweep"
+  [[ ${#names[@]} -gt 0 && -n "${names[0]}" ]] || { echo "uvt configs --sweep printed no names" >&2; exit 1; }
   per() { echo "$1" | awk -v s="$2" '$1=="cost" && $2==s {split($3,a,"="); split($4,b,"="); printf "%.'"$3"'f", b[2]/a[2]}'; }
   rows=()
   for n in "${names[@]}"; do

@@ -10,6 +10,8 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{anyhow, Result};
 use serde::Serialize;
+use uvt_core::bounds::registry::{hull_edge, hull_lens, STRATEGIES};
+use uvt_core::bounds::strategy::BoundsStrategy;
 
 use crate::bench::strategy::{run_strategy_image, StratResult};
 use crate::frame::driver::{run, RunOpts};
@@ -18,9 +20,17 @@ use crate::scene::file::Scene;
 use crate::scene::pattern::Pattern;
 
 /// Sample counts of the sweep.
-pub const SPP_SWEEP: [u16; 7] = [1, 2, 4, 8, 16, 32, 64];
-/// Strategies of the sweep.
-pub const STRATEGY_SWEEP: [&str; 6] = ["bbox", "laine2011", "hull", "lens-t", "hyper", "best"];
+pub const SPP_STEPS: [u16; 7] = [1, 2, 4, 8, 16, 32, 64];
+
+/// Strategies of the sweep: every strategy of the registry
+/// ([`uvt_core::bounds::registry::STRATEGIES`], in its order) but the hull compositions
+/// `hull+lens-t` and `hull+edge-t` (one curve per colour of the plot: six).
+pub fn strategies() -> impl Iterator<Item = &'static str> + Clone {
+    let left_out = [hull_lens().name(), hull_edge().name()];
+    STRATEGIES
+        .into_iter()
+        .filter(move |n| !left_out.contains(n))
+}
 /// Independent 64-spp f64 frames averaged into the reference (256 spp in all).
 pub const REF_FRAMES: u64 = 4;
 
@@ -74,13 +84,13 @@ pub fn sweep(scene: &Scene, repeats: usize) -> Result<Vec<Point>> {
         }
     }
     let mut out = Vec::new();
-    for spp in SPP_SWEEP {
+    for spp in SPP_STEPS {
         let pat = Pattern::new(scene.pattern, spp, scene.seed);
         let o = RunOpts {
             spp,
             ..base.clone()
         };
-        for name in STRATEGY_SWEEP {
+        for name in strategies() {
             let mut runs: Vec<(StratResult, Vec<[u8; 3]>)> = Vec::new();
             for _ in 0..repeats.max(1) {
                 let (r, img) = run_strategy_image(name, vp, &core, &pat, &o)
@@ -110,17 +120,17 @@ pub fn sweep(scene: &Scene, repeats: usize) -> Result<Vec<Point>> {
 /// The sweep as a Markdown table: one row per spp, per strategy RMSE / ms / sample tests.
 pub fn table_md(points: &[Point]) -> String {
     let mut s = String::from("| spp | RMSE (0..255) |");
-    for n in STRATEGY_SWEEP {
+    for n in strategies() {
         s += &format!(" {n} ms / tests |");
     }
     s += "\n|---|---|";
-    s += &"---|".repeat(STRATEGY_SWEEP.len());
+    s += &"---|".repeat(strategies().count());
     s += "\n";
-    for spp in SPP_SWEEP {
+    for spp in SPP_STEPS {
         let row: Vec<&Point> = points.iter().filter(|p| p.spp == spp).collect();
         let Some(first) = row.first() else { continue };
         s += &format!("| {spp} | {:.3} |", first.rmse);
-        for n in STRATEGY_SWEEP {
+        for n in strategies() {
             if let Some(p) = row.iter().find(|p| p.strategy == n) {
                 s += &format!(" {:.0} / {} |", p.ms, p.tested);
             }
@@ -159,16 +169,16 @@ pub fn plot_svg(points: &[Point], title: &str, path: &Path) -> Result<()> {
         .draw()
         .map_err(|x| e(&x))?;
     let colors = [BLACK, BLUE, RED, GREEN, MAGENTA, CYAN];
-    for (n, c) in STRATEGY_SWEEP.iter().zip(colors) {
+    for (n, c) in strategies().zip(colors) {
         let pts: Vec<(f64, f64)> = points
             .iter()
-            .filter(|p| p.strategy == *n)
+            .filter(|p| p.strategy == n)
             .map(|p| (p.ms.max(1e-3), p.rmse.max(1e-3)))
             .collect();
         chart
             .draw_series(LineSeries::new(pts.clone(), c.stroke_width(2)))
             .map_err(|x| e(&x))?
-            .label(*n)
+            .label(n)
             .legend(move |(x, y)| PathElement::new(vec![(x, y), (x + 18, y)], c));
         chart
             .draw_series(pts.iter().map(|&p| Circle::new(p, 3, c.filled())))

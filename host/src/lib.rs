@@ -15,8 +15,9 @@
 //! - [`reference`](mod@reference): the independent f64 reference of every stage;
 //! - [`frame`]: the frame engine — the driver that runs a pipeline over a frame, and the
 //!   sample-by-sample comparison of the core with the reference;
-//! - [`config`]: configurations and their costs — the multiplier model, the unit variants'
-//!   sample-test cost, the documented error distance d_q, the planar static configuration;
+//! - [`config`]: configurations and their costs — the core's configuration and strategy
+//!   registries on the command line, the multiplier model, the unit variants' sample-test
+//!   cost, the documented error distance d_q, the planar static configuration;
 //! - [`oracle`]: the axis-aligned limit of `bench-ste`;
 //! - [`bench`](mod@bench): `uvt bench-ste`, and one bounds strategy over a frame by name;
 //! - [`converge`]: `uvt converge`;

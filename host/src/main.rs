@@ -8,6 +8,7 @@ use std::process::ExitCode;
 
 use anyhow::{anyhow, bail, Context, Result};
 use clap::{Parser, Subcommand};
+use uvt_host::config::names;
 use uvt_host::scene::budget;
 use uvt_host::scene::builtin::{self, Bench, Blur};
 use uvt_host::scene::file::{LoadOpts, Scene};
@@ -45,11 +46,12 @@ enum Cmd {
         /// sample pattern seed (overrides the scene file)
         #[arg(long)]
         seed: Option<u64>,
-        /// bounds strategy of the core: laine2011 or bbox
+        /// bounds strategy of the core: any of `uvt configs --strategies` (e.g. best)
         #[arg(long, default_value = "laine2011")]
         bounds: String,
-        /// core precision POS/TUV/BND fraction bits: 16/16/16 (the default, bounded-16-16-16-20), or the exact test at 12/12/8, 8/8/4 or 6/6/2
-        #[arg(long, default_value = "16/16/16")]
+        /// the core's configuration: `default` (bounded-16-16-16-20) or any name of `uvt
+        /// configs` (e.g. exact-12-12-8); the f64 reference stays exact
+        #[arg(long, default_value = names::DEFAULT_ALIAS)]
         precision: String,
         /// memory budget of the scene, e.g. 512M or 8G (estimate in host/src/budget.rs)
         #[arg(long, default_value = "4G")]
@@ -84,11 +86,9 @@ enum Cmd {
         /// of every face (host/src/oracle.rs)
         #[arg(long)]
         limit_effort: Option<String>,
-        /// the core's configuration: default, exact-16-16-16, bounded-16-16-16-20,
-        /// bounded-16-16-16-22, bounded-16-16-16-24, bounded-12-12-12-24, bounded-12-12-12-26,
-        /// bounded-8-8-8-28, planar-16-16-16-20 (the f64 reference and the axis-aligned limit
-        /// stay exact)
-        #[arg(long, default_value = "default")]
+        /// the core's configuration: `default` or any name of `uvt configs` (the f64 reference
+        /// and the axis-aligned limit stay exact)
+        #[arg(long, default_value = names::DEFAULT_ALIAS)]
         precision: String,
     },
     /// Image error against run time: every bounds strategy at 1..64 spp against a 256-spp f64
@@ -118,29 +118,32 @@ enum Cmd {
         /// --quick, 1 without; a larger factor gives a tiny run)
         #[arg(long)]
         shrink: Option<u16>,
-        /// Cortex-M4F instruction counts per configuration (`bash core/examples/m4_report.sh
-        /// --sweep` writes it); its columns show "–" when the file does not exist
+        /// Cortex-M4F instruction counts per configuration (`bash demo/m4_report.sh --sweep`
+        /// writes it); its columns show "–" when the file does not exist
         #[arg(long, default_value = "host/report/m4.json")]
         m4: PathBuf,
         /// synthesis results (vectors/rtl's synthesis script writes it); optional
         #[arg(long, default_value = "host/report/synth.json")]
         synth: PathBuf,
-        /// only these configurations (comma-separated names of the sweep, e.g.
-        /// exact-16-16-16,planar-16-16-16-20); default: all
+        /// only these configurations (comma-separated names of `uvt configs`, e.g.
+        /// exact-16-16-16,planar-16-16-16-20); default: the sweep (`uvt configs --sweep`) and
+        /// the planar configuration
         #[arg(long)]
         configs: Option<String>,
     },
     /// Print the derived bit-width table (Markdown) of a configuration; without --config the
-    /// width section of core/README.md (exact-16-16-16 and bounded-16-16-16-20).
+    /// width section of core/README.md (the exact and the default configuration).
     Widths {
-        /// configuration name: exact-P-T-B or bounded-P-T-B-O (e.g. bounded-16-16-16-20)
+        /// configuration name: exact-P-T-B or bounded-P-T-B-O, any in range (e.g.
+        /// bounded-12-12-12-24); not planar-…
         #[arg(long)]
         config: Option<String>,
     },
     /// The hardware multiplier cost model (from the width table): totals per sweep
     /// configuration and stage, or every multiplier of one configuration.
     Cost {
-        /// configuration name (exact-P-T-B or bounded-P-T-B-O); omitted: the sweep's totals
+        /// configuration name (exact-P-T-B or bounded-P-T-B-O, any in range; not planar-…);
+        /// omitted: the sweep's totals
         #[arg(long)]
         config: Option<String>,
     },
@@ -158,12 +161,12 @@ enum Cmd {
         /// output directory for fit.md and fit.json
         #[arg(long, default_value = "out")]
         out: PathBuf,
-        /// Cortex-M4F figures per unit (`bash core/examples/m4_report.sh --units` writes it);
-        /// "not measured" when absent
+        /// Cortex-M4F figures per unit (`bash demo/m4_report.sh --units` writes it); "not
+        /// measured" when absent
         #[arg(long, default_value = "host/report/m4_units.json")]
         m4_units: PathBuf,
-        /// Cortex-M4F figures per unit at the planar configuration (`bash
-        /// core/examples/m4_report.sh --units FILE planar-16-16-16-20`), used when fit picks it
+        /// Cortex-M4F figures per unit at the planar configuration (`bash demo/m4_report.sh
+        /// --units FILE planar-16-16-16-20`), used when fit picks it
         #[arg(long, default_value = "host/report/m4_units_planar.json")]
         m4_units_planar: PathBuf,
         /// memory budget of the scene, e.g. 512M or 8G
@@ -173,10 +176,10 @@ enum Cmd {
     /// The unit-variant table: per unit flash, RAM and M4F instructions (from m4_units.json),
     /// the sample test's multiplier estimate restricted to the unit's stages and the RTL unit's
     /// synthesized counts (from synth.json); then the static-only unit at the planar static
-    /// configuration (planar-16-16-16-20: estimate and synthesized uvt_psample.v).
+    /// configuration (estimate and synthesized uvt_psample.v).
     Units {
-        /// configuration name (exact-P-T-B or bounded-P-T-B-O)
-        #[arg(long, default_value = "bounded-16-16-16-20")]
+        /// configuration name (exact-P-T-B or bounded-P-T-B-O, any in range; not planar-…)
+        #[arg(long, default_value = names::DEFAULT_NAME)]
         config: String,
         /// Cortex-M4F figures per unit
         #[arg(long, default_value = "host/report/m4_units.json")]
@@ -195,6 +198,18 @@ enum Cmd {
     /// Golden test vectors for RTL.
     #[command(subcommand)]
     Vectors(VecCmd),
+    /// The named configurations (uvt_core::config::registry) every option and report takes:
+    /// one line each — name, kind (exact, bounded, planar), `sweep` if the precision sweep runs
+    /// it, `default` for the default.
+    Configs {
+        /// only the precision sweep's names, one per line (what `demo/m4_report.sh --sweep`
+        /// runs)
+        #[arg(long, conflicts_with = "strategies")]
+        sweep: bool,
+        /// the bounds strategies instead (uvt_core::bounds::registry), one per line
+        #[arg(long)]
+        strategies: bool,
+    },
 }
 
 #[derive(Subcommand)]
@@ -333,9 +348,8 @@ fn run(cli: Cli) -> Result<()> {
         } => {
             uvt_host::render::scene_render::check_out_dir(&out)?;
             let opts = uvt_host::render::opts::RenderOpts {
-                bounds: uvt_host::render::opts::Strategy::from_name(&bounds).context("--bounds")?,
-                precision: uvt_host::render::opts::precision_from_name(&precision)
-                    .context("--precision")?,
+                bounds: names::strategy("--bounds", &bounds)?,
+                precision: names::precision("--precision", &precision)?,
                 progress: true,
             };
             if let Some(n) = spp.filter(|n| !(1..=64).contains(n)) {
@@ -394,6 +408,7 @@ fn run(cli: Cli) -> Result<()> {
             limit_effort,
             precision,
         } => {
+            let cfg = names::precision("--precision", &precision)?;
             let effort = match limit_effort.as_deref() {
                 None => uvt_host::bench::ste_table::ORACLE_EFFORT,
                 Some(e) => uvt_host::bench::ste_table::parse_effort(e)
@@ -412,8 +427,8 @@ fn run(cli: Cli) -> Result<()> {
                     .find(|x| x.label().replace(" x", "") == r)
                     .ok_or_else(|| anyhow!("--row: unknown row {r:?} (static, motion, motion2, defocus, defocus2, both, both2)"))?],
             };
-            let rows = uvt_host::bench::ste_table::run_table_at(
-                &precision,
+            let rows = uvt_host::bench::ste_table::run_table_of(
+                cfg,
                 quick,
                 &kinds,
                 &rows_sel,
@@ -452,19 +467,14 @@ fn run(cli: Cli) -> Result<()> {
             if shrink == Some(0) {
                 bail!("--shrink must be at least 1");
             }
-            let all = uvt_host::precision::row::CONFIGS;
             let chosen: Vec<&'static str> = match configs {
-                None => all.to_vec(),
+                None => uvt_host::precision::row::CONFIGS.to_vec(),
                 Some(list) => list
                     .split(',')
                     .map(|n| {
-                        all.iter().copied().find(|c| *c == n.trim()).ok_or_else(|| {
-                            anyhow!(
-                                "--configs: unknown configuration {:?} (one of {})",
-                                n.trim(),
-                                all.join(", ")
-                            )
-                        })
+                        let cfg = names::precision("--configs", n.trim())?;
+                        uvt_core::config::registry::name_of(cfg)
+                            .ok_or_else(|| anyhow!("--configs: {cfg} is not in the registry"))
                     })
                     .collect::<Result<_>>()?,
             };
@@ -511,7 +521,7 @@ fn run(cli: Cli) -> Result<()> {
             let mut md = String::new();
             match config {
                 Some(name) => {
-                    let cfg = parse_config(&name)?;
+                    let cfg = names::model_config(&name)?;
                     uvt_core::widths::markdown::write_markdown(&mut md, &cfg)?;
                 }
                 None => uvt_core::widths::markdown::write_readme(&mut md)?,
@@ -520,7 +530,7 @@ fn run(cli: Cli) -> Result<()> {
         }
         Cmd::Cost { config } => match config {
             Some(name) => {
-                let cfg = parse_config(&name)?;
+                let cfg = names::model_config(&name)?;
                 say(&uvt_host::config::multipliers::cost_md(&cfg))?;
             }
             None => say(&uvt_host::config::multipliers::summary_md())?,
@@ -579,7 +589,7 @@ fn run(cli: Cli) -> Result<()> {
             m4_units,
             synth,
         } => {
-            let cfg = parse_config(&config)?;
+            let cfg = names::model_config(&config)?;
             let m4 = uvt_host::fit::m4::load_m4_units(&m4_units)?;
             let syn = uvt_host::fit::synth::load_units(&synth)?;
             say(&uvt_host::fit::units_table::units_md(
@@ -634,6 +644,20 @@ fn run(cli: Cli) -> Result<()> {
                 c.records
             ))?;
         }
+        Cmd::Configs { sweep, strategies } => {
+            let text = if strategies {
+                uvt_core::bounds::registry::STRATEGIES
+                    .map(|n| n.to_string() + "\n")
+                    .concat()
+            } else if sweep {
+                uvt_core::config::registry::sweep()
+                    .map(|e| e.name.to_string() + "\n")
+                    .collect()
+            } else {
+                names::configs_text()
+            };
+            say(&text)?;
+        }
         Cmd::Vectors(VecCmd::Layout) => {
             for st in uvt_host::vectors::format::STAGES {
                 for io in ["in", "out"] {
@@ -659,14 +683,5 @@ fn write_atomic(path: &std::path::Path, bytes: &[u8]) -> Result<()> {
     std::fs::rename(&tmp, path).map_err(|e| {
         let _ = std::fs::remove_file(&tmp);
         anyhow!("cannot write {}: {e}", path.display())
-    })
-}
-
-/// A configuration name of `--config`, or an error naming it.
-fn parse_config(name: &str) -> anyhow::Result<uvt_core::config::registry::Config> {
-    uvt_core::config::registry::Config::parse(name).ok_or_else(|| {
-        anyhow!(
-            "--config {name:?}: not a configuration (exact-P-T-B or bounded-P-T-B-O; P and T in 2..=16, B in 0..=16, O in 20..=32)"
-        )
     })
 }

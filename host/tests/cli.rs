@@ -6,6 +6,8 @@ use std::path::Path;
 use std::process::Command;
 
 use serde_json::Value;
+use uvt_core::bounds::registry::STRATEGIES;
+use uvt_core::config::registry::{sweep, CONFIGS, DEFAULT};
 
 fn uvt(args: &[&str]) -> std::process::Output {
     Command::new(env!("CARGO_BIN_EXE_uvt"))
@@ -362,6 +364,14 @@ fn empty_scene_warns_and_renders() {
     assert!(out.join("report.md").exists());
 }
 
+/// Every name `--precision` accepts, as its error lists them: `default`, then the registry's.
+fn precision_names() -> String {
+    std::iter::once("default")
+        .chain(CONFIGS.iter().map(|e| e.name))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
 fn report(dir: &Path) -> Value {
     serde_json::from_str(&std::fs::read_to_string(dir.join("report.json")).unwrap()).unwrap()
 }
@@ -387,7 +397,7 @@ fn render_options_override_the_scene() {
         "--bounds",
         "bbox",
         "--precision",
-        "8/8/4",
+        "exact-8-8-4",
     ]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let r = report(&out);
@@ -410,14 +420,17 @@ fn render_options_override_the_scene() {
     assert_eq!(r["coverage_fixed_vs_f64"]["beyond_bound"].as_u64(), Some(0));
     assert_eq!(image::open(out.join("fixed.png")).unwrap().width(), 16);
     // Bad values list what is accepted.
+    let strategies = STRATEGIES.join(", ");
+    let configs = precision_names();
     for (args, needles) in [
-        (
-            &["--bounds", "laine"][..],
-            &["--bounds", "laine2011, bbox"][..],
-        ),
+        (&["--bounds", "laine"][..], &["--bounds", &strategies][..]),
         (
             &["--precision", "10/10/10"][..],
-            &["--precision", "6/6/2, 8/8/4, 12/12/8, 16/16/16"][..],
+            &["--precision", &configs][..],
+        ),
+        (
+            &["--precision", "exact-9-9-9"][..],
+            &["--precision", &configs][..],
         ),
         (&["--viewport", "16*12"][..], &["--viewport", "WxH"][..]),
         (&["--viewport", "0x12"][..], &["--viewport"][..]),
@@ -585,7 +598,17 @@ fn closed_stdout_exits_quietly() {
 
 #[test]
 fn bench_ste_prints_row_progress() {
-    let o = uvt(&["bench-ste", "--quick", "--scene", "game", "--row", "static"]);
+    // At a configuration outside the old `--precision` list (any registry name runs).
+    let o = uvt(&[
+        "bench-ste",
+        "--quick",
+        "--scene",
+        "game",
+        "--row",
+        "static",
+        "--precision",
+        "exact-6-6-2",
+    ]);
     let e = String::from_utf8_lossy(&o.stderr);
     assert!(o.status.success(), "{e}");
     // Plain lines, also when stderr is not a terminal (here: a pipe).
@@ -593,7 +616,9 @@ fn bench_ste_prints_row_progress() {
         e.lines().any(|l| l == "bench-ste: row 1 of 1: Game static"),
         "{e}"
     );
-    assert!(String::from_utf8_lossy(&o.stdout).contains("| GAME |"));
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(out.contains("| GAME |"), "{out}");
+    assert!(out.starts_with("Core precision exact-6-6-2\n"), "{out}");
 }
 
 #[test]
@@ -653,5 +678,163 @@ fn file_errors_name_their_path() {
     assert!(
         !o.status.success() && e.contains("not a regular file"),
         "{e}"
+    );
+}
+
+/// The old `POS/TUV/BND` tuple form of `--precision` is refused by `uvt render` and `uvt
+/// bench-ste`, naming every accepted name (and what the tuple is called now); nothing is
+/// written.
+#[test]
+fn precision_tuple_form_is_refused_with_the_names() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("never");
+    for args in [
+        &[
+            "render",
+            "--out",
+            out.to_str().unwrap(),
+            "--precision",
+            "16/16/16",
+        ][..],
+        &["bench-ste", "--quick", "--precision", "16/16/16"][..],
+    ] {
+        let o = uvt(args);
+        let e = String::from_utf8_lossy(&o.stderr);
+        assert!(!o.status.success(), "{args:?} accepted");
+        assert!(
+            e.contains("--precision \"16/16/16\"") && e.contains(&precision_names()),
+            "{args:?}: {e}"
+        );
+        assert!(
+            e.contains(&format!("now default ({DEFAULT})")),
+            "{args:?}: {e}"
+        );
+        assert!(o.stdout.is_empty(), "{args:?}");
+    }
+    assert!(!out.exists());
+}
+
+/// A render of a tiny scene (16×12, 1 spp) with extra options; the report.
+fn tiny_render(dir: &Path, scene: &str, name: &str, extra: &[&str]) -> Value {
+    let out = dir.join(name);
+    let mut a = vec![
+        "render",
+        scene,
+        "--out",
+        out.to_str().unwrap(),
+        "--viewport",
+        "16x12",
+        "--spp",
+        "1",
+    ];
+    a.extend_from_slice(extra);
+    let o = uvt(&a);
+    assert!(
+        o.status.success(),
+        "{extra:?}: {}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    report(&out)
+}
+
+/// `uvt render --bounds` takes every strategy of the registry (what `bench-ste` and `uvt fit`
+/// name), and `--precision` every configuration of the registry and `default`; the report
+/// names them. Bounds never change coverage: every strategy covers what the bbox scan covers.
+#[test]
+fn render_takes_every_strategy_and_configuration() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = write(dir.path(), "small.json", SMALL);
+    for s in STRATEGIES {
+        let r = tiny_render(dir.path(), &scene, s, &["--bounds", s]);
+        assert_eq!(r["bounds"].as_str(), Some(s));
+        assert_eq!(
+            r["fixed"]["samples_covered"], r["bbox_scan"]["samples_covered"],
+            "{s}"
+        );
+        assert!(
+            r["fixed"]["samples_tested"].as_u64() <= r["bbox_scan"]["samples_tested"].as_u64(),
+            "{s}"
+        );
+        let md = std::fs::read_to_string(dir.path().join(s).join("report.md")).unwrap();
+        let label = match s {
+            "laine2011" => "Laine 2011",
+            "bbox" => "bounding-box scan",
+            other => other,
+        };
+        assert!(md.contains(&format!("with {label} bounds.")), "{s}: {md}");
+    }
+    for (name, cfg) in
+        std::iter::once(("default", DEFAULT)).chain(CONFIGS.iter().map(|e| (e.name, e.config)))
+    {
+        let r = tiny_render(
+            dir.path(),
+            &scene,
+            &format!("p-{name}"),
+            &["--precision", name],
+        );
+        assert_eq!(
+            r["precision"].as_str(),
+            Some(cfg.to_string().as_str()),
+            "{name}"
+        );
+        assert_eq!(
+            r["coverage_fixed_vs_f64"]["beyond_bound"].as_u64(),
+            Some(0),
+            "{name}"
+        );
+        // The default configuration splits the differences by side; the others measure
+        // conservativeness instead.
+        let v = &r["coverage_fixed_vs_f64"]["violations"];
+        assert_eq!(v.as_u64(), (cfg != DEFAULT).then_some(0), "{name}");
+    }
+}
+
+/// `uvt bench-ste --precision` takes every configuration of the registry and `default` (checked
+/// without running the table: the bad `--row` after it stops the run once `--precision` passed).
+#[test]
+fn bench_ste_takes_every_configuration() {
+    for name in std::iter::once("default").chain(CONFIGS.iter().map(|e| e.name)) {
+        let o = uvt(&[
+            "bench-ste",
+            "--quick",
+            "--precision",
+            name,
+            "--row",
+            "nosuch",
+        ]);
+        let e = String::from_utf8_lossy(&o.stderr);
+        assert!(!o.status.success(), "{name}");
+        assert!(e.contains("--row: unknown row \"nosuch\""), "{name}: {e}");
+        assert!(!e.contains("--precision"), "{name}: {e}");
+    }
+}
+
+/// `uvt configs` prints the registry: every configuration with its kind, the sweep's marked;
+/// `--sweep` only the sweep's names (what `demo/m4_report.sh --sweep` runs), `--strategies` the
+/// bounds strategies.
+#[test]
+fn configs_prints_the_registries() {
+    let text = |args: &[&str]| {
+        let o = uvt(args);
+        assert!(o.status.success(), "{args:?}");
+        String::from_utf8(o.stdout).unwrap()
+    };
+    let all = text(&["configs"]);
+    let lines: Vec<Vec<&str>> = all
+        .lines()
+        .map(|l| l.split_whitespace().collect())
+        .collect();
+    assert_eq!(lines.len(), CONFIGS.len(), "{all}");
+    for (l, e) in lines.iter().zip(CONFIGS) {
+        assert_eq!(l[0], e.name);
+        assert_eq!(l[1], e.name.split('-').next().unwrap());
+        assert_eq!(l[2] == "sweep", e.sweep, "{all}");
+        assert_eq!(l.get(3) == Some(&"default"), e.config == DEFAULT, "{all}");
+    }
+    let names: Vec<String> = sweep().map(|e| e.name.to_string() + "\n").collect();
+    assert_eq!(text(&["configs", "--sweep"]), names.concat());
+    assert_eq!(
+        text(&["configs", "--strategies"]),
+        STRATEGIES.map(|n| n.to_string() + "\n").concat()
     );
 }

@@ -6,6 +6,7 @@
 
 use std::path::Path;
 
+use uvt_core::config::registry::PLANAR;
 use uvt_host::fit::select::{classes, config_fits, DEFAULT_TOLERANCE_PX};
 use uvt_host::precision::measure::planar_decisions;
 use uvt_host::scene::file::Scene;
@@ -119,7 +120,7 @@ fn fit_never_picks_planar_beyond_the_tolerance() {
     let planar = |tol: f64| {
         let (fits, _) = config_fits(&s, &cls, (false, false), tol);
         fits.into_iter()
-            .find(|f| f.config == uvt_host::config::planar_static::NAME)
+            .find(|f| f.config == PLANAR.to_string())
             .expect("fit lists the planar configuration")
     };
     // The exact configuration reaches ≈ 1.96 px here (w's input rounding times the guard-band
@@ -133,19 +134,14 @@ fn fit_never_picks_planar_beyond_the_tolerance() {
     );
     let f = fit_without_m4(&s, Some(tol));
     assert_eq!(f.unit, "static-only");
-    assert_ne!(
-        f.config,
-        uvt_host::config::planar_static::NAME,
-        "{}",
-        f.config
-    );
+    assert_ne!(f.config, PLANAR.to_string(), "{}", f.config);
     assert!(f.ok, "{:?}", f.confirm);
     println!("guard band at {tol} px: fit picks {}", f.config);
     // Above the planar d_q it meets and, the cheapest static-only sample test, is picked.
     let tol = pl.d_q_px * 1.01;
     assert!(planar(tol).meets);
     let f = fit_without_m4(&s, Some(tol));
-    assert_eq!(f.config, uvt_host::config::planar_static::NAME);
+    assert_eq!(f.config, PLANAR.to_string());
     assert!(f.ok, "{:?}", f.confirm);
     println!("guard band at {tol:.4} px: fit picks {}", f.config);
 }
@@ -166,7 +162,7 @@ fn fit_picks_planar_for_a_benign_static_scene_when_cheapest() {
     }
     let pl = fits
         .iter()
-        .find(|f| f.config == uvt_host::config::planar_static::NAME)
+        .find(|f| f.config == PLANAR.to_string())
         .unwrap();
     assert!(pl.meets, "planar d_q {} px", pl.d_q_px);
     let key = |f: &uvt_host::fit::select::ConfigFit| {

@@ -4,6 +4,8 @@
 
 use std::process::Command;
 
+use uvt_core::config::registry::PLANAR;
+
 fn uvt(args: &[&str]) -> std::process::Output {
     Command::new(env!("CARGO_BIN_EXE_uvt"))
         .args(args)
@@ -58,7 +60,7 @@ fn precision_quick_prints_the_sweep_with_costs() {
     assert!(names.len() >= 6, "configurations: {names:?}");
     let mut dsp = Vec::new();
     for r in &rows {
-        if r[cfgc] == uvt_host::config::planar_static::NAME {
+        if r[cfgc] == PLANAR.to_string() {
             // `m4_report.sh --sweep` (host/report/m4.json) does not build the planar
             // configuration: its M4 cell says so ("–"); its model DSP cell is checked below.
             assert_eq!(r[m4c], "–", "planar M4 cell");
@@ -119,6 +121,28 @@ fn widths_and_cost_commands() {
     let o = uvt(&["widths", "--config", "bounded-16-16-16-19"]);
     assert!(!o.status.success());
     assert!(String::from_utf8_lossy(&o.stderr).contains("bounded-16-16-16-19"));
+    // The width table and the cost model cover the exact and bounded datapaths: a planar name
+    // is refused by all three commands, naming what they cover and the bounded base.
+    let pl = PLANAR.to_string();
+    for args in [
+        &["widths", "--config", &pl][..],
+        &["cost", "--config", &pl][..],
+        &["units", "--config", &pl][..],
+    ] {
+        let o = uvt(args);
+        let e = String::from_utf8_lossy(&o.stderr);
+        assert!(!o.status.success(), "{args:?}");
+        assert!(
+            e.contains(&pl)
+                && e.contains("exact-P-T-B, bounded-P-T-B-O")
+                && e.contains(&PLANAR.bounded_base().to_string()),
+            "{args:?}: {e}"
+        );
+        assert!(o.stdout.is_empty(), "{args:?}");
+    }
+    // Any in-range name, in or out of the registry.
+    let o = uvt(&["cost", "--config", "bounded-10-12-9-23"]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let o = uvt(&["cost"]);
     let text = String::from_utf8_lossy(&o.stdout);
     assert!(o.status.success());

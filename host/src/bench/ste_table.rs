@@ -5,9 +5,10 @@
 //! f64 reference and the axis-aligned limit ([`crate::oracle`]) at two efforts — plus the cost of
 //! each strategy (ops per tile, per-sample predicate ops, wall time without the oracle) and a
 //! second table over bounds-tile sizes 1, 2, 4, 8. The core runs at one precision per table
-//! (`--precision`, one of [`PRECISIONS`]; default: the core's default precision): the scene rounded
+//! (`--precision`, a configuration of `uvt_core::config::registry`; default: the core's default
+//! configuration): the scene rounded
 //! to its position grid, the pattern to its t/u/v grid; a `bounded-…` precision runs the bounded
-//! sample test with every strategy widened by its conservative epsilon; `planar-16-16-16-20` runs
+//! sample test with every strategy widened by its conservative epsilon; a `planar-…` one runs
 //! the planar static test on static triangles (`crate::config::planar_static`; the bounded test on
 //! the others) with the per-triangle epsilon. The f64 reference stays on the exact inputs; the
 //! axis-aligned limit runs on the scene at 16 position fraction bits with the core's default sample
@@ -16,7 +17,12 @@
 use std::time::Duration;
 
 use serde::Serialize;
-use uvt_core::{Bounded, Prec, Precision, Triangle};
+use uvt_core::bounds::registry::best;
+use uvt_core::bounds::strategy::BoundsStrategy;
+use uvt_core::config::registry::Config;
+use uvt_core::{with_config, Laine2011, Precision, Triangle};
+
+use crate::config::names;
 
 use crate::frame::driver::{run, RunOpts};
 use crate::frame::pipelines::Reference;
@@ -25,56 +31,7 @@ use crate::oracle::search::Effort;
 use crate::scene::builtin::{bench_scene, Bench, Blur};
 use crate::scene::pattern::Pattern;
 
-use super::strategy::{per, precision_name, run_strategy_at, StratResult, PRECISIONS, STRATEGIES};
-
-/// Calls `$body` with the type alias `$P` bound to the precision named `$name` (one of
-/// [`PRECISIONS`] or "default"); an unknown name is an error listing the valid ones.
-macro_rules! with_precision {
-    ($name:expr, $P:ident, $body:expr) => {{
-        match $name {
-            "default" => {
-                type $P = uvt_core::DefaultPrecision;
-                Ok($body)
-            }
-            "exact-16-16-16" => {
-                type $P = Prec<16, 16, 16>;
-                Ok($body)
-            }
-            "bounded-16-16-16-20" => {
-                type $P = Bounded<16, 16, 16, 20>;
-                Ok($body)
-            }
-            "bounded-16-16-16-22" => {
-                type $P = Bounded<16, 16, 16, 22>;
-                Ok($body)
-            }
-            "bounded-16-16-16-24" => {
-                type $P = Bounded<16, 16, 16, 24>;
-                Ok($body)
-            }
-            "bounded-12-12-12-24" => {
-                type $P = Bounded<12, 12, 12, 24>;
-                Ok($body)
-            }
-            "bounded-12-12-12-26" => {
-                type $P = Bounded<12, 12, 12, 26>;
-                Ok($body)
-            }
-            "bounded-8-8-8-28" => {
-                type $P = Bounded<8, 8, 8, 28>;
-                Ok($body)
-            }
-            "planar-16-16-16-20" => {
-                type $P = uvt_core::PlanarPrecision;
-                Ok($body)
-            }
-            other => Err(anyhow::anyhow!(
-                "--precision: unknown configuration {other:?} (default, {})",
-                PRECISIONS.join(", ")
-            )),
-        }
-    }};
-}
+use super::strategy::{per, run_strategy_at, strategies, StratResult};
 
 /// The two efforts of the axis-aligned limit (dense points per pixel, face-search proposals per
 /// face; each effort then ends with the line pushes of [`crate::oracle::limit::Method::Lines3`]);
@@ -139,7 +96,7 @@ fn per_f(a: f64, b: f64) -> f64 {
 /// One row of the table.
 #[derive(Clone, Debug, Serialize)]
 pub struct BenchRow {
-    /// the core's configuration (one of [`PRECISIONS`])
+    /// the core's configuration (its registry name)
     pub precision: String,
     /// scene
     pub scene: Bench,
@@ -151,7 +108,7 @@ pub struct BenchRow {
     pub avg_area_px: f64,
     /// STE of the bounding-box scan
     pub bbox: f64,
-    /// every strategy at bounds tile 1, in [`STRATEGIES`] order
+    /// every strategy of [`strategies`] at bounds tile 1, in its order
     pub strategies: Vec<StratResult>,
     /// STE of the f64 reference (Laine 2011 in f64)
     pub f64: f64,
@@ -186,8 +143,8 @@ pub fn run_table(
     rows_at::<uvt_core::DefaultPrecision>(quick, scenes, rows, sweep, effort)
 }
 
-/// [`run_table`] with the core at the precision named `precision` (one of [`PRECISIONS`] or
-/// "default"); an unknown name is an error naming the valid ones.
+/// [`run_table`] with the core at the configuration named `precision` (a name of the registry
+/// or "default", [`names::precision`]); an unknown name is an error naming the valid ones.
 pub fn run_table_at(
     precision: &str,
     quick: bool,
@@ -196,11 +153,22 @@ pub fn run_table_at(
     sweep: bool,
     effort: Option<[Effort; 2]>,
 ) -> anyhow::Result<Vec<BenchRow>> {
-    with_precision!(
-        precision,
-        P,
-        rows_at::<P>(quick, scenes, rows, sweep, effort)
-    )
+    let cfg = names::precision("--precision", precision)?;
+    run_table_of(cfg, quick, scenes, rows, sweep, effort)
+}
+
+/// [`run_table`] with the core at configuration `cfg` (one of the registry's; `with_config!`
+/// has every one).
+pub fn run_table_of(
+    cfg: Config,
+    quick: bool,
+    scenes: &[Bench],
+    rows: &[Blur],
+    sweep: bool,
+    effort: Option<[Effort; 2]>,
+) -> anyhow::Result<Vec<BenchRow>> {
+    with_config!(cfg, P => rows_at::<P>(quick, scenes, rows, sweep, effort))
+        .ok_or_else(|| anyhow::anyhow!("configuration {cfg} is not in the registry"))
 }
 
 /// Frames timed per strategy (at bounds tile 1) and for the reference, the fastest kept: 5 at the
@@ -253,7 +221,7 @@ fn rows_at<P: Precision + Sync>(
             // growth (page faults over tens of MiB at full size) and whichever pipeline runs
             // first is penalised.
             let _ = run_strategy_at::<P>(
-                "laine2011",
+                Laine2011.name(),
                 vp,
                 &core_p,
                 &pattern_p,
@@ -263,8 +231,7 @@ fn rows_at<P: Precision + Sync>(
                 },
             );
             let at = |tile: u8, runs: usize| -> Vec<StratResult> {
-                STRATEGIES
-                    .iter()
+                strategies()
                     .filter_map(|n| {
                         let o = RunOpts { tile, ..o.clone() };
                         let mut best = run_strategy_at::<P>(n, vp, &core_p, &pattern_p, &o)?.0;
@@ -304,7 +271,7 @@ fn rows_at<P: Precision + Sync>(
             let st = &strategies[0].stats;
             let visible: u64 = st.by_class.iter().sum();
             out.push(BenchRow {
-                precision: precision_name::<P>(),
+                precision: Config::of::<P>().to_string(),
                 scene: kind,
                 row,
                 triangles: s.tris.len(),
@@ -355,23 +322,33 @@ pub fn table_md(rows: &[BenchRow]) -> String {
         String::new()
     };
     let prec = rows.first().map_or(String::new(), |r| r.precision.clone());
+    // The STE columns: the bbox scan (from the counters), then every strategy of the bench.
+    let laine = Laine2011.name();
+    let head: String = strategies()
+        .map(|n| {
+            if n == laine {
+                " Laine 2011 |".to_string()
+            } else {
+                format!(" {n} |")
+            }
+        })
+        .collect();
+    let cols = strategies().count();
     let mut s = format!(
-        "Core precision {prec}\n\nSTE (%), bounds tile 1×1\n\n| Scene | Bbox scan | Laine 2011 | hull | lens-t | hyper | hull+lens-t | hull+edge-t | best | Laine f64 |{limit_head} avg area px |\n|---|---|---|---|---|---|---|---|---|---|{}---|\n",
+        "Core precision {prec}\n\nSTE (%), bounds tile 1×1\n\n| Scene | Bbox scan |{head} Laine f64 |{limit_head} avg area px |\n|---|---|{}---|{}---|\n",
+        "---|".repeat(cols),
         if with_limit { "---|---|---|---|---|" } else { "" }
     );
     let ste = |r: &BenchRow, n: &str| r.strat(n).map_or(0.0, |x| 100.0 * x.ste());
+    let best_name = best().name();
     for r in rows {
+        let cells: String = strategies()
+            .map(|n| format!(" {:.2} |", ste(r, n)))
+            .collect();
         s += &format!(
-            "| {} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} |{} {:.2} |\n",
+            "| {} | {:.2} |{cells} {:.2} |{} {:.2} |\n",
             name_of(r),
             100.0 * r.bbox,
-            ste(r, "laine2011"),
-            ste(r, "hull"),
-            ste(r, "lens-t"),
-            ste(r, "hyper"),
-            ste(r, "hull+lens-t"),
-            ste(r, "hull+edge-t"),
-            ste(r, "best"),
             100.0 * r.f64,
             if with_limit {
                 let (l0, l1) = (r.limit.ste(0), r.limit.ste(1));
@@ -382,7 +359,7 @@ pub fn table_md(rows: &[BenchRow]) -> String {
                     100.0 * per_f(l0 - l1, l1),
                     100.0 * per(r.limit.missed[0], r.limit.covered),
                     100.0 * per(r.limit.missed[1], r.limit.covered),
-                    100.0 * per_f(ste(r, "best") / 100.0, l1)
+                    100.0 * per_f(ste(r, best_name) / 100.0, l1)
                 )
             } else {
                 String::new()
@@ -396,7 +373,7 @@ pub fn table_md(rows: &[BenchRow]) -> String {
         timing_runs(true),
         timing_runs(false)
     );
-    for n in STRATEGIES {
+    for n in strategies() {
         s += &format!(" {n} |");
     }
     s += " Laine f64 ms |";
@@ -405,7 +382,7 @@ pub fn table_md(rows: &[BenchRow]) -> String {
     } else {
         "\n|---|"
     };
-    s += &"---|".repeat(STRATEGIES.len() + 1 + usize::from(with_limit));
+    s += &"---|".repeat(cols + 1 + usize::from(with_limit));
     s += "\n";
     for r in rows {
         s += &format!("| {} |", name_of(r));
@@ -429,15 +406,15 @@ pub fn table_md(rows: &[BenchRow]) -> String {
     }
     if rows.iter().any(|r| !r.tile_sweep.is_empty()) {
         s += "\nSTE (%) by bounds-tile size 1 / 2 / 4 / 8\n\n| Scene |";
-        for n in STRATEGIES {
+        for n in strategies() {
             s += &format!(" {n} |");
         }
         s += "\n|---|";
-        s += &"---|".repeat(STRATEGIES.len());
+        s += &"---|".repeat(cols);
         s += "\n";
         for r in rows.iter().filter(|r| !r.tile_sweep.is_empty()) {
             s += &format!("| {} |", name_of(r));
-            for (k, _) in STRATEGIES.iter().enumerate() {
+            for k in 0..cols {
                 let v: Vec<String> = r
                     .tile_sweep
                     .iter()

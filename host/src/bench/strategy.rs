@@ -1,53 +1,23 @@
-//! One bounds strategy of the core over one frame, by name (the strategies of `uvt bench-ste`,
-//! `uvt converge` and `uvt fit`'s search), at any precision, with its counters and wall time;
-//! the configurations `--precision` accepts and their names.
+//! One bounds strategy of the core over one frame, by its registry name
+//! ([`uvt_core::bounds::registry::STRATEGIES`]; the strategies of `uvt bench-ste`, `uvt
+//! converge`, `uvt fit`'s search and `uvt render --bounds`), at any precision, with its counters
+//! and wall time.
 
 use serde::Serialize;
-use uvt_core::bounds::hyper::Hyper;
-use uvt_core::bounds::lens_time::LensTime;
-use uvt_core::bounds::registry::{best, hull, hull_edge, hull_lens, BEST_SLABS};
+use uvt_core::bounds::registry::STRATEGIES;
 use uvt_core::bounds::strategy::BoundsStrategy;
-use uvt_core::{Laine2011, Precision, Triangle, Viewport};
+use uvt_core::{with_strategy, BboxScan, Precision, Triangle, Viewport};
 
-use crate::config::planar_static;
-use crate::frame::counters::FrameStats;
+use crate::frame::counters::{Frame, FrameStats};
 use crate::frame::driver::{run, RunOpts};
 use crate::frame::pipelines::Fixed;
 use crate::scene::pattern::Pattern;
 
-/// Strategy names in column order.
-pub const STRATEGIES: [&str; 7] = [
-    "laine2011",
-    "hull",
-    "lens-t",
-    "hyper",
-    "hull+lens-t",
-    "hull+edge-t",
-    "best",
-];
-
-/// The configurations `--precision` accepts (the session's names: `exact-P-T-B` is
-/// `Prec<P, T, B>`, `bounded-P-T-B-O` is `Bounded<P, T, B, O>`), plus `default`.
-pub const PRECISIONS: [&str; 8] = [
-    "exact-16-16-16",
-    "bounded-16-16-16-20",
-    "bounded-16-16-16-22",
-    "bounded-16-16-16-24",
-    "bounded-12-12-12-24",
-    "bounded-12-12-12-26",
-    "bounded-8-8-8-28",
-    planar_static::NAME,
-];
-
-/// The configuration name of precision `P` (`exact-P-T-B`, `bounded-P-T-B-O` or
-/// `planar-P-T-B-O`).
-pub fn precision_name<P: Precision>() -> String {
-    let (p, t, b) = (P::POS_FRAC, P::TUV_FRAC, P::BOUND_FRAC);
-    match P::OFFSET_SHIFT {
-        None => format!("exact-{p}-{t}-{b}"),
-        Some(o) if P::PLANAR => format!("planar-{p}-{t}-{b}-{o}"),
-        Some(o) => format!("bounded-{p}-{t}-{b}-{o}"),
-    }
+/// The strategies of `bench-ste`'s columns and of `uvt fit`'s search, in the registry's order:
+/// every strategy of [`STRATEGIES`] but the bounding-box scan (the bench's baseline column
+/// comes from every run's footprint counters; fit does not search it).
+pub fn strategies() -> impl Iterator<Item = &'static str> + Clone {
+    STRATEGIES.into_iter().filter(|n| *n != BboxScan.name())
 }
 
 /// One strategy's result on one row.
@@ -105,8 +75,7 @@ pub(super) fn per(a: u64, b: u64) -> f64 {
     }
 }
 
-/// Run strategy `name` over a frame: one of [`STRATEGIES`], "bbox", or "lens-t1", "lens-t2",
-/// "lens-t8" (lens-slab time bounds with 1, 2, 8 slabs; "lens-t" has [`BEST_SLABS`]).
+/// Run strategy `name` (one of [`STRATEGIES`]) over a frame; `None` for any other name.
 pub fn run_strategy(
     name: &str,
     vp: Viewport,
@@ -136,45 +105,50 @@ pub fn run_strategy_at<P: Precision + Sync>(
     pattern: &Pattern,
     o: &RunOpts<'_>,
 ) -> Option<(StratResult, Vec<[u8; 3]>)> {
-    fn go<B: BoundsStrategy + Sync, P: Precision + Sync>(
-        s: B,
-        vp: Viewport,
-        tris: &[Triangle],
-        pattern: &Pattern,
-        o: &RunOpts<'_>,
-    ) -> (StratResult, Vec<[u8; 3]>)
-    where
-        B::Coeffs: Send + Sync,
-    {
-        let name = s.name();
-        let fixed = Fixed::<_, P> {
-            prec: std::marker::PhantomData,
-            strat: s,
-            vp,
-            tris,
-            pattern,
-        };
-        let f = run(&fixed, pattern, o);
-        let r = StratResult {
-            name,
-            tile: o.tile,
-            stats: f.stats,
-            ms: f.time.as_secs_f64() * 1e3,
-        };
-        (r, f.image)
-    }
-    Some(match name {
-        "bbox" => go::<_, P>(uvt_core::BboxScan, vp, tris, pattern, o),
-        "laine2011" => go::<_, P>(Laine2011, vp, tris, pattern, o),
-        "hull" => go::<_, P>(hull(), vp, tris, pattern, o),
-        "lens-t" => go::<_, P>(LensTime::<BEST_SLABS>, vp, tris, pattern, o),
-        "lens-t1" => go::<_, P>(LensTime::<1>, vp, tris, pattern, o),
-        "lens-t2" => go::<_, P>(LensTime::<2>, vp, tris, pattern, o),
-        "lens-t8" => go::<_, P>(LensTime::<8>, vp, tris, pattern, o),
-        "best" => go::<_, P>(best(), vp, tris, pattern, o),
-        "hyper" => go::<_, P>(Hyper, vp, tris, pattern, o),
-        "hull+lens-t" => go::<_, P>(hull_lens(), vp, tris, pattern, o),
-        "hull+edge-t" => go::<_, P>(hull_edge(), vp, tris, pattern, o),
-        _ => return None,
-    })
+    with_strategy!(name, s => run_one::<_, P>(s, vp, tris, pattern, o))
+}
+
+/// One frame of strategy `s` at precision `P`: its counters, wall time and image.
+pub fn run_one<B: BoundsStrategy + Sync, P: Precision + Sync>(
+    s: B,
+    vp: Viewport,
+    tris: &[Triangle],
+    pattern: &Pattern,
+    o: &RunOpts<'_>,
+) -> (StratResult, Vec<[u8; 3]>)
+where
+    B::Coeffs: Send + Sync,
+{
+    let name = s.name();
+    let f = run_frame::<B, P>(s, vp, tris, pattern, o);
+    let r = StratResult {
+        name,
+        tile: o.tile,
+        stats: f.stats,
+        ms: f.time.as_secs_f64() * 1e3,
+    };
+    (r, f.image)
+}
+
+/// The frame driver's whole frame of the core with strategy `s` at precision `P`: the one
+/// instance per strategy and precision that the bench, fit's search, converge and `uvt render`
+/// share.
+pub fn run_frame<B: BoundsStrategy + Sync, P: Precision + Sync>(
+    s: B,
+    vp: Viewport,
+    tris: &[Triangle],
+    pattern: &Pattern,
+    o: &RunOpts<'_>,
+) -> Frame
+where
+    B::Coeffs: Send + Sync,
+{
+    let fixed = Fixed::<_, P> {
+        prec: std::marker::PhantomData,
+        strat: s,
+        vp,
+        tris,
+        pattern,
+    };
+    run(&fixed, pattern, o)
 }

@@ -4,12 +4,15 @@
 //! Its files from the bottom up, each using only files listed before it (and nothing of this
 //! `mod.rs`):
 //!
+//! - [`names`]: the core's configuration and bounds-strategy registries on the command line
+//!   (what `--precision`, `--config` and `--bounds` accept);
 //! - [`multipliers`]: hard multipliers (DSP48E1, ECP5) and LUT bits of a configuration's stages;
 //! - [`units`]: the unit variants and their sample-test multipliers at a configuration;
 //! - [`dq`]: the documented error distance d_q of a primitive (uses [`crate::frame::compare`]);
-//! - [`planar_static`]: the planar static configuration `planar-16-16-16-20`.
+//! - [`planar_static`]: the planar static configuration (`uvt_core::config::registry::PLANAR`).
 
 pub mod dq;
 pub mod multipliers;
+pub mod names;
 pub mod planar_static;
 pub mod units;

@@ -23,21 +23,16 @@
 //! LUT 8×32, 31×31 → 2 + LUT 7×31, 62×31 → 4 + LUT 7×62, 64×64 → 12.
 
 use serde::Serialize;
-use uvt_core::config::registry::Config;
+use uvt_core::config::registry::{self, Config, EXACT};
 use uvt_core::widths::row::Mul;
 use uvt_core::widths::stages::table;
 
-/// The sweep of `uvt precision` (session names): exact first, then bounded from the default
-/// candidate down to the narrowest.
-pub const SWEEP: [&str; 7] = [
-    "exact-16-16-16",
-    "bounded-16-16-16-20",
-    "bounded-16-16-16-22",
-    "bounded-16-16-16-24",
-    "bounded-12-12-12-24",
-    "bounded-12-12-12-26",
-    "bounded-8-8-8-28",
-];
+use super::names::{swept_count, swept_names};
+
+/// The names of the precision sweep as a constant, read from the registry
+/// ([`uvt_core::config::registry::sweep`], which every host tool iterates); kept for
+/// `tests/tests/bsample.rs` until it reads the registry itself.
+pub const SWEEP: [&str; swept_count(false)] = swept_names(false);
 
 /// Widest top chunk multiplied in LUTs instead of a row of hard multipliers.
 pub const LUT_CHUNK: u32 = 8;
@@ -220,14 +215,12 @@ fn lut_note<T: Into<u64>>(n: T) -> String {
 /// figure against the exact configuration's.
 pub fn summary_md() -> String {
     let mut s = String::from("| configuration | stage | products | Σ bit-products | DSP48E1 (+ LUT bits) | MULT18X18D (+ LUT bits) |\n|---|---|---|---|---|---|\n");
-    let exact = Config::parse(SWEEP[0]).map(|c| sample_cost(&c).dsp48e1);
-    for name in SWEEP {
-        let Some(cfg) = Config::parse(name) else {
-            continue;
-        };
+    let exact = sample_cost(&EXACT).dsp48e1;
+    for e in registry::sweep() {
+        let (name, cfg) = (e.name, e.config);
         for g in stage_costs(&cfg) {
             let rel = match (g.stage.as_str(), exact) {
-                ("sample", Some(e)) if e > 0 => {
+                ("sample", e) if e > 0 => {
                     format!(" ({:.1}% of exact)", 100.0 * g.dsp48e1 as f64 / e as f64)
                 }
                 _ => String::new(),
@@ -290,7 +283,7 @@ mod tests {
     /// estimate, both by the same tiling (issue 10's goal).
     #[test]
     fn default_sample_test_is_at_most_a_quarter_of_exact() {
-        let exact = sample_cost(&Config::parse("exact-16-16-16").unwrap()).dsp48e1;
+        let exact = sample_cost(&EXACT).dsp48e1;
         let def =
             sample_cost(&Config::of::<uvt_core::config::precision::DefaultPrecision>()).dsp48e1;
         assert!(4 * def <= exact, "default {def} DSP48E1, exact {exact}");
@@ -300,16 +293,13 @@ mod tests {
     /// bounded ones less, and narrower offsets never cost more.
     #[test]
     fn sweep_costs_fall_with_the_widths() {
-        let cost: Vec<StageCost> = SWEEP
-            .iter()
-            .map(|n| sample_cost(&Config::parse(n).unwrap()))
-            .collect();
+        let cost: Vec<StageCost> = registry::sweep().map(|e| sample_cost(&e.config)).collect();
         let exact = cost[0].dsp48e1;
         assert!(
             (400..=520).contains(&exact),
             "exact sample test {exact} DSP48E1"
         );
-        for (n, c) in SWEEP.iter().zip(&cost).skip(1) {
+        for (n, c) in registry::sweep().map(|e| e.name).zip(&cost).skip(1) {
             assert!(c.dsp48e1 < exact / 2, "{n}: {c:?}");
             assert!(c.bit_products < cost[0].bit_products / 3, "{n}: {c:?}");
         }

@@ -1,5 +1,5 @@
-//! The planar static configuration `planar-16-16-16-20` (`uvt_core::PlanarPrecision`,
-//! `core/src/planar.rs`) in the host tools: its name, its documented error distance d_q per
+//! The planar static configuration ([`PLANAR`] of the registry, `planar-16-16-16-20`:
+//! `uvt_core::PlanarPrecision`, `core/src/planar.rs`) in the host tools: its documented error distance d_q per
 //! primitive, its sample-test multipliers per unit, and the triangles its vertex rounding makes
 //! degenerate. `uvt precision`, `uvt fit` (and its confirmation) and `uvt bench-ste --precision`
 //! use these.
@@ -26,6 +26,7 @@
 //! datapath for its moving / defocused classes, so its cost is the bounded unit's plus these
 //! (no sharing of multipliers between the two datapaths is modelled).
 
+use uvt_core::config::registry::{Config, PLANAR};
 use uvt_core::config::unit::Full;
 use uvt_core::{Class, Outcome, PlanarPrecision, Setup, Viewport};
 
@@ -37,11 +38,8 @@ use super::dq::eps_clip;
 use super::multipliers::{dsp48e1, ecp5};
 use super::units::{unit_sample_cost, UnitCost};
 
-/// The configuration's name (the core's `Planar<16, 16, 16, 20>`).
-pub const NAME: &str = "planar-16-16-16-20";
-
 /// The bounded configuration its moving and defocused classes run.
-pub const BASE: &str = "bounded-16-16-16-20";
+pub const BASE: Config = PLANAR.bounded_base();
 
 /// The planar sample test's multipliers `(a bits, b bits, count)` (module docs).
 pub const PRODUCTS: [(u32, u32, u32); 3] = [(21, 13, 3), (32, 32, 9), (32, 32, 3)];
@@ -65,8 +63,7 @@ pub fn unit_cost(motion: bool, defocus: bool) -> Option<UnitCost> {
     if !motion && !defocus {
         return Some(p);
     }
-    let base = uvt_core::config::registry::Config::parse(BASE)?;
-    let b = unit_sample_cost(&base, motion, defocus)?;
+    let b = unit_sample_cost(&BASE, motion, defocus)?;
     Some(UnitCost {
         products: b.products + p.products,
         bit_products: b.bit_products + p.bit_products,
@@ -82,9 +79,7 @@ pub fn eps(core: &uvt_core::Triangle, class: Class, vp: Viewport) -> [f64; 3] {
     if class == Class::Static {
         eps_of(&Setup::unculled::<PlanarPrecision>(core, vp))
     } else {
-        let base =
-            uvt_core::config::registry::Config::parse(BASE).expect("the base configuration parses");
-        eps_clip(&base, class, vp)
+        eps_clip(&BASE, class, vp)
     }
 }
 

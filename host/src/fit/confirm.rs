@@ -11,22 +11,21 @@
 //! configuration (its products in units of a 32 × 32 product; the counters count ≤ 32-bit
 //! operations). Every strategy covers the same samples (bounds are conservative), so the score —
 //! covered samples per unit of cost, i.e. STE per unit of per-test cost — ranks by total cost;
-//! ties go to the earlier strategy of [`crate::bench::strategy::STRATEGIES`] and the smaller tile.
+//! ties go to the earlier strategy of [`crate::bench::strategy::strategies`] (the registry's
+//! order) and the smaller tile.
 
 use embedded_graphics_core::pixelcolor::RgbColor;
 use rayon::prelude::*;
 use serde::Serialize;
-use uvt_core::bounds::hyper::Hyper;
-use uvt_core::bounds::lens_time::LensTime;
-use uvt_core::bounds::registry::{best, hull, hull_edge, hull_lens, BEST_SLABS};
 use uvt_core::bounds::strategy::{BoundsStrategy, TileBounds};
+use uvt_core::config::registry::Config;
 use uvt_core::{
-    Bounded, DefocusOnly, Full, General, Laine2011, MotionOnly, Ops, Outcome, Pipeline, PipelineOf,
-    PixelRect, Prec, Precision, Prim, Raster, Rgb888, SamplePattern, ScreenPos, Select, Setup,
-    StaticOnly, Triangle, Unit,
+    with_config, with_strategy, DefocusOnly, Full, General, MotionOnly, Ops, Outcome, Pipeline,
+    PipelineOf, PixelRect, Precision, Prim, Raster, Rgb888, SamplePattern, ScreenPos, Select,
+    Setup, StaticOnly, Triangle, Unit,
 };
 
-use crate::bench::strategy::{run_strategy_at, STRATEGIES};
+use crate::bench::strategy::{run_strategy_at, strategies};
 use crate::frame::compare::{check_sample_eps, eps_of, footprint_union, Rounding};
 use crate::frame::driver::{run, RunOpts};
 use crate::frame::pipelines::Fixed;
@@ -39,85 +38,6 @@ use super::select::TILES;
 /// Visible setups the confirmation renderer holds (`Renderer<_, CAPACITY>`, on a thread with a
 /// large stack); a scene with more is reported as not confirmed.
 pub const CAPACITY: usize = 4096;
-
-/// Calls `$body` with `$P` bound to the precision of sweep configuration `$name` or of the
-/// planar static configuration (`crate::config::planar_static::NAME`).
-macro_rules! with_config {
-    ($name:expr, $P:ident, $body:expr) => {
-        match $name {
-            "exact-16-16-16" => {
-                type $P = Prec<16, 16, 16>;
-                Some($body)
-            }
-            "bounded-16-16-16-20" => {
-                type $P = Bounded<16, 16, 16, 20>;
-                Some($body)
-            }
-            "bounded-16-16-16-22" => {
-                type $P = Bounded<16, 16, 16, 22>;
-                Some($body)
-            }
-            "bounded-16-16-16-24" => {
-                type $P = Bounded<16, 16, 16, 24>;
-                Some($body)
-            }
-            "bounded-12-12-12-24" => {
-                type $P = Bounded<12, 12, 12, 24>;
-                Some($body)
-            }
-            "bounded-12-12-12-26" => {
-                type $P = Bounded<12, 12, 12, 26>;
-                Some($body)
-            }
-            "bounded-8-8-8-28" => {
-                type $P = Bounded<8, 8, 8, 28>;
-                Some($body)
-            }
-            "planar-16-16-16-20" => {
-                type $P = uvt_core::PlanarPrecision;
-                Some($body)
-            }
-            _ => None,
-        }
-    };
-}
-
-/// Calls `$body` with `$s` bound to the strategy value named `$name` (`bench::STRATEGIES`).
-macro_rules! with_strategy {
-    ($name:expr, $s:ident, $body:expr) => {
-        match $name {
-            "laine2011" => {
-                let $s = Laine2011;
-                Some($body)
-            }
-            "hull" => {
-                let $s = hull();
-                Some($body)
-            }
-            "lens-t" => {
-                let $s = LensTime::<BEST_SLABS>;
-                Some($body)
-            }
-            "hyper" => {
-                let $s = Hyper;
-                Some($body)
-            }
-            "hull+lens-t" => {
-                let $s = hull_lens();
-                Some($body)
-            }
-            "hull+edge-t" => {
-                let $s = hull_edge();
-                Some($body)
-            }
-            "best" => {
-                let $s = best();
-                Some($body)
-            }
-            _ => None,
-        }
-    };
-}
 
 /// One strategy and tile size of the search.
 #[derive(Clone, Debug, Serialize)]
@@ -147,20 +67,20 @@ pub struct StratCost {
 }
 
 /// Run every strategy at every tile size at configuration `config`; `width` is the sample
-/// test's width factor. `None` for a configuration outside the sweep.
+/// test's width factor. `None` for a configuration outside the registry.
 pub fn search_strategies(
     scene: &Scene,
-    config: &str,
+    config: Config,
     width: f64,
 ) -> Option<anyhow::Result<Vec<StratCost>>> {
-    with_config!(config, P, search_at::<P>(scene, width))
+    with_config!(config, P => search_at::<P>(scene, width))
 }
 
 fn search_at<P: Precision + Sync>(scene: &Scene, width: f64) -> anyhow::Result<Vec<StratCost>> {
     let (core, pat) = inputs::<P>(scene)?;
     let colors = scene.colors();
     let mut out = Vec::new();
-    for name in STRATEGIES {
+    for name in strategies() {
         for tile in TILES {
             let o = RunOpts {
                 tile,
@@ -276,24 +196,20 @@ impl Confirm {
 }
 
 /// Confirm the choice (module docs); `bounded[i]`: primitive i has a screen-space bound.
+/// `None` for a configuration outside the registry or a strategy outside its list.
 pub fn confirm(
     scene: &Scene,
-    config: &str,
+    config: Config,
     strategy: &str,
     tile: u8,
     unit: &str,
     tol: f64,
     bounded: &[bool],
 ) -> Option<anyhow::Result<Confirm>> {
-    with_config!(
-        config,
-        P,
-        with_strategy!(
-            strategy,
-            s,
-            confirm_at::<P, _>(scene, s, tile, unit, tol, bounded)
-        )?
-    )
+    with_config!(config, P => with_strategy!(strategy, s => {
+        confirm_at::<P, _>(scene, s, tile, unit, tol, bounded)
+    }))
+    .flatten()
 }
 
 fn confirm_at<P: Precision + Sync, B>(

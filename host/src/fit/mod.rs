@@ -1,6 +1,6 @@
 //! `uvt fit SCENE.json`: which rasterizer unit a scene needs, and what it saves — the smallest unit
 //! variant (`uvt_core::config::unit`) that accepts every primitive's class, the narrowest configuration of
-//! the precision sweep ([`crate::config::multipliers::SWEEP`]) whose documented error distance
+//! the precision sweep (`uvt_core::config::registry::sweep`) whose documented error distance
 //! meets the tolerance *for this scene's geometry*, the bounds strategy and tile size with the most
 //! covered samples per unit of cost; then a render with that choice to confirm it ([`confirm`]).
 //! `uvt units` prints the variant table ([`units_table::units_md`]).

@@ -5,7 +5,7 @@ use std::path::Path;
 
 use anyhow::{anyhow, Result};
 use serde::Serialize;
-use uvt_core::config::registry::Config;
+use uvt_core::config::registry::{self, DEFAULT, PLANAR};
 use uvt_core::Class;
 
 use crate::config::planar_static;
@@ -15,9 +15,6 @@ use crate::scene::file::Scene;
 use super::confirm::{confirm, search_strategies, Confirm, StratCost};
 use super::m4::{M4Data, M4Unit};
 use super::select::{classes, config_fits, narrowest, ConfigFit, DEFAULT_TOLERANCE_PX};
-
-/// The default configuration's name (the full default unit the savings are measured against).
-pub const DEFAULT_CONFIG: &str = "bounded-16-16-16-20";
 
 /// Everything `uvt fit` found.
 #[derive(Clone, Debug, Serialize)]
@@ -39,8 +36,8 @@ pub struct Fit {
     /// primitives without a screen-space bound at the chosen configuration (a vertex can reach
     /// the camera plane)
     pub unbounded_primitives: Vec<usize>,
-    /// static triangles that `planar-16-16-16-20`'s vertex rounding makes degenerate (culled; the
-    /// default does not cull them) and the static triangles:
+    /// static triangles that the planar configuration's vertex rounding makes degenerate
+    /// (culled; the default does not cull them) and the static triangles:
     /// `crate::config::planar_static::degenerate`
     pub planar_degenerate: (u64, u64),
     /// the chosen configuration
@@ -99,16 +96,17 @@ pub fn fit(
     let terms = unit_terms(unit).ok_or_else(|| anyhow!("unknown unit {unit}"))?;
     let (fits, _) = config_fits(scene, &cls, terms, tol);
     let chosen = narrowest(&fits, tol)?.clone();
-    let sample_cost = if chosen.config == planar_static::NAME {
+    let cfg = registry::find(&chosen.config)
+        .ok_or_else(|| anyhow!("not a configuration of the registry: {}", chosen.config))?;
+    let planar = cfg.planar();
+    let sample_cost = if planar {
         planar_static::unit_cost(terms.0, terms.1)
             .ok_or_else(|| anyhow!("no cost model for {}", chosen.config))?
     } else {
-        let cfg = Config::parse(&chosen.config)
-            .ok_or_else(|| anyhow!("not a configuration: {}", chosen.config))?;
         unit_sample_cost(&cfg, terms.0, terms.1).unwrap_or_else(|| full_sample_cost(&cfg))
     };
     let width = sample_cost.bit_products as f64 / (sample_cost.products.max(1) as f64 * 1024.0);
-    let strategies = search_strategies(scene, &chosen.config, width)
+    let strategies = search_strategies(scene, cfg, width)
         .ok_or_else(|| anyhow!("configuration {} has no precision type", chosen.config))??;
     // Highest score; the first (earlier strategy, smaller tile) wins ties.
     let best = strategies
@@ -123,21 +121,10 @@ pub fn fit(
     let bounded: Vec<bool> = (0..scene.tris.len())
         .map(|i| !chosen.unbounded.contains(&i))
         .collect();
-    let conf = confirm(
-        scene,
-        &chosen.config,
-        &best.strategy,
-        best.tile,
-        unit,
-        tol,
-        &bounded,
-    )
-    .ok_or_else(|| anyhow!("cannot confirm {} / {}", chosen.config, best.strategy))??;
-    let default_cfg =
-        Config::parse(DEFAULT_CONFIG).ok_or_else(|| anyhow!("bad default configuration"))?;
+    let conf = confirm(scene, cfg, &best.strategy, best.tile, unit, tol, &bounded)
+        .ok_or_else(|| anyhow!("cannot confirm {} / {}", chosen.config, best.strategy))??;
     // The full unit's instructions on this unit's primitives when measured (same work), else
     // on the full demo; flash and RAM are the programs'.
-    let planar = chosen.config == planar_static::NAME;
     let find = |rows: &[M4Unit], n: &str| rows.iter().find(|r| r.unit == n).cloned();
     let unit_row = if planar {
         m4_planar.as_ref().and_then(|(rows, _)| find(rows, unit))
@@ -153,9 +140,8 @@ pub fn fit(
     });
     let m4_path = if planar {
         format!(
-            "`{}` (this unit, at {}) and `{}` (the full unit, at {DEFAULT_CONFIG})",
+            "`{}` (this unit, at {cfg}) and `{}` (the full unit, at {DEFAULT})",
             m4_planar_path.display(),
-            planar_static::NAME,
             m4_path.display()
         )
     } else {
@@ -179,7 +165,7 @@ pub fn fit(
         width_factor: width,
         confirm: conf,
         sample_cost,
-        sample_cost_full_default: full_sample_cost(&default_cfg),
+        sample_cost_full_default: full_sample_cost(&DEFAULT),
         m4,
         m4_path,
         ok,
@@ -242,8 +228,7 @@ pub fn fit_md(f: &Fit) -> String {
         );
     }
     s += &format!(
-        "\n`{}`: {} of {} static triangles become degenerate after the vertex rounding (culled: they cover no sample at that configuration; the default configuration renders them).\n",
-        planar_static::NAME,
+        "\n`{PLANAR}`: {} of {} static triangles become degenerate after the vertex rounding (culled: they cover no sample at that configuration; the default configuration renders them).\n",
         f.planar_degenerate.0,
         f.planar_degenerate.1
     );
@@ -326,7 +311,7 @@ pub fn fit_md(f: &Fit) -> String {
     }
     let (m, d) = (&f.sample_cost, &f.sample_cost_full_default);
     s += &format!(
-        "\n## Saved against the full unit at {DEFAULT_CONFIG}\n\n| figure | {} unit, {} | full unit, {DEFAULT_CONFIG} | saved |\n|---|---|---|---|\n| sample test DSP48E1 (model) | {} | {} | {} |\n| sample test MULT18X18D (model) | {} | {} | {} |\n| sample test Σ bit-products | {} | {} | {} |\n",
+        "\n## Saved against the full unit at {DEFAULT}\n\n| figure | {} unit, {} | full unit, {DEFAULT} | saved |\n|---|---|---|---|\n| sample test DSP48E1 (model) | {} | {} | {} |\n| sample test MULT18X18D (model) | {} | {} | {} |\n| sample test Σ bit-products | {} | {} | {} |\n",
         f.unit,
         f.config,
         m.dsp48e1,
@@ -357,7 +342,7 @@ pub fn fit_md(f: &Fit) -> String {
         }
         None => {
             s += &format!(
-                "| M4F instructions per setup / tile / sample, flash | not measured | not measured | – |\n\nM4F figures: not measured ({} absent or without these units; `bash core/examples/m4_report.sh --units [FILE planar-16-16-16-20]` writes it).\n",
+                "| M4F instructions per setup / tile / sample, flash | not measured | not measured | – |\n\nM4F figures: not measured ({} absent or without these units; `bash core/examples/m4_report.sh --units [FILE {PLANAR}]` writes it).\n",
                 f.m4_path
             )
         }

@@ -11,7 +11,7 @@
 //! A tolerance below the exact 16-fraction-bit configuration's d_q is unreachable (error).
 //!
 //! **Narrowest configuration**: the bounded configurations of the sweep and the planar static
-//! configuration `planar-16-16-16-20` (`crate::config::planar_static`: its own per-primitive d_q,
+//! configuration (`uvt_core::config::registry::PLANAR`, `crate::config::planar_static`: its own per-primitive d_q,
 //! from each static triangle's rounding residual, nearest w and guard-band ratio; its cost per
 //! unit: the planar test alone in the static-only unit, the bounded unit's plus the planar test's
 //! in every other) ordered by their sample-test DSP48E1 estimate for the chosen unit, then Σ
@@ -19,11 +19,10 @@
 //! only when none does.
 use anyhow::{anyhow, bail, Result};
 use serde::Serialize;
-use uvt_core::config::registry::Config;
+use uvt_core::config::registry::{self, EXACT, PLANAR};
 use uvt_core::Class;
 
 use crate::config::dq::{eps_clip, prim_dq};
-use crate::config::multipliers::SWEEP;
 use crate::config::planar_static;
 use crate::config::units::{unit_sample_cost, UnitCost};
 use crate::frame::compare::Rounding;
@@ -94,10 +93,8 @@ pub fn config_fits(
             unbounded: unb,
         });
     };
-    for name in SWEEP {
-        let Some(cfg) = Config::parse(name) else {
-            continue;
-        };
+    for e in registry::sweep() {
+        let (name, cfg) = (e.name, e.config);
         let r = Rounding::at(cfg.pos(), cfg.tuv());
         let mut dqs = scene
             .tris
@@ -113,7 +110,7 @@ pub fn config_fits(
         planar_static::prim_dq(t, &core, *c, scene.viewport, 1.0)
     });
     push(
-        planar_static::NAME,
+        &PLANAR.to_string(),
         &mut dqs,
         planar_static::unit_cost(unit.0, unit.1),
     );
@@ -151,16 +148,18 @@ pub fn narrowest(fits: &[ConfigFit], tol: f64) -> Result<&ConfigFit> {
     if let Some(f) = bounded.into_iter().find(|f| f.meets) {
         return Ok(f);
     }
+    let exact_name = EXACT.to_string();
     let exact = fits
         .iter()
-        .find(|f| f.config == SWEEP[0])
+        .find(|f| f.config == exact_name)
         .ok_or_else(|| anyhow!("the sweep has no exact configuration"))?;
     if exact.meets {
         return Ok(exact);
     }
     bail!(
-        "tolerance {tol} px is unreachable for this scene: even {} (16 fraction bits, exact test) has a documented error distance of {:.6} px (primitive {}); the smallest tolerance it meets is {:.6} px",
+        "tolerance {tol} px is unreachable for this scene: even {} ({} fraction bits, exact test) has a documented error distance of {:.6} px (primitive {}); the smallest tolerance it meets is {:.6} px",
         exact.config,
+        EXACT.pos(),
         exact.d_q_px,
         exact.worst_primitive.map_or("?".into(), |i| i.to_string()),
         exact.d_q_px

@@ -74,7 +74,7 @@ pub fn load_units(path: &Path) -> Result<Option<Vec<SynthUnit>>> {
 /// `vectors/rtl/uvt_psample.v` (`synth`, the `"units"` of `synth_path`), "not synthesized" without
 /// its entry.
 pub fn planar_md(synth: Option<&[SynthUnit]>, synth_path: &Path) -> String {
-    let name = crate::config::planar_static::NAME;
+    let name = uvt_core::config::registry::PLANAR.to_string();
     let mut s = format!(
         "\nStatic-only unit at the planar static configuration `{name}` (`uvt_core::static_unit`; RTL `vectors/rtl/uvt_psample.v`, synthesized counts from `{}`; the other units at `{name}` carry the bounded unit beside the planar test and have no RTL of their own):\n\n| unit | sample test DSP48E1 estimate | synthesized DSP48E1 / LUT / FF | MULT18X18D estimate | synthesized MULT18X18D / LUT4 / FF | Σ bit-products | products |\n|---|---|---|---|---|---|---|\n",
         synth_path.display()
@@ -139,7 +139,7 @@ mod tests {
     #[test]
     fn planar_static_unit_estimate_equals_synthesis() {
         let (path, units) = committed();
-        let name = crate::config::planar_static::NAME;
+        let name = uvt_core::config::registry::PLANAR.to_string();
         let syn = units
             .iter()
             .find(|u| u.unit == "static-only" && u.name == name)

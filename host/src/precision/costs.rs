@@ -106,14 +106,14 @@ impl Costs {
         // (DSP48E1, MULT18X18D, Σ bit-products) of the full unit's sample test; the planar
         // configuration's full unit carries the bounded datapath and the planar test
         // (`crate::config::planar_static::unit_cost`).
-        let model = if name == planar_static::NAME {
-            planar_static::unit_cost(true, true).map(|c| (c.dsp48e1, c.ecp5, c.bit_products))
-        } else {
-            Config::parse(name).map(|c| {
+        let model = Config::parse(name).and_then(|c| {
+            if c.planar() {
+                planar_static::unit_cost(true, true).map(|c| (c.dsp48e1, c.ecp5, c.bit_products))
+            } else {
                 let c = sample_cost(&c);
-                (c.dsp48e1, c.ecp5, c.bit_products)
-            })
-        };
+                Some((c.dsp48e1, c.ecp5, c.bit_products))
+            }
+        });
         let synth = self.synth.as_ref().and_then(|(_, v)| {
             let c = v["configs"]
                 .as_array()?

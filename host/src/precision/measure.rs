@@ -303,7 +303,7 @@ pub fn planar_decisions(scene: &Scene, dq_scale: f64) -> anyhow::Result<PrecRow>
     type P = uvt_core::PlanarPrecision;
     let (core, pat) = inputs::<P>(scene)?;
     let mut acc = [PrecRow {
-        config: planar_static::NAME.to_string(),
+        config: uvt_core::config::registry::PLANAR.to_string(),
         tile: scene.tile,
         d_q: [planar_dq(scene).0, 0.0],
         degenerate: planar_static::degenerate(scene).0,

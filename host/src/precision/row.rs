@@ -1,7 +1,8 @@
 //! One row of `uvt precision`'s table ([`PrecRow`]: the errors and costs of one configuration at
-//! one bounds-tile size), the configurations swept ([`CONFIGS`]) and the documented d_q.
+//! one bounds-tile size), the configurations swept by default ([`CONFIGS`]) and the documented
+//! d_q.
 //!
-//! Per configuration of [`CONFIGS`] (`exact-P-T-B` = `Prec<P, T, B>`, the exact sample test;
+//! Per configuration (`exact-P-T-B` = `Prec<P, T, B>`, the exact sample test;
 //! `bounded-P-T-B-O` = `Bounded<P, T, B, O>`, the hardware-width test of `core/src/bounded.rs`)
 //! the scene's exact f64 triangles are rounded to the position grid, the pattern's t/u/v to the
 //! t/u/v grid (sub-pixel stays 8 bits), and the core runs at that precision. The reference always
@@ -20,25 +21,12 @@
 
 use serde::Serialize;
 
-use crate::config::multipliers::SWEEP;
-use crate::config::planar_static;
+use crate::config::names::{swept_count, swept_names};
 
-/// The swept configurations (session names, `crate::config::multipliers::SWEEP`): exact, then
-/// bounded from the default candidate down to the narrowest; then the planar static configuration
-/// (`crate::config::planar_static::NAME`).
-pub const CONFIGS: [&str; 8] = {
-    let s = SWEEP;
-    [
-        s[0],
-        s[1],
-        s[2],
-        s[3],
-        s[4],
-        s[5],
-        s[6],
-        planar_static::NAME,
-    ]
-};
+/// What `uvt precision` runs without `--configs`, read from the registry: the precision sweep
+/// (`uvt_core::config::registry::sweep`: exact, then bounded from the default down to the
+/// narrowest), then the planar static configuration (`registry::PLANAR`).
+pub const CONFIGS: [&str; swept_count(true)] = swept_names(true);
 
 /// The documented d_q (module docs) of offset shift `off` on a `w`×`h` viewport, px at w = 1.
 pub fn d_q_px(off: Option<u32>, w: u16, h: u16) -> f64 {

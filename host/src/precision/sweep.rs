@@ -4,7 +4,8 @@
 
 use std::time::Duration;
 
-use uvt_core::{Bounded, Laine2011, Prec, Precision, Triangle};
+use uvt_core::config::registry::{CONFIGS, DEFAULT};
+use uvt_core::{with_config, Laine2011, Precision, Triangle};
 
 use crate::config::planar_static;
 use crate::frame::driver::{run, RunOpts};
@@ -15,25 +16,12 @@ use crate::scene::pattern::Pattern;
 use crate::scene::tri::DOMAIN;
 
 use super::measure::{errors, lost_samples, planar_dq};
-use super::row::{d_q_px, finish, PrecRow, CONFIGS};
-
-/// Run `one::<P>` for configuration `ci` of [`CONFIGS`].
-fn one_at(ci: usize, s: &Scene, accs: &mut [PrecRow]) {
-    match ci {
-        0 => one::<Prec<16, 16, 16>>(s, accs),
-        1 => one::<Bounded<16, 16, 16, 20>>(s, accs),
-        2 => one::<Bounded<16, 16, 16, 22>>(s, accs),
-        3 => one::<Bounded<16, 16, 16, 24>>(s, accs),
-        4 => one::<Bounded<12, 12, 12, 24>>(s, accs),
-        5 => one::<Bounded<12, 12, 12, 26>>(s, accs),
-        6 => one::<Bounded<8, 8, 8, 28>>(s, accs),
-        _ => one::<uvt_core::PlanarPrecision>(s, accs),
-    }
-}
+use super::row::{d_q_px, finish, PrecRow};
 
 /// Which configurations, scenes and rows a sweep covers.
 pub struct Sweep {
-    /// configurations (names of [`CONFIGS`]; others are skipped)
+    /// configurations (registry names, run in the registry's order; others are skipped;
+    /// `super::row::CONFIGS` is the default selection)
     pub configs: Vec<&'static str>,
     /// scenes
     pub scenes: Vec<Bench>,
@@ -69,13 +57,12 @@ fn shrink(mut s: Scene, f: u16) -> Scene {
 /// Run the sweep.
 pub fn sweep(sw: &Sweep) -> Vec<PrecRow> {
     let mut rows: Vec<PrecRow> = Vec::new();
-    let chosen: Vec<(usize, &str)> = CONFIGS
+    let chosen: Vec<_> = CONFIGS
         .iter()
-        .enumerate()
-        .filter(|(_, c)| sw.configs.contains(c))
-        .map(|(i, c)| (i, *c))
+        .filter(|e| sw.configs.contains(&e.name))
         .collect();
-    for (n, &(ci, cfg)) in chosen.iter().enumerate() {
+    for (n, e) in chosen.iter().enumerate() {
+        let cfg = e.name;
         let mut accs: Vec<PrecRow> = sw
             .tiles
             .iter()
@@ -96,7 +83,7 @@ pub fn sweep(sw: &Sweep) -> Vec<PrecRow> {
                     row.label()
                 );
                 let s = shrink(bench_scene(kind, row, true), sw.shrink);
-                one_at(ci, &s, &mut accs);
+                with_config!(e.config, P => one::<P>(&s, &mut accs));
             }
         }
         for a in accs.iter_mut() {
@@ -198,7 +185,7 @@ fn one<P: Precision + Sync>(s: &Scene, accs: &mut [PrecRow]) {
 /// One stress case at the default precision: STE, decisions against f64, conservativeness.
 pub fn stress_row(scene: &Scene) -> PrecRow {
     let mut acc = [PrecRow {
-        config: CONFIGS[1].to_string(),
+        config: DEFAULT.to_string(),
         tile: scene.tile,
         ..Default::default()
     }];

@@ -1,20 +1,22 @@
 //! The Markdown tables of `uvt precision`: the sweep with the costs of each configuration
 //! ([`table_md`]) and the stress cases ([`stress_md`]).
 
-use crate::config::planar_static;
+use uvt_core::config::registry::{Config, EXACT};
 
 use super::costs::Costs;
-use super::row::{PrecRow, CONFIGS};
+use super::row::PrecRow;
 
 /// Markdown table of a sweep, with the costs of each configuration ([`super::costs`]).
 pub fn table_md(rows: &[PrecRow], costs: &Costs) -> String {
     let mut s = String::from(
         "| configuration | tile | decisions ≠ f64 (rate, max px) | d_q px (scene / 960×540) | beyond d_q (w ≥ 1; planar: per primitive) | degenerate after rounding | beyond bound (max ratio) | violations | ε x/y/w raw | STE core / f64 | STE loss vs exact | depth err LSB max (mean) | time ÷ f64 | host ns setup/tile/sample | M4F insn setup/tile/sample | sample test DSP48E1 / MULT18X18D (model) | sample test Σ bit-products | synthesized |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     );
+    let exact_name = EXACT.to_string();
     for r in rows {
         let exact = rows
             .iter()
-            .find(|x| x.config == CONFIGS[0] && x.tile == r.tile);
+            .find(|x| x.config == exact_name && x.tile == r.tile);
+        let planar = Config::parse(&r.config).is_some_and(|c| c.planar());
         let loss = exact
             .map(|x| {
                 format!(
@@ -27,7 +29,7 @@ pub fn table_md(rows: &[PrecRow], costs: &Costs) -> String {
         s += &format!(
             "| {} | {} | {} ({:.1e}, {:.4}) | {:.4} / {} | {} | {} | {} ({:.2}) | {} | {}/{}/{} | {:.2}% / {:.2}% | {loss} | {:.0} ({:.1}) | {:.2} | {} | {} | {} | {} | {} |\n",
             r.config, r.tile, r.differ, r.differ as f64 / r.compared.max(1) as f64, r.max_differ_px,
-            r.d_q[0], if r.config == planar_static::NAME { "per primitive".to_string() } else { format!("{:.4}", r.d_q[1]) }, r.beyond_dq, r.degenerate, r.beyond_bound, r.max_ratio, r.violations,
+            r.d_q[0], if planar { "per primitive".to_string() } else { format!("{:.4}", r.d_q[1]) }, r.beyond_dq, r.degenerate, r.beyond_bound, r.max_ratio, r.violations,
             r.eps_raw[0], r.eps_raw[1], r.eps_raw[2], 100.0 * r.ste[0], 100.0 * r.ste[1],
             r.depth_lsb[0], r.depth_lsb[1], r.time_ratio_median,
             c.host_ns, c.m4, c.dsp, c.bit_products, c.synth

@@ -2,80 +2,23 @@
 //! ([`RenderOpts`]), the sample-level comparison with the reference ([`Decisions`]) and the three
 //! frames with the JSON report ([`Rendered`]).
 
-use anyhow::{anyhow, Result};
+use uvt_core::bounds::strategy::BoundsStrategy;
+use uvt_core::config::registry::{Config, DEFAULT};
+use uvt_core::{BboxScan, Laine2011};
 
 use crate::frame::compare::CoverageDiff;
 use crate::frame::counters::Frame;
 
-/// Bounds strategies of the core that `uvt render --bounds` accepts.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Strategy {
-    /// Laine et al. 2011 (u, v, t) bounds
-    Laine2011,
-    /// the bounding-box scan: every sample of the footprint
-    Bbox,
-}
-
-impl Strategy {
-    /// Every strategy by its command-line name.
-    pub const NAMES: [(&'static str, Strategy); 2] =
-        [("laine2011", Strategy::Laine2011), ("bbox", Strategy::Bbox)];
-
-    /// The strategy called `name`; the error lists the accepted names.
-    pub fn from_name(name: &str) -> Result<Strategy> {
-        Self::NAMES
-            .iter()
-            .find(|(n, _)| *n == name)
-            .map(|(_, s)| *s)
-            .ok_or_else(|| {
-                anyhow!(
-                    "unknown bounds strategy {name:?} (accepted: {})",
-                    Self::NAMES.map(|n| n.0).join(", ")
-                )
-            })
-    }
-
-    /// The command-line name.
-    pub fn name(self) -> &'static str {
-        Self::NAMES
-            .iter()
-            .find(|(_, s)| *s == self)
-            .map_or("?", |n| n.0)
-    }
-}
-
-/// The precisions `uvt render --precision` accepts (`POS/TUV/BND` fraction bits): 16/16/16 is
-/// the default configuration (`bounded-16-16-16-20`), the narrower ones run the exact test.
-pub const RENDER_PRECISIONS: [(u32, u32, u32); 4] =
-    [(6, 6, 2), (8, 8, 4), (12, 12, 8), (16, 16, 16)];
-
-/// Precisions `uvt render --precision` accepts, as `POS/TUV/BND` fraction bits
-/// ([`RENDER_PRECISIONS`]).
-pub fn precision_from_name(name: &str) -> Result<(u32, u32, u32)> {
-    let show = |c: &(u32, u32, u32)| format!("{}/{}/{}", c.0, c.1, c.2);
-    RENDER_PRECISIONS
-        .iter()
-        .find(|c| show(c) == name)
-        .copied()
-        .ok_or_else(|| {
-            anyhow!(
-                "unknown precision {name:?} (accepted: {})",
-                RENDER_PRECISIONS
-                    .iter()
-                    .map(show)
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            )
-        })
-}
-
 /// How `uvt render` runs the core.
 #[derive(Clone, Copy, Debug)]
 pub struct RenderOpts {
-    /// bounds strategy of the "uvt fixed" pipeline
-    pub bounds: Strategy,
-    /// fraction bits (position, t/u/v, bounds) of the core
-    pub precision: (u32, u32, u32),
+    /// bounds strategy of the "uvt fixed" pipeline: a name of
+    /// `uvt_core::bounds::registry::STRATEGIES` (`crate::config::names::strategy` parses it)
+    pub bounds: &'static str,
+    /// the core's configuration: one of the registry's (`crate::config::names::precision`
+    /// parses it; [`DEFAULT`] runs the default comparison, any other the measured one of
+    /// [`Decisions`])
+    pub precision: Config,
     /// print one line per phase on stderr
     pub progress: bool,
 }
@@ -83,10 +26,22 @@ pub struct RenderOpts {
 impl Default for RenderOpts {
     fn default() -> Self {
         RenderOpts {
-            bounds: Strategy::Laine2011,
-            precision: (16, 16, 16),
+            bounds: Laine2011.name(),
+            precision: DEFAULT,
             progress: false,
         }
+    }
+}
+
+/// The report's name of bounds strategy `name`: "Laine 2011" and "bounding-box scan" for those
+/// two, the registry name for the others.
+pub fn bounds_label(name: &str) -> &str {
+    if name == Laine2011.name() {
+        "Laine 2011"
+    } else if name == BboxScan.name() {
+        "bounding-box scan"
+    } else {
+        name
     }
 }
 

@@ -4,12 +4,11 @@
 
 use serde_json::json;
 
-use crate::bench::strategy::precision_name;
 use crate::frame::counters::{Frame, FrameStats};
 use crate::frame::driver::ORACLE_POINTS;
 use crate::scene::file::Scene;
 
-use super::opts::{per, Decisions, RenderOpts, Rendered, Strategy};
+use super::opts::{bounds_label, per, Decisions, RenderOpts, Rendered};
 
 /// One frame's counters; the operation counters are null for the f64 reference, which counts
 /// none (0 would read as "no operations").
@@ -49,12 +48,11 @@ pub(crate) fn report_json(
 ) -> serde_json::Value {
     let st: &FrameStats = &fixed.stats;
     let (npix, maxd) = image_diff(&fixed.image, &f64.image);
-    let p = o.precision;
     json!({
         "format": "uvt-render-report", "version": 1,
         "scene": s.name, "viewport": [s.viewport.0, s.viewport.1], "spp": s.spp, "tile": s.tile,
         "pattern": s.pattern, "seed": s.seed, "triangles": s.tris.len(),
-        "bounds": o.bounds.name(), "precision": if p == (16, 16, 16) { precision_name::<uvt_core::DefaultPrecision>() } else { format!("exact-{}-{}-{}", p.0, p.1, p.2) },
+        "bounds": o.bounds, "precision": o.precision.to_string(),
         "classes": {"static": st.by_class[0], "motion": st.by_class[1], "defocus": st.by_class[2], "motion_defocus": st.by_class[3],
                      "culled_outside": st.culled_outside, "culled_degenerate": st.culled_degenerate},
         "fixed": frame_json(fixed, true), "f64": frame_json(f64, false), "bbox_scan": frame_json(bbox, true),
@@ -86,10 +84,7 @@ pub fn report_md(r: &Rendered) -> String {
         )
     };
     let c = &r.coverage;
-    let bounds = match r.opts.bounds {
-        Strategy::Laine2011 => "Laine 2011",
-        Strategy::Bbox => "bounding-box scan",
-    };
+    let bounds = bounds_label(r.opts.bounds);
     let mut s = format!(
         "# uvt render report: {}\n\n{}×{} px, {} spp, bounds tile {}, pattern {} (seed {}), {} triangles; \
          core at configuration {} (fraction bits of position, t/u/v, bounds[, offset-grid shift of the bounded sample test]) with {bounds} bounds.\n\n",

@@ -1,22 +1,23 @@
-//! `uvt render`: one scene with the core (Laine bounds and the bounding-box scan) and with the f64
-//! reference; PNGs, a Markdown and a JSON report. Files are written to temporary names and
+//! `uvt render`: one scene with the core (its bounds strategy, Laine 2011 by default, and the
+//! bounding-box scan) and with the f64 reference; PNGs, a Markdown and a JSON report. Files are written to temporary names and
 //! renamed, so a failed run leaves no half-written output.
 
 use std::path::{Path, PathBuf};
 
 use anyhow::{anyhow, Context, Result};
-use uvt_core::bounds::strategy::BoundsStrategy;
-use uvt_core::{BboxScan, Laine2011, Precision};
+use uvt_core::config::registry::DEFAULT;
+use uvt_core::{with_config, with_strategy, BboxScan, Precision};
 
+use crate::bench::strategy::run_frame;
 use crate::frame::compare::compare;
 use crate::frame::driver::{run, RunOpts};
-use crate::frame::pipelines::{Fixed, Reference};
+use crate::frame::pipelines::Reference;
 use crate::precision::measure::decisions;
 use crate::scene::file::Scene;
 use crate::scene::pattern::Pattern;
 
 use super::heatmap;
-use super::opts::{precision_from_name, Decisions, RenderOpts, Rendered, Strategy};
+use super::opts::{Decisions, RenderOpts, Rendered};
 use super::report::{report_json, report_md};
 
 /// Render a scene with all pipelines at the default options.
@@ -24,39 +25,20 @@ pub fn render(scene: &Scene) -> Result<Rendered> {
     render_with(scene, &RenderOpts::default())
 }
 
-/// Render a scene with all pipelines, the core at `o.precision` with `o.bounds`.
+/// Render a scene with all pipelines, the core at `o.precision` with `o.bounds` (any
+/// configuration of the registry, any strategy of its list).
 pub fn render_with(scene: &Scene, o: &RenderOpts) -> Result<Rendered> {
-    use uvt_core::Prec;
-    match o.precision {
-        (6, 6, 2) => with_prec::<Prec<6, 6, 2>>(scene, o),
-        (8, 8, 4) => with_prec::<Prec<8, 8, 4>>(scene, o),
-        (12, 12, 8) => with_prec::<Prec<12, 12, 8>>(scene, o),
-        (16, 16, 16) => with_prec::<uvt_core::DefaultPrecision>(scene, o),
-        (a, b, c) => Err(precision_from_name(&format!("{a}/{b}/{c}")).unwrap_err()),
-    }
+    with_config!(o.precision, P => pipelines::<P>(scene, o))
+        .ok_or_else(|| anyhow!("configuration {} is not in the registry", o.precision))?
 }
 
-fn with_prec<P: Precision + Sync>(scene: &Scene, o: &RenderOpts) -> Result<Rendered> {
-    match o.bounds {
-        Strategy::Laine2011 => pipelines::<P, _>(scene, o, Laine2011),
-        Strategy::Bbox => pipelines::<P, _>(scene, o, BboxScan),
-    }
-}
-
-fn pipelines<P: Precision + Sync, B: BoundsStrategy + Sync>(
-    scene: &Scene,
-    o: &RenderOpts,
-    strat: B,
-) -> Result<Rendered>
-where
-    B::Coeffs: Send + Sync,
-{
+fn pipelines<P: Precision + Sync>(scene: &Scene, o: &RenderOpts) -> Result<Rendered> {
     let say = |k: u32, what: &str| {
         if o.progress {
             eprintln!("render: [{k}/4] {what}");
         }
     };
-    let default = o.precision == (16, 16, 16);
+    let default = o.precision == DEFAULT;
     let exact = Pattern::new(scene.pattern, scene.spp, scene.seed);
     let pattern = if default {
         exact.clone()
@@ -80,22 +62,14 @@ where
         label,
         ..RunOpts::for_scene(scene, &colors)
     };
-    let fixed = Fixed::<_, P> {
-        prec: std::marker::PhantomData,
-        strat,
-        vp,
-        tris: &core,
-        pattern: &pattern,
-    };
     say(1, "core with its bounds, and the oracle's dense sampling");
-    let fixed = run(
-        &fixed,
-        &pattern,
-        &RunOpts {
-            oracle: Some(&scene.tris),
-            ..opts("uvt fixed")
-        },
-    );
+    let fixed_opts = RunOpts {
+        oracle: Some(&scene.tris),
+        ..opts("uvt fixed")
+    };
+    let fixed =
+        with_strategy!(o.bounds, s => run_frame::<_, P>(s, vp, &core, &pattern, &fixed_opts))
+            .ok_or_else(|| anyhow!("unknown bounds strategy {:?}", o.bounds))?;
     say(2, "f64 reference");
     let f64 = run(
         &Reference {
@@ -107,17 +81,7 @@ where
         &opts("uvt f64"),
     );
     say(3, "core with the bounding-box scan");
-    let bbox = run(
-        &Fixed::<_, P> {
-            prec: std::marker::PhantomData,
-            strat: BboxScan,
-            vp,
-            tris: &core,
-            pattern: &pattern,
-        },
-        &pattern,
-        &opts("bbox scan"),
-    );
+    let bbox = run_frame::<_, P>(BboxScan, vp, &core, &pattern, &opts("bbox scan"));
     say(4, "comparing core and reference sample by sample");
     let coverage = if default {
         Decisions::from_diff(&compare(&scene.tris, &core, vp, &pattern))

@@ -10,6 +10,7 @@
 
 use rand::{Rng, SeedableRng};
 use serde::Serialize;
+use uvt_core::config::registry::Config;
 use uvt_core::config::unit::Full;
 use uvt_core::sample::bounded;
 use uvt_core::{
@@ -34,13 +35,21 @@ pub struct Grid {
 }
 
 impl Grid {
-    /// `bounded-16-16-16-20`, the committed sets' configuration.
-    pub const DEFAULT: Grid = Grid {
-        off: 20,
-        pos: 16,
-        tuv: 16,
-    };
-    /// The configuration name of session conventions (`bounded-P-T-B-O`, B = P here).
+    /// The committed sets' configuration: [`BoundedPrecision`]'s grids
+    /// (`bounded-16-16-16-20`).
+    pub const DEFAULT: Grid = Grid::of(Config::of::<BoundedPrecision>());
+    /// The grid of bounded configuration `c` (B = P here); a compile-time error for another.
+    const fn of(c: Config) -> Grid {
+        match c.off() {
+            Some(off) if !c.planar() && c.bnd() == c.pos() => Grid {
+                off,
+                pos: c.pos(),
+                tuv: c.tuv(),
+            },
+            _ => panic!("not a bounded configuration with B = P"),
+        }
+    }
+    /// The configuration's name (`bounded-P-T-B-O`, B = P here).
     pub fn name(&self) -> String {
         format!(
             "bounded-{}-{}-{}-{}",

@@ -1,5 +1,5 @@
 //! Planar sample-test records (`psample_in.hex` / `psample_out.hex`) of the planar static
-//! configuration `planar-16-16-16-20` (`uvt_core::PlanarPrecision`, `core/src/planar.rs`):
+//! configuration ([`PLANAR`]: `uvt_core::PlanarPrecision`, `core/src/planar.rs`):
 //! self-contained inputs of `uvt_core::sample::planar::planar_eval` — the static triangle's raw t0
 //! vertices (x, y, z, w; CoC 0, t1 = t0), the viewport, **what the planar setup hands the
 //! per-sample test** (the edge normals `n_k = (a, b, c)`, the orientation σ, the depth plane `G`
@@ -16,6 +16,7 @@
 
 use rand::{Rng, SeedableRng};
 use serde::Serialize;
+use uvt_core::config::registry::{name_of, PLANAR};
 use uvt_core::sample::planar;
 use uvt_core::sample::planar::PlanarEval;
 use uvt_core::setup::planar::PlanarEdges;
@@ -24,8 +25,11 @@ use uvt_core::{Ops, PlanarPrecision, SamplePattern, ScreenPos, Setup, Triangle, 
 use super::bsample::area;
 use super::format::Rec;
 
-/// The configuration of the records.
-pub const CONFIG: &str = "planar-16-16-16-20";
+/// The configuration of the records: the registry's name of [`PLANAR`].
+pub const CONFIG: &str = match name_of(PLANAR) {
+    Some(n) => n,
+    None => panic!("the planar configuration is in the registry"),
+};
 
 /// The static triangle of `t`'s t0 vertices (CoC 0): what the planar test reads of any
 /// triangle.
