@@ -53,7 +53,7 @@ enum Cmd {
         /// configs` (e.g. exact-12-12-8); the f64 reference stays exact
         #[arg(long, default_value = names::DEFAULT_ALIAS)]
         precision: String,
-        /// memory budget of the scene, e.g. 512M or 8G (estimate in host/src/budget.rs)
+        /// memory budget of the scene, e.g. 512M or 8G (estimate in host/src/scene/budget.rs)
         #[arg(long, default_value = "4G")]
         mem_budget: String,
     },
@@ -83,7 +83,7 @@ enum Cmd {
         /// the axis-aligned limit's two efforts, low and high, each dense points per pixel and
         /// face-search proposals per face: `D0:S0,D1:S1` (default 16:16,64:64); the search runs
         /// in (u, v, t) with a 2D clip per point, seeds on the tile's centre line and line pushes
-        /// of every face (host/src/oracle.rs)
+        /// of every face (host/src/oracle/)
         #[arg(long)]
         limit_effort: Option<String>,
         /// the core's configuration: `default` or any name of `uvt configs` (the f64 reference
@@ -155,7 +155,7 @@ enum Cmd {
         /// scene file (JSON, format in host/scenes/README.md)
         scene: PathBuf,
         /// largest allowed distance (px) from an edge of a decision differing from the exact
-        /// image (default 1/32 px; host/src/fit.rs says why)
+        /// image (default 1/32 px; host/src/fit/select.rs says why)
         #[arg(long, allow_hyphen_values = true)]
         tolerance: Option<String>,
         /// output directory for fit.md and fit.json

@@ -254,16 +254,12 @@ fn rtl_sample_test_unit_matches_other_configurations() {
 /// (`uvt_host::cost`) counts, for the DSP48E1 (25 × 18) and ECP5 (18 × 18) ports.
 #[test]
 fn rtl_multiplier_is_exact_and_tiles_as_the_cost_model_counts() {
-    use uvt_core::config::registry::Config;
+    use uvt_core::config::registry;
     use uvt_core::widths::stages::table;
     use uvt_host::config::multipliers::{dsp48e1_tiling, ecp5_tiling, Tiling};
     let mut pairs: Vec<(u32, u32)> = Vec::new();
-    for name in uvt_host::config::multipliers::SWEEP
-        .iter()
-        .filter(|n| n.starts_with("bounded"))
-    {
-        let cfg = Config::parse(name).unwrap();
-        for r in table(&cfg).rows().filter(|r| r.stage == "sample") {
+    for entry in registry::sweep().filter(|e| e.config.off().is_some() && !e.config.planar()) {
+        for r in table(&entry.config).rows().filter(|r| r.stage == "sample") {
             for m in r.mul.iter().flatten() {
                 if !pairs.contains(&(m.a, m.b)) {
                     pairs.push((m.a, m.b));

@@ -297,7 +297,7 @@ fn bench_rows_every_strategy_conservative_at_the_bounded_precision() {
         false,
         None,
     )
-    .expect("a configuration of PRECISIONS");
+    .expect("a configuration of the registry");
     assert_eq!(rows.len(), 4);
     for r in &rows {
         assert_eq!(r.precision, "bounded-16-16-16-20");

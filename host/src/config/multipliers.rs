@@ -27,13 +27,6 @@ use uvt_core::config::registry::{self, Config, EXACT};
 use uvt_core::widths::row::Mul;
 use uvt_core::widths::stages::table;
 
-use super::names::{swept_count, swept_names};
-
-/// The names of the precision sweep as a constant, read from the registry
-/// ([`uvt_core::config::registry::sweep`], which every host tool iterates); kept for
-/// `tests/tests/bsample.rs` until it reads the registry itself.
-pub const SWEEP: [&str; swept_count(false)] = swept_names(false);
-
 /// Widest top chunk multiplied in LUTs instead of a row of hard multipliers.
 pub const LUT_CHUNK: u32 = 8;
 

@@ -205,7 +205,7 @@ pub fn fit_md(f: &Fit) -> String {
         s += &format!("| {n} | {c} |\n");
     }
     s += &format!(
-        "\nSmallest unit accepting every class: **{}**.\n\n## Configuration\n\nDocumented error distance d_q per configuration (largest over primitives with a screen-space bound; `host/src/fit.rs`), sample-test cost of the {} unit:\n\n| configuration | d_q px | worst primitive | meets {} px | DSP48E1 | Σ bit-products |\n|---|---|---|---|---|---|\n",
+        "\nSmallest unit accepting every class: **{}**.\n\n## Configuration\n\nDocumented error distance d_q per configuration (largest over primitives with a screen-space bound; `host/src/config/dq.rs`), sample-test cost of the {} unit:\n\n| configuration | d_q px | worst primitive | meets {} px | DSP48E1 | Σ bit-products |\n|---|---|---|---|---|---|\n",
         f.unit, f.unit, f.tolerance_px
     );
     for c in &f.configs {
@@ -233,7 +233,7 @@ pub fn fit_md(f: &Fit) -> String {
         f.planar_degenerate.1
     );
     s += &format!(
-        "\nNarrowest configuration meeting the tolerance: **{}**.\n\n## Bounds strategy and tile size\n\nCost = setup ops + tile ops + predicate ops + sample tests × ops per test × width factor {:.3} (`host/src/fit.rs`); score = covered samples per unit of cost.\n\n| strategy | tile | STE | tested | covered | setup ops | tile ops | predicate ops | ops/test | cost | score |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "\nNarrowest configuration meeting the tolerance: **{}**.\n\n## Bounds strategy and tile size\n\nCost = setup ops + tile ops + predicate ops + sample tests × ops per test × width factor {:.3} (`host/src/fit/confirm.rs`); score = covered samples per unit of cost.\n\n| strategy | tile | STE | tested | covered | setup ops | tile ops | predicate ops | ops/test | cost | score |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
         f.config, f.width_factor
     );
     for r in &f.strategies {
@@ -275,7 +275,7 @@ pub fn fit_md(f: &Fit) -> String {
         yes(c.beyond_tolerance == 0)
     );
     s += &format!(
-        "| decisions ≠ f64 no rounding explains (`compare.rs` check) | {} of {} compared | {} |\n",
+        "| decisions ≠ f64 no rounding explains (`host/src/frame/compare.rs` check) | {} of {} compared | {} |\n",
         c.beyond_bound,
         c.compared,
         yes(c.beyond_bound == 0)
@@ -342,7 +342,7 @@ pub fn fit_md(f: &Fit) -> String {
         }
         None => {
             s += &format!(
-                "| M4F instructions per setup / tile / sample, flash | not measured | not measured | – |\n\nM4F figures: not measured ({} absent or without these units; `bash core/examples/m4_report.sh --units [FILE {PLANAR}]` writes it).\n",
+                "| M4F instructions per setup / tile / sample, flash | not measured | not measured | – |\n\nM4F figures: not measured ({} absent or without these units; `bash demo/m4_report.sh --units [FILE {PLANAR}]` writes it).\n",
                 f.m4_path
             )
         }

@@ -76,7 +76,7 @@ pub fn load_units(path: &Path) -> Result<Option<Vec<SynthUnit>>> {
 pub fn planar_md(synth: Option<&[SynthUnit]>, synth_path: &Path) -> String {
     let name = uvt_core::config::registry::PLANAR.to_string();
     let mut s = format!(
-        "\nStatic-only unit at the planar static configuration `{name}` (`uvt_core::static_unit`; RTL `vectors/rtl/uvt_psample.v`, synthesized counts from `{}`; the other units at `{name}` carry the bounded unit beside the planar test and have no RTL of their own):\n\n| unit | sample test DSP48E1 estimate | synthesized DSP48E1 / LUT / FF | MULT18X18D estimate | synthesized MULT18X18D / LUT4 / FF | Σ bit-products | products |\n|---|---|---|---|---|---|---|\n",
+        "\nStatic-only unit at the planar static configuration `{name}` (`uvt_core::units::static_only`; RTL `vectors/rtl/uvt_psample.v`, synthesized counts from `{}`; the other units at `{name}` carry the bounded unit beside the planar test and have no RTL of their own):\n\n| unit | sample test DSP48E1 estimate | synthesized DSP48E1 / LUT / FF | MULT18X18D estimate | synthesized MULT18X18D / LUT4 / FF | Σ bit-products | products |\n|---|---|---|---|---|---|---|\n",
         synth_path.display()
     );
     let c = crate::config::planar_static::unit_cost(false, false).unwrap_or_default();

@@ -80,7 +80,7 @@ pub fn units_md(
     }
     if m4.is_none() {
         s += &format!(
-            "\nflash, RAM and M4F instructions: not measured (`{}` absent; `bash core/examples/m4_report.sh --units` writes it).\n",
+            "\nflash, RAM and M4F instructions: not measured (`{}` absent; `bash demo/m4_report.sh --units` writes it).\n",
             m4_path.display()
         );
     }

@@ -148,7 +148,7 @@ impl Costs {
     /// The notes under the table: where each cost comes from.
     pub fn notes(&self) -> String {
         let mut s = String::from(
-            "\nCost columns: *DSP48E1 / MULT18X18D* and *Σ bit-products* are the multiplier model of `host/src/cost.rs` for the sample test (from the width table of `core/src/widths.rs`; `uvt cost --config NAME` lists every product).",
+            "\nCost columns: *DSP48E1 / MULT18X18D* and *Σ bit-products* are the multiplier model of `host/src/config/multipliers.rs` for the sample test (from the width table of `core/src/widths/stages.rs`; `uvt cost --config NAME` lists every product).",
         );
         match &self.m4 {
             Some((p, f)) => {
@@ -159,7 +159,7 @@ impl Costs {
                     f.command
                 )
             }
-            None => s += " *M4F insn* and *host ns*: no M4 JSON (run `bash core/examples/m4_report.sh --sweep`).",
+            None => s += " *M4F insn* and *host ns*: no M4 JSON (run `bash demo/m4_report.sh --sweep`).",
         }
         match &self.synth {
             Some((p, v)) => {
@@ -203,7 +203,7 @@ pub fn plot_svg(rows: &[PrecRow], costs: &Costs, path: &Path) -> anyhow::Result<
         .fold((f64::MAX, 0.0f64), |(a, b), p| (a.min(p.3), b.max(p.3)));
     let axes: [(&str, Vec<(usize, f64)>); 2] = [
         (
-            "sample test DSP48E1 (model, host/src/cost.rs)",
+            "sample test DSP48E1 (model, host/src/config/multipliers.rs)",
             pts.iter().enumerate().map(|(i, p)| (i, p.1)).collect(),
         ),
         (

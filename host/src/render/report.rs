@@ -150,7 +150,7 @@ pub fn report_md(r: &Rendered) -> String {
     s += &format!(
         "## Core vs f64 reference\n\n{} (triangle, sample) pairs compared over every footprint sample, {} differ{sides} \
          (rate {:.2e}); largest distance of a differing sample from an edge {:.2e} px; not explained by the \
-         derived quantization bound at this precision (host/src/compare.rs; must be 0): {}.{viol} Resolved images differ in {} pixels (max channel difference {}).\n",
+         derived quantization bound at this precision (host/src/frame/compare.rs; must be 0): {}.{viol} Resolved images differ in {} pixels (max channel difference {}).\n",
         c.compared, c.differ, c.rate(), c.max_distance_px, c.beyond_bound,
         j["image_diff_fixed_vs_f64"]["pixels"], j["image_diff_fixed_vs_f64"]["max_channel"]
     );
