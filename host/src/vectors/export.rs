@@ -434,14 +434,17 @@ pub fn write(set: &Set, dir: &Path, kind: &str, seed: u64) -> Result<()> {
     if let Some(s) = &set.scene {
         outputs.push(("scene.json".into(), s.clone()));
     }
+    // The two "core" strings name the functions as the committed vector sets name them (kept
+    // byte for byte, format version unchanged): today `uvt_core::sample::bounded::eval` and
+    // `uvt_core::sample::planar::eval`.
     let manifest = json!({
         "format": "uvt-vectors", "format_version": FORMAT_VERSION, "generator": format!("uvt {}", env!("CARGO_PKG_VERSION")),
         "kind": kind, "seed": seed, "resolve_spp": set.spp, "word_bits": 32,
         "notes": "one record per line; words are 8 hex digits separated by a space; two's complement; a field wider than 32 bits spans whole words, most significant first; value = raw / 2^frac",
         "cases": set.cases, "files": files,
-        "bsample_config": {"name": Grid::DEFAULT.name(), "grid": Grid::DEFAULT, "core": "uvt_core::sample::bounded::eval with uvt_core::BoundedPrecision = Bounded<16, 16, 16, 20>"},
+        "bsample_config": {"name": Grid::DEFAULT.name(), "grid": Grid::DEFAULT, "core": "uvt_core::bounded_eval with uvt_core::BoundedPrecision = Bounded<16, 16, 16, 20>"},
         "bsample_coverage": set.bcov,
-        "psample_config": {"name": psample::CONFIG, "core": "uvt_core::sample::planar::eval on the planar setup of uvt_core::PlanarPrecision = Planar<16, 16, 16, 20> (static triangles; culled ones have no record)"},
+        "psample_config": {"name": psample::CONFIG, "core": "uvt_core::planar::planar_eval on the planar setup of uvt_core::PlanarPrecision = Planar<16, 16, 16, 20> (static triangles; culled ones have no record)"},
         "psample_coverage": set.pcov,
         "psample_cases": set.pcases,
     });
