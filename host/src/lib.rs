@@ -2,7 +2,7 @@
 //!
 //! What users run on a workstation: scenes, sample patterns, an independent f64 reference of
 //! every stage, a frame driver that runs the fixed-point core and the reference side by side,
-//! images, reports and the STE benchmark table. The binary is `uvt` (`src/main.rs`).
+//! images, reports and the STE benchmark table. The binary is `uvt` (`src/bin/uvt/`: `main.rs` runs a command, `cli.rs` declares them).
 //!
 //! Modules by what they do, from the bottom up; a file uses only files of the modules listed
 //! before its own (or earlier files of its own folder, as that folder's `mod.rs` lists them),

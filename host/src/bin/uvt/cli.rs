@@ -1,0 +1,244 @@
+//! The command line of `uvt`: every command and option (clap). Names of configurations and
+//! bounds strategies are checked against the core's registries where the command runs
+//! (`uvt_host::config::names`).
+
+use std::path::PathBuf;
+
+use clap::{Parser, Subcommand};
+use uvt_host::config::names;
+
+#[derive(Parser)]
+#[command(
+    name = "uvt",
+    version,
+    about = "uvt: bit-accurate stochastic rasterizer reference model, host tools"
+)]
+pub struct Cli {
+    #[command(subcommand)]
+    pub cmd: Cmd,
+}
+
+#[derive(Subcommand)]
+pub enum Cmd {
+    /// Render a scene (default: the built-in scene) with the core and the f64 reference.
+    Render {
+        /// scene file (JSON, format in host/scenes/README.md); omitted: the built-in default
+        /// scene with motion and defocus
+        scene: Option<PathBuf>,
+        /// output directory (created if absent)
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+        /// samples per pixel, 1..=64 (overrides the scene file)
+        #[arg(long)]
+        spp: Option<u16>,
+        /// bounds tile size 1, 2, 4 or 8 (overrides the scene file)
+        #[arg(long)]
+        tile: Option<u8>,
+        /// viewport WxH, e.g. 320x180 (overrides the scene file; the mesh form is re-projected)
+        #[arg(long)]
+        viewport: Option<String>,
+        /// sample pattern seed (overrides the scene file)
+        #[arg(long)]
+        seed: Option<u64>,
+        /// bounds strategy of the core: any of `uvt configs --strategies` (e.g. best)
+        #[arg(long, default_value = "laine2011")]
+        bounds: String,
+        /// the core's configuration: `default` (bounded-16-16-16-20) or any name of `uvt
+        /// configs` (e.g. exact-12-12-8); the f64 reference stays exact
+        #[arg(long, default_value = names::DEFAULT_ALIAS)]
+        precision: String,
+        /// memory budget of the scene, e.g. 512M or 8G (estimate in host/src/scene/budget.rs)
+        #[arg(long, default_value = "4G")]
+        mem_budget: String,
+    },
+    /// Built-in scenes.
+    #[command(subcommand)]
+    Scene(SceneCmd),
+    /// STE table analogous to Laine 2011 Table 1 (game and dense scenes, seven rows each).
+    BenchSte {
+        /// quarter resolution and tessellation (for tests)
+        #[arg(long)]
+        quick: bool,
+        /// also write the rows as JSON here
+        #[arg(long)]
+        json: Option<PathBuf>,
+        /// only this scene (game or dense)
+        #[arg(long)]
+        scene: Option<String>,
+        /// only this row (static, motion, motion2, defocus, defocus2, both, both2)
+        #[arg(long)]
+        row: Option<String>,
+        /// add the table over bounds-tile sizes 1, 2, 4, 8 (four times the strategy runs)
+        #[arg(long)]
+        tile_sweep: bool,
+        /// skip the axis-aligned limit (its search takes most of the run)
+        #[arg(long)]
+        no_limit: bool,
+        /// the axis-aligned limit's two efforts, low and high, each dense points per pixel and
+        /// face-search proposals per face: `D0:S0,D1:S1` (default 16:16,64:64); the search runs
+        /// in (u, v, t) with a 2D clip per point, seeds on the tile's centre line and line pushes
+        /// of every face (host/src/oracle/)
+        #[arg(long)]
+        limit_effort: Option<String>,
+        /// the core's configuration: `default` or any name of `uvt configs` (the f64 reference
+        /// and the axis-aligned limit stay exact)
+        #[arg(long, default_value = names::DEFAULT_ALIAS)]
+        precision: String,
+    },
+    /// Image error against run time: every bounds strategy at 1..64 spp against a 256-spp f64
+    /// reference; writes converge.md, converge.json, converge.svg.
+    Converge {
+        /// scene file (JSON); omitted: the built-in default scene
+        scene: Option<PathBuf>,
+        /// output directory
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+        /// frames per point (the median wall time is kept)
+        #[arg(long, default_value_t = 3)]
+        repeats: usize,
+    },
+    /// Sweep precisions against the f64 reference (error, run time, epsilon).
+    Precision {
+        /// small sizes and fewer rows (for tests)
+        #[arg(long)]
+        quick: bool,
+        /// output directory for precision.md, precision.json, precision.svg
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+        /// do not sweep: redraw the table and plot from a precision.json
+        #[arg(long)]
+        replot: Option<PathBuf>,
+        /// shrink the benchmark scenes by this factor beyond the quick size (default: 2 with
+        /// --quick, 1 without; a larger factor gives a tiny run)
+        #[arg(long)]
+        shrink: Option<u16>,
+        /// Cortex-M4F instruction counts per configuration (`bash demo/m4_report.sh --sweep`
+        /// writes it); its columns show "–" when the file does not exist
+        #[arg(long, default_value = "host/report/m4.json")]
+        m4: PathBuf,
+        /// synthesis results (vectors/rtl's synthesis script writes it); optional
+        #[arg(long, default_value = "host/report/synth.json")]
+        synth: PathBuf,
+        /// only these configurations (comma-separated names of `uvt configs`, e.g.
+        /// exact-16-16-16,planar-16-16-16-20); default: the sweep (`uvt configs --sweep`) and
+        /// the planar configuration
+        #[arg(long)]
+        configs: Option<String>,
+    },
+    /// Print the derived bit-width table (Markdown) of a configuration; without --config the
+    /// width section of core/README.md (the exact and the default configuration).
+    Widths {
+        /// configuration name: exact-P-T-B or bounded-P-T-B-O, any in range (e.g.
+        /// bounded-12-12-12-24); not planar-…
+        #[arg(long)]
+        config: Option<String>,
+    },
+    /// The hardware multiplier cost model (from the width table): totals per sweep
+    /// configuration and stage, or every multiplier of one configuration.
+    Cost {
+        /// configuration name (exact-P-T-B or bounded-P-T-B-O, any in range; not planar-…);
+        /// omitted: the sweep's totals
+        #[arg(long)]
+        config: Option<String>,
+    },
+    /// Which unit a scene needs: the smallest unit variant, the narrowest configuration whose
+    /// documented error distance meets the tolerance, the cheapest bounds strategy and tile size;
+    /// then a confirming render (exit status non-zero if a confirmation fails). Writes
+    /// DIR/fit.md and DIR/fit.json.
+    Fit {
+        /// scene file (JSON, format in host/scenes/README.md)
+        scene: PathBuf,
+        /// largest allowed distance (px) from an edge of a decision differing from the exact
+        /// image (default 1/32 px; host/src/fit/select.rs says why)
+        #[arg(long, allow_hyphen_values = true)]
+        tolerance: Option<String>,
+        /// output directory for fit.md and fit.json
+        #[arg(long, default_value = "out")]
+        out: PathBuf,
+        /// Cortex-M4F figures per unit (`bash demo/m4_report.sh --units` writes it); "not
+        /// measured" when absent
+        #[arg(long, default_value = "host/report/m4_units.json")]
+        m4_units: PathBuf,
+        /// Cortex-M4F figures per unit at the planar configuration (`bash demo/m4_report.sh
+        /// --units FILE planar-16-16-16-20`), used when fit picks it
+        #[arg(long, default_value = "host/report/m4_units_planar.json")]
+        m4_units_planar: PathBuf,
+        /// memory budget of the scene, e.g. 512M or 8G
+        #[arg(long, default_value = "4G")]
+        mem_budget: String,
+    },
+    /// The unit-variant table: per unit flash, RAM and M4F instructions (from m4_units.json),
+    /// the sample test's multiplier estimate restricted to the unit's stages and the RTL unit's
+    /// synthesized counts (from synth.json); then the static-only unit at the planar static
+    /// configuration (estimate and synthesized uvt_psample.v).
+    Units {
+        /// configuration name (exact-P-T-B or bounded-P-T-B-O, any in range; not planar-…)
+        #[arg(long, default_value = names::DEFAULT_NAME)]
+        config: String,
+        /// Cortex-M4F figures per unit
+        #[arg(long, default_value = "host/report/m4_units.json")]
+        m4_units: PathBuf,
+        /// synthesized RTL unit variants (`bash vectors/rtl/synth.sh` writes it); "not
+        /// synthesized" when absent
+        #[arg(long, default_value = "host/report/synth.json")]
+        synth: PathBuf,
+    },
+    /// Stiff and extreme cases: STE, error against f64 and conservativeness per scene file.
+    Stress {
+        /// folder of scene files
+        #[arg(default_value = "host/stress")]
+        dir: PathBuf,
+    },
+    /// Golden test vectors for RTL.
+    #[command(subcommand)]
+    Vectors(VecCmd),
+    /// The named configurations (uvt_core::config::registry) every option and report takes:
+    /// one line each — name, kind (exact, bounded, planar), `sweep` if the precision sweep runs
+    /// it, `default` for the default.
+    Configs {
+        /// only the precision sweep's names, one per line (what `demo/m4_report.sh --sweep`
+        /// runs)
+        #[arg(long, conflicts_with = "strategies")]
+        sweep: bool,
+        /// the bounds strategies instead (uvt_core::bounds::registry), one per line
+        #[arg(long)]
+        strategies: bool,
+    },
+}
+
+#[derive(Subcommand)]
+pub enum SceneCmd {
+    /// List the built-in scenes.
+    List,
+    /// Write a built-in scene as a scene file (direct form, clip space) to stdout or --out.
+    Export {
+        /// scene name (see `uvt scene list`)
+        name: String,
+        /// write to this file instead of stdout
+        #[arg(long)]
+        out: Option<PathBuf>,
+    },
+}
+
+#[derive(Subcommand)]
+pub enum VecCmd {
+    /// Write vectors: without --scene the committed set (unit/, frame_a/, frame_b/) into DIR.
+    Export {
+        /// frame-level vectors of this scene file only
+        #[arg(long)]
+        scene: Option<PathBuf>,
+        /// output directory
+        #[arg(long)]
+        out: PathBuf,
+        /// seed of the unit-level random inputs
+        #[arg(long, default_value_t = uvt_host::vectors::committed::DEFAULT_SEED)]
+        seed: u64,
+    },
+    /// Re-run the core on the vectors in DIR and compare bit for bit.
+    Check {
+        /// a vector set, or a folder of sets
+        dir: PathBuf,
+    },
+    /// Print the bit-layout tables of every file (Markdown).
+    Layout,
+}
