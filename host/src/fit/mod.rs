@@ -12,12 +12,14 @@
 //! - [`synth`]: the synthesized counts of the RTL units;
 //! - [`units_table`]: the unit-variant table of `uvt units`;
 //! - [`select`]: the selection — tolerance, d_q of every configuration, the narrowest one;
-//! - [`confirm`]: the strategy search and the confirmation render;
+//! - [`search`]: the strategy and tile-size search, the scene's inputs on a configuration's grids;
+//! - [`confirm`]: the confirmation render;
 //! - [`report`]: `uvt fit`'s driver and its Markdown and JSON report.
 
 pub mod confirm;
 pub mod m4;
 pub mod report;
+pub mod search;
 pub mod select;
 pub mod synth;
 pub mod units_table;

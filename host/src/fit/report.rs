@@ -12,8 +12,9 @@ use crate::config::planar_static;
 use crate::config::units::{full_sample_cost, unit_for, unit_sample_cost, unit_terms, UnitCost};
 use crate::scene::file::Scene;
 
-use super::confirm::{confirm, search_strategies, Confirm, StratCost};
+use super::confirm::{confirm, Confirm};
 use super::m4::{M4Data, M4Unit};
+use super::search::{search_strategies, StratCost};
 use super::select::{classes, config_fits, narrowest, ConfigFit, DEFAULT_TOLERANCE_PX};
 
 /// Everything `uvt fit` found.
@@ -233,7 +234,7 @@ pub fn fit_md(f: &Fit) -> String {
         f.planar_degenerate.1
     );
     s += &format!(
-        "\nNarrowest configuration meeting the tolerance: **{}**.\n\n## Bounds strategy and tile size\n\nCost = setup ops + tile ops + predicate ops + sample tests × ops per test × width factor {:.3} (`host/src/fit/confirm.rs`); score = covered samples per unit of cost.\n\n| strategy | tile | STE | tested | covered | setup ops | tile ops | predicate ops | ops/test | cost | score |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "\nNarrowest configuration meeting the tolerance: **{}**.\n\n## Bounds strategy and tile size\n\nCost = setup ops + tile ops + predicate ops + sample tests × ops per test × width factor {:.3} (`host/src/fit/search.rs`); score = covered samples per unit of cost.\n\n| strategy | tile | STE | tested | covered | setup ops | tile ops | predicate ops | ops/test | cost | score |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
         f.config, f.width_factor
     );
     for r in &f.strategies {

@@ -11,7 +11,7 @@ use uvt_core::config::unit::Full;
 use uvt_core::{Laine2011, Ops, Outcome, PixelRect, Precision, ScreenPos, Setup, Triangle};
 
 use crate::config::planar_static;
-use crate::fit::confirm::inputs;
+use crate::fit::search::inputs;
 use crate::frame::compare::{check_sample_eps, eps_of, footprint_union, Rounding};
 use crate::reference;
 use crate::scene::file::Scene;

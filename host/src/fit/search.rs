@@ -1,0 +1,109 @@
+//! The strategy and tile-size search of `uvt fit` (on the bench machinery's counters) and the
+//! scene's inputs on a configuration's grids.
+//!
+//! **Cost of a bounds strategy and tile size** (from the bench machinery's counters, one frame
+//! of the scene at the chosen configuration): `setup ops + tile-bounds ops + per-sample predicate
+//! ops + sample tests × s`, with `s` the counted operations per sample test of that frame times
+//! the sample test's width factor `Σ bit-products / (products · 32 · 32)` of the chosen unit and
+//! configuration (its products in units of a 32 × 32 product; the counters count ≤ 32-bit
+//! operations). Every strategy covers the same samples (bounds are conservative), so the score —
+//! covered samples per unit of cost, i.e. STE per unit of per-test cost — ranks by total cost;
+//! ties go to the earlier strategy of [`crate::bench::strategy::strategies`] (the registry's
+//! order) and the smaller tile.
+
+use serde::Serialize;
+use uvt_core::config::registry::Config;
+use uvt_core::{with_config, Precision, Triangle};
+
+use crate::bench::strategy::{run_strategy_at, strategies};
+use crate::frame::driver::RunOpts;
+use crate::scene::file::Scene;
+use crate::scene::pattern::Pattern;
+
+use super::select::TILES;
+
+/// One strategy and tile size of the search.
+#[derive(Clone, Debug, Serialize)]
+pub struct StratCost {
+    /// strategy name
+    pub strategy: String,
+    /// bounds-tile size
+    pub tile: u8,
+    /// STE (covered / tested)
+    pub ste: f64,
+    /// samples covered
+    pub covered: u64,
+    /// samples tested
+    pub tested: u64,
+    /// setup ops (incl. the strategy's preparation)
+    pub ops_setup: u64,
+    /// tile-bounds ops
+    pub ops_tile: u64,
+    /// per-sample predicate ops
+    pub ops_predicate: u64,
+    /// counted ops per sample test
+    pub ops_per_test: f64,
+    /// total cost (module docs)
+    pub cost: f64,
+    /// covered samples per unit of cost
+    pub score: f64,
+}
+
+/// Run every strategy at every tile size at configuration `config`; `width` is the sample
+/// test's width factor. `None` for a configuration outside the registry.
+pub fn search_strategies(
+    scene: &Scene,
+    config: Config,
+    width: f64,
+) -> Option<anyhow::Result<Vec<StratCost>>> {
+    with_config!(config, P => search_at::<P>(scene, width))
+}
+
+fn search_at<P: Precision + Sync>(scene: &Scene, width: f64) -> anyhow::Result<Vec<StratCost>> {
+    let (core, pat) = inputs::<P>(scene)?;
+    let colors = scene.colors();
+    let mut out = Vec::new();
+    for name in strategies() {
+        for tile in TILES {
+            let o = RunOpts {
+                tile,
+                ..RunOpts::for_scene(scene, &colors)
+            };
+            let (r, _) = run_strategy_at::<P>(name, scene.core_viewport(), &core, &pat, &o)
+                .ok_or_else(|| anyhow::anyhow!("unknown strategy {name}"))?;
+            let s = &r.stats;
+            let per_test = s.ops_sample as f64 / s.samples_tested.max(1) as f64;
+            let cost = (s.ops_setup + s.ops_bounds + s.ops_predicate) as f64
+                + s.samples_tested as f64 * per_test * width;
+            out.push(StratCost {
+                strategy: name.to_string(),
+                tile,
+                ste: s.ste(),
+                covered: s.samples_covered,
+                tested: s.samples_tested,
+                ops_setup: s.ops_setup,
+                ops_tile: s.ops_bounds,
+                ops_predicate: s.ops_predicate,
+                ops_per_test: per_test,
+                cost,
+                score: s.samples_covered as f64 / cost.max(1.0),
+            });
+        }
+    }
+    Ok(out)
+}
+
+/// The scene's core triangles and sample table on `P`'s grids.
+pub(crate) fn inputs<P: Precision>(scene: &Scene) -> anyhow::Result<(Vec<Triangle>, Pattern)> {
+    let core = scene
+        .tris
+        .iter()
+        .enumerate()
+        .map(|(i, t)| {
+            t.to_core_with::<P>()
+                .map_err(|e| anyhow::anyhow!("triangles[{i}]: {e}"))
+        })
+        .collect::<anyhow::Result<Vec<_>>>()?;
+    let pat = Pattern::new(scene.pattern, scene.spp, scene.seed).with_tuv(P::TUV_FRAC);
+    Ok((core, pat))
+}
