@@ -48,3 +48,18 @@ pub trait FramePipeline: Sync {
     /// the bounds as real (u, v, t) ranges
     fn ranges(&self, b: &Self::Bounds) -> [(f64, f64); 3];
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `scene::budget::per_triangle_bytes` counts a setup outcome as this `Result`.
+    #[test]
+    fn setup_out_has_the_size_the_budget_counts() {
+        use core::mem::size_of;
+        assert_eq!(
+            size_of::<SetupOut<PixelRect>>(),
+            size_of::<Result<(PixelRect, Class), Cull>>()
+        );
+    }
+}

@@ -41,9 +41,11 @@ pub const PER_PIXEL_BYTES: u64 = 64;
 pub fn per_triangle_bytes() -> u64 {
     use std::mem::size_of;
     // The frame driver keeps per triangle only its setup's outcome, footprint and ops (each
-    // band recomputes the setups it renders, one at a time).
+    // band recomputes the setups it renders, one at a time). Its outcome,
+    // `frame::pipeline::SetupOut<PixelRect>`, has the layout of this `Result` (a test in
+    // `frame::pipeline` holds the two sizes equal; the scene folder does not import the frame's).
     let entry = size_of::<(
-        crate::frame::pipeline::SetupOut<uvt_core::PixelRect>,
+        Result<(uvt_core::PixelRect, uvt_core::Class), uvt_core::Cull>,
         uvt_core::Ops,
     )>();
     let mesh = size_of::<[u32; 3]>() + size_of::<glam::DVec3>() + 2 * size_of::<[f64; 5]>();
