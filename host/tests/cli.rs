@@ -309,6 +309,15 @@ fn bad_resource_limits_fail_fast() {
             r#"{"obj":"/dev/zero"}"#,
             &["meshes[0].obj", "/dev/zero", "not a regular file"][..],
         ),
+        // A missing file: the reason is named, not only the file.
+        (
+            r#"{"obj":"/nonexistent/missing.obj"}"#,
+            &[
+                "meshes[0].obj",
+                "cannot read OBJ file /nonexistent/missing.obj",
+                "No such file or directory",
+            ][..],
+        ),
     ] {
         bad(
             &format!(
@@ -434,8 +443,13 @@ fn render_options_override_the_scene() {
         ),
         (&["--viewport", "16*12"][..], &["--viewport", "WxH"][..]),
         (&["--viewport", "0x12"][..], &["--viewport"][..]),
-        (&["--spp", "65"][..], &["--spp 65"][..]),
+        (&["--spp", "65"][..], &["--spp", "65", "1..=64"][..]),
+        // A negative value is a bad value (its real range named), not an option.
+        (&["--spp", "-4"][..], &["--spp", "-4", "1..=64"][..]),
+        (&["--spp=-4"][..], &["--spp", "-4", "1..=64"][..]),
+        (&["--spp", "0"][..], &["--spp", "1..=64"][..]),
         (&["--tile", "3"][..], &["--tile 3"][..]),
+        (&["--tile", "-1"][..], &["--tile", "-1"][..]),
     ] {
         let o2 = dir.path().join("never");
         let mut a = vec!["render", scene.as_str(), "--out", o2.to_str().unwrap()];
@@ -446,6 +460,10 @@ fn render_options_override_the_scene() {
         for n in needles {
             assert!(e.contains(n), "{args:?}: {e:?} lacks {n:?}");
         }
+        assert!(
+            !e.contains("0..=65535") && !e.contains("-- -"),
+            "{args:?}: {e:?}"
+        );
         assert!(!o2.exists());
     }
 }
@@ -482,17 +500,19 @@ fn report_explains_itself_and_nulls_what_is_not_counted() {
     ] {
         assert!(md.contains(n), "report.md lacks {n}");
     }
-    // The heat map carries its legend below the map: wider/taller than the viewport, with white
-    // (the scale's maximum) at the right end of the colour bar.
+    // The heat map carries its legend below the map, the 32×24 map enlarged ×8 to a readable
+    // size, with white (the scale's maximum) at the right end of the colour bar.
     let heat = image::open(out.join("heat.png")).unwrap().to_rgb8();
+    let k = uvt_host::render::diff::scale_for(32, 24);
+    assert_eq!(k, 8);
     assert_eq!(
         (heat.width(), heat.height()),
-        (
-            uvt_host::render::heatmap::MIN_W,
-            24 + uvt_host::render::heatmap::LEGEND_H
-        )
+        (32 * k, 24 * k + uvt_host::render::heatmap::LEGEND_H)
     );
-    assert_eq!(heat.get_pixel(heat.width() - 5, 24 + 18).0, [255, 255, 255]);
+    assert_eq!(
+        heat.get_pixel(heat.width() - 5, 24 * k + 18).0,
+        [255, 255, 255]
+    );
 }
 
 #[test]

@@ -7,7 +7,7 @@
 use std::path::Path;
 
 use uvt_core::config::registry::PLANAR;
-use uvt_host::fit::select::{classes, config_fits, DEFAULT_TOLERANCE_PX};
+use uvt_host::fit::select::{classes, config_fits, Tolerance, DEFAULT_TOLERANCE_PX};
 use uvt_host::precision::measure::planar_decisions;
 use uvt_host::scene::file::Scene;
 
@@ -36,7 +36,7 @@ fn scene(name: &str, vp: (u16, u16), spp: u16, tris: &[[[f64; 4]; 3]]) -> Scene 
 /// the report are "not measured").
 fn fit_without_m4(s: &Scene, tol: Option<f64>) -> uvt_host::fit::report::Fit {
     let none = Path::new("/nonexistent");
-    uvt_host::fit::report::fit(s, tol, None, none, None, none).unwrap()
+    uvt_host::fit::report::fit(s, tol, None, None, none, None, none).unwrap()
 }
 
 /// Guard band: two vertices at x = ±8000 clip units, w = 1 (NDC ±8000), y = 0.37 — their
@@ -118,7 +118,12 @@ fn fit_never_picks_planar_beyond_the_tolerance() {
     let s = guard_band();
     let cls = classes(&s).unwrap();
     let planar = |tol: f64| {
-        let (fits, _) = config_fits(&s, &cls, (false, false), tol);
+        let fits = config_fits(
+            &s,
+            &cls,
+            (false, false),
+            &Tolerance::new(tol, None, s.viewport),
+        );
         fits.into_iter()
             .find(|f| f.config == PLANAR.to_string())
             .expect("fit lists the planar configuration")
@@ -128,8 +133,8 @@ fn fit_never_picks_planar_beyond_the_tolerance() {
     let tol = 2.5;
     let pl = planar(tol);
     assert!(
-        pl.d_q_px > tol && !pl.meets,
-        "planar d_q {} px on the guard-band scene",
+        pl.d_q_px.unwrap() > tol && !pl.meets,
+        "planar d_q {:?} px on the guard-band scene",
         pl.d_q_px
     );
     let f = fit_without_m4(&s, Some(tol));
@@ -138,7 +143,7 @@ fn fit_never_picks_planar_beyond_the_tolerance() {
     assert!(f.ok, "{:?}", f.confirm);
     println!("guard band at {tol} px: fit picks {}", f.config);
     // Above the planar d_q it meets and, the cheapest static-only sample test, is picked.
-    let tol = pl.d_q_px * 1.01;
+    let tol = pl.d_q_px.unwrap() * 1.01;
     assert!(planar(tol).meets);
     let f = fit_without_m4(&s, Some(tol));
     assert_eq!(f.config, PLANAR.to_string());
@@ -150,10 +155,15 @@ fn fit_never_picks_planar_beyond_the_tolerance() {
 fn fit_picks_planar_for_a_benign_static_scene_when_cheapest() {
     let s = benign();
     let cls = classes(&s).unwrap();
-    let (fits, _) = config_fits(&s, &cls, (false, false), DEFAULT_TOLERANCE_PX);
+    let fits = config_fits(
+        &s,
+        &cls,
+        (false, false),
+        &Tolerance::new(DEFAULT_TOLERANCE_PX, None, s.viewport),
+    );
     for f in &fits {
         println!(
-            "{}: d_q {:.6} px, DSP48E1 {:?}, Σ bit-products {:?}",
+            "{}: d_q {:?} px, DSP48E1 {:?}, Σ bit-products {:?}",
             f.config,
             f.d_q_px,
             f.unit_cost.as_ref().map(|c| c.dsp48e1),
@@ -164,7 +174,7 @@ fn fit_picks_planar_for_a_benign_static_scene_when_cheapest() {
         .iter()
         .find(|f| f.config == PLANAR.to_string())
         .unwrap();
-    assert!(pl.meets, "planar d_q {} px", pl.d_q_px);
+    assert!(pl.meets, "planar d_q {:?} px", pl.d_q_px);
     let key = |f: &uvt_host::fit::select::ConfigFit| {
         f.unit_cost
             .as_ref()

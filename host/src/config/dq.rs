@@ -15,14 +15,46 @@
 //! `ρ_k = max over both ends of (|x| + |c|)/w` its largest |x/w| over shutter and lens (the
 //! guard band: a vertex far outside the view multiplies the w error) — both ends suffice because
 //! `|x(t)| + |c(t)|` is at most the lerp of the ends' values and w(t) is the lerp of positive
-//! ends. In pixels that is `·W/2` (x) and `·H/2` (y). d_q of the primitive is the largest of
-//! these over its vertices and both axes, plus the sample position's sub-pixel floor (1/256 px).
+//! ends. In pixels that is `·W/2` (x) and `·H/2` (y); the vertex moves by at most the Euclidean
+//! length of the two. d_q of the primitive is the largest of these over its vertices, plus the
+//! sample position's sub-pixel floor (less than 1/256 px in x and in y: `√2/256` px). (Before
+//! issue 24 the axes were maximised separately and the floor counted once; on `uvt precision
+//! --quick` 20 of exact-16-16-16's 7462 differing decisions and 1172 of bounded-12-12-12-26's
+//! 179321 lay beyond that smaller figure.)
 //! A point of an edge between two vertices in front of the camera is a convex combination of
 //! their projections, so it moves by at most the larger vertex displacement. **No screen-space
 //! bound** exists when some vertex has `w_min ≤ Δw_k` (it can reach the camera plane): such
 //! primitives are counted separately and the confirmation reports their measured distances.
 //! The scene's d_q of a configuration is the maximum over the other primitives.
+//!
+//! **The error statement of every primitive** ([`Statement`], [`statement`]). Two forms, and
+//! every primitive has the first:
+//! - *Clip space (backward error), always.* Every decision of the configuration equals the exact
+//!   decision, at a sample position within 1/256 px of the pattern's (the sub-pixel floor), of
+//!   the primitive with every vertex — at the sample's (t, u, v), lens offset included — moved
+//!   by at most `δ = max_k ‖(Δx_k, Δy_k, Δw_k)‖₂` clip units (the terms above, with the CoC at
+//!   its largest over the shutter). This is how the datapath is built: the core decides exactly
+//!   on its rounded inputs, which lie within the rounding terms of the exact ones, and the
+//!   bounded datapath's perturbation is a vertex perturbation of at most ε
+//!   (`uvt_core::Eps`, `core/src/sample/bounded/mod.rs`). δ is finite for every finite input, camera-plane
+//!   crossers and w ≤ 0 vertices included. It is *measured* by `compare.rs`'s per-sample check
+//!   (`check_sample_eps`): a differing decision that no edge value or det within its Hadamard
+//!   bound for a δ-perturbation explains is counted "beyond bound" (must be 0).
+//! - *Screen space (d_q px), where it says something.* When every vertex stays in front of the
+//!   camera by more than its Δw (above) and the resulting d_q is at most the viewport's diagonal
+//!   ([`pixel_limit`]), every differing decision lies within d_q px of an edge. A larger d_q is
+//!   finite but meaningless (a displacement bound larger than the screen): `host/stress/domain_edge.json`'s
+//!   second triangle has a vertex at w = 2^-16 (one LSB) and x = 8191.99, so its projection
+//!   x/w ≈ 5·10^8 moves by ≈ 2.5·10^8 under a half-LSB w rounding — 8·10^11 px on the 2048-px
+//!   viewport, although that vertex is "at infinity" in one direction either way and the
+//!   per-sample distances stay below 3·10^-3 px. Such a primitive, and one whose vertex can
+//!   reach the camera plane, is stated in clip space only; no report says "no bound".
+//!
+//! A tolerance given in pixels (`uvt fit --tolerance τ`) has the clip form
+//! `τ_c = 2τ/max(W, H)` ([`clip_tolerance`]): the clip displacement that moves a vertex at w = 1
+//! by at most τ px.
 
+use serde::Serialize;
 use uvt_core::config::registry::Config;
 use uvt_core::{Class, Viewport};
 
@@ -44,15 +76,19 @@ pub fn prim_dq(tri: &SceneTri, vp: (u16, u16), r: &Rounding, eps: [f64; 3]) -> O
         if wmin.partial_cmp(&dw) != Some(std::cmp::Ordering::Greater) {
             return None;
         }
+        let mut sq = 0.0;
         for (axis, e) in [(0usize, eps[0]), (1, eps[1])] {
             let dx = r.pos + r.tuv * (b[axis] - a[axis]).abs() + lens + e;
             let rho =
                 ((a[axis].abs() + a[4].abs()) / a[3]).max((b[axis].abs() + b[4].abs()) / b[3]);
             let px = (dx + rho * dw) / (wmin - dw) * half[axis];
-            d = d.max(px);
+            sq += px * px;
         }
+        // The vertex moves by at most its x and y bounds together (Euclidean).
+        d = d.max(sq.sqrt());
     }
-    Some(d + r.sub)
+    // The sample moves by less than `sub` in x and in y: √2·sub.
+    Some(d + std::f64::consts::SQRT_2 * r.sub)
 }
 
 /// The datapath perturbation of `cfg` for a primitive of `class` in `vp`, clip units.
@@ -60,4 +96,51 @@ pub fn eps_clip(cfg: &Config, class: Class, vp: Viewport) -> [f64; 3] {
     let e = uvt_core::Eps::of(cfg.off(), class, vp);
     let raw = |v: i32| f64::from(v) / 65536.0;
     [raw(e.x()[0]), raw(e.x()[1]), raw(e.w())]
+}
+
+/// The error statement of one primitive at one configuration (module docs, "The error statement
+/// of every primitive").
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Statement {
+    /// backward error δ, clip units: every decision equals the exact decision of the primitive
+    /// with every vertex moved by at most this (always finite)
+    pub clip: f64,
+    /// d_q, px: every differing decision lies within this distance of an edge; `None` where
+    /// only the clip statement applies (a vertex can reach the camera plane, or d_q exceeds
+    /// [`pixel_limit`])
+    pub px: Option<f64>,
+}
+
+/// The statement of one primitive with rounding `r` and datapath perturbation `eps` (raw clip
+/// units x, y, w; module docs).
+pub fn statement(tri: &SceneTri, vp: (u16, u16), r: &Rounding, eps: [f64; 3]) -> Statement {
+    Statement {
+        clip: backward(tri, r, eps),
+        px: prim_dq(tri, vp, r, eps).filter(|d| *d <= pixel_limit(vp)),
+    }
+}
+
+/// The backward error δ (clip units) of one primitive: the largest vertex perturbation
+/// `‖(Δx_k, Δy_k, Δw_k)‖₂` over its vertices (module docs; the terms of [`prim_dq`]).
+pub fn backward(tri: &SceneTri, r: &Rounding, eps: [f64; 3]) -> f64 {
+    let mut d: f64 = 0.0;
+    for k in 0..3 {
+        let (a, b) = (tri.t0[k], tri.t1[k]);
+        let cmax = a[4].abs().max(b[4].abs());
+        let lens = r.pos + r.tuv * (b[4] - a[4]).abs() + r.tuv * cmax;
+        let dx = |axis: usize| r.pos + r.tuv * (b[axis] - a[axis]).abs() + lens + eps[axis];
+        let dw = r.pos + r.tuv * (b[3] - a[3]).abs() + eps[2];
+        d = d.max((dx(0) * dx(0) + dx(1) * dx(1) + dw * dw).sqrt());
+    }
+    d
+}
+
+/// The largest d_q (px) stated in screen space: the viewport's diagonal (module docs).
+pub fn pixel_limit(vp: (u16, u16)) -> f64 {
+    f64::from(vp.0).hypot(f64::from(vp.1))
+}
+
+/// The clip form of a tolerance of `px` pixels on viewport `vp` (module docs).
+pub fn clip_tolerance(px: f64, vp: (u16, u16)) -> f64 {
+    2.0 * px / f64::from(vp.0.max(vp.1))
 }

@@ -13,8 +13,9 @@
 //! `ρ_k = |x_k|/w_k` its guard-band ratio and `w_k` its w (nearest w: static), likewise in y; d_q
 //! is the largest over vertices and axes plus the 1/256 px sub-pixel floor. A far off-screen
 //! vertex at small w (ρ up to 2^13, ε up to ¼ clip unit) therefore gets a large d_q — `uvt fit`
-//! then does not pick the configuration at a small tolerance. A vertex with `w_k ≤ Δw_k` has no
-//! screen-space bound (reported separately, as in `fit`). Moving and defocused classes run the
+//! then does not pick the configuration at a small tolerance. A vertex with `w_k ≤ Δw_k` (or a d_q beyond the viewport's
+//! diagonal) is stated in clip space ([`statement`]; `super::dq`, "The error statement of every
+//! primitive"). Moving and defocused classes run the
 //! bounded test of `bounded-16-16-16-20`: their d_q is that configuration's.
 //!
 //! **Sample-test multipliers** ([`planar_sample_cost`]), from the implementation in
@@ -34,7 +35,7 @@ use crate::frame::compare::{eps_of, Rounding};
 use crate::scene::file::Scene;
 use crate::scene::tri::SceneTri;
 
-use super::dq::eps_clip;
+use super::dq::{eps_clip, Statement};
 use super::multipliers::{dsp48e1, ecp5};
 use super::units::{unit_sample_cost, UnitCost};
 
@@ -97,6 +98,23 @@ pub fn prim_dq(
     let r = Rounding::at(16, 16);
     let d = super::dq::prim_dq(tri, vp, &r, eps(core, class, cvp))?;
     Some(d * scale)
+}
+
+/// The error statement (`super::dq::Statement`: backward error, and d_q where the pixel form
+/// applies) of one primitive at this configuration; `None` for an invalid viewport.
+pub fn statement(
+    tri: &SceneTri,
+    core: &uvt_core::Triangle,
+    class: Class,
+    vp: (u16, u16),
+) -> Option<Statement> {
+    let cvp = Viewport::new(vp.0, vp.1).ok()?;
+    Some(super::dq::statement(
+        tri,
+        vp,
+        &Rounding::at(16, 16),
+        eps(core, class, cvp),
+    ))
 }
 
 /// Static triangles the planar setup culls as degenerate (`det P' = 0` after the vertex

@@ -15,7 +15,10 @@ use uvt_core::{
     Setup, StaticOnly, Triangle, Unit,
 };
 
-use crate::frame::compare::{check_sample_eps, eps_of, footprint_union, Rounding};
+use crate::config::dq::Statement;
+use crate::frame::compare::{
+    check_sample_eps, check_sample_within, eps_of, footprint_union, Rounding,
+};
 use crate::frame::driver::{run, RunOpts};
 use crate::frame::pipelines::Fixed;
 use crate::reference;
@@ -23,6 +26,7 @@ use crate::scene::file::Scene;
 use crate::scene::pattern::Pattern;
 
 use super::search::inputs;
+use super::select::Tolerance;
 
 /// Visible setups the confirmation renderer holds (`Renderer<_, CAPACITY>`, on a thread with a
 /// large stack); a scene with more is reported as not confirmed.
@@ -41,15 +45,25 @@ pub struct Confirm {
     /// differing decisions that no input rounding or datapath perturbation explains
     /// (`compare.rs`'s rigorous check; must be 0)
     pub beyond_bound: u64,
-    /// differing decisions of primitives with a screen-space bound farther than the tolerance
-    /// from the nearest edge (must be 0)
+    /// differing decisions of primitives stated in pixels (`crate::config::dq`)
+    pub differ_px: u64,
+    /// of those, farther than the primitive's own d_q from the nearest edge (the statement fails;
+    /// must be 0)
+    pub beyond_statement: u64,
+    /// of those, farther than the tolerance from the nearest edge (must be 0)
     pub beyond_tolerance: u64,
     /// largest distance (px) of such a difference from the nearest edge
     pub max_distance_px: f64,
-    /// differing decisions of primitives without a screen-space bound (reported, not bounded)
-    pub differ_unbounded: u64,
-    /// their largest distance (px) from the nearest edge
-    pub max_distance_unbounded_px: f64,
+    /// differing decisions of primitives stated in clip space only
+    pub differ_clip: u64,
+    /// of those, not consistent with a triangle within the clip tolerance (no edge value or det
+    /// within its bound for a perturbation of τ_c: `compare::check_sample_within`; must be 0)
+    pub beyond_tolerance_clip: u64,
+    /// the largest backward error δ (clip units) of a primitive with such a difference
+    pub max_clip: f64,
+    /// their largest distance (px) from the nearest edge (measured; the clip statement does not
+    /// bound it)
+    pub max_distance_clip_px: f64,
     /// the chosen unit's renderer produced the full unit's colour at every sample, the same
     /// resolved image and the same tested / covered counts
     pub identical_to_full: Option<bool>,
@@ -88,7 +102,9 @@ impl Confirm {
     pub fn ok(&self) -> bool {
         self.violations == 0
             && self.beyond_bound == 0
+            && self.beyond_statement == 0
             && self.beyond_tolerance == 0
+            && self.beyond_tolerance_clip == 0
             && self.identical_to_full == Some(true)
             && self.matches_host_driver == Some(true)
             && self
@@ -98,7 +114,8 @@ impl Confirm {
     }
 }
 
-/// Confirm the choice (module docs); `bounded[i]`: primitive i has a screen-space bound.
+/// Confirm the choice (module docs); `statements[i]`: primitive i's error statement at `config`
+/// (`crate::fit::select::ConfigFit::statements`).
 /// `None` for a configuration outside the registry or a strategy outside its list.
 pub fn confirm(
     scene: &Scene,
@@ -106,11 +123,11 @@ pub fn confirm(
     strategy: &str,
     tile: u8,
     unit: &str,
-    tol: f64,
-    bounded: &[bool],
+    tol: &Tolerance,
+    statements: &[Option<Statement>],
 ) -> Option<anyhow::Result<Confirm>> {
     with_config!(config, P => with_strategy!(strategy, s => {
-        confirm_at::<P, _>(scene, s, tile, unit, tol, bounded)
+        confirm_at::<P, _>(scene, s, tile, unit, tol, statements)
     }))
     .flatten()
 }
@@ -120,8 +137,8 @@ fn confirm_at<P: Precision + Sync, B>(
     strat: B,
     tile: u8,
     unit: &str,
-    tol: f64,
-    bounded: &[bool],
+    tol: &Tolerance,
+    statements: &[Option<Statement>],
 ) -> anyhow::Result<Confirm>
 where
     B: BoundsStrategy + Sync + Send + Copy + 'static,
@@ -130,7 +147,7 @@ where
     (P, MotionOnly): Select<B>,
 {
     let (core, pat) = inputs::<P>(scene)?;
-    let mut c = brute_force::<P, B>(scene, &core, &pat, strat, tile, tol, bounded);
+    let mut c = brute_force::<P, B>(scene, &core, &pat, strat, tile, tol, statements);
     // The host driver's image for the same choice.
     let colors = scene.colors();
     let o = RunOpts {
@@ -315,8 +332,8 @@ fn brute_force<P: Precision + Sync, B: BoundsStrategy + Sync>(
     pat: &Pattern,
     strat: B,
     tile: u8,
-    tol: f64,
-    bounded: &[bool],
+    tol: &Tolerance,
+    statements: &[Option<Statement>],
 ) -> Confirm
 where
     B::Coeffs: Send + Sync,
@@ -346,7 +363,7 @@ where
             };
             let full = Setup::unculled::<P>(ct, vp);
             let eps = eps_of(&full);
-            let has_bound = bounded.get(i).copied().unwrap_or(false);
+            let statement = statements.get(i).copied().flatten();
             for py in region.y0..region.y1 {
                 for px in region.x0..region.x1 {
                     let tb = fx.as_ref().and_then(|(x, k)| {
@@ -391,12 +408,31 @@ where
                                 reference::sample::edge_distance_px(st, v, x, y, e[2], e[3], e[4]);
                             let k = check_sample_eps(st, v, x, y, e[2], e[3], e[4], &rounding, eps);
                             c.beyond_bound += u64::from(k.ratio > 1.0);
-                            if has_bound {
-                                c.max_distance_px = c.max_distance_px.max(d);
-                                c.beyond_tolerance += u64::from(d > tol);
-                            } else {
-                                c.differ_unbounded += 1;
-                                c.max_distance_unbounded_px = c.max_distance_unbounded_px.max(d);
+                            match statement {
+                                Some(Statement { px: Some(dq), .. }) => {
+                                    c.differ_px += 1;
+                                    c.max_distance_px = c.max_distance_px.max(d);
+                                    c.beyond_statement += u64::from(d > dq);
+                                    c.beyond_tolerance += u64::from(d > tol.px);
+                                }
+                                Some(Statement { clip, px: None }) => {
+                                    c.differ_clip += 1;
+                                    c.max_clip = c.max_clip.max(clip);
+                                    c.max_distance_clip_px = c.max_distance_clip_px.max(d);
+                                    let w = check_sample_within(
+                                        st,
+                                        v,
+                                        x,
+                                        y,
+                                        e[2],
+                                        e[3],
+                                        e[4],
+                                        rounding.sub,
+                                        [tol.clip; 3],
+                                    );
+                                    c.beyond_tolerance_clip += u64::from(w.ratio > 1.0);
+                                }
+                                None => c.beyond_statement += 1,
                             }
                         }
                         if hf.is_some() {
@@ -414,11 +450,14 @@ where
             a.differ += b.differ;
             a.violations += b.violations;
             a.beyond_bound += b.beyond_bound;
+            a.differ_px += b.differ_px;
+            a.beyond_statement += b.beyond_statement;
             a.beyond_tolerance += b.beyond_tolerance;
             a.max_distance_px = a.max_distance_px.max(b.max_distance_px);
-            a.differ_unbounded += b.differ_unbounded;
-            a.max_distance_unbounded_px =
-                a.max_distance_unbounded_px.max(b.max_distance_unbounded_px);
+            a.differ_clip += b.differ_clip;
+            a.beyond_tolerance_clip += b.beyond_tolerance_clip;
+            a.max_clip = a.max_clip.max(b.max_clip);
+            a.max_distance_clip_px = a.max_distance_clip_px.max(b.max_distance_clip_px);
             a
         })
 }

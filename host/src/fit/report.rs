@@ -15,7 +15,7 @@ use crate::scene::file::Scene;
 use super::confirm::{confirm, Confirm};
 use super::m4::{M4Data, M4Unit};
 use super::search::{search_strategies, StratCost};
-use super::select::{classes, config_fits, narrowest, ConfigFit, DEFAULT_TOLERANCE_PX};
+use super::select::{classes, config_fits, narrowest, ConfigFit, Tolerance, DEFAULT_TOLERANCE_PX};
 
 /// Everything `uvt fit` found.
 #[derive(Clone, Debug, Serialize)]
@@ -28,15 +28,20 @@ pub struct Fit {
     pub tolerance_px: f64,
     /// "given" or "default (1/32 px)"
     pub tolerance_source: String,
+    /// the tolerance's clip form (clip units) for the primitives stated in clip space only, and
+    /// where it came from
+    pub tolerance_clip: f64,
+    /// "given (--clip-tolerance)" or "2·τ/max(W, H)"
+    pub tolerance_clip_source: String,
     /// primitives per class: static, motion, defocus, motion+defocus
     pub class_counts: [u64; 4],
     /// the chosen unit
     pub unit: String,
     /// d_q of every configuration
     pub configs: Vec<ConfigFit>,
-    /// primitives without a screen-space bound at the chosen configuration (a vertex can reach
-    /// the camera plane)
-    pub unbounded_primitives: Vec<usize>,
+    /// primitives stated in clip space only at the chosen configuration (a vertex can reach the
+    /// camera plane, or d_q beyond the viewport's diagonal; `crate::config::dq`)
+    pub clip_primitives: Vec<usize>,
     /// static triangles that the planar configuration's vertex rounding makes degenerate
     /// (culled; the default does not cull them) and the static triangles:
     /// `crate::config::planar_static::degenerate`
@@ -76,6 +81,7 @@ pub struct Fit {
 pub fn fit(
     scene: &Scene,
     tolerance: Option<f64>,
+    clip_tolerance: Option<f64>,
     m4: Option<M4Data>,
     m4_path: &Path,
     m4_planar: Option<M4Data>,
@@ -85,6 +91,13 @@ pub fn fit(
         Some(t) => (t, "given (--tolerance)".to_string()),
         None => (DEFAULT_TOLERANCE_PX, "default (1/32 px)".to_string()),
     };
+    let tol_full = Tolerance::new(tol, clip_tolerance, scene.viewport);
+    let clip_source = if clip_tolerance.is_some() {
+        "given (--clip-tolerance)"
+    } else {
+        "2·τ/max(W, H): τ px for a vertex at w = 1"
+    }
+    .to_string();
     let cls = classes(scene)?;
     let mut counts = [0u64; 4];
     for c in &cls {
@@ -95,8 +108,8 @@ pub fn fit(
         cls.iter().any(|c| c.defocus()),
     );
     let terms = unit_terms(unit).ok_or_else(|| anyhow!("unknown unit {unit}"))?;
-    let (fits, _) = config_fits(scene, &cls, terms, tol);
-    let chosen = narrowest(&fits, tol)?.clone();
+    let fits = config_fits(scene, &cls, terms, &tol_full);
+    let chosen = narrowest(&fits, &tol_full)?.clone();
     let cfg = registry::find(&chosen.config)
         .ok_or_else(|| anyhow!("not a configuration of the registry: {}", chosen.config))?;
     let planar = cfg.planar();
@@ -118,12 +131,16 @@ pub fn fit(
         })
         .ok_or_else(|| anyhow!("no strategy ran"))?
         .clone();
-    // The chosen configuration's own primitives without a screen-space bound.
-    let bounded: Vec<bool> = (0..scene.tris.len())
-        .map(|i| !chosen.unbounded.contains(&i))
-        .collect();
-    let conf = confirm(scene, cfg, &best.strategy, best.tile, unit, tol, &bounded)
-        .ok_or_else(|| anyhow!("cannot confirm {} / {}", chosen.config, best.strategy))??;
+    let conf = confirm(
+        scene,
+        cfg,
+        &best.strategy,
+        best.tile,
+        unit,
+        &tol_full,
+        &chosen.statements,
+    )
+    .ok_or_else(|| anyhow!("cannot confirm {} / {}", chosen.config, best.strategy))??;
     // The full unit's instructions on this unit's primitives when measured (same work), else
     // on the full demo; flash and RAM are the programs'.
     let find = |rows: &[M4Unit], n: &str| rows.iter().find(|r| r.unit == n).cloned();
@@ -154,10 +171,12 @@ pub fn fit(
         viewport: scene.viewport,
         tolerance_px: tol,
         tolerance_source: source,
+        tolerance_clip: tol_full.clip,
+        tolerance_clip_source: clip_source,
         class_counts: counts,
         unit: unit.to_string(),
         configs: fits,
-        unbounded_primitives: chosen.unbounded.clone(),
+        clip_primitives: chosen.clip_primitives.clone(),
         planar_degenerate: planar_static::degenerate(scene),
         config: chosen.config,
         strategies,
@@ -199,33 +218,36 @@ pub fn fit_md(f: &Fit) -> String {
     ]
     .map(Class::name);
     let mut s = format!(
-        "# uvt fit: {} ({}×{})\n\nTolerance: {} px, {}.\n\n## Unit\n\n| class | primitives |\n|---|---|\n",
-        f.scene, f.viewport.0, f.viewport.1, f.tolerance_px, f.tolerance_source
+        "# uvt fit: {} ({}×{})\n\nTolerance: {} px, {}; in clip space (primitives stated in clip space only): {:.3e} clip units, {}.\n\n## Unit\n\n| class | primitives |\n|---|---|\n",
+        f.scene, f.viewport.0, f.viewport.1, f.tolerance_px, f.tolerance_source, f.tolerance_clip, f.tolerance_clip_source
     );
     for (n, c) in names.iter().zip(f.class_counts) {
         s += &format!("| {n} | {c} |\n");
     }
     s += &format!(
-        "\nSmallest unit accepting every class: **{}**.\n\n## Configuration\n\nDocumented error distance d_q per configuration (largest over primitives with a screen-space bound; `host/src/config/dq.rs`), sample-test cost of the {} unit:\n\n| configuration | d_q px | worst primitive | meets {} px | DSP48E1 | Σ bit-products |\n|---|---|---|---|---|---|\n",
-        f.unit, f.unit, f.tolerance_px
+        "\nSmallest unit accepting every class: **{}**.\n\n## Configuration\n\nError statement per configuration (`host/src/config/dq.rs`): every primitive has a backward error δ in clip units; where it says something, also a documented error distance d_q in pixels. Largest d_q over the primitives stated in pixels, largest δ over those stated in clip space only (–: none), sample-test cost of the {} unit:\n\n| configuration | d_q px | worst primitive | δ clip units (clip-space primitives) | worst primitive | meets {} px / {:.3e} clip | DSP48E1 | Σ bit-products |\n|---|---|---|---|---|---|---|---|\n",
+        f.unit, f.unit, f.tolerance_px, f.tolerance_clip
     );
     for c in &f.configs {
         let (d, b) = c.unit_cost.as_ref().map_or(
             ("not modelled (exact)".to_string(), "–".to_string()),
             |u| (u.dsp48e1.to_string(), u.bit_products.to_string()),
         );
+        let idx = |i: Option<usize>| i.map_or("–".into(), |i| i.to_string());
         s += &format!(
-            "| {} | {:.6} | {} | {} | {d} | {b} |\n",
+            "| {} | {} | {} | {} | {} | {} | {d} | {b} |\n",
             c.config,
-            c.d_q_px,
-            c.worst_primitive.map_or("–".into(), |i| i.to_string()),
+            c.d_q_px.map_or("–".into(), |d| format!("{d:.6}")),
+            idx(c.worst_primitive),
+            c.clip.map_or("–".into(), |d| format!("{d:.3e}")),
+            idx(c.worst_clip_primitive),
             if c.meets { "yes" } else { "no" }
         );
     }
-    if !f.unbounded_primitives.is_empty() {
+    if !f.clip_primitives.is_empty() {
         s += &format!(
-            "\nPrimitives without a screen-space bound (a vertex can reach the camera plane), excluded from d_q and measured below: {:?}.\n",
-            f.unbounded_primitives
+            "\nPrimitives stated in clip space only at {} (a vertex can reach the camera plane, or d_q would exceed the viewport's diagonal): {:?}. Each of their decisions equals the exact decision of the primitive with every vertex moved by at most its δ.\n",
+            f.config, f.clip_primitives
         );
     }
     s += &format!(
@@ -269,11 +291,27 @@ pub fn fit_md(f: &Fit) -> String {
         yes(c.violations == 0)
     );
     s += &format!(
-        "| decisions ≠ f64 beyond the tolerance (primitives with a bound; max distance px) | {} of {} differing ({:.6}) | {} |\n",
+        "| decisions ≠ f64 of primitives stated in pixels: beyond their own d_q | {} of {} differing | {} |\n",
+        c.beyond_statement,
+        c.differ_px,
+        yes(c.beyond_statement == 0)
+    );
+    s += &format!(
+        "| decisions ≠ f64 of primitives stated in pixels: beyond {} px (max distance px) | {} of {} differing ({:.6}) | {} |\n",
+        f.tolerance_px,
         c.beyond_tolerance,
-        c.differ - c.differ_unbounded,
+        c.differ_px,
         c.max_distance_px,
         yes(c.beyond_tolerance == 0)
+    );
+    s += &format!(
+        "| decisions ≠ f64 of primitives stated in clip space only: not explained by a {:.3e}-clip-unit vertex move (largest δ {:.3e}; distance from an edge, not bounded: {:.6} px) | {} of {} differing | {} |\n",
+        f.tolerance_clip,
+        c.max_clip,
+        c.max_distance_clip_px,
+        c.beyond_tolerance_clip,
+        c.differ_clip,
+        yes(c.beyond_tolerance_clip == 0)
     );
     s += &format!(
         "| decisions ≠ f64 no rounding explains (`host/src/frame/compare.rs` check) | {} of {} compared | {} |\n",
@@ -302,12 +340,6 @@ pub fn fit_md(f: &Fit) -> String {
                 x.tested_covered[0], x.tested_covered[1]
             )),
             yes(x.identical_to_full == Some(true))
-        );
-    }
-    if !f.unbounded_primitives.is_empty() {
-        s += &format!(
-            "\nPrimitives without a screen-space bound: {} differing decisions, largest distance {:.6} px from an edge (measured; no bound applies).\n",
-            c.differ_unbounded, c.max_distance_unbounded_px
         );
     }
     let (m, d) = (&f.sample_cost, &f.sample_cost_full_default);

@@ -10,6 +10,12 @@
 //! differ from the exact image only within 1/32 px of an edge) and lets the geometry decide.
 //! A tolerance below the exact 16-fraction-bit configuration's d_q is unreachable (error).
 //!
+//! **Both forms of the statement** (`crate::config::dq`). A configuration meets the tolerance
+//! when every primitive stated in pixels has d_q ≤ τ and every primitive stated in clip space
+//! only (a vertex can reach the camera plane, or d_q beyond the viewport's diagonal) has a
+//! backward error δ ≤ τ_c, the clip form of the tolerance (`2τ/max(W, H)` unless
+//! `--clip-tolerance` gives it). No primitive is left without a requirement.
+//!
 //! **Narrowest configuration**: the bounded configurations of the sweep and the planar static
 //! configuration (`uvt_core::config::registry::PLANAR`, `crate::config::planar_static`: its own per-primitive d_q,
 //! from each static triangle's rounding residual, nearest w and guard-band ratio; its cost per
@@ -22,7 +28,7 @@ use serde::Serialize;
 use uvt_core::config::registry::{self, EXACT, PLANAR};
 use uvt_core::Class;
 
-use crate::config::dq::{eps_clip, prim_dq};
+use crate::config::dq::{clip_tolerance, eps_clip, statement, Statement};
 use crate::config::planar_static;
 use crate::config::units::{unit_sample_cost, UnitCost};
 use crate::frame::compare::Rounding;
@@ -34,21 +40,92 @@ pub const DEFAULT_TOLERANCE_PX: f64 = 1.0 / 32.0;
 /// Bounds-tile sizes tried.
 pub const TILES: [u8; 4] = [1, 2, 4, 8];
 
-/// The scene's d_q at one configuration.
+/// The tolerance in both forms of the error statement (`crate::config::dq`): pixels for the
+/// primitives stated in screen space, clip units (backward error) for the others.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct Tolerance {
+    /// pixels
+    pub px: f64,
+    /// clip units
+    pub clip: f64,
+}
+
+impl Tolerance {
+    /// `px` pixels and its clip form `2·px/max(W, H)` on viewport `vp` (`dq::clip_tolerance`),
+    /// unless `clip` is given.
+    pub fn new(px: f64, clip: Option<f64>, vp: (u16, u16)) -> Tolerance {
+        Tolerance {
+            px,
+            clip: clip.unwrap_or_else(|| clip_tolerance(px, vp)),
+        }
+    }
+}
+
+/// The scene's error statements at one configuration.
 #[derive(Clone, Debug, Serialize)]
 pub struct ConfigFit {
     /// configuration name
     pub config: String,
-    /// largest d_q over primitives with a screen-space bound (px; 0 if there are none)
-    pub d_q_px: f64,
+    /// largest d_q over the primitives stated in pixels (`None`: there are none)
+    pub d_q_px: Option<f64>,
     /// the primitive attaining it
     pub worst_primitive: Option<usize>,
+    /// largest backward error δ (clip units) over the primitives stated in clip space only
+    /// (`None`: there are none)
+    pub clip: Option<f64>,
+    /// the primitive attaining it
+    pub worst_clip_primitive: Option<usize>,
     /// the chosen unit's sample-test cost (`None`: exact, not modelled per unit)
     pub unit_cost: Option<UnitCost>,
-    /// meets the tolerance
+    /// meets the tolerance in both forms
     pub meets: bool,
-    /// primitives without a screen-space bound at this configuration
-    pub unbounded: Vec<usize>,
+    /// primitives stated in clip space only at this configuration
+    pub clip_primitives: Vec<usize>,
+    /// every primitive's statement, in scene order (`None`: outside the core's domain)
+    #[serde(skip)]
+    pub statements: Vec<Option<Statement>>,
+}
+
+impl ConfigFit {
+    fn new(
+        config: String,
+        statements: Vec<Option<Statement>>,
+        unit_cost: Option<UnitCost>,
+        tol: &Tolerance,
+    ) -> ConfigFit {
+        let (mut d_q_px, mut worst_primitive) = (None::<f64>, None);
+        let (mut clip, mut worst_clip_primitive) = (None::<f64>, None);
+        let mut clip_primitives = Vec::new();
+        for (i, st) in statements.iter().enumerate() {
+            let Some(st) = st else { continue };
+            match st.px {
+                Some(d) if d_q_px.map_or(true, |m| d > m) => {
+                    d_q_px = Some(d);
+                    worst_primitive = Some(i);
+                }
+                Some(_) => {}
+                None => {
+                    clip_primitives.push(i);
+                    if clip.map_or(true, |m| st.clip > m) {
+                        clip = Some(st.clip);
+                        worst_clip_primitive = Some(i);
+                    }
+                }
+            }
+        }
+        let meets = d_q_px.map_or(true, |d| d <= tol.px) && clip.map_or(true, |c| c <= tol.clip);
+        ConfigFit {
+            config,
+            d_q_px,
+            worst_primitive,
+            clip,
+            worst_clip_primitive,
+            unit_cost,
+            meets,
+            clip_primitives,
+            statements,
+        }
+    }
 }
 
 /// Classes of the scene's primitives (at the default precision's grids; a coarser grid can only
@@ -66,77 +143,53 @@ pub fn classes(scene: &Scene) -> Result<Vec<Class>> {
         .collect()
 }
 
-/// d_q of every configuration of the sweep and of the planar static configuration
-/// (`crate::config::planar_static`, last) for the scene's primitives and their classes, and the
-/// primitives without a screen-space bound in some configuration (the same for every configuration
-/// up to ε).
+/// The statements of every configuration of the sweep and of the planar static configuration
+/// (`crate::config::planar_static`, last) for the scene's primitives and their classes.
 pub fn config_fits(
     scene: &Scene,
     classes: &[Class],
     unit: (bool, bool),
-    tol: f64,
-) -> (Vec<ConfigFit>, Vec<usize>) {
+    tol: &Tolerance,
+) -> Vec<ConfigFit> {
     let vp = scene.core_viewport();
-    let mut unbounded = Vec::new();
     let mut out = Vec::new();
-    let mut push = |config: &str, dqs: &mut dyn Iterator<Item = Option<f64>>, cost| {
-        let (d, worst, unb) = worst_dq(dqs);
-        if unb.len() > unbounded.len() {
-            unbounded = unb.clone();
-        }
-        out.push(ConfigFit {
-            config: config.to_string(),
-            d_q_px: d,
-            worst_primitive: worst,
-            unit_cost: cost,
-            meets: d <= tol,
-            unbounded: unb,
-        });
-    };
     for e in registry::sweep() {
         let (name, cfg) = (e.name, e.config);
         let r = Rounding::at(cfg.pos(), cfg.tuv());
-        let mut dqs = scene
+        let st = scene
             .tris
             .iter()
             .zip(classes)
-            .map(|(t, c)| prim_dq(t, scene.viewport, &r, eps_clip(&cfg, *c, vp)));
-        push(name, &mut dqs, unit_sample_cost(&cfg, unit.0, unit.1));
+            .map(|(t, c)| Some(statement(t, scene.viewport, &r, eps_clip(&cfg, *c, vp))))
+            .collect();
+        out.push(ConfigFit::new(
+            name.to_string(),
+            st,
+            unit_sample_cost(&cfg, unit.0, unit.1),
+            tol,
+        ));
     }
-    // The planar static configuration (`crate::config::planar_static`): per-primitive ε for static
-    // triangles.
-    let mut dqs = scene.tris.iter().zip(classes).map(|(t, c)| {
-        let core = t.to_core().ok()?;
-        planar_static::prim_dq(t, &core, *c, scene.viewport, 1.0)
-    });
-    push(
-        &PLANAR.to_string(),
-        &mut dqs,
+    // The planar static configuration: per-primitive ε for static triangles.
+    let st = scene
+        .tris
+        .iter()
+        .zip(classes)
+        .map(|(t, c)| {
+            let core = t.to_core().ok()?;
+            planar_static::statement(t, &core, *c, scene.viewport)
+        })
+        .collect();
+    out.push(ConfigFit::new(
+        PLANAR.to_string(),
+        st,
         planar_static::unit_cost(unit.0, unit.1),
-    );
-    (out, unbounded)
-}
-
-/// The largest of the primitives' d_q (`None`: no screen-space bound), the primitive it
-/// belongs to, and the primitives without a bound.
-fn worst_dq(dqs: &mut dyn Iterator<Item = Option<f64>>) -> (f64, Option<usize>, Vec<usize>) {
-    let (mut d, mut worst) = (0.0f64, None);
-    let mut unb = Vec::new();
-    for (i, x) in dqs.enumerate() {
-        match x {
-            Some(x) if x > d => {
-                d = x;
-                worst = Some(i);
-            }
-            Some(_) => {}
-            None => unb.push(i),
-        }
-    }
-    (d, worst, unb)
+        tol,
+    ));
+    out
 }
 
 /// The narrowest configuration meeting the tolerance (module docs), or the unreachable error.
-pub fn narrowest(fits: &[ConfigFit], tol: f64) -> Result<&ConfigFit> {
+pub fn narrowest<'a>(fits: &'a [ConfigFit], tol: &Tolerance) -> Result<&'a ConfigFit> {
     let mut bounded: Vec<&ConfigFit> = fits.iter().filter(|f| f.unit_cost.is_some()).collect();
     bounded.sort_by_key(|f| {
         let c = f
@@ -157,23 +210,39 @@ pub fn narrowest(fits: &[ConfigFit], tol: f64) -> Result<&ConfigFit> {
         return Ok(exact);
     }
     bail!(
-        "tolerance {tol} px is unreachable for this scene: even {} ({} fraction bits, exact test) has a documented error distance of {:.6} px (primitive {}); the smallest tolerance it meets is {:.6} px",
+        "tolerance {} px (clip form {:.3e} clip units) is unreachable for this scene: even {} ({} fraction bits, exact test) states {} and {}",
+        tol.px,
+        tol.clip,
         exact.config,
         EXACT.pos(),
-        exact.d_q_px,
-        exact.worst_primitive.map_or("?".into(), |i| i.to_string()),
-        exact.d_q_px
+        exact.d_q_px.map_or("no primitive in pixels".into(), |d| format!(
+            "a documented error distance of {d:.6} px (primitive {})",
+            exact.worst_primitive.map_or("?".into(), |i| i.to_string())
+        )),
+        exact.clip.map_or("no primitive in clip space only".into(), |c| format!(
+            "a backward error of {c:.3e} clip units (primitive {}, stated in clip space only)",
+            exact.worst_clip_primitive.map_or("?".into(), |i| i.to_string())
+        )),
     )
 }
 
 /// Parse `--tolerance`: a finite number > 0 (px).
 pub fn parse_tolerance(s: &str) -> Result<f64> {
+    parse_positive(s, "--tolerance", "pixels, e.g. 0.03125")
+}
+
+/// Parse `--clip-tolerance`: a finite number > 0 (clip units).
+pub fn parse_clip_tolerance(s: &str) -> Result<f64> {
+    parse_positive(s, "--clip-tolerance", "clip units, e.g. 0.0001")
+}
+
+fn parse_positive(s: &str, option: &str, unit: &str) -> Result<f64> {
     let v: f64 = s
         .trim()
         .parse()
-        .map_err(|_| anyhow!("--tolerance {s:?}: not a number (pixels, e.g. 0.03125)"))?;
+        .map_err(|_| anyhow!("{option} {s:?}: not a number ({unit})"))?;
     if !v.is_finite() || v <= 0.0 {
-        bail!("--tolerance {s:?}: must be a finite number of pixels greater than 0");
+        bail!("{option} {s:?}: must be a finite number greater than 0 ({unit})");
     }
     Ok(v)
 }

@@ -166,17 +166,39 @@ pub fn check_sample_eps(
     r: &Rounding,
     eps: [f64; 3],
 ) -> SampleCheck {
-    let (p, _) = reference::sample::positions(tri, t, u, v);
-    let d = reference::sample::direction(vp, x, y);
-    let (w, h) = (vp.0 as f64, vp.1 as f64);
-    let dd = 2.0 * r.sub * (1.0 / (w * w) + 1.0 / (h * h)).sqrt();
     let mut delta = [0.0; 3];
-    let mut m = 0.0;
     for (k, dk) in delta.iter_mut().enumerate() {
         let (a, b) = (tri.t0[k], tri.t1[k]);
         let mv = |f: usize| r.pos + r.tuv * (b[f] - a[f]).abs();
         let lens = mv(4) + r.tuv * (a[4] + t * (b[4] - a[4])).abs();
         *dk = DVec3::new(mv(0) + lens + eps[0], mv(1) + lens + eps[1], mv(3) + eps[2]).length();
+    }
+    check_sample_within(tri, vp, x, y, u, v, t, r.sub, delta)
+}
+
+/// [`check_sample`] for vertex perturbations of at most `delta[k]` (clip units, Euclidean, vertex
+/// k at the sample's t, u, v) and a sub-pixel position moved by less than `sub` px: whether a
+/// differing decision is consistent with a triangle whose vertices lie within `delta` of the
+/// input (`ratio` ≤ 1), the test of the clip-space statement (`crate::config::dq`).
+#[allow(clippy::too_many_arguments)]
+pub fn check_sample_within(
+    tri: &SceneTri,
+    vp: (u16, u16),
+    x: f64,
+    y: f64,
+    u: f64,
+    v: f64,
+    t: f64,
+    sub: f64,
+    delta: [f64; 3],
+) -> SampleCheck {
+    let (p, _) = reference::sample::positions(tri, t, u, v);
+    let d = reference::sample::direction(vp, x, y);
+    let (w, h) = (vp.0 as f64, vp.1 as f64);
+    let dd = 2.0 * sub * (1.0 / (w * w) + 1.0 / (h * h)).sqrt();
+    let mut m = 0.0;
+    for k in 0..3 {
+        let (a, b) = (tri.t0[k], tri.t1[k]);
         m += [0, 1, 3, 4]
             .iter()
             .map(|&f| a[f].abs() + b[f].abs())

@@ -10,20 +10,20 @@ use uvt_core::config::precision::DefaultPrecision;
 use uvt_core::config::unit::Full;
 use uvt_core::{Laine2011, Ops, Outcome, PixelRect, Precision, ScreenPos, Setup, Triangle};
 
-use crate::config::planar_static;
+use crate::config::{dq, planar_static};
 use crate::fit::search::inputs;
 use crate::frame::compare::{check_sample_eps, eps_of, footprint_union, Rounding};
 use crate::reference;
 use crate::scene::file::Scene;
 use crate::scene::pattern::Pattern;
 
-use super::row::{d_q_px, finish, PrecRow};
+use super::row::{finish, PrecRow};
 
 /// Per-triangle brute force over the union of both footprints: coverage, distance and depth
 /// once; bounds slack, violations and epsilon for every tile size of `accs`.
 ///
-/// `dq_scale` scales the planar configuration's per-primitive d_q (1 in every report; tests
-/// halve it to show that a measured difference beyond it is caught).
+/// `dq_scale` scales every primitive's d_q (1 in every report; tests halve it to show that a
+/// measured difference beyond it is caught).
 pub(super) fn errors<P: Precision + Sync>(
     s: &Scene,
     core: &[Triangle],
@@ -34,17 +34,11 @@ pub(super) fn errors<P: Precision + Sync>(
     let vp = s.core_viewport();
     let v = s.viewport;
     let tiles: Vec<u16> = accs.iter().map(|a| a.tile as u16).collect();
-    let prim_dq = if P::PLANAR {
-        planar_dq(s).1
-    } else {
-        Vec::new()
-    };
     let parts: Vec<Vec<PrecRow>> = s
         .tris
         .par_iter()
         .zip(core.par_iter())
-        .enumerate()
-        .map(|(i, (st, ct))| {
+        .map(|(st, ct)| {
             let mut a: Vec<PrecRow> = tiles.iter().map(|_| PrecRow::default()).collect();
             let mut ops = Ops::default();
             let fx = match uvt_core::setup::<P, Full>(ct, vp, &mut ops) {
@@ -62,19 +56,9 @@ pub(super) fn errors<P: Precision + Sync>(
             let full = Setup::unculled::<P>(ct, vp);
             let eps = eps_of(&full);
             let rounding = Rounding::at(P::POS_FRAC, P::TUV_FRAC);
-            // The planar configuration: the primitive's own d_q (none: not counted); otherwise
-            // the configuration's d_q at w = 1 for triangles with every w ≥ 1.
-            let (d_q, front) = if P::PLANAR {
-                match prim_dq.get(i).copied().flatten() {
-                    Some(d) => (d * dq_scale, true),
-                    None => (0.0, false),
-                }
-            } else {
-                (
-                    d_q_px(P::OFFSET_SHIFT, v.0, v.1),
-                    st.t0.iter().chain(st.t1.iter()).all(|q| q[3] >= 1.0),
-                )
-            };
+            // The primitive's error statement at P (`crate::config::dq`): d_q px where stated in
+            // pixels (scaled by `dq_scale`), else its backward error δ in clip units.
+            let statement = dq::statement(st, v, &rounding, eps);
             let cell_of = |px: u16, py: u16, fp: PixelRect, bt: u16| {
                 PixelRect {
                     x0: px - px % bt,
@@ -138,7 +122,13 @@ pub(super) fn errors<P: Precision + Sync>(
                             let d =
                                 reference::sample::edge_distance_px(st, v, x, y, e[2], e[3], e[4]);
                             a[0].max_differ_px = a[0].max_differ_px.max(d);
-                            a[0].beyond_dq += u64::from(front && d > d_q);
+                            match statement.px {
+                                Some(d_q) => a[0].beyond_dq += u64::from(d > d_q * dq_scale),
+                                None => {
+                                    a[0].differ_clip += 1;
+                                    a[0].max_clip = a[0].max_clip.max(statement.clip);
+                                }
+                            }
                             let c = check_sample_eps(st, v, x, y, e[2], e[3], e[4], &rounding, eps);
                             a[0].max_ratio = a[0].max_ratio.max(c.ratio);
                             a[0].beyond_bound += u64::from(c.ratio > 1.0);
@@ -193,6 +183,8 @@ pub(super) fn errors<P: Precision + Sync>(
             acc.max_ratio = acc.max_ratio.max(cov.max_ratio);
             acc.behind += cov.behind;
             acc.beyond_dq += cov.beyond_dq;
+            acc.differ_clip += cov.differ_clip;
+            acc.max_clip = acc.max_clip.max(cov.max_clip);
             acc.depth_lsb[0] = acc.depth_lsb[0].max(cov.depth_lsb[0]);
             acc.depth_lsb[1] += cov.depth_lsb[1];
             acc.depth_n += cov.depth_n;

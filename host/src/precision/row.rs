@@ -12,12 +12,20 @@
 //! datapath's rounding): the bounded test is exact on vertices perturbed by at most
 //! `k/2 + 2^(O−1)/(256·E)` raw in x (E = W) and y (E = H) and `1/2` raw in w (`bounded.rs`,
 //! class both: k = 3). A vertex in view (|x/w| ≤ 1) at depth w therefore moves on screen by at
-//! most `(k/2 + 1/2 + 2^(O−1)/(256·E))·E/(2^17·w)` px = `(2E + 2^(O−9))/(2^17·w)` px; d_q is its
-//! maximum over the two axes at w = 1 (0 for the exact test). It covers the datapath's rounding
+//! most `(k/2 + 1/2 + 2^(O−1)/(256·E))·E/(2^17·w)` px = `(2E + 2^(O−9))/(2^17·w)` px per axis;
+//! both axes move together, so d_q is the Euclidean length of the two at w = 1 (0 for the exact
+//! test; before issue 24 it was their maximum, which a 45° edge can exceed). It covers the datapath's rounding
 //! only: the inputs' rounding to the position and t/u/v grids adds its own (bounded per sample
 //! by `compare.rs`'s rigorous check, which here includes the perturbation as an extra position
-//! rounding). *beyond d_q* counts differing decisions of triangles with every w ≥ 1 that lie
-//! farther than d_q (at the scene's viewport) from an edge.
+//! rounding).
+//!
+//! **Every differing decision is counted under its primitive's error statement**
+//! (`crate::config::dq`: the input rounding and the datapath perturbation together, per
+//! primitive): *beyond d_q* counts those of primitives stated in pixels that lie farther than the
+//! primitive's own d_q from an edge (must be 0); the others are stated in clip space only (a
+//! vertex can reach the camera plane, or d_q beyond the viewport's diagonal) and are counted with
+//! their largest backward error δ; `compare.rs`'s per-sample check (*beyond bound*) tests the clip
+//! statement on every differing decision.
 
 use serde::Serialize;
 
@@ -32,7 +40,8 @@ pub const CONFIGS: [&str; swept_count(true)] = swept_names(true);
 pub fn d_q_px(off: Option<u32>, w: u16, h: u16) -> f64 {
     let Some(o) = off else { return 0.0 };
     let at = |e: f64| (2.0 * e + 2f64.powi(o as i32 - 9)) / 131072.0;
-    at(w as f64).max(at(h as f64))
+    // x and y move together: the Euclidean length of the two axes' bounds.
+    at(w as f64).hypot(at(h as f64))
 }
 
 /// Errors and costs of one configuration at one bounds-tile size, summed over the scenes.
@@ -84,9 +93,14 @@ pub struct PrecRow {
     pub eps_raw: [u32; 3],
     /// documented d_q (px at w = 1) at the scenes' viewports (largest) and at 960×540
     pub d_q: [f64; 2],
-    /// differing decisions of triangles with every w ≥ 1 farther than d_q from an edge (the
-    /// planar configuration: of triangles with a per-primitive d_q, farther than it)
+    /// differing decisions of primitives stated in pixels farther than their own d_q from an
+    /// edge (`crate::config::dq`; must be 0)
     pub beyond_dq: u64,
+    /// differing decisions of primitives stated in clip space only (the others are stated in
+    /// pixels)
+    pub differ_clip: u64,
+    /// the largest backward error δ (clip units) of such a primitive
+    pub max_clip: f64,
     /// triangles the configuration culls as degenerate that the default does not (the planar
     /// configuration's vertex rounding: `crate::config::planar_static::degenerate`)
     pub degenerate: u64,

@@ -40,14 +40,21 @@ fn glyph(c: char) -> [u8; 5] {
         '9' => [7, 5, 7, 1, 7],
         '.' => [0, 0, 0, 0, 2],
         'A' => [2, 5, 7, 5, 5],
+        'B' => [6, 5, 6, 5, 6],
+        'C' => [7, 4, 4, 4, 7],
+        'D' => [6, 5, 5, 5, 6],
         'E' => [7, 4, 6, 4, 7],
+        'F' => [7, 4, 6, 4, 4],
+        'G' => [7, 4, 5, 5, 7],
         'I' => [7, 2, 2, 2, 7],
         'L' => [4, 4, 4, 4, 7],
         'M' => [5, 7, 7, 5, 5],
+        'N' => [6, 5, 5, 5, 5],
         'P' => [6, 5, 6, 4, 4],
         'R' => [6, 5, 6, 5, 5],
         'S' => [7, 4, 7, 1, 7],
         'T' => [7, 2, 2, 2, 2],
+        'V' => [5, 5, 5, 5, 2],
         'X' => [5, 5, 2, 5, 5],
         _ => [0; 5],
     }
@@ -81,19 +88,26 @@ pub fn text(img: &mut image::RgbImage, x: u32, y: u32, s: &str, color: [u8; 3]) 
     }
 }
 
-/// The heat map of `counts` (W×H, row-major) with the legend strip below it. The colour of a
-/// pixel is `heat_color(n / max)`; the scale is labelled 0, max/2 and max tests.
-pub fn draw(w: u16, h: u16, counts: &[u32]) -> image::RgbImage {
+/// The heat map of `counts` (W×H, row-major), each pixel a `k`×`k` block (`k` ≥ 1: the
+/// enlargement of small images, `super::diff::scale_for`), with the legend strip below it. The
+/// colour of a pixel is `heat_color(n / max)`; the scale is labelled 0, max/2 and max tests.
+pub fn draw(w: u16, h: u16, counts: &[u32], k: u32) -> image::RgbImage {
+    let k = k.max(1);
     let (w, h) = (w as u32, h as u32);
     let max = counts.iter().copied().max().unwrap_or(0).max(1);
-    let width = w.max(MIN_W);
-    let mut img = image::RgbImage::from_pixel(width, h + LEGEND_H, image::Rgb([40, 40, 40]));
+    let width = (w * k).max(MIN_W);
+    let mut img = image::RgbImage::from_pixel(width, h * k + LEGEND_H, image::Rgb([40, 40, 40]));
     for (i, &n) in counts.iter().enumerate().take((w * h) as usize) {
-        let c = heat_color(n as f64 / max as f64);
-        img.put_pixel(i as u32 % w, i as u32 / w, image::Rgb(c));
+        let c = image::Rgb(heat_color(n as f64 / max as f64));
+        let (x, y) = (i as u32 % w, i as u32 / w);
+        for dy in 0..k {
+            for dx in 0..k {
+                img.put_pixel(x * k + dx, y * k + dy, c);
+            }
+        }
     }
     let white = [255, 255, 255];
-    let y = h + 4;
+    let y = h * k + 4;
     text(&mut img, 4, y, CAPTION, white);
     let (x0, x1) = (4, width - 4);
     for x in x0..x1 {
@@ -126,7 +140,7 @@ mod tests {
     #[test]
     fn legend_is_drawn() {
         let counts: Vec<u32> = (0..32 * 8).map(|i| i % 17).collect();
-        let img = draw(32, 8, &counts);
+        let img = draw(32, 8, &counts, 1);
         assert_eq!((img.width(), img.height()), (MIN_W, 8 + LEGEND_H));
         // The map's brightest pixel (16 tests) is white, the scale's ends are black and white.
         assert_eq!(img.get_pixel(16, 0).0, [255, 255, 255]);

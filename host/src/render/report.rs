@@ -91,14 +91,25 @@ pub fn report_md(r: &Rendered) -> String {
         j["scene"].as_str().unwrap_or(""), j["viewport"][0], j["viewport"][1], j["spp"], j["tile"],
         j["pattern"].as_str().unwrap_or(""), j["seed"], j["triangles"], j["precision"].as_str().unwrap_or("")
     );
-    s += "## Images\n\n\
+    let vp = (
+        j["viewport"][0].as_u64().unwrap_or(0) as u16,
+        j["viewport"][1].as_u64().unwrap_or(0) as u16,
+    );
+    let k = super::diff::scale_for(vp.0, vp.1);
+    let enlarged = if k > 1 {
+        format!(" Both maps are enlarged ×{k} (each scene pixel a {k}×{k} block).")
+    } else {
+        String::new()
+    };
+    s += &format!("## Images\n\n\
         - `fixed.png`: the frame rendered by the fixed-point core (the golden model), each pixel the \
           average of its samples.\n\
         - `f64.png`: the same frame rendered by the independent f64 reference on the exact (unrounded) inputs.\n\
-        - `diff.png`: black where the two images agree; orange to yellow where they differ (brighter = larger \
-          channel difference).\n\
+        - `diff.png`: per pixel the largest R, G, B difference of the two images: black where they agree, \
+          1 to 255 levels from dark red through red and yellow to white, every larger difference strictly \
+          brighter; the legend below the map gives the scale's numbers.\n\
         - `heat.png`: sample tests per pixel of the core with its bounds, black (none) through blue, red and \
-          yellow to white (the maximum); the legend below the map gives the scale's numbers.\n\n";
+          yellow to white (the maximum); the legend below the map gives the scale's numbers.{enlarged}\n\n");
     s += &format!(
         "Triangles by class (core): static {}, motion {}, defocus {}, motion+defocus {}; culled outside {}, degenerate {}.\n\n",
         j["classes"]["static"], j["classes"]["motion"], j["classes"]["defocus"], j["classes"]["motion_defocus"],

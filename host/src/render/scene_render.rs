@@ -16,9 +16,9 @@ use crate::precision::measure::decisions;
 use crate::scene::file::Scene;
 use crate::scene::pattern::Pattern;
 
-use super::heatmap;
 use super::opts::{Decisions, RenderOpts, Rendered};
 use super::report::{report_json, report_md};
+use super::{diff, heatmap};
 
 /// Render a scene with all pipelines at the default options.
 pub fn render(scene: &Scene) -> Result<Rendered> {
@@ -132,21 +132,8 @@ pub fn write(r: &Rendered, scene: &Scene, dir: &Path) -> Result<Vec<PathBuf>> {
     check_out_dir(dir)?;
     std::fs::create_dir_all(dir).with_context(|| format!("cannot create {}", dir.display()))?;
     let (w, h) = scene.viewport;
-    let diff: Vec<[u8; 3]> = r
-        .fixed
-        .image
-        .iter()
-        .zip(&r.f64.image)
-        .map(|(a, b)| {
-            let d = (0..3).map(|k| a[k].abs_diff(b[k])).max().unwrap_or(0);
-            if d == 0 {
-                [0, 0, 0]
-            } else {
-                [255, (255 - d.saturating_mul(4)).min(200), 0]
-            }
-        })
-        .collect();
-    let heat = heatmap::draw(w, h, &r.fixed.heat);
+    let diff = diff::draw(w, h, &diff::differences(&r.fixed.image, &r.f64.image));
+    let heat = heatmap::draw(w, h, &r.fixed.heat, diff::scale_for(w, h));
     type Writer<'a> = Box<dyn Fn(&Path) -> Result<()> + 'a>;
     let files: Vec<(&str, Writer<'_>)> = vec![
         (
@@ -154,7 +141,13 @@ pub fn write(r: &Rendered, scene: &Scene, dir: &Path) -> Result<Vec<PathBuf>> {
             Box::new(|p: &Path| png(p, w, h, &r.fixed.image)),
         ),
         ("f64.png", Box::new(|p: &Path| png(p, w, h, &r.f64.image))),
-        ("diff.png", Box::new(|p: &Path| png(p, w, h, &diff))),
+        (
+            "diff.png",
+            Box::new(|p: &Path| {
+                diff.save_with_format(p, image::ImageFormat::Png)
+                    .with_context(|| format!("writing {}", p.display()))
+            }),
+        ),
         (
             "heat.png",
             Box::new(|p: &Path| {

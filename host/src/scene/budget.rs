@@ -102,8 +102,9 @@ pub fn parse_size(s: &str) -> Result<u64> {
 
 /// Read a file that must be a regular file of at most `limit` bytes; errors name the path.
 pub fn read_limited(path: &Path, limit: u64, what: &str) -> Result<Vec<u8>> {
+    // The OS's reason is part of the message (callers may print only its first line).
     let meta = std::fs::metadata(path)
-        .with_context(|| format!("cannot read {what} {}", path.display()))?;
+        .map_err(|e| anyhow::anyhow!("cannot read {what} {}: {e}", path.display()))?;
     if !meta.is_file() {
         bail!("cannot read {what} {}: not a regular file", path.display());
     }
@@ -118,7 +119,7 @@ pub fn read_limited(path: &Path, limit: u64, what: &str) -> Result<Vec<u8>> {
     let mut buf = Vec::with_capacity(meta.len() as usize);
     std::fs::File::open(path)
         .and_then(|f| f.take(limit + 1).read_to_end(&mut buf))
-        .with_context(|| format!("cannot read {what} {}", path.display()))?;
+        .map_err(|e| anyhow::anyhow!("cannot read {what} {}: {e}", path.display()))?;
     if buf.len() as u64 > limit {
         bail!("{what} {} grew beyond {}", path.display(), human(limit));
     }

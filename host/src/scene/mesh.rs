@@ -269,7 +269,7 @@ fn model(v: Option<&Value>, field: &str) -> Result<DMat4> {
 /// are not read.
 fn load_obj(path: &Path, field: &str) -> Result<Mesh> {
     let bytes = budget::read_limited(path, budget::FILE_MAX_BYTES, "OBJ file")
-        .map_err(|e| anyhow!("{field}: {e}"))?;
+        .map_err(|e| anyhow!("{field}: {e:#}"))?;
     let opts = tobj::LoadOptions {
         triangulate: true,
         single_index: true,

@@ -29,10 +29,10 @@ pub enum Cmd {
         #[arg(long, default_value = "out")]
         out: PathBuf,
         /// samples per pixel, 1..=64 (overrides the scene file)
-        #[arg(long)]
+        #[arg(long, allow_hyphen_values = true, value_parser = clap::value_parser!(u16).range(1..=64))]
         spp: Option<u16>,
         /// bounds tile size 1, 2, 4 or 8 (overrides the scene file)
-        #[arg(long)]
+        #[arg(long, allow_hyphen_values = true, value_parser = clap::value_parser!(u8).range(1..=8))]
         tile: Option<u8>,
         /// viewport WxH, e.g. 320x180 (overrides the scene file; the mesh form is re-projected)
         #[arg(long)]
@@ -142,7 +142,8 @@ pub enum Cmd {
         config: Option<String>,
     },
     /// Which unit a scene needs: the smallest unit variant, the narrowest configuration whose
-    /// documented error distance meets the tolerance, the cheapest bounds strategy and tile size;
+    /// error statement meets the tolerance (pixels, or clip units for primitives stated in clip
+    /// space only), the cheapest bounds strategy and tile size;
     /// then a confirming render (exit status non-zero if a confirmation fails). Writes
     /// DIR/fit.md and DIR/fit.json.
     Fit {
@@ -152,6 +153,12 @@ pub enum Cmd {
         /// image (default 1/32 px; host/src/fit/select.rs says why)
         #[arg(long, allow_hyphen_values = true)]
         tolerance: Option<String>,
+        /// the tolerance for primitives stated in clip space only (a vertex can reach the camera
+        /// plane): the largest vertex move, in clip units, of the triangle whose exact decisions
+        /// the configuration's must equal (default 2·tolerance/max(W, H): the tolerance in
+        /// pixels for a vertex at w = 1; host/src/config/dq.rs)
+        #[arg(long, allow_hyphen_values = true)]
+        clip_tolerance: Option<String>,
         /// output directory for fit.md and fit.json
         #[arg(long, default_value = "out")]
         out: PathBuf,

@@ -118,9 +118,6 @@ fn run(cli: Cli) -> Result<()> {
                 precision: names::precision("--precision", &precision)?,
                 progress: true,
             };
-            if let Some(n) = spp.filter(|n| !(1..=64).contains(n)) {
-                bail!("--spp {n}: not in 1..=64");
-            }
             if let Some(t) = tile.filter(|t| ![1, 2, 4, 8].contains(t)) {
                 bail!("--tile {t}: not one of 1, 2, 4, 8");
             }
@@ -304,6 +301,7 @@ fn run(cli: Cli) -> Result<()> {
         Cmd::Fit {
             scene,
             tolerance,
+            clip_tolerance,
             out,
             m4_units,
             m4_units_planar,
@@ -312,6 +310,10 @@ fn run(cli: Cli) -> Result<()> {
             let tol = tolerance
                 .as_deref()
                 .map(uvt_host::fit::select::parse_tolerance)
+                .transpose()?;
+            let clip_tol = clip_tolerance
+                .as_deref()
+                .map(uvt_host::fit::select::parse_clip_tolerance)
                 .transpose()?;
             uvt_host::render::scene_render::check_out_dir(&out)?;
             let m4 = uvt_host::fit::m4::load_m4_units(&m4_units)?;
@@ -327,6 +329,7 @@ fn run(cli: Cli) -> Result<()> {
             let f = uvt_host::fit::report::fit(
                 &l.scene,
                 tol,
+                clip_tol,
                 m4,
                 &m4_units,
                 m4_planar,
