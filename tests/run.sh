@@ -8,8 +8,12 @@ export RUSTFLAGS="${RUSTFLAGS:-} -D warnings"
 export CARGO_TERM_COLOR=never
 
 echo "== installing test prerequisites"
+# The pinned toolchain of rust-toolchain.toml with its components and targets (a no-op when
+# present); the Cortex-M figures are compared with the committed ones made with it.
+rustup toolchain install >/dev/null 2>&1 || rustup toolchain install "$(sed -n 's/^channel = "\(.*\)"/\1/p' rust-toolchain.toml)" --profile minimal
 rustup target add thumbv7em-none-eabihf thumbv7m-none-eabi >/dev/null
-rustup component add clippy >/dev/null 2>&1 || true
+rustup component add clippy rustfmt >/dev/null 2>&1 || true
+rustc --version
 # Debian packages: qemu-system-arm (the Cortex-M4F and Cortex-M3 runs), iverilog (the RTL testbench).
 missing=()
 for pkg in qemu-system-arm iverilog; do

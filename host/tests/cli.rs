@@ -556,6 +556,25 @@ fn scene_export_writes_a_loadable_scene() {
     let o = uvt(&["scene", "list"]);
     let list = String::from_utf8_lossy(&o.stdout);
     assert!(list.lines().any(|l| l == "default") && list.lines().any(|l| l == "dense-both2"));
+    // Every listed `-quick` name exports (the full-size ones are the same code at 4× the size);
+    // `default` has no quick form.
+    assert!(list.lines().any(|l| l == "game-motion-quick"), "{list}");
+    assert!(!list.lines().any(|l| l == "default-quick"), "{list}");
+    assert_eq!(list.lines().count(), 29, "{list}");
+    for name in list.lines().filter(|l| l.ends_with("-quick")) {
+        let o = uvt(&[
+            "scene",
+            "export",
+            name,
+            "--out",
+            dir.path().join("x.json").to_str().unwrap(),
+        ]);
+        assert!(
+            o.status.success(),
+            "{name}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+    }
     let f = dir.path().join("g.json");
     let o = uvt(&[
         "scene",

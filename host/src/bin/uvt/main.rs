@@ -56,7 +56,7 @@ fn parse_viewport(s: &str) -> Result<(u16, u16)> {
 }
 
 /// Built-in scenes by name: `default` and the benchmark rows `game-motion`, `dense-both2`, …
-/// (`-quick` for the quarter size).
+/// (`-quick` for the quarter size; `default` has no quick form: it is the small scene).
 fn builtin(name: &str) -> Result<Scene> {
     let names = builtin_names();
     if name == "default" {
@@ -89,11 +89,13 @@ fn bench_name(kind: Bench, row: Blur) -> String {
     format!("{k}-{}", row.label().replace(" x", ""))
 }
 
+/// Every name [`builtin`] accepts: `default`, then each benchmark row and its `-quick` form.
 fn builtin_names() -> Vec<String> {
     let mut v = vec!["default".to_string()];
     for kind in [Bench::Game, Bench::Dense] {
         for row in Blur::ALL {
             v.push(bench_name(kind, row));
+            v.push(bench_name(kind, row) + "-quick");
         }
     }
     v
