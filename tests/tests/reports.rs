@@ -5,7 +5,8 @@
 //! timings); `bash demo/m4_report.sh`'s tables must appear in `docs/performance.md` row by row
 //! (its host-ns column excepted) and its figures in README.md's headline rows. A figure that
 //! moved — a new compiler, a changed workload — fails here until the files are regenerated.
-//! (`uvt widths` against `core/README.md` is checked by `core/src/widths/mod.rs`.)
+//! (`uvt widths` against `core/README.md` is checked by `core/src/widths/mod.rs`, `uvt cost` against
+//! its cost paragraph by `host/tests/cost_text.rs`.)
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
