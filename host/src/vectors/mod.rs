@@ -2,8 +2,8 @@
 //! Its files from the bottom up, each using only files listed before it (and nothing of this
 //! `mod.rs`):
 //!
-//! - [`format`](mod@format): the file format, shared by the generator and the checker;
-//! - [`stages`]: input record → core → expected output record, per stage;
+//! - [`format`](mod@format) and [`stages`]: the record codec, from `uvt-records` (one codec for
+//!   the host, the vectors and the C library `uvt-ffi`);
 //! - [`cases`]: the named edge cases of the unit-level set;
 //! - [`bsample`]: the bounded sample-test records;
 //! - [`planar_cases`]: the planar records' own triangles;
@@ -17,7 +17,6 @@ pub mod cases;
 pub mod check;
 pub mod committed;
 pub mod export;
-pub mod format;
 pub mod planar_cases;
 pub mod psample;
-pub mod stages;
+pub use uvt_records::{format, stages};

@@ -11,7 +11,7 @@ use uvt_core::{
     Sample, ScreenPos, Setup, SubPixel, Time, Triangle, UvtBox, Vertex, Viewport,
 };
 
-use super::format::Rec;
+use crate::format::Rec;
 
 /// Input record of a triangle and viewport.
 pub fn enc_setup_in(t: &Triangle, vp: Viewport) -> Rec {
