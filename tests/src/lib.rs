@@ -2,6 +2,7 @@
 //! RNG, random sample tables, and the brute-force checkers for conservativeness and
 //! watertightness. Failures are reported as strings with the inputs in decimal and raw hex.
 
+pub mod ffi;
 pub mod icarus;
 pub mod kinds;
 pub mod tiles;
