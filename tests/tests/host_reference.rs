@@ -192,19 +192,29 @@ fn driver_matches() {
     }
 }
 
-/// On every benchmark row (quick size): fixed-point and f64 Laine 2011 STE within 2% relative;
+/// On the benchmark rows (quick size): fixed-point and f64 Laine 2011 STE within 2% relative;
 /// every strategy covers exactly the samples Laine 2011 covers (a bound that culled a covered
-/// sample would lower the count) and tests no more than the bounding-box scan.
+/// sample would lower the count) and tests no more than the bounding-box scan. By default the
+/// seven rows of the game scene and the dense scene's static row (≈ 1 minute); with
+/// `UVT_EXTENSIVE=1` all fourteen rows (≈ 4 minutes on the 2-core machine).
 #[test]
 fn bench_rows_fixed_and_f64_ste_within_two_percent() {
-    let rows = uvt_host::bench::ste_table::run_table(
+    use builtin::{Bench, Blur};
+    let mut rows =
+        uvt_host::bench::ste_table::run_table(true, &[Bench::Game], &Blur::ALL, false, None);
+    let dense: &[Blur] = if uvt_tests::extensive() {
+        &Blur::ALL
+    } else {
+        &[Blur::Static]
+    };
+    rows.extend(uvt_host::bench::ste_table::run_table(
         true,
-        &[builtin::Bench::Game, builtin::Bench::Dense],
-        &builtin::Blur::ALL,
+        &[Bench::Dense],
+        dense,
         false,
         None,
-    );
-    assert_eq!(rows.len(), 14);
+    ));
+    assert_eq!(rows.len(), 7 + dense.len());
     for r in &rows {
         let laine = r.strat("laine2011").expect("laine2011 column");
         let rel = (laine.ste() - r.f64).abs() / r.f64;
@@ -280,8 +290,9 @@ fn axis_aligned_limit_converged_and_below_axis_aligned_strategies() {
     }
 }
 
-/// On the static and "both ×2" benchmark rows of both scenes (quick size) at the bounded
-/// default-to-be (`bounded-16-16-16-20`, the rounded sample test as the truth): every strategy,
+/// On the static and "both ×2" benchmark rows of the game scene (and of the dense scene with
+/// `UVT_EXTENSIVE=1`; quick size) at the bounded default (`bounded-16-16-16-20`, the rounded
+/// sample test as the truth): every strategy,
 /// widened by its conservative epsilon,
 /// covers exactly the samples the bounding-box scan covers at that precision (a bound that culled
 /// a covered sample would lower the count), and its hull/slab/surface gain survives the epsilon
@@ -289,16 +300,21 @@ fn axis_aligned_limit_converged_and_below_axis_aligned_strategies() {
 #[test]
 fn bench_rows_every_strategy_conservative_at_the_bounded_precision() {
     use uvt_core::BoundedPrecision;
+    let scenes: &[builtin::Bench] = if uvt_tests::extensive() {
+        &[builtin::Bench::Game, builtin::Bench::Dense]
+    } else {
+        &[builtin::Bench::Game]
+    };
     let rows = uvt_host::bench::ste_table::run_table_at(
         "bounded-16-16-16-20",
         true,
-        &[builtin::Bench::Game, builtin::Bench::Dense],
+        scenes,
         &[builtin::Blur::Static, builtin::Blur::Both2],
         false,
         None,
     )
     .expect("a configuration of the registry");
-    assert_eq!(rows.len(), 4);
+    assert_eq!(rows.len(), 2 * scenes.len());
     for r in &rows {
         assert_eq!(r.precision, "bounded-16-16-16-20");
         let s = builtin::bench_scene(r.scene, r.row, true);

@@ -10,6 +10,7 @@
 //! - [`psample`]: the planar sample-test records;
 //! - [`export`]: `uvt vectors export`, the unit-level and frame-level sets;
 //! - [`check`]: `uvt vectors check`;
+//! - [`pipe`]: `uvt vectors gen`, `ver` and `decode` (streams and single records);
 //! - [`committed`]: the committed sets and their exports.
 
 pub mod bsample;
@@ -17,6 +18,7 @@ pub mod cases;
 pub mod check;
 pub mod committed;
 pub mod export;
+pub mod pipe;
 pub mod planar_cases;
 pub mod psample;
 pub use uvt_records::{format, stages};

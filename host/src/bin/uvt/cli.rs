@@ -248,4 +248,47 @@ pub enum VecCmd {
     },
     /// Print the bit-layout tables of every file (Markdown).
     Layout,
+    /// Write input records of a seeded stream to stdout, one per line: record i depends on
+    /// (KIND, --config, --seed, i) only, so `--shard K/M` parts concatenate to the whole stream.
+    Gen {
+        /// record kind: bsample, psample, setup, select or resolve
+        kind: String,
+        /// configuration (a registry name; `uvt configs`); default: the kind's own
+        #[arg(long)]
+        config: Option<String>,
+        /// stream seed
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// records in the whole stream
+        #[arg(long)]
+        count: u64,
+        /// write only part K of M (contiguous; 1/1 = all)
+        #[arg(long, default_value = "1/1")]
+        shard: String,
+        /// samples per resolve record
+        #[arg(long, default_value_t = 16)]
+        spp: u32,
+    },
+    /// Read input+output record pairs of KIND from stdin (one pair per line: the input words,
+    /// then the output words) and compare each output with the model's; non-zero exit on any
+    /// difference, naming the line and every differing field.
+    Ver {
+        /// record kind: bsample, psample, setup, select or resolve
+        kind: String,
+        /// compare the architectural fields only (covered, depth; inside)
+        #[arg(long)]
+        arch_only: bool,
+        /// samples per resolve record
+        #[arg(long, default_value_t = 16)]
+        spp: u32,
+    },
+    /// Decode one record field by field (hex and value) and show the model's output for an
+    /// input record; given input and output words, the fields that differ from the model's.
+    Decode {
+        /// a file stem (bsample_in, psample_out, …) or a kind (bsample: input, output or both)
+        kind: String,
+        /// the record's words in hex (as in the .hex files; one argument may hold several)
+        #[arg(required = true, num_args = 1..)]
+        words: Vec<String>,
+    },
 }

@@ -429,6 +429,42 @@ fn run(cli: Cli) -> Result<()> {
             };
             say(&text)?;
         }
+        Cmd::Vectors(VecCmd::Gen {
+            kind,
+            config,
+            seed,
+            count,
+            shard,
+            spp,
+        }) => {
+            use uvt_records::{kind::Kind, stream};
+            let k = Kind::parse(&kind).map_err(|e| anyhow!(e))?;
+            let s = stream::Stream::new(k, config.as_deref(), seed, spp).map_err(|e| anyhow!(e))?;
+            let shard = stream::Shard::parse(&shard).map_err(|e| anyhow!(e))?;
+            uvt_host::vectors::pipe::gen(&mut std::io::stdout().lock(), &s, count, shard)?;
+        }
+        Cmd::Vectors(VecCmd::Ver {
+            kind,
+            arch_only,
+            spp,
+        }) => {
+            let k = uvt_records::kind::Kind::parse(&kind).map_err(|e| anyhow!(e))?;
+            let v = uvt_host::vectors::pipe::ver(std::io::stdin().lock(), k, spp, arch_only)?;
+            for m in &v.msgs {
+                say(&format!("MISMATCH {m}\n"))?;
+            }
+            if v.mismatches > 0 {
+                bail!(
+                    "{} of {} {kind} pairs differ from the model",
+                    v.mismatches,
+                    v.pairs
+                );
+            }
+            say(&format!("PASS {} {kind} pairs match the model\n", v.pairs))?;
+        }
+        Cmd::Vectors(VecCmd::Decode { kind, words }) => {
+            say(&uvt_host::vectors::pipe::decode(&kind, &words)?)?;
+        }
         Cmd::Vectors(VecCmd::Layout) => {
             for st in uvt_host::vectors::format::STAGES {
                 for io in ["in", "out"] {
