@@ -280,7 +280,7 @@ fn family(
         "crosser" => {
             let mut p = || {
                 let w = r(-3.0, 3.0);
-                [r(-3.0, 3.0), r(-3.0, 3.0), 0.5 * w, w, 0.0]
+                [r(-3.0, 3.0), r(-3.0, 3.0), r(-1.2, 1.2) * w, w, 0.0]
             };
             let t0 = [p(), p(), p()];
             let t1 = if stat { t0 } else { [p(), p(), p()] };
@@ -301,8 +301,9 @@ fn family(
             let xa = 512.0 * k / 65536.0;
             let (ya, yb) = (r(-0.9, 0.0), r(0.05, 0.9));
             let xb = xa + if r(0.0, 1.0) < 0.5 { -1.0 } else { 1.0 } * r(0.05, 0.9);
-            let v = |x: f64, y: f64| [x, y, 0.5, 1.0, 0.0];
-            let t0 = [v(xa, ya), v(xa, yb), v(xb, r(-0.9, 0.9))];
+            let yc = r(-0.9, 0.9);
+            let mut v = |x: f64, y: f64| [x, y, r(0.0, 1.0), 1.0, 0.0];
+            let t0 = [v(xa, ya), v(xa, yb), v(xb, yc)];
             let w = i64::from(vp.width());
             let xs = k as i64 * w + 128 * w;
             // y on the edge: the record's y is in 1/256 px from the top
@@ -318,15 +319,22 @@ fn family(
         _ => {}
     }
     let (cx, cy, w, s) = (r(-1.2, 1.2), r(-1.2, 1.2), r(0.5, 6.0), r(0.05, 0.8));
-    let (mx, my, mw) = (r(-1.5, 1.5), r(-1.5, 1.5), r(-0.5, 0.5));
+    let (mx, my, mw, mz) = (r(-1.5, 1.5), r(-1.5, 1.5), r(-0.5, 0.5), r(-0.2, 0.2));
     let (a, b) = (r(-0.15, 0.15), r(-0.3, 0.3));
     let c = |w: f64| if defocus { a * w + b } else { 0.0 };
-    let mut pts = [[0.0; 3]; 3];
+    // depth z/w per vertex: mostly in [0, 1], one triangle in four beyond a depth clamp (±128)
+    let (zc, zs) = match r(0.0, 8.0) as u32 {
+        0 => (r(100.0, 300.0), r(0.0, 50.0)), // beyond the far clamp (z/w ≥ 128)
+        1 => (-r(100.0, 300.0), r(0.0, 50.0)), // beyond the near clamp
+        _ => (r(-0.1, 1.1), r(0.0, 0.3)),
+    };
+    let mut pts = [[0.0; 4]; 3];
     for p in &mut pts {
         *p = [
             cx + s * r(-1.0, 1.0),
             cy + s * r(-1.0, 1.0),
             w * (1.0 + 0.3 * r(-1.0, 1.0)),
+            zc + zs * r(-1.0, 1.0),
         ];
     }
     if FAMILIES[fam] == "sliver" {
@@ -337,11 +345,11 @@ fn family(
         pts[2][0] += r(-4.0, 4.0) / 65536.0;
     }
     let mut ends = [[[0.0; 5]; 3]; 2];
-    for (k, &[nx, ny, wk]) in pts.iter().enumerate() {
-        ends[0][k] = [nx * wk, ny * wk, 0.5 * wk, wk, c(wk)];
+    for (k, &[nx, ny, wk, zk]) in pts.iter().enumerate() {
+        ends[0][k] = [nx * wk, ny * wk, zk * wk, wk, c(wk)];
         let w1 = wk * (1.0 + mw);
         ends[1][k] = if motion {
-            [(nx + mx) * w1, (ny + my) * w1, 0.5 * w1, w1, c(w1)]
+            [(nx + mx) * w1, (ny + my) * w1, (zk + mz) * w1, w1, c(w1)]
         } else {
             ends[0][k]
         };

@@ -35,6 +35,7 @@ fn every_record_is_accepted_and_the_hard_cases_occur() {
     ] {
         let s = Stream::new(kind, config, seed, 16).expect("stream");
         let (mut fams, mut covered, mut ties, mut inside) = ([0u64; 9], 0, 0, 0);
+        let mut depths = std::collections::BTreeSet::new();
         for i in 0..count() {
             let (r, fam) = s.record(i);
             if let Some(f) = fam {
@@ -49,6 +50,7 @@ fn every_record_is_accepted_and_the_hard_cases_occur() {
             match kind {
                 Kind::Bsample => {
                     covered += u64::from(out.0[0] & 1);
+                    depths.insert(out.0[1] as i32);
                     ties +=
                         u64::from((0..3).any(|k| out.0[8 + 2 * k] == 0 && out.0[9 + 2 * k] == 0));
                 }
@@ -77,6 +79,19 @@ fn every_record_is_accepted_and_the_hard_cases_occur() {
             assert!(
                 ties > 0,
                 "UVT_SEED={seed} {kind:?} {config:?}: no fill-rule tie (E = 0)"
+            );
+        }
+        if kind == Kind::Bsample {
+            let (far, near) = (
+                uvt_core::config::formats::DEPTH_FAR,
+                uvt_core::config::formats::DEPTH_NEAR,
+            );
+            assert!(
+                depths.len() as u64 > covered / 2 && depths.contains(&far) && depths.contains(&near),
+                "UVT_SEED={seed} {config:?}: {} distinct depths in {covered} covered samples, far {} near {}",
+                depths.len(),
+                depths.contains(&far),
+                depths.contains(&near)
             );
         }
         if kind == Kind::Select {

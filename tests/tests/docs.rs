@@ -1,5 +1,6 @@
 //! The documentation points at what exists: every repository path a page names in backticks
-//! (`core/src/…`, `host/…`, `demo/…`, `tests/…`, `testkit/…`, `vectors/…`, `docs/…`) exists,
+//! (`core/src/…`, `host/…`, `demo/…`, `tests/…`, `testkit/…`, `vectors/…`, `docs/…`, `ffi/…`,
+//! `records/…`) exists,
 //! every relative Markdown link resolves, and README.md stays a page a newcomer reads in five
 //! minutes (at most 200 lines, the two commands near the top). Pages: README.md, docs/*.md and
 //! the crate READMEs.
@@ -32,8 +33,8 @@ fn pages() -> Vec<PathBuf> {
 /// Repository paths named in backticks: a top-level folder of the repository, then a path of
 /// file-name characters (globs and placeholders like `{a,b}` or `*` are not paths).
 fn named_paths(text: &str) -> Vec<String> {
-    const TOP: [&str; 7] = [
-        "core/", "host/", "demo/", "tests/", "testkit/", "vectors/", "docs/",
+    const TOP: [&str; 9] = [
+        "core/", "host/", "demo/", "tests/", "testkit/", "vectors/", "docs/", "ffi/", "records/",
     ];
     let mut out = Vec::new();
     for span in text.split('`').skip(1).step_by(2) {
