@@ -51,9 +51,14 @@ thread_local! {
 }
 
 fn set_last(msg: &str) {
-    // an interior NUL would cut the message: replace it
-    let c = CString::new(msg.replace('\0', " ")).unwrap_or_default();
-    LAST.with(|l| *l.borrow_mut() = c);
+    LAST.with(|l| {
+        let mut l = l.borrow_mut();
+        if msg.is_empty() && l.as_bytes().is_empty() {
+            return; // the common case after a success: no allocation per call
+        }
+        // an interior NUL would cut the message: replace it
+        *l = CString::new(msg.replace('\0', " ")).unwrap_or_default();
+    });
 }
 
 /// Run `f` at the boundary: its result as a code, the message kept for `uvt_last_error`, a

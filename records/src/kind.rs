@@ -5,6 +5,7 @@
 //! through here, so they cannot disagree on what a record means.
 
 use crate::format::{layout, show_field, Rec, STAGES};
+
 use crate::{bsample, psample, stages};
 
 /// One of the seven record kinds (a stage's `*_in` / `*_out` pair).
@@ -67,13 +68,29 @@ impl Kind {
             .find(|k| k.name() == s)
             .ok_or_else(|| format!("unknown record kind `{s}` (one of {})", STAGES.join(", ")))
     }
-    /// Words of an input record (`spp` samples for a resolve record).
+    /// Words of an input record (`spp` samples for a resolve record): the layout's, kept as
+    /// constants for the per-record paths (`tests/layout.rs` holds them equal to [`layout`]).
     pub fn words_in(self, spp: u32) -> u32 {
-        layout(&format!("{}_in", self.name()), spp).words
+        match self {
+            Kind::Setup => 31,
+            Kind::Bounds => 3,
+            Kind::Select => 9,
+            Kind::Sample => 6,
+            Kind::Bsample => 37,
+            Kind::Psample => 28,
+            Kind::Resolve => spp,
+        }
     }
-    /// Words of an output record.
+    /// Words of an output record (the layout's, as [`Kind::words_in`]).
     pub fn words_out(self) -> u32 {
-        layout(&format!("{}_out", self.name()), 0).words
+        match self {
+            Kind::Setup => 105,
+            Kind::Bounds => 7,
+            Kind::Select | Kind::Resolve => 1,
+            Kind::Sample => 26,
+            Kind::Bsample => 14,
+            Kind::Psample => 8,
+        }
     }
     /// Whether an input record names its triangle by index in a `setup_in` file (bounds and the
     /// exact sample test): [`run`] then takes that `setup_in` record beside it.
@@ -101,12 +118,13 @@ pub fn resolve_spp(words: usize) -> Result<u32, String> {
     }
 }
 
-fn check_len(what: &str, words: usize, want: u32) -> Result<(), String> {
+fn check_len(kind: Kind, file: &str, words: usize, want: u32) -> Result<(), String> {
     if words == want as usize {
         Ok(())
     } else {
         Err(format!(
-            "{what} has {words} words, the layout has {want} (format version {})",
+            "the {}{file} record has {words} words, the layout has {want} (format version {})",
+            kind.name(),
             crate::format::FORMAT_VERSION
         ))
     }
@@ -122,11 +140,7 @@ pub fn run(kind: Kind, input: &[u32], setup_in: Option<&[u32]>) -> Result<Rec, S
     } else {
         0
     };
-    check_len(
-        &format!("the {}_in record", kind.name()),
-        input.len(),
-        kind.words_in(spp),
-    )?;
+    check_len(kind, "_in", input.len(), kind.words_in(spp))?;
     let setup = || -> Result<_, String> {
         let s = setup_in.ok_or_else(|| {
             format!(
@@ -134,7 +148,7 @@ pub fn run(kind: Kind, input: &[u32], setup_in: Option<&[u32]>) -> Result<Rec, S
                 kind.name()
             )
         })?;
-        check_len("the setup_in record", s.len(), Kind::Setup.words_in(0))?;
+        check_len(Kind::Setup, "_in", s.len(), Kind::Setup.words_in(0))?;
         stages::run_setup(s)?.0.ok_or_else(|| {
             "the setup_in record's triangle is culled: it has no bounds or sample records"
                 .to_string()
@@ -169,11 +183,7 @@ pub fn run(kind: Kind, input: &[u32], setup_in: Option<&[u32]>) -> Result<Rec, S
 /// `class` (from its triangle) and a planar record's setup fields (edge normals, σ, depth
 /// plane, from its vertices). Other kinds have none (their record is returned unchanged).
 pub fn complete(kind: Kind, input: &mut [u32]) -> Result<(), String> {
-    check_len(
-        &format!("the {}_in record", kind.name()),
-        input.len(),
-        kind.words_in(input.len() as u32),
-    )?;
+    check_len(kind, "_in", input.len(), kind.words_in(input.len() as u32))?;
     match kind {
         Kind::Bsample => {
             let class = bsample::triangle_class(input)?;
