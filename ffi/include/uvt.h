@@ -236,8 +236,8 @@ const char *uvt_strerror(int32_t code);
 int32_t uvt_run(uint32_t kind, const uint32_t *input, size_t in_len, const uint32_t *setup_in, size_t setup_len, uint32_t *out, size_t out_len);
 
 /**
- * Triangle setup: `input` [`UVT_SETUP_IN_WORDS`](crate::UVT_SETUP_IN_WORDS) words, `out`
- * [`UVT_SETUP_OUT_WORDS`](crate::UVT_SETUP_OUT_WORDS). Returns 0 or a `UVT_ERR_*` code.
+ * Triangle setup: `input` [`UVT_SETUP_IN_WORDS`](crate::consts::UVT_SETUP_IN_WORDS) words, `out`
+ * [`UVT_SETUP_OUT_WORDS`](crate::consts::UVT_SETUP_OUT_WORDS). Returns 0 or a `UVT_ERR_*` code.
  *
  * # Safety
  * `input` and `out` point to that many `u32`s (readable; writable).

@@ -91,15 +91,15 @@ unsafe fn fixed(
         let (i, o) = unsafe { (words(input, n_in, "input")?, words_mut(out, n_out, "out")?) };
         let s = match setup {
             // SAFETY: the caller's contract.
-            Some(p) => Some(unsafe { words(p, crate::UVT_SETUP_IN_WORDS, "setup_in")? }),
+            Some(p) => Some(unsafe { words(p, crate::consts::UVT_SETUP_IN_WORDS, "setup_in")? }),
             None => None,
         };
         run_into(kind, i, s, o).map(|_| UVT_OK)
     })
 }
 
-/// Triangle setup: `input` [`UVT_SETUP_IN_WORDS`](crate::UVT_SETUP_IN_WORDS) words, `out`
-/// [`UVT_SETUP_OUT_WORDS`](crate::UVT_SETUP_OUT_WORDS). Returns 0 or a `UVT_ERR_*` code.
+/// Triangle setup: `input` [`UVT_SETUP_IN_WORDS`](crate::consts::UVT_SETUP_IN_WORDS) words, `out`
+/// [`UVT_SETUP_OUT_WORDS`](crate::consts::UVT_SETUP_OUT_WORDS). Returns 0 or a `UVT_ERR_*` code.
 ///
 /// # Safety
 /// `input` and `out` point to that many `u32`s (readable; writable).
@@ -110,10 +110,10 @@ pub unsafe extern "C" fn uvt_setup(input: *const u32, out: *mut u32) -> i32 {
         fixed(
             Kind::Setup,
             input,
-            crate::UVT_SETUP_IN_WORDS,
+            crate::consts::UVT_SETUP_IN_WORDS,
             None,
             out,
-            crate::UVT_SETUP_OUT_WORDS,
+            crate::consts::UVT_SETUP_OUT_WORDS,
         )
     }
 }
@@ -130,10 +130,10 @@ pub unsafe extern "C" fn uvt_bounds(setup_in: *const u32, input: *const u32, out
         fixed(
             Kind::Bounds,
             input,
-            crate::UVT_BOUNDS_IN_WORDS,
+            crate::consts::UVT_BOUNDS_IN_WORDS,
             Some(setup_in),
             out,
-            crate::UVT_BOUNDS_OUT_WORDS,
+            crate::consts::UVT_BOUNDS_OUT_WORDS,
         )
     }
 }
@@ -149,10 +149,10 @@ pub unsafe extern "C" fn uvt_select(input: *const u32, out: *mut u32) -> i32 {
         fixed(
             Kind::Select,
             input,
-            crate::UVT_SELECT_IN_WORDS,
+            crate::consts::UVT_SELECT_IN_WORDS,
             None,
             out,
-            crate::UVT_SELECT_OUT_WORDS,
+            crate::consts::UVT_SELECT_OUT_WORDS,
         )
     }
 }
@@ -169,10 +169,10 @@ pub unsafe extern "C" fn uvt_sample(setup_in: *const u32, input: *const u32, out
         fixed(
             Kind::Sample,
             input,
-            crate::UVT_SAMPLE_IN_WORDS,
+            crate::consts::UVT_SAMPLE_IN_WORDS,
             Some(setup_in),
             out,
-            crate::UVT_SAMPLE_OUT_WORDS,
+            crate::consts::UVT_SAMPLE_OUT_WORDS,
         )
     }
 }
@@ -190,10 +190,10 @@ pub unsafe extern "C" fn uvt_bsample(input: *const u32, out: *mut u32) -> i32 {
         fixed(
             Kind::Bsample,
             input,
-            crate::UVT_BSAMPLE_IN_WORDS,
+            crate::consts::UVT_BSAMPLE_IN_WORDS,
             None,
             out,
-            crate::UVT_BSAMPLE_OUT_WORDS,
+            crate::consts::UVT_BSAMPLE_OUT_WORDS,
         )
     }
 }
@@ -210,10 +210,10 @@ pub unsafe extern "C" fn uvt_psample(input: *const u32, out: *mut u32) -> i32 {
         fixed(
             Kind::Psample,
             input,
-            crate::UVT_PSAMPLE_IN_WORDS,
+            crate::consts::UVT_PSAMPLE_IN_WORDS,
             None,
             out,
-            crate::UVT_PSAMPLE_OUT_WORDS,
+            crate::consts::UVT_PSAMPLE_OUT_WORDS,
         )
     }
 }
@@ -233,7 +233,7 @@ pub unsafe extern "C" fn uvt_resolve(input: *const u32, spp: u32, out: *mut u32)
             spp as usize,
             None,
             out,
-            crate::UVT_RESOLVE_OUT_WORDS,
+            crate::consts::UVT_RESOLVE_OUT_WORDS,
         )
     }
 }
