@@ -346,6 +346,14 @@ pub fn field_value(f: &RecField, words: &[u32]) -> (i128, Option<u64>) {
 
 /// A field's raw value as hex and decoded, for messages.
 pub fn show_field(f: &RecField, words: &[u32]) -> String {
+    let (v, rest) = field_value(f, words);
+    if f.width < 32 {
+        // a sub-word field: its own bits, not its word's
+        let w = words.get(f.word as usize).copied().unwrap_or(0);
+        let raw = (w >> f.bit) & ((1u32 << f.width) - 1);
+        let digits = f.width.div_ceil(4) as usize;
+        return format!("0x{raw:0digits$x} = {v}");
+    }
     let n = f.words() as usize;
     let hex: Vec<String> = (0..n)
         .map(|i| {
@@ -355,7 +363,6 @@ pub fn show_field(f: &RecField, words: &[u32]) -> String {
             )
         })
         .collect();
-    let (v, rest) = field_value(f, words);
     let dec = match rest {
         Some(lo) => format!("{v}·2^64 + {lo}"),
         None if f.frac > 0 => format!("{} ({v}/2^{})", v as f64 / 2f64.powi(f.frac as i32), f.frac),

@@ -15,9 +15,23 @@ pub fn rtl_dir() -> PathBuf {
 /// (`("tb_bsample.OFF", "24")` → `-Ptb_bsample.OFF=24`) into `out`. Panics with iverilog's
 /// output if it fails or warns.
 pub fn compile(out: &Path, params: &[(&str, String)], sources: &[&str]) -> PathBuf {
+    compile_with(out, &[], params, sources)
+}
+
+/// [`compile`] with macro definitions (`"UVT_ARCH_ONLY"`, `"UVT_DUT=my_unit"` → `-D…`); a source
+/// given as an absolute path is taken as it is (a unit outside `vectors/rtl`).
+pub fn compile_with(
+    out: &Path,
+    defines: &[&str],
+    params: &[(&str, String)],
+    sources: &[&str],
+) -> PathBuf {
     let rtl = rtl_dir();
     let mut cmd = Command::new("iverilog");
     cmd.args(["-g2005", "-Wall"]);
+    for d in defines {
+        cmd.arg(format!("-D{d}"));
+    }
     for (k, v) in params {
         cmd.arg(format!("-P{k}={v}"));
     }

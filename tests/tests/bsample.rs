@@ -413,3 +413,49 @@ fn rtl_unit_variants_pass_the_committed_records_of_their_classes() {
         );
     }
 }
+
+/// Wiring your own unit: the bench built with `-DUVT_DUT=replay3_bsample -DUVT_ARCH_ONLY` takes
+/// a unit with the architectural ports only (covered and depth out) and 3 clocks of latency
+/// (`tests/rtl/replay3_bsample.v`, which replays the expected outputs) and passes every record
+/// of a set; a flipped depth bit of that unit is reported by record and field; and the committed
+/// unit passes in architectural mode too (its internal edge ports left unconnected).
+#[test]
+fn the_bench_takes_your_own_unit_in_architectural_mode() {
+    let dir = tempfile::tempdir().unwrap();
+    let replay = uvt_tests::ffi::root().join("tests/rtl/replay3_bsample.v");
+    let tb = uvt_tests::icarus::compile_with(
+        &dir.path().join("tb-replay.vvp"),
+        &["UVT_DUT=replay3_bsample", "UVT_ARCH_ONLY"],
+        &[],
+        &[replay.to_str().unwrap(), "tb_bsample.v"],
+    );
+    let set = committed().join("unit");
+    let n = coverage("unit")["records"].as_u64().unwrap();
+    let out = run(&tb, &set);
+    assert!(
+        out.contains(&format!("PASS {n} records (architectural: covered, depth)")),
+        "{out}"
+    );
+    let hit = first_record(&set, true);
+    let bad =
+        uvt_tests::icarus::run_vectors(&tb, &set, "bsample", &[format!("+REPLAY_FLIP={hit}")]);
+    assert!(
+        bad.contains(&format!(
+            "MISMATCH record {hit} (line {}) field depth",
+            hit + 1
+        )) && bad.contains("FAIL 1 mismatching fields"),
+        "{bad}"
+    );
+    let arch = uvt_tests::icarus::compile_with(
+        &dir.path().join("tb-arch.vvp"),
+        &["UVT_ARCH_ONLY"],
+        &[],
+        &["uvt_mul.v", "uvt_bsample.v", "tb_bsample.v"],
+    );
+    let out = run(&arch, &committed().join("frame_a"));
+    let n = coverage("frame_a")["records"].as_u64().unwrap();
+    assert!(
+        out.contains(&format!("PASS {n} records (architectural: covered, depth)")),
+        "{out}"
+    );
+}

@@ -363,3 +363,48 @@ fn rtl_planar_unit_catches_a_flipped_bit_of_each_kind() {
     );
     assert!(!out.contains("MISMATCH record 3 "), "{out}");
 }
+
+/// The bench in architectural mode (`-DUVT_ARCH_ONLY`: only covered and depth connected and
+/// checked) passes the committed unit on every record of the unit set, and still catches a
+/// flipped depth bit.
+#[test]
+fn rtl_planar_unit_passes_in_architectural_mode() {
+    let dir = tempfile::tempdir().unwrap();
+    let tb = icarus::compile_with(
+        &dir.path().join("tb-arch.vvp"),
+        &["UVT_ARCH_ONLY"],
+        &[],
+        &["uvt_mul.v", "uvt_psample.v", "tb_psample.v"],
+    );
+    let n = manifest("unit")["psample_coverage"]["records"]
+        .as_u64()
+        .unwrap();
+    let out = run(&tb, &committed().join("unit"));
+    assert!(
+        out.contains(&format!("PASS {n} records (architectural: covered, depth)")),
+        "{out}"
+    );
+    let bad = dir.path().join("bad");
+    std::fs::create_dir(&bad).unwrap();
+    for f in ["psample_in.hex", "psample_out.hex"] {
+        std::fs::copy(committed().join("unit").join(f), bad.join(f)).unwrap();
+    }
+    let text = std::fs::read_to_string(bad.join("psample_out.hex")).unwrap();
+    let mut lines: Vec<String> = text.lines().map(str::to_string).collect();
+    let hit = lines
+        .iter()
+        .position(|l| l.starts_with("00000001 "))
+        .expect("a covered record");
+    let mut w: Vec<String> = lines[hit].split(' ').map(str::to_string).collect();
+    w[1] = format!("{:08x}", u32::from_str_radix(&w[1], 16).unwrap() ^ 1);
+    lines[hit] = w.join(" ");
+    std::fs::write(bad.join("psample_out.hex"), lines.join("\n") + "\n").unwrap();
+    let out = run(&tb, &bad);
+    assert!(
+        out.contains(&format!(
+            "MISMATCH record {hit} (line {}) field depth",
+            hit + 1
+        )),
+        "{out}"
+    );
+}

@@ -6,6 +6,13 @@
 // Prints "PASS <n> records" or "FAIL <errors> mismatching fields in <n> records"; each of the
 // first 10 mismatches as "MISMATCH record <r> (line <r+1>) field <name>: expected <hex>
 // observed <hex>" followed by the record's input words in hex.
+// Your own unit: `-DUVT_DUT=my_unit` instantiates my_unit instead of uvt_psample;
+// `-DUVT_ARCH_ONLY` connects and checks only clk, in_valid, n, sigma, f, g, vp_w, vp_h, xs, ys
+// in and out_valid, covered, depth out, and passes no parameter. Any latency works (results are
+// matched in issue order by out_valid; +DRAIN=<clocks>, default 200, waits for the last).
+`ifndef UVT_DUT
+`define UVT_DUT uvt_psample
+`endif
 `timescale 1ns / 1ps
 module tb_psample;
     parameter DSP_A = 25;              // the unit's multiplier tiling (uvt_mul.v)
@@ -14,7 +21,7 @@ module tb_psample;
     reg [31:0] in_mem  [0:MAXREC*WI-1];
     reg [31:0] out_mem [0:MAXREC*WO-1];
     reg [8*1024-1:0] in_file, out_file;
-    integer n, issued, got, errors, r, w, k, j, ro, wo, ko;
+    integer n, drain, issued, got, errors, r, w, k, j, ro, wo, ko;
 
     reg clk = 0, in_valid = 0;
     reg [287:0] nn = 0;
@@ -27,11 +34,19 @@ module tb_psample;
     wire signed [31:0] depth;
     wire [191:0] e;
 
-    uvt_psample #(.DSP_A(DSP_A), .DSP_B(DSP_B)) dut (
+`ifdef UVT_ARCH_ONLY
+    `UVT_DUT dut (
+        .clk(clk), .in_valid(in_valid), .n(nn), .sigma(sigma), .f(f), .g(g), .vp_w(vp_w),
+        .vp_h(vp_h), .xs(xs), .ys(ys), .out_valid(out_valid), .covered(covered), .depth(depth)
+    );
+    assign e = 0;                      // the internal edge values are not checked
+`else
+    `UVT_DUT #(.DSP_A(DSP_A), .DSP_B(DSP_B)) dut (
         .clk(clk), .in_valid(in_valid), .n(nn), .sigma(sigma), .f(f), .g(g), .vp_w(vp_w),
         .vp_h(vp_h), .xs(xs), .ys(ys), .out_valid(out_valid), .covered(covered),
         .depth(depth), .e(e)
     );
+`endif
 
     always #5 clk = ~clk;
 
@@ -63,9 +78,11 @@ module tb_psample;
             wo = ro * WO;
             check(ro, "covered", out_mem[wo][0], covered);
             check(ro, "depth", out_mem[wo+1], depth[31:0]);
+`ifndef UVT_ARCH_ONLY
             for (ko = 0; ko < 3; ko = ko + 1)
                 check(ro, ko == 0 ? "e0" : ko == 1 ? "e1" : "e2",
                       {out_mem[wo+2+2*ko], out_mem[wo+3+2*ko]}, e[64*ko +: 64]);
+`endif
             got = got + 1;
         end
     end
@@ -76,6 +93,7 @@ module tb_psample;
             $display("FAIL usage: +IN=psample_in.hex +OUT=psample_out.hex +N=records");
             $finish;
         end
+        if (!$value$plusargs("DRAIN=%d", drain) || drain < 1) drain = 200;
         if (n > MAXREC) begin
             $display("FAIL %0d records exceed MAXREC %0d", n, MAXREC);
             $finish;
@@ -102,13 +120,17 @@ module tb_psample;
             @(negedge clk);
         end
         in_valid = 0;
-        repeat (2 * LAT) @(negedge clk);
+        repeat (drain) @(negedge clk);
         if (got != issued) begin
             errors = errors + 1;
             $display("MISMATCH %0d records issued, %0d results came out", issued, got);
         end
-        if (errors == 0) $display("PASS %0d records", issued);
-        else $display("FAIL %0d mismatching fields in %0d records", errors, issued);
+        if (errors == 0) $write("PASS %0d records", issued);
+        else $write("FAIL %0d mismatching fields in %0d records", errors, issued);
+`ifdef UVT_ARCH_ONLY
+        $write(" (architectural: covered, depth)");
+`endif
+        $write("\n");
         $finish;
     end
 endmodule
