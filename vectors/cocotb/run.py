@@ -55,7 +55,10 @@ def main():
             test_dir=build,
             build_dir=build,
             results_xml=str(build / "results.xml"),
-            extra_env={"PYTHONPATH": os.pathsep.join([str(HERE), os.environ.get("PYTHONPATH", "")])},
+            extra_env={
+                "PYTHONPATH": os.pathsep.join([str(HERE), os.environ.get("PYTHONPATH", "")]),
+                "PYTHONDONTWRITEBYTECODE": "1",  # no __pycache__ in the source tree
+            },
             waves=args.waves,
         )
         tests, failed = get_results(Path(results))
