@@ -1,0 +1,186 @@
+//! The cocotb testbench of the bounded sample-test unit (`vectors/cocotb`): `uvt_bsample.v` under
+//! Icarus Verilog, checked sample by sample against the model called through ctypes on
+//! `libuvt_ffi.so`. The committed RTL passes with non-zero coverage counts; a corrupted expected
+//! output (`UVT_CORRUPT`) and a mutated copy of the RTL (the fill-rule tie-break reversed) both
+//! fail, naming the field.
+//!
+//! The Python packages (`vectors/cocotb/requirements.txt`, exact versions) go into a venv under
+//! the workspace's target folder, `target/cocotb-venv`, made on the first run (pip needs PyPI)
+//! and reused while the requirements are unchanged. Builds and results go to temporary folders.
+//! `UVT_SEED` seeds the stimulus (printed on failure); `UVT_EXTENSIVE=1` runs 4000 samples
+//! instead of 400.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::sync::OnceLock;
+
+use uvt_tests::{extensive, ffi, seed};
+
+fn cocotb_dir() -> PathBuf {
+    ffi::root().join("vectors/cocotb")
+}
+
+/// The venv's Python, after making the venv if it is missing or its requirements changed.
+fn venv_python() -> PathBuf {
+    static PY: OnceLock<PathBuf> = OnceLock::new();
+    PY.get_or_init(|| {
+        let target = std::env::var("CARGO_TARGET_DIR")
+            .map(PathBuf::from)
+            .unwrap_or_else(|_| ffi::root().join("target"));
+        let venv = target.join("cocotb-venv");
+        let python = venv.join("bin/python");
+        let reqs = cocotb_dir().join("requirements.txt");
+        let want = std::fs::read_to_string(&reqs).expect("vectors/cocotb/requirements.txt");
+        let stamp = venv.join("uvt-requirements.txt");
+        if python.is_file() && std::fs::read_to_string(&stamp).ok().as_deref() == Some(&want) {
+            return python;
+        }
+        let _ = std::fs::remove_dir_all(&venv);
+        let o = Command::new("python3")
+            .arg("-m")
+            .arg("venv")
+            .arg(&venv)
+            .output()
+            .expect("python3 (CPython 3 with the venv module; Debian: python3-venv)");
+        assert!(
+            o.status.success(),
+            "python3 -m venv {} failed (Debian: apt-get install python3-venv): {}{}",
+            venv.display(),
+            String::from_utf8_lossy(&o.stdout),
+            String::from_utf8_lossy(&o.stderr)
+        );
+        let o = Command::new(&python)
+            .args([
+                "-m",
+                "pip",
+                "install",
+                "-q",
+                "--disable-pip-version-check",
+                "-r",
+            ])
+            .arg(&reqs)
+            .output()
+            .expect("pip");
+        if !o.status.success() {
+            let _ = std::fs::remove_dir_all(&venv);
+            panic!(
+                "pip install -r vectors/cocotb/requirements.txt into {} failed: the cocotb test \
+                 needs PyPI (network) on its first run. pip said:\n{}{}",
+                venv.display(),
+                String::from_utf8_lossy(&o.stdout),
+                String::from_utf8_lossy(&o.stderr)
+            );
+        }
+        std::fs::write(&stamp, &want).expect("venv stamp");
+        python
+    })
+    .clone()
+}
+
+/// Run the cocotb test on the RTL of `rtl` (None: the committed `vectors/rtl`) with `n` samples
+/// and the extra variables `vars`; (passed, whole output). Build products go to a temporary
+/// folder.
+fn run(rtl: Option<&Path>, n: u32, vars: &[(&str, String)]) -> (bool, String) {
+    let python = venv_python();
+    let lib = ffi::lib();
+    let build = tempfile::tempdir().unwrap();
+    let mut cmd = Command::new(python);
+    cmd.arg(cocotb_dir().join("run.py"))
+        .arg("--build-dir")
+        .arg(build.path())
+        .env("UVT_FFI_LIB", &lib.shared_lib)
+        .env("UVT_SEED", seed().to_string())
+        .env("UVT_COCOTB_N", n.to_string())
+        .env_remove("UVT_CORRUPT")
+        .env_remove("UVT_ARCH_ONLY")
+        .env_remove("WAVES");
+    if let Some(r) = rtl {
+        cmd.arg("--rtl").arg(r);
+    }
+    for (k, v) in vars {
+        cmd.env(k, v);
+    }
+    let o = cmd.output().expect("run.py");
+    let text = format!(
+        "{}{}",
+        String::from_utf8_lossy(&o.stdout),
+        String::from_utf8_lossy(&o.stderr)
+    );
+    (o.status.success() && text.contains("PASS=1 FAIL=0"), text)
+}
+
+/// The counts of the "UVT_COCOTB_COVERAGE key=value …" line.
+fn coverage(out: &str) -> Vec<(String, u64)> {
+    let line = out
+        .lines()
+        .find_map(|l| l.split_once("UVT_COCOTB_COVERAGE ").map(|(_, r)| r))
+        .unwrap_or_else(|| panic!("no UVT_COCOTB_COVERAGE line in:\n{out}"));
+    line.split_whitespace()
+        .filter_map(|kv| kv.split_once('='))
+        .map(|(k, v)| (k.to_string(), v.parse().expect("count")))
+        .collect()
+}
+
+#[test]
+fn committed_rtl_matches_the_model() {
+    let n = if extensive() { 4000 } else { 400 };
+    let (ok, out) = run(None, n, &[]);
+    assert!(ok, "cocotb test failed (UVT_SEED={}):\n{out}", seed());
+    let cov = coverage(&out);
+    let get = |k: &str| cov.iter().find(|(n, _)| n == k).map_or(0, |(_, v)| *v);
+    assert_eq!(get("samples"), u64::from(n), "{out}");
+    for k in [
+        "covered",
+        "ties",
+        "rare_path",
+        "randomised",
+        "bubbles",
+        "class0",
+        "class1",
+        "class2",
+        "class3",
+    ] {
+        assert!(
+            get(k) > 0,
+            "coverage count {k} is 0 (UVT_SEED={}): {cov:?}",
+            seed()
+        );
+    }
+}
+
+#[test]
+fn corrupted_model_output_is_caught() {
+    // Flip a bit of sample 25's expected depth; arch-only mode still compares depth.
+    let (ok, out) = run(
+        None,
+        40,
+        &[("UVT_CORRUPT", "25".into()), ("UVT_ARCH_ONLY", "1".into())],
+    );
+    assert!(!ok, "a corrupted expected output passed:\n{out}");
+    assert!(
+        out.contains(&format!("MISMATCH seed {} sample 25", seed())) && out.contains("field depth"),
+        "the failure does not name sample 25's depth:\n{out}"
+    );
+}
+
+#[test]
+fn mutated_rtl_is_caught() {
+    let dir = tempfile::tempdir().unwrap();
+    let rtl = ffi::root().join("vectors/rtl");
+    std::fs::copy(rtl.join("uvt_mul.v"), dir.path().join("uvt_mul.v")).unwrap();
+    let src = std::fs::read_to_string(rtl.join("uvt_bsample.v")).unwrap();
+    // The fill-rule tie key of an edge with E' = 0: reverse its comparison of b'.
+    let (from, to) = ("s10_gt[i] <= (bi > bj) ||", "s10_gt[i] <= (bi < bj) ||");
+    assert_eq!(
+        src.matches(from).count(),
+        1,
+        "uvt_bsample.v changed: the mutation `{from}` no longer matches once"
+    );
+    std::fs::write(dir.path().join("uvt_bsample.v"), src.replace(from, to)).unwrap();
+    let (ok, out) = run(Some(dir.path()), 400, &[]);
+    assert!(!ok, "the mutated RTL passed (UVT_SEED={}):\n{out}", seed());
+    assert!(
+        out.contains("MISMATCH seed") && out.contains("field covered"),
+        "the failure does not name the covered field:\n{out}"
+    );
+}
