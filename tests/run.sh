@@ -14,9 +14,10 @@ rustup toolchain install >/dev/null 2>&1 || rustup toolchain install "$(sed -n '
 rustup target add thumbv7em-none-eabihf thumbv7m-none-eabi >/dev/null
 rustup component add clippy rustfmt >/dev/null 2>&1 || true
 rustc --version
-# Debian packages: qemu-system-arm (the Cortex-M4F and Cortex-M3 runs), iverilog (the RTL testbench).
+# Debian packages: qemu-system-arm (the Cortex-M4F and Cortex-M3 runs), iverilog (the RTL testbench),
+# verilator (the DPI-C testbenches and the C++ harness of vectors/dpi).
 missing=()
-for pkg in qemu-system-arm iverilog; do
+for pkg in qemu-system-arm iverilog verilator; do
   dpkg -s "$pkg" >/dev/null 2>&1 || missing+=("$pkg")
 done
 if [ ${#missing[@]} -gt 0 ]; then
