@@ -1,0 +1,252 @@
+//! The model as a DPI-C scoreboard and in a Verilator C++ harness (`vectors/dpi`): the C library
+//! (`uvt_tests::ffi::lib()`) linked into Verilator testbenches of the two sample-test units.
+//!
+//! - `tb_dpi_bsample.sv` and `tb_dpi_psample.sv` run at the default seed (`UVT_SEED`) on
+//!   [`samples`] samples (10^8 with `UVT_EXTENSIVE=1`): they PASS and exercised covered
+//!   samples, fill-rule ties and (bounded) triangles with a vertex at w <= 0. 10^6 samples would
+//!   take about 60–170 s (bounded) and 75 s (planar) on the shared 2-core machine (5·10^5 took
+//!   85 s and 37 s with the other builds of this test running beside), so the defaults are
+//!   2.5·10^5 bounded and 5·10^5 planar samples, about 40 s each.
+//! - A flipped bit of the model's expected output (`+CORRUPT=k`) fails, naming the field; with
+//!   `+ARCH_ONLY=1` a corrupted edge value passes (only covered and depth are compared).
+//! - A mutated copy of the RTL (the bounded unit's fill-rule tie key reversed, the planar unit's
+//!   fill rule for clockwise triangles reversed) fails.
+//! - `harness.cpp` (no DPI) passes on a short run and prints its rates.
+//!
+//! Verilator (Debian's 5.006) must be installed: `tests/run.sh` installs it. Every build goes
+//! into a temporary folder.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::Instant;
+
+use uvt_tests::{extensive, ffi, icarus, seed};
+
+/// Samples of a full run of `unit`'s bench: 2.5·10^5 bounded, 5·10^5 planar (about 40 s
+/// each); 10^8 in extensive mode.
+fn samples(unit: &str) -> u64 {
+    match (extensive(), unit) {
+        (true, _) => 100_000_000,
+        (false, "bsample") => 250_000,
+        _ => 500_000,
+    }
+}
+
+fn dpi_dir() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../vectors/dpi")
+}
+
+/// Run `verilator` with `args` in `dir`; panics with its output if it fails.
+fn verilate(dir: &Path, args: &[String]) {
+    let t = Instant::now();
+    let o = Command::new("verilator")
+        .current_dir(dir)
+        .args(args)
+        .output()
+        .unwrap_or_else(|e| {
+            panic!("verilator: {e} (Debian package verilator; tests/run.sh installs it)")
+        });
+    assert!(
+        o.status.success(),
+        "verilator {args:?} failed: {}{}",
+        String::from_utf8_lossy(&o.stdout),
+        String::from_utf8_lossy(&o.stderr)
+    );
+    eprintln!(
+        "built {} in {:.1} s",
+        dir.display(),
+        t.elapsed().as_secs_f64()
+    );
+}
+
+/// The flags every build shares: the RTL parsed as Verilog-2005 (it names a wire `inside`),
+/// its lint waivers, the library and what Rust's std needs from the C library.
+fn common(top: &str, mdir: &Path) -> Vec<String> {
+    let lib = ffi::lib();
+    vec![
+        "-j".into(),
+        "2".into(),
+        "+1364-2005ext+v".into(),
+        "--top-module".into(),
+        top.into(),
+        "--Mdir".into(),
+        mdir.display().to_string(),
+        dpi_dir().join("rtl.vlt").display().to_string(),
+        lib.static_lib.display().to_string(),
+        "-LDFLAGS".into(),
+        "-lpthread -ldl -lm".into(),
+    ]
+}
+
+/// Verilate and build the DPI testbench of `unit` ("bsample", "psample") with the unit's RTL
+/// `rtl` into `dir`; the executable.
+fn build_bench(dir: &Path, unit: &str, rtl: &Path) -> PathBuf {
+    let mdir = dir.join(format!("obj_{unit}"));
+    let mut args: Vec<String> = ["--binary", "--timing", "-o", "tb"]
+        .map(String::from)
+        .to_vec();
+    args.extend(common(&format!("tb_dpi_{unit}"), &mdir));
+    for f in ["uvt_dpi.sv", &format!("tb_dpi_{unit}.sv")] {
+        args.push(dpi_dir().join(f).display().to_string());
+    }
+    args.push(icarus::rtl_dir().join("uvt_mul.v").display().to_string());
+    args.push(rtl.display().to_string());
+    verilate(dir, &args);
+    mdir.join("tb")
+}
+
+/// Run `exe` with `args`: whether it exited with success, and its standard output.
+fn run(exe: &Path, args: &[String]) -> (bool, String) {
+    let t = Instant::now();
+    let o = Command::new(exe)
+        .args(args)
+        .output()
+        .expect("run testbench");
+    let out = String::from_utf8_lossy(&o.stdout).into_owned();
+    eprintln!(
+        "{} {args:?}: {:.1} s\n{}",
+        exe.display(),
+        t.elapsed().as_secs_f64(),
+        out.lines()
+            .filter(|l| !l.starts_with("- "))
+            .collect::<Vec<_>>()
+            .join("\n")
+    );
+    (o.status.success(), out)
+}
+
+fn bench(tb: &Path, extra: &[&str]) -> String {
+    let mut args = vec![format!("+SEED={}", seed())];
+    args.extend(extra.iter().map(|s| s.to_string()));
+    run(tb, &args).1
+}
+
+/// The count before `what` on the PASS line ("PASS 10 samples, 3 covered, …").
+fn count(out: &str, what: &str) -> u64 {
+    let line = out
+        .lines()
+        .find(|l| l.starts_with("PASS "))
+        .unwrap_or_else(|| panic!("no PASS line in:\n{out}"));
+    line.trim_start_matches("PASS ")
+        .split(", ")
+        .find_map(|p| p.strip_suffix(&format!(" {what}")))
+        .and_then(|n| n.parse().ok())
+        .unwrap_or_else(|| panic!("no `<n> {what}` in `{line}`"))
+}
+
+fn assert_fail(out: &str, field: &str) {
+    assert!(
+        out.lines().any(|l| l.starts_with("FAIL seed")) && !out.contains("\nPASS"),
+        "expected FAIL, got:\n{out}"
+    );
+    assert!(
+        out.lines()
+            .any(|l| l.starts_with("MISMATCH") && l.contains(&format!("field {field}"))),
+        "the mismatch does not name field {field}:\n{out}"
+    );
+    assert!(
+        out.contains("  input ") && out.contains("  expected ") && out.contains("  observed "),
+        "no input/expected/observed words:\n{out}"
+    );
+}
+
+/// A copy of `uvt_<unit>.v` in `dir` with `from` replaced by `to` (asserted to occur once).
+fn mutant(dir: &Path, unit: &str, from: &str, to: &str) -> PathBuf {
+    let src = std::fs::read_to_string(icarus::rtl_dir().join(format!("uvt_{unit}.v"))).unwrap();
+    assert_eq!(
+        src.matches(from).count(),
+        1,
+        "mutation `{from}` not found once in uvt_{unit}.v"
+    );
+    let path = dir.join(format!("uvt_{unit}.v"));
+    std::fs::write(&path, src.replace(from, to)).unwrap();
+    path
+}
+
+fn pass_and_corrupt(unit: &str, counts: &[&str]) {
+    let dir = tempfile::tempdir().unwrap();
+    let tb = build_bench(
+        dir.path(),
+        unit,
+        &icarus::rtl_dir().join(format!("uvt_{unit}.v")),
+    );
+    let n = samples(unit);
+    let out = bench(&tb, &[&format!("+N={n}")]);
+    assert_eq!(count(&out, "samples"), n, "{out}");
+    for what in counts {
+        assert!(count(&out, what) > 0, "no {what} exercised: {out}");
+    }
+    // A corrupted expected output: depth (word 1) and an edge value (word 2 or 8: e0's high
+    // word), the latter invisible to an architectural compare.
+    let e0 = if unit == "bsample" { "8" } else { "2" };
+    assert_fail(&bench(&tb, &["+N=3000", "+CORRUPT=1234"]), "depth");
+    let corrupt_e = ["+N=3000", "+CORRUPT=1234", &format!("+CORRUPT_WORD={e0}")];
+    assert_fail(&bench(&tb, &corrupt_e), "e0");
+    let arch: Vec<&str> = corrupt_e.iter().copied().chain(["+ARCH_ONLY=1"]).collect();
+    assert_eq!(count(&bench(&tb, &arch), "samples"), 3000);
+}
+
+fn mutated(unit: &str, from: &str, to: &str, field: &str) {
+    let dir = tempfile::tempdir().unwrap();
+    let rtl = mutant(dir.path(), unit, from, to);
+    let tb = build_bench(dir.path(), unit, &rtl);
+    assert_fail(&bench(&tb, &[&format!("+N={}", samples(unit))]), field);
+}
+
+#[test]
+fn bsample_dpi_passes_and_catches_a_corrupted_model_output() {
+    pass_and_corrupt("bsample", &["covered", "ties", "w<=0"]);
+}
+
+#[test]
+fn psample_dpi_passes_and_catches_a_corrupted_model_output() {
+    pass_and_corrupt("psample", &["covered", "ties"]);
+}
+
+#[test]
+fn bsample_dpi_catches_a_reversed_tie_key() {
+    mutated(
+        "bsample",
+        "(~s10_pos & ~s10_neg & s10_gt))",
+        "(~s10_pos & ~s10_neg & s10_lt))",
+        "covered",
+    );
+}
+
+#[test]
+fn psample_dpi_catches_a_reversed_fill_rule() {
+    mutated(
+        "psample",
+        "wire fill = s4_neg ? (ak < 0 ||",
+        "wire fill = s4_neg ? (ak > 0 ||",
+        "covered",
+    );
+}
+
+#[test]
+fn cpp_harness_passes_and_prints_its_rates() {
+    let dir = tempfile::tempdir().unwrap();
+    let mdir = dir.path().join("obj_harness");
+    let lib = ffi::lib();
+    let mut args: Vec<String> = ["--cc", "--exe", "--build", "-o", "harness", "-CFLAGS"]
+        .map(String::from)
+        .to_vec();
+    args.push(format!("-I{}", lib.include.display()));
+    args.extend(common("uvt_bsample", &mdir));
+    for f in ["uvt_mul.v", "uvt_bsample.v"] {
+        args.push(icarus::rtl_dir().join(f).display().to_string());
+    }
+    args.push(dpi_dir().join("harness.cpp").display().to_string());
+    verilate(dir.path(), &args);
+    let (ok, out) = run(
+        &mdir.join("harness"),
+        &[seed(), 20_000, 2_000, 64].map(|n| n.to_string()),
+    );
+    assert!(ok && out.contains("\nPASS 20000 samples, "), "{out}");
+    for rate in ["model-typed", "model-record", "rtl-harness"] {
+        assert!(
+            out.contains(&format!("RATE {rate} ")),
+            "no {rate} rate:\n{out}"
+        );
+    }
+}
