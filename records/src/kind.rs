@@ -4,7 +4,7 @@
 //! or the architectural ones only). `uvt vectors check`, `ver`, `decode` and the C library go
 //! through here, so they cannot disagree on what a record means.
 
-use crate::format::{layout, show_field, Rec, STAGES};
+use crate::format::{field_value, layout, show_field, Rec, STAGES};
 
 use crate::{bsample, psample, stages};
 
@@ -213,14 +213,18 @@ pub fn first_difference(
 /// Every field of `file` whose value differs, one message per field ("field NAME: expected HEX =
 /// DECODED, observed HEX = DECODED"); `only` restricts the comparison to the named fields.
 pub fn diff(file: &str, expected: &[u32], observed: &[u32], only: Option<&[&str]>) -> Vec<String> {
+    if expected == observed {
+        return Vec::new(); // the common case, without building the layout
+    }
     let spp = expected.len().max(observed.len()) as u32;
     layout(file, spp)
         .fields
         .iter()
         .filter(|f| only.map_or(true, |o| o.contains(&f.name.as_str())))
-        .filter_map(|f| {
+        .filter(|f| field_value(f, expected) != field_value(f, observed))
+        .map(|f| {
             let (a, b) = (show_field(f, expected), show_field(f, observed));
-            (a != b).then(|| format!("field {}: expected {a}, observed {b}", f.name))
+            format!("field {}: expected {a}, observed {b}", f.name)
         })
         .collect()
 }
