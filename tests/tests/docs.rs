@@ -18,6 +18,8 @@ fn pages() -> Vec<PathBuf> {
         r.join("README.md"),
         r.join("core/README.md"),
         r.join("vectors/README.md"),
+        r.join("vectors/dpi/README.md"),
+        r.join("vectors/cocotb/README.md"),
         r.join("host/scenes/README.md"),
     ];
     let mut docs: Vec<PathBuf> = std::fs::read_dir(r.join("docs"))
