@@ -2,8 +2,8 @@
  * the model on each, print coverage and depth; then the same triangle through the typed API.
  * Build and run (docs/rtl.md):
  *   cargo build --release -p uvt-ffi
- *   cc -O2 -Iffi/include ffi/examples/first.c target/release/libuvt_ffi.a -lpthread -ldl -lm -o first
- *   ./first */
+ *   cc -O2 -Iffi/include ffi/examples/first.c target/release/libuvt_ffi.a -lpthread -ldl -lm -o /tmp/first
+ *   /tmp/first */
 #include <stdio.h>
 #include "uvt.h"
 

@@ -1,14 +1,14 @@
-//! The cocotb testbench of the bounded sample-test unit (`vectors/cocotb`): `uvt_bsample.v` under
-//! Icarus Verilog, checked sample by sample against the model called through ctypes on
-//! `libuvt_ffi.so`. The committed RTL passes with non-zero coverage counts; a corrupted expected
-//! output (`UVT_CORRUPT`) and a mutated copy of the RTL (the fill-rule tie-break reversed) both
-//! fail, naming the field.
+//! The cocotb testbenches of the two sample-test units (`vectors/cocotb`): `uvt_bsample.v` and
+//! `uvt_psample.v` under Icarus Verilog, checked sample by sample against the model called
+//! through ctypes on `libuvt_ffi.so`. The committed RTL passes with non-zero coverage counts; a
+//! corrupted expected output (`UVT_CORRUPT`) and a mutated copy of the RTL (the fill-rule
+//! tie-break reversed; the planar fill rule of clockwise triangles reversed) fail, naming the
+//! field.
 //!
 //! The Python packages (`vectors/cocotb/requirements.txt`, exact versions) go into a venv under
 //! the workspace's target folder, `target/cocotb-venv`, made on the first run (pip needs PyPI)
 //! and reused while the requirements are unchanged. Builds and results go to temporary folders.
-//! `UVT_SEED` seeds the stimulus (printed on failure); `UVT_EXTENSIVE=1` runs 4000 samples
-//! instead of 400.
+//! `UVT_SEED` seeds the stimulus (printed on failure); `UVT_EXTENSIVE=1` runs 10× the samples.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -81,11 +81,18 @@ fn venv_python() -> PathBuf {
 /// and the extra variables `vars`; (passed, whole output). Build products go to a temporary
 /// folder.
 fn run(rtl: Option<&Path>, n: u32, vars: &[(&str, String)]) -> (bool, String) {
+    run_unit("bsample", rtl, n, vars)
+}
+
+/// [`run`] for `unit` (`bsample`: `test_bsample.py` on `uvt_bsample.v`; `psample`:
+/// `test_psample.py` on `uvt_psample.v`).
+fn run_unit(unit: &str, rtl: Option<&Path>, n: u32, vars: &[(&str, String)]) -> (bool, String) {
     let python = venv_python();
     let lib = ffi::lib();
     let build = tempfile::tempdir().unwrap();
     let mut cmd = Command::new(python);
     cmd.arg(cocotb_dir().join("run.py"))
+        .args(["--unit", unit])
         .arg("--build-dir")
         .arg(build.path())
         .env("UVT_FFI_LIB", &lib.shared_lib)
@@ -177,10 +184,59 @@ fn mutated_rtl_is_caught() {
         "uvt_bsample.v changed: the mutation `{from}` no longer matches once"
     );
     std::fs::write(dir.path().join("uvt_bsample.v"), src.replace(from, to)).unwrap();
-    let (ok, out) = run(Some(dir.path()), 400, &[]);
+    let (ok, out) = run(Some(dir.path()), 200, &[]);
     assert!(!ok, "the mutated RTL passed (UVT_SEED={}):\n{out}", seed());
     assert!(
         out.contains("MISMATCH seed") && out.contains("field covered"),
         "the failure does not name the covered field:\n{out}"
+    );
+}
+
+/// The planar unit (`test_psample.py` on `uvt_psample.v`): the committed RTL matches the model on
+/// 600 samples (6000 with `UVT_EXTENSIVE=1`) with non-zero counts of what they exercise; a
+/// corrupted expected depth and a mutated unit (the fill rule of clockwise triangles reversed)
+/// fail, naming the field.
+#[test]
+fn planar_unit_matches_and_its_mutant_and_a_corrupted_output_are_caught() {
+    let n = if extensive() { 6000 } else { 600 };
+    let (ok, out) = run_unit("psample", None, n, &[]);
+    assert!(
+        ok,
+        "cocotb psample test failed (UVT_SEED={}):\n{out}",
+        seed()
+    );
+    let cov = coverage(&out);
+    let get = |k: &str| cov.iter().find(|(n, _)| n == k).map_or(0, |(_, v)| *v);
+    assert_eq!(get("samples"), u64::from(n), "{out}");
+    for k in ["covered", "ties", "clockwise", "randomised", "bubbles"] {
+        assert!(
+            get(k) > 0,
+            "coverage count {k} is 0 (UVT_SEED={}): {cov:?}",
+            seed()
+        );
+    }
+    let (ok, out) = run_unit("psample", None, 40, &[("UVT_CORRUPT", "25".into())]);
+    assert!(
+        !ok && out.contains("sample 25") && out.contains("field depth"),
+        "{out}"
+    );
+    let dir = tempfile::tempdir().unwrap();
+    let rtl = ffi::root().join("vectors/rtl");
+    std::fs::copy(rtl.join("uvt_mul.v"), dir.path().join("uvt_mul.v")).unwrap();
+    let src = std::fs::read_to_string(rtl.join("uvt_psample.v")).unwrap();
+    let (from, to) = (
+        "wire fill = s4_neg ? (ak < 0 ||",
+        "wire fill = s4_neg ? (ak > 0 ||",
+    );
+    assert_eq!(
+        src.matches(from).count(),
+        1,
+        "uvt_psample.v changed: `{from}` no longer matches once"
+    );
+    std::fs::write(dir.path().join("uvt_psample.v"), src.replace(from, to)).unwrap();
+    let (ok, out) = run_unit("psample", Some(dir.path()), 300, &[]);
+    assert!(
+        !ok && out.contains("MISMATCH seed") && out.contains("field covered"),
+        "{out}"
     );
 }

@@ -1,9 +1,11 @@
 #!/usr/bin/env python3
-"""Build uvt_bsample.v with Icarus Verilog and run test_bsample.py on it (cocotb's runner).
+"""Build a sample-test unit with Icarus Verilog and run its cocotb test on it (cocotb's runner):
+uvt_bsample.v with test_bsample.py (--unit bsample, the default) or uvt_psample.v with
+test_psample.py (--unit psample).
 
-  python run.py [--rtl DIR] [--build-dir DIR] [--waves]
+  python run.py [--unit bsample|psample] [--rtl DIR] [--build-dir DIR] [--waves]
 
---rtl names the folder holding uvt_bsample.v and uvt_mul.v (default: vectors/rtl). The build
+--rtl names the folder holding the unit and uvt_mul.v (default: vectors/rtl). The build
 and results.xml go to --build-dir (default: a temporary folder, removed afterwards). UVT_FFI_LIB
 (default: target/release/libuvt_ffi.so of this checkout) and the test's variables (UVT_SEED,
 UVT_COCOTB_N, UVT_ARCH_ONLY, UVT_CORRUPT) are passed through. Exit status 0 when the test
@@ -26,6 +28,7 @@ ROOT = HERE.parent.parent
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
+    ap.add_argument("--unit", choices=["bsample", "psample"], default="bsample")
     ap.add_argument("--rtl", type=Path, default=ROOT / "vectors" / "rtl")
     ap.add_argument("--build-dir", type=Path)
     ap.add_argument("--waves", action="store_true", help="dump waves (FST) into the build folder")
@@ -42,16 +45,19 @@ def main():
         rtl = args.rtl.resolve()
         runner = get_runner("icarus")
         runner.build(
-            sources=[rtl / "uvt_mul.v", rtl / "uvt_bsample.v"],
-            hdl_toplevel="uvt_bsample",
+            sources=[rtl / "uvt_mul.v", rtl / f"uvt_{args.unit}.v"],
+            hdl_toplevel=f"uvt_{args.unit}",
             build_dir=build,
             always=True,
             timescale=("1ns", "1ps"),
+            # the RTL is Verilog-2005 (uvt_psample.v names a wire `inside`, a keyword of the
+            # runner's default -g2012)
+            build_args=["-g2005"],
             waves=args.waves,
         )
         results = runner.test(
-            hdl_toplevel="uvt_bsample",
-            test_module="test_bsample",
+            hdl_toplevel=f"uvt_{args.unit}",
+            test_module=f"test_{args.unit}",
             test_dir=build,
             build_dir=build,
             results_xml=str(build / "results.xml"),

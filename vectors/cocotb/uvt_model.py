@@ -9,8 +9,12 @@ import ctypes
 import os
 
 KIND_BSAMPLE = 4
+KIND_PSAMPLE = 5
 BSAMPLE_IN_WORDS = 37
 BSAMPLE_OUT_WORDS = 14
+PSAMPLE_IN_WORDS = 28
+PSAMPLE_OUT_WORDS = 8
+PLANAR_CONFIG = "planar-16-16-16-20"
 OK = 0
 ERR_MISMATCH = -6
 DEFAULT_CONFIG = "bounded-16-16-16-20"
@@ -43,6 +47,8 @@ class Model:
         ]
         lib.uvt_bsample.restype = ctypes.c_int32
         lib.uvt_bsample.argtypes = [u32p, u32p]
+        lib.uvt_psample.restype = ctypes.c_int32
+        lib.uvt_psample.argtypes = [u32p, u32p]
         lib.uvt_compare.restype = ctypes.c_int32
         lib.uvt_compare.argtypes = [ctypes.c_uint32, u32p, u32p, ctypes.c_size_t, ctypes.c_uint32]
         self.lib = lib
@@ -51,6 +57,8 @@ class Model:
         self._in = (ctypes.c_uint32 * BSAMPLE_IN_WORDS)()
         self._out = (ctypes.c_uint32 * BSAMPLE_OUT_WORDS)()
         self._obs = (ctypes.c_uint32 * BSAMPLE_OUT_WORDS)()
+        self._pin = (ctypes.c_uint32 * PSAMPLE_IN_WORDS)()
+        self._pout = (ctypes.c_uint32 * PSAMPLE_OUT_WORDS)()
 
     def version(self):
         return self.lib.uvt_version()
@@ -77,6 +85,15 @@ class Model:
         self._in[:] = words
         self._check(self.lib.uvt_bsample(self._in, self._out), "uvt_bsample")
         return list(self._out)
+
+    def psample(self, words):
+        """The model's psample_out record (8 words) for psample_in record `words` (28; its setup
+        fields the core's, as uvt_gen gives them)."""
+        if len(words) != PSAMPLE_IN_WORDS:
+            raise UvtError(f"psample: {len(words)} words, expected {PSAMPLE_IN_WORDS}")
+        self._pin[:] = words
+        self._check(self.lib.uvt_psample(self._pin, self._pout), "uvt_psample")
+        return list(self._pout)
 
     def compare(self, expected, observed, kind=KIND_BSAMPLE, arch_only=False):
         """[] when the records agree, else the differing fields as uvt_last_error() lists them
