@@ -96,15 +96,8 @@ impl Grid {
 
 /// Input record.
 pub fn enc_bsample_in(t: &Triangle, vp: Viewport, g: Grid, pos: ScreenPos, s: &Sample) -> Rec {
-    let mut r = Rec::default();
-    for time in 0..2 {
-        for v in t.vertices(time) {
-            for b in v.bits() {
-                r = r.i32(b);
-            }
-        }
-    }
-    r.packed(&[(vp.width() as i64, 16), (vp.height() as i64, 16)])
+    crate::stages::tri_words(t)
+        .packed(&[(vp.width() as i64, 16), (vp.height() as i64, 16)])
         .packed(&[
             (t.class().index() as i64, 2),
             (g.off as i64, 6),

@@ -13,8 +13,9 @@ use uvt_core::{
 
 use crate::format::Rec;
 
-/// Input record of a triangle and viewport.
-pub fn enc_setup_in(t: &Triangle, vp: Viewport) -> Rec {
+/// The 30 words of a triangle (both key frames, vertices 0..2, x y z w CoC each): the first words
+/// of a setup and of a bounded sample-test record.
+pub fn tri_words(t: &Triangle) -> Rec {
     let mut r = Rec::default();
     for time in 0..2 {
         for v in t.vertices(time) {
@@ -23,7 +24,12 @@ pub fn enc_setup_in(t: &Triangle, vp: Viewport) -> Rec {
             }
         }
     }
-    r.packed(&[(vp.width() as i64, 16), (vp.height() as i64, 16)])
+    r
+}
+
+/// Input record of a triangle and viewport.
+pub fn enc_setup_in(t: &Triangle, vp: Viewport) -> Rec {
+    tri_words(t).packed(&[(vp.width() as i64, 16), (vp.height() as i64, 16)])
 }
 
 /// Decode a setup input record.

@@ -20,7 +20,6 @@ field expected/observed in hex, and fails. At the end it logs one line
 """
 
 import collections
-import os
 import random
 import time
 
@@ -29,15 +28,12 @@ from cocotb.clock import Clock
 from cocotb.triggers import FallingEdge
 
 import uvt_model
+from bench import env_int, hexwords, word
 
 MAX_REPORTED = 10  # mismatching samples printed before the run stops
 FLUSH = 60  # idle clocks before the first sample (the valid pipeline starts unknown) and after
 DRAIN = 200  # clocks the last results may take after the last sample
 
-
-def env_int(name, default):
-    raw = os.environ.get(name, "")
-    return int(raw, 0) if raw.strip() else default
 
 
 def lerp(f0, f1, t):
@@ -81,20 +77,9 @@ def drive(dut, rec):
     dut.in_valid.value = 1
 
 
-def word(handle):
-    """An output as an unsigned int, or None when a bit is X or Z. (int(str, 2) rejects those
-    and is ~10x faster than LogicArray.is_resolvable + to_unsigned in cocotb 2.1.)"""
-    try:
-        return int(str(handle.value), 2)
-    except ValueError:
-        return None
-
 
 bit = word
 
-
-def hexwords(ws):
-    return " ".join(f"{w:08x}" for w in ws)
 
 
 @cocotb.test()

@@ -13,7 +13,6 @@ test_bsample.py). At the end it logs "UVT_COCOTB_COVERAGE key=value ...".
 """
 
 import collections
-import os
 import random
 
 import cocotb
@@ -21,27 +20,14 @@ from cocotb.clock import Clock
 from cocotb.triggers import FallingEdge
 
 import uvt_model
+from bench import env_int, hexwords, word
 
 MAX_REPORTED = 10
 FLUSH = 20  # idle clocks before the first sample and after the last result
 DRAIN = 200
 
 
-def env_int(name, default):
-    raw = os.environ.get(name, "")
-    return int(raw, 0) if raw.strip() else default
 
-
-def word(handle):
-    """An output as an unsigned int, or None when a bit is X or Z."""
-    try:
-        return int(str(handle.value), 2)
-    except ValueError:
-        return None
-
-
-def hexwords(ws):
-    return " ".join(f"{w:08x}" for w in ws)
 
 
 def drive(dut, rec):

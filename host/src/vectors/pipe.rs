@@ -142,9 +142,7 @@ pub fn decode(what: &str, words: &[String]) -> Result<String> {
     let inp = &ws[..wi.min(n)];
     s += &lines(&format!("{name}_in"), &format!("{name}_in"), inp);
     if kind.needs_setup() {
-        s += &format!(
-            "(the model's output needs the setup_in record this one names: `uvt vectors check`)\n"
-        );
+        s += "(the model's output needs the setup_in record this one names: `uvt vectors check`)\n";
         return Ok(s);
     }
     match kind::run(kind, inp, None) {
