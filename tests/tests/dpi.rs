@@ -9,7 +9,8 @@
 //!   `+ARCH_ONLY=1` a corrupted edge value passes (only covered and depth are compared).
 //! - A mutated copy of the RTL (the bounded unit's fill-rule tie key reversed, the planar unit's
 //!   fill rule for clockwise triangles reversed) fails.
-//! - `harness.cpp` (no DPI) passes on a short run and prints its rates.
+//! - `harness.cpp` (no DPI) passes on a short run and prints its rates, and fails on a corrupted
+//!   expected depth and on the bounded unit with its tie key reversed.
 //!
 //! Verilator (Debian's 5.006) must be installed: `tests/run.sh` installs it. Every build goes
 //! into a temporary folder.
@@ -220,25 +221,29 @@ fn psample_dpi_catches_a_reversed_fill_rule() {
     );
 }
 
-#[test]
-fn cpp_harness_passes_and_prints_its_rates() {
-    let dir = tempfile::tempdir().unwrap();
-    let mdir = dir.path().join("obj_harness");
+/// Build `harness.cpp` with the bounded unit `rtl` into `dir`; the executable.
+fn build_harness(dir: &Path, rtl: &Path) -> PathBuf {
+    let mdir = dir.join("obj_harness");
     let lib = ffi::lib();
     let mut args: Vec<String> = ["--cc", "--exe", "--build", "-o", "harness", "-CFLAGS"]
         .map(String::from)
         .to_vec();
     args.push(format!("-I{}", lib.include.display()));
     args.extend(common("uvt_bsample", &mdir));
-    for f in ["uvt_mul.v", "uvt_bsample.v"] {
-        args.push(icarus::rtl_dir().join(f).display().to_string());
-    }
+    args.push(icarus::rtl_dir().join("uvt_mul.v").display().to_string());
+    args.push(rtl.display().to_string());
     args.push(dpi_dir().join("harness.cpp").display().to_string());
-    verilate(dir.path(), &args);
-    let (ok, out) = run(
-        &mdir.join("harness"),
-        &[seed(), 20_000, 2_000, 64].map(|n| n.to_string()),
-    );
+    verilate(dir, &args);
+    mdir.join("harness")
+}
+
+/// The C++ harness passes on the committed unit and prints its rates; a corrupted expected
+/// depth (its fifth argument) fails, naming the field and the words.
+#[test]
+fn cpp_harness_passes_and_catches_a_corrupted_model_output() {
+    let dir = tempfile::tempdir().unwrap();
+    let h = build_harness(dir.path(), &icarus::rtl_dir().join("uvt_bsample.v"));
+    let (ok, out) = run(&h, &[seed(), 20_000, 2_000, 64].map(|n| n.to_string()));
     assert!(ok && out.contains("\nPASS 20000 samples, "), "{out}");
     for rate in ["model-typed", "model-record", "rtl-harness"] {
         assert!(
@@ -246,4 +251,23 @@ fn cpp_harness_passes_and_prints_its_rates() {
             "no {rate} rate:\n{out}"
         );
     }
+    let (ok, out) = run(&h, &[seed(), 3_000, 10, 4, 1234].map(|n| n.to_string()));
+    assert!(!ok, "a corrupted expected depth passed:\n{out}");
+    assert_fail(&out, "depth");
+}
+
+/// The C++ harness fails on the bounded unit with its fill-rule tie key reversed.
+#[test]
+fn cpp_harness_catches_a_reversed_tie_key() {
+    let dir = tempfile::tempdir().unwrap();
+    let rtl = mutant(
+        dir.path(),
+        "bsample",
+        "(~s10_pos & ~s10_neg & s10_gt))",
+        "(~s10_pos & ~s10_neg & s10_lt))",
+    );
+    let h = build_harness(dir.path(), &rtl);
+    let (ok, out) = run(&h, &[seed(), 100_000, 10, 4].map(|n| n.to_string()));
+    assert!(!ok, "the mutated unit passed:\n{out}");
+    assert_fail(&out, "covered");
 }

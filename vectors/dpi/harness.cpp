@@ -1,7 +1,8 @@
 // Verilator C++ harness of uvt_bsample (vectors/rtl/uvt_bsample.v, bounded-16-16-16-20) linking
 // the model's static library (libuvt_ffi.a, ffi/include/uvt.h) directly: no DPI.
-// Usage: harness [seed] [rtl_samples] [model_triangles] [samples_per_triangle]
-//   (defaults 1, 200000, 20000, 64)
+// Usage: harness [seed] [rtl_samples] [model_triangles] [samples_per_triangle] [corrupt]
+//   (defaults 1, 200000, 20000, 64, -1; corrupt = k flips bit 0 of sample k's expected depth,
+//   which the run must report)
 // 1. Model only, one core (no RTL): bounded sample tests per second, model call + compare
 //    against a stored result (what a harness compares a DUT's output with), through
 //    a. the typed API: uvt_tri_new once per triangle, uvt_tri_sample per sample;
@@ -163,6 +164,8 @@ int main(int argc, char** argv) {
     uint64_t n = argc > 2 ? strtoull(argv[2], nullptr, 0) : 200000;
     uint64_t tris = argc > 3 ? strtoull(argv[3], nullptr, 0) : 20000;
     uint32_t per_tri = argc > 4 ? (uint32_t)strtoul(argv[4], nullptr, 0) : 64;
+    // corrupt: flip bit 0 of the expected depth of that sample (the run must fail); -1: none
+    int64_t corrupt = argc > 5 ? strtoll(argv[5], nullptr, 0) : -1;
     Verilated::commandArgs(argc, argv);
 
     model_only(seed, tris, per_tri);
@@ -188,6 +191,7 @@ int main(int argc, char** argv) {
             stimulus(seed, it.i, rng, it.in);
             if (uvt_bsample(it.in, it.exp) != UVT_OK)
                 fail(seed, it.i, uvt_last_error(), it.in, nullptr, nullptr);
+            if ((int64_t)it.i == corrupt) it.exp[1] ^= 1;
             n_cov += it.exp[0] & 1;
             n_tie += (it.exp[8] | it.exp[9]) == 0 || (it.exp[10] | it.exp[11]) == 0 ||
                      (it.exp[12] | it.exp[13]) == 0;
