@@ -24,9 +24,10 @@
 //   dual_delta[64(8a+4m+2t+e) +: 64]  δmin (m = 0) / δmax (m = 1) at time t, footprint end e
 //   nonempty, u_lo, u_hi, v_lo, v_hi, t_lo, t_hi   bounds_out words 0..6 (the box; all zero
 //                       when the tile is empty), with out_valid, LAT = 26 clocks after in_valid
-// The unit reads the bits the model's ranges allow (core/src/bounds/laine.rs): |base| < 2^58 and
-// |d| < 2^59 (|n| < 2^59 at the multiplier, n·r < 2^81), r ≤ 2^80 (81 bits), |δ| < 2^44
-// (45 bits), ξ < 2^16; every line value and solve operand is then exact in its register.
+// The unit reads the bits the model's ranges allow (core/src/bounds/laine.rs and the width table,
+// `uvt widths`, core/README.md): |base| < 2^58, |d| ≤ 3·2^56 (so |n| < 2^58 where it is
+// multiplied, and n·r < 2^81), r ≤ 2^80 (81 bits), |δ| < 2^44 (45 bits), ξ < 2^16; every line
+// value and solve operand is then exact in its register.
 //
 // Pipeline (stage k = the registers loaded k clocks after in_valid):
 //   1      inputs registered
@@ -91,7 +92,7 @@ module uvt_bounds #(
     localparam signed [17:0] ONE = 18'sd65536;     // 1.0 in t/u/v raw units
     localparam signed [17:0] STEP = 18'sd1 <<< (16 - TUV);   // the TUV grid's step
     localparam NW = 66;        // n = ±(x·2^BND − base), signed
-    localparam MW = 59;        // |n| at the multiplier (< |d| < 2^59)
+    localparam MW = 58;        // |n| at the multiplier (< |d| ≤ 3·2^56)
     localparam RW = 81;        // r_up, r_dn ≤ 2^80
     localparam PW = 82;        // n·r < 2^81: its low 82 bits are the product
     localparam DW = 45;        // |δ| < 2^44
