@@ -1,23 +1,25 @@
 #!/usr/bin/env bash
-# Synthesize the bounded sample-test unit (uvt_bsample.v, its multipliers uvt_mul.v) and the
-# planar static sample-test unit (uvt_psample.v) with Yosys for Xilinx 7-series (synth_xilinx:
+# Synthesize the bounded sample-test unit (uvt_bsample.v, its multipliers uvt_mul.v), the
+# planar static sample-test unit (uvt_psample.v) and the per-tile bounds unit (uvt_bounds.v) with Yosys for Xilinx 7-series (synth_xilinx:
 # DSP48E1, LUT1..6, flip-flops, SRLs) and Lattice ECP5 (synth_ecp5: MULT18X18D, LUT4,
 # flip-flops) per configuration and unit variant, and write the counts to host/report/synth.json:
 #   {"yosys": …, "configs": [{"name", "xilinx": {…}, "ecp5": {…}}],     full unit per configuration
 #    "units": [{"unit", "name", "xilinx": {…}, "ecp5": {…}}]}           each unit at the default,
-#                                                                      static-only at planar
+#                                                                      static-only at planar,
+#                                                                      the bounds unit ("bounds")
 #
 #   bash vectors/rtl/synth.sh [-j JOBS] [-o OUT.json] [-r WORKDIR] [-k] [RUN …]
 #
 # RUN = CONFIG (the full unit) or UNIT@CONFIG, UNIT one of full, motion-only, defocus-only,
-# static-only (uvt_bsample's MOTION, DEFOCUS); CONFIG = bounded-P-T-B-O (B, the bounds'
+# static-only (uvt_bsample's MOTION, DEFOCUS) or bounds (uvt_bounds.v: BND = B, TUV = T); CONFIG = bounded-P-T-B-O (B, the bounds'
 # precision, does not enter the sample test). The planar static configuration has one run,
 # static-only@planar-16-16-16-20: uvt_psample.v (its other units would carry the bounded unit
 # beside it; they are not built). Default: bounded-16-16-16-20 bounded-16-16-16-24
 # bounded-12-12-12-24 bounded-8-8-8-28, motion-only@, defocus-only@, static-only@ the default
-# bounded-16-16-16-20, and static-only@planar-16-16-16-20. "configs" lists the full-unit runs;
-# "units" the four units at the default configuration (full = the run bounded-16-16-16-20) and
-# the static-only unit at planar-16-16-16-20, those that were synthesized.
+# bounded-16-16-16-20, static-only@planar-16-16-16-20 and bounds@bounded-16-16-16-20. "configs"
+# lists the full-unit runs; "units" the four units at the default configuration (full = the run
+# bounded-16-16-16-20), the static-only unit at planar-16-16-16-20 and the bounds unit at the
+# default, those that were synthesized.
 # -k: keep the entries of the existing OUT that this run does not synthesize (needs jq); each
 # entry's "seconds" are its own run's, total_seconds this run's.
 # -r WORKDIR: no synthesis; rebuild the JSON from the stat files and times of an earlier run's
@@ -44,12 +46,14 @@ while [ $# -gt 0 ]; do
 done
 runs=("$@")
 [ ${#runs[@]} -gt 0 ] || runs=(bounded-16-16-16-20 bounded-16-16-16-24 bounded-12-12-12-24 bounded-8-8-8-28
-  "motion-only@$default" "defocus-only@$default" "static-only@$default" "static-only@$planar")
+  "motion-only@$default" "defocus-only@$default" "static-only@$default" "static-only@$planar"
+  "bounds@$default")
 units=(full motion-only defocus-only static-only)
 # unit → MOTION DEFOCUS of uvt_bsample.v
 terms() {
   case "$1" in
     full) echo "1 1" ;; motion-only) echo "1 0" ;; defocus-only) echo "0 1" ;; static-only) echo "0 0" ;;
+    bounds) echo "- -" ;;                # not a sample-test unit: uvt_bounds.v
     *) return 1 ;;
   esac
 }
@@ -58,7 +62,7 @@ unit_of() { case "$1" in *@*) echo "${1%%@*}" ;; *) echo full ;; esac; }
 config_of() { echo "${1#*@}"; }
 for r in "${runs[@]}"; do
   u=$(unit_of "$r"); c=$(config_of "$r")
-  terms "$u" >/dev/null || { echo "synth.sh: run '$r': unit '$u' is not one of ${units[*]}" >&2; exit 2; }
+  terms "$u" >/dev/null || { echo "synth.sh: run '$r': unit '$u' is not one of ${units[*]} bounds" >&2; exit 2; }
   [ "$u" != full ] || [ "$r" = "$c" ] || { echo "synth.sh: run '$r': write the full unit's run as '$c'" >&2; exit 2; }
   if [ "$c" = "$planar" ]; then
     [ "$u" = static-only ] ||
@@ -78,6 +82,7 @@ if [ -n "$keep" ]; then
 fi
 rtl="vectors/rtl/uvt_mul.v vectors/rtl/uvt_bsample.v"
 rtl_planar="vectors/rtl/uvt_mul.v vectors/rtl/uvt_psample.v"
+rtl_bounds="vectors/rtl/uvt_mul.v vectors/rtl/uvt_bounds.v"
 if [ -n "$reuse" ]; then
   work=$reuse
 else
@@ -90,14 +95,17 @@ run() { # run family
   local name=$1 fam=$2
   local unit cfg mot dof
   unit=$(unit_of "$name"); cfg=$(config_of "$name")
-  IFS=- read -r _kind pos tuv _bnd off <<<"$cfg"
+  IFS=- read -r _kind pos tuv bnd off <<<"$cfg"
   # The multiplier tiling follows the family's hard multiplier (uvt_mul.v): 25 × 18 signed for
   # the DSP48E1, 18 × 18 for the MULT18X18D. The full unit keeps MOTION = DEFOCUS = 1 (the
   # defaults, not set: the same command as before the unit parameters).
-  # The planar static unit (uvt_psample.v) has only the tiling parameters.
+  # The planar static unit (uvt_psample.v) has only the tiling parameters; the bounds unit
+  # (uvt_bounds.v) takes the configuration's BND and TUV.
   local cmd ports top=uvt_bsample src=$rtl cfgp
   if [ "$cfg" = "$planar" ]; then
     top=uvt_psample; src=$rtl_planar; cfgp=""
+  elif [ "$unit" = bounds ]; then
+    top=uvt_bounds; src=$rtl_bounds; cfgp="-set BND $bnd -set TUV $tuv"
   else
     cfgp="-set POS $pos -set TUV $tuv -set OFF $off"
   fi
@@ -193,6 +201,15 @@ ver=$(yosys -V | sed 's/"/\\"/g')
     sep=","
   elif [ -n "$keep" ]; then
     e=$(jq -c --arg n "$planar" '(.units // [])[] | select(.unit == "static-only" and .name == $n)' "$out")
+    [ -z "$e" ] || { printf '%s\n    %s' "$sep" "$e"; sep=","; }
+  fi
+  # The bounds unit at the default configuration (kept with -k likewise).
+  r="bounds@$default"
+  if ran "$r"; then
+    printf '%s\n    {"unit": "bounds", "name": "%s",\n     %s}' "$sep" "$default" "$(fields "$r")"
+    sep=","
+  elif [ -n "$keep" ]; then
+    e=$(jq -c --arg n "$default" '(.units // [])[] | select(.unit == "bounds" and .name == $n)' "$out")
     [ -z "$e" ] || { printf '%s\n    %s' "$sep" "$e"; sep=","; }
   fi
   printf '\n  ]\n}\n'

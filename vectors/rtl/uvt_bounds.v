@@ -9,7 +9,8 @@
 //        that grid (`Interval::round_out`; a no-op at 16)
 //   DSP_A, DSP_B, LUTW  the multiplier tiling of every product (uvt_mul.v): 25 × 18 for DSP48E1
 //        (default), 18 × 18 for ECP5
-// The default configuration bounded-16-16-16-20 (and the exact one) is BND = TUV = 16.
+// The default configuration bounded-16-16-16-20 (and the exact one) is BND = TUV = 16, the only
+// values the committed records exercise (tests/tests/bounds_rtl.rs); others are untested.
 //
 // Ports (setup_out / bounds_in record fields, vectors/README.md; i64 / i128 two's complement):
 //   x0, y0, x1, y1      the tile (bounds_in words 1, 2), inside the triangle's footprint

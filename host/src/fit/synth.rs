@@ -3,8 +3,10 @@
 //! synthesized at the default configuration, which `uvt units` shows beside the cost model's
 //! per-unit estimate (`crate::config::units::unit_sample_cost`), and the static-only unit at the
 //! planar static configuration (`vectors/rtl/uvt_psample.v`, run `static-only@planar-16-16-16-20`),
-//! shown beside `crate::config::planar_static::unit_cost` ([`planar_md`]). The per-configuration
-//! entries (`"configs"`) are read by `crate::precision::costs`.
+//! shown beside `crate::config::planar_static::unit_cost` ([`planar_md`]), and the per-tile bounds
+//! unit (`vectors/rtl/uvt_bounds.v`, run `bounds@bounded-16-16-16-20`) beside the width table's
+//! `bounds/tile` multipliers ([`bounds_md`]). The per-configuration entries (`"configs"`) are read
+//! by `crate::precision::costs`.
 
 use std::path::Path;
 
@@ -36,7 +38,8 @@ pub struct Ecp5 {
 /// One unit variant synthesized at one configuration.
 #[derive(Clone, Debug, Deserialize, PartialEq, Eq)]
 pub struct SynthUnit {
-    /// unit name (`full`, `motion-only`, `defocus-only`, `static-only`)
+    /// unit name (`full`, `motion-only`, `defocus-only`, `static-only`; `bounds`: the
+    /// per-tile bounds unit, not a sample test)
     pub unit: String,
     /// configuration name
     pub name: String,
@@ -94,6 +97,42 @@ pub fn planar_md(synth: Option<&[SynthUnit]>, synth_path: &Path) -> String {
     if syn.is_none() {
         s += &format!(
             "\nsynthesized: none at `{name}` in `{}` (`bash vectors/rtl/synth.sh -k static-only@{name}`).\n",
+            synth_path.display()
+        );
+    }
+    s
+}
+
+/// Markdown: the per-tile bounds unit at the default configuration — the width table's
+/// `bounds/tile` multipliers (`crate::config::multipliers::stage_costs`) beside the synthesized
+/// counts of `vectors/rtl/uvt_bounds.v` (`synth`, the `"units"` of `synth_path`), "not
+/// synthesized" without its entry.
+pub fn bounds_md(synth: Option<&[SynthUnit]>, synth_path: &Path) -> String {
+    let cfg =
+        uvt_core::config::registry::Config::of::<uvt_core::config::precision::DefaultPrecision>();
+    let name = cfg.to_string();
+    let mut s = format!(
+        "\nPer-tile bounds unit at `{name}` (`Laine2011::tile`; RTL `vectors/rtl/uvt_bounds.v`, synthesized counts from `{}`). The estimate is the width table's `bounds/tile` rows (`uvt cost --config {name}`): it counts each bounding line at both tile ends (32 line products), the RTL evaluates each line once, at the end its slope picks (16, as `dual_t`):\n\n| unit | bounds/tile DSP48E1 estimate | synthesized DSP48E1 / LUT / FF | MULT18X18D estimate | synthesized MULT18X18D / LUT4 / FF | Σ bit-products | products |\n|---|---|---|---|---|---|---|\n",
+        synth_path.display()
+    );
+    let c = crate::config::multipliers::stage_costs(&cfg)
+        .into_iter()
+        .find(|g| g.stage == "bounds/tile")
+        .unwrap_or_default();
+    let syn = synth.and_then(|v| v.iter().find(|u| u.unit == "bounds" && u.name == name));
+    let (sx, se) = syn.map_or(("not synthesized".into(), "not synthesized".into()), |u| {
+        (
+            format!("{} / {} / {}", u.xilinx.dsp48e1, u.xilinx.lut, u.xilinx.ff),
+            format!("{} / {} / {}", u.ecp5.mult18x18d, u.ecp5.lut4, u.ecp5.ff),
+        )
+    });
+    s += &format!(
+        "| bounds | {} | {sx} | {} | {se} | {} | {} |\n",
+        c.dsp48e1, c.ecp5, c.bit_products, c.products
+    );
+    if syn.is_none() {
+        s += &format!(
+            "\nsynthesized: none at `{name}` in `{}` (`bash vectors/rtl/synth.sh -k bounds@{name}`).\n",
             synth_path.display()
         );
     }
@@ -167,7 +206,8 @@ mod tests {
     }
 
     /// The full unit's entry is the default configuration's full-unit run (`"configs"`), and a
-    /// narrower unit never synthesizes to more hard multipliers or flip-flops than the full one.
+    /// narrower unit never synthesizes to more hard multipliers or flip-flops than the full one
+    /// (the sample-test units; the bounds unit is another stage).
     #[test]
     fn full_unit_entry_is_the_default_configuration_run() {
         let (path, units) = committed();
@@ -192,7 +232,7 @@ mod tests {
             cfg["ecp5"]["mult18x18d"].as_u64()
         );
         assert_eq!(Some(full.ecp5.lut4), cfg["ecp5"]["lut4"].as_u64());
-        for u in &units {
+        for u in units.iter().filter(|u| u.unit != "bounds") {
             // LUTs are left out: ABC's mapping is not monotonic in the logic removed (Yosys
             // 0.23's ECP5 motion-only unit maps to 7 LUT4 more than the full one).
             assert!(
@@ -203,6 +243,58 @@ mod tests {
                 "{path}: {u:?} against {full:?}"
             );
         }
+    }
+
+    /// The bounds unit (`uvt_bounds.v`, run `bounds@` the default) is synthesized, and its hard
+    /// multipliers are the tiling rule applied to its products for both families: per lens side
+    /// one signed 59 × 82 product (4), per bounding line one 45 × 17 and one 46 × 17 (16 lines).
+    /// The width table's `bounds/tile` estimate counts every line at both tile ends (32 products
+    /// 44 × 13, tiled alike), 16 line products more than the RTL; `uvt units` shows both.
+    #[test]
+    fn bounds_unit_tiles_its_products_as_the_model_counts() {
+        use crate::config::multipliers::{dsp48e1_tiling, ecp5_tiling, stage_costs, Tiling};
+        let (path, units) = committed();
+        let cfg = Config::of::<uvt_core::config::precision::DefaultPrecision>();
+        let name = cfg.to_string();
+        let syn = units
+            .iter()
+            .find(|u| u.unit == "bounds" && u.name == name)
+            .unwrap_or_else(|| panic!("{path}: no unit bounds at {name}"));
+        let rtl = |t: fn(u32, u32) -> Tiling| {
+            u64::from(4 * t(59, 82).hard + 8 * t(45, 17).hard + 8 * t(46, 17).hard)
+        };
+        assert_eq!(
+            (rtl(dsp48e1_tiling), rtl(ecp5_tiling)),
+            (syn.xilinx.dsp48e1, syn.ecp5.mult18x18d),
+            "bounds at {name}: the RTL's products tiled (DSP48E1, MULT18X18D) against synthesized ({path})"
+        );
+        let est = stage_costs(&cfg)
+            .into_iter()
+            .find(|g| g.stage == "bounds/tile")
+            .unwrap();
+        let extra = |t: fn(u32, u32) -> Tiling| u64::from(16 * t(44, 13).hard);
+        assert_eq!(
+            (est.dsp48e1, est.ecp5),
+            (
+                rtl(dsp48e1_tiling) + extra(dsp48e1_tiling),
+                rtl(ecp5_tiling) + extra(ecp5_tiling)
+            ),
+            "the bounds/tile estimate is no longer the RTL's products plus 16 line products: {est:?}"
+        );
+        let md = bounds_md(Some(&units), Path::new(path));
+        let row = format!(
+            "| bounds | {} | {} / {} / {} | {} | {} / {} / {} |",
+            est.dsp48e1,
+            syn.xilinx.dsp48e1,
+            syn.xilinx.lut,
+            syn.xilinx.ff,
+            est.ecp5,
+            syn.ecp5.mult18x18d,
+            syn.ecp5.lut4,
+            syn.ecp5.ff
+        );
+        assert!(md.contains(&row), "{md}");
+        assert!(bounds_md(None, Path::new(path)).contains("not synthesized"));
     }
 
     /// An absent file is `None`; a file that is not the script's JSON is refused by name.

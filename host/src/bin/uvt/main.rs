@@ -371,6 +371,7 @@ fn run(cli: Cli) -> Result<()> {
                 &synth,
             ))?;
             say(&uvt_host::fit::synth::planar_md(syn.as_deref(), &synth))?;
+            say(&uvt_host::fit::synth::bounds_md(syn.as_deref(), &synth))?;
         }
         Cmd::Stress { dir } => {
             let scenes = uvt_host::precision::sweep::stress_scenes(&dir)?;
