@@ -18,7 +18,6 @@ use uvt_core::{
 
 use crate::scene::builtin::random_tri;
 use crate::scene::file::Scene;
-use crate::scene::pattern::Pattern;
 
 use super::bsample::{on_grid, BCoverage, BSet, Grid};
 use super::cases::{base_tri, named_cases, tri};
@@ -344,17 +343,8 @@ fn frame_at<P: Precision>(scene: &Scene, scene_json: &str, cfg: Config) -> Resul
             scene.spp
         ));
     }
-    let pattern = Pattern::new(scene.pattern, scene.spp, scene.seed).with_tuv(P::TUV_FRAC);
+    let (core, pattern) = scene.inputs_at::<P>()?;
     let vp = scene.core_viewport();
-    let core = scene
-        .tris
-        .iter()
-        .enumerate()
-        .map(|(i, t)| {
-            t.to_core_with::<P>()
-                .map_err(|e| anyhow!("triangles[{i}]: {e}"))
-        })
-        .collect::<Result<Vec<_>>>()?;
     let mut set = Set::new(cfg, scene.spp as u32);
     set.scene = Some(scene_json.into());
     let grid = Grid::from_config(cfg).ok();
