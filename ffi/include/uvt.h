@@ -57,12 +57,12 @@
 /**
  * Words of a `setup_in` record.
  */
-#define UVT_SETUP_IN_WORDS 31
+#define UVT_SETUP_IN_WORDS 32
 
 /**
  * Words of a `setup_out` record.
  */
-#define UVT_SETUP_OUT_WORDS 105
+#define UVT_SETUP_OUT_WORDS 108
 
 /**
  * Words of a `bounds_in` record.
@@ -127,7 +127,7 @@
 /**
  * Longest record of any kind, in words (a buffer of this size takes any output record).
  */
-#define UVT_MAX_WORDS 105
+#define UVT_MAX_WORDS 108
 
 /**
  * Success.
@@ -245,7 +245,7 @@ int32_t uvt_run(uint32_t kind, const uint32_t *input, size_t in_len, const uint3
 int32_t uvt_setup(const uint32_t *input, uint32_t *out);
 
 /**
- * Per-tile bounds of the triangle of `setup_in` (31 words) for tile `input` (3 words; its
+ * Per-tile bounds of the triangle of `setup_in` (32 words) for tile `input` (3 words; its
  * `tri` field is ignored) into `out` (7 words). Returns 0 or a `UVT_ERR_*` code.
  *
  * # Safety
@@ -262,7 +262,7 @@ int32_t uvt_bounds(const uint32_t *setup_in, const uint32_t *input, uint32_t *ou
 int32_t uvt_select(const uint32_t *input, uint32_t *out);
 
 /**
- * The exact sample test of the triangle of `setup_in` (31 words) at sample `input` (6 words;
+ * The exact sample test of the triangle of `setup_in` (32 words) at sample `input` (6 words;
  * `tri` ignored) into `out` (26 words). Returns 0 or a `UVT_ERR_*` code.
  *
  * # Safety

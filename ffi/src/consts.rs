@@ -20,9 +20,9 @@ pub const UVT_KIND_PSAMPLE: u32 = 5;
 pub const UVT_KIND_RESOLVE: u32 = 6;
 
 /// Words of a `setup_in` record.
-pub const UVT_SETUP_IN_WORDS: usize = 31;
+pub const UVT_SETUP_IN_WORDS: usize = 32;
 /// Words of a `setup_out` record.
-pub const UVT_SETUP_OUT_WORDS: usize = 105;
+pub const UVT_SETUP_OUT_WORDS: usize = 108;
 /// Words of a `bounds_in` record.
 pub const UVT_BOUNDS_IN_WORDS: usize = 3;
 /// Words of a `bounds_out` record.
@@ -48,4 +48,4 @@ pub const UVT_RESOLVE_OUT_WORDS: usize = 1;
 /// Largest samples per pixel of a resolve record.
 pub const UVT_MAX_SPP: u32 = 64;
 /// Longest record of any kind, in words (a buffer of this size takes any output record).
-pub const UVT_MAX_WORDS: usize = 105;
+pub const UVT_MAX_WORDS: usize = 108;

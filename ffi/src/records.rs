@@ -118,7 +118,7 @@ pub unsafe extern "C" fn uvt_setup(input: *const u32, out: *mut u32) -> i32 {
     }
 }
 
-/// Per-tile bounds of the triangle of `setup_in` (31 words) for tile `input` (3 words; its
+/// Per-tile bounds of the triangle of `setup_in` (32 words) for tile `input` (3 words; its
 /// `tri` field is ignored) into `out` (7 words). Returns 0 or a `UVT_ERR_*` code.
 ///
 /// # Safety
@@ -157,7 +157,7 @@ pub unsafe extern "C" fn uvt_select(input: *const u32, out: *mut u32) -> i32 {
     }
 }
 
-/// The exact sample test of the triangle of `setup_in` (31 words) at sample `input` (6 words;
+/// The exact sample test of the triangle of `setup_in` (32 words) at sample `input` (6 words;
 /// `tri` ignored) into `out` (26 words). Returns 0 or a `UVT_ERR_*` code.
 ///
 /// # Safety

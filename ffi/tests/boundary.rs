@@ -28,9 +28,17 @@ fn seed() -> u64 {
         .unwrap_or(1)
 }
 
+/// Records of `file` in the committed unit-level set (the default configuration).
 fn committed(file: &str) -> Vec<Vec<u32>> {
+    committed_in("unit", file)
+}
+
+/// Records of `file` in the committed set `set` (`unit_exact`: the exact configuration, whose
+/// sample records are the exact sample test's).
+fn committed_in(set: &str, file: &str) -> Vec<Vec<u32>> {
     let p = PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-        .join("../vectors/unit")
+        .join("../vectors")
+        .join(set)
         .join(format!("{file}.hex"));
     let text = std::fs::read_to_string(&p).unwrap();
     parse(&text, layout(file, 16).words, file).unwrap()
@@ -58,6 +66,15 @@ fn the_constants_are_the_layouts() {
         assert_eq!((a as usize, b as usize), (i, o));
     }
     assert_eq!(Kind::Resolve.words_out() as usize, UVT_RESOLVE_OUT_WORDS);
+    let longest = Kind::ALL
+        .iter()
+        .map(|k| k.words_out().max(k.words_in(UVT_MAX_SPP)))
+        .max();
+    assert_eq!(
+        longest,
+        Some(UVT_MAX_WORDS as u32),
+        "UVT_MAX_WORDS is the longest record"
+    );
     assert_eq!(
         [
             UVT_KIND_SETUP,
@@ -102,13 +119,14 @@ fn committed_records_through_the_c_functions() {
         );
         assert_eq!(&out[..], &o[..]);
     }
-    for (i, o) in committed("sample_in")
+    let exact_setups = committed_in("unit_exact", "setup_in");
+    for (i, o) in committed_in("unit_exact", "sample_in")
         .iter()
-        .zip(&committed("sample_out"))
+        .zip(&committed_in("unit_exact", "sample_out"))
         .take(2000)
     {
         let mut out = [0u32; UVT_SAMPLE_OUT_WORDS];
-        let s = &setups[i[0] as usize];
+        let s = &exact_setups[i[0] as usize];
         // SAFETY: buffers of the stated lengths.
         assert_eq!(
             unsafe { uvt_sample(s.as_ptr(), i.as_ptr(), out.as_mut_ptr()) },
@@ -229,7 +247,7 @@ fn no_panic_crosses_the_boundary() {
         let kind = next() % 9; // 7 and 8: unknown kinds
         let len = (next() % 110) as usize;
         let mut input: Vec<u32> = (0..len).map(|_| next()).collect();
-        let setup: Vec<u32> = (0..31).map(|_| next()).collect();
+        let setup: Vec<u32> = (0..32).map(|_| next()).collect();
         let mut out = vec![0u32; (next() % 110) as usize];
         // SAFETY: every pointer has the length passed with it.
         let r = unsafe {
@@ -286,7 +304,7 @@ fn no_panic_crosses_the_boundary() {
         assert_eq!(
             uvt_run(
                 UVT_KIND_SAMPLE,
-                committed("sample_in")[0].as_ptr(),
+                committed_in("unit_exact", "sample_in")[0].as_ptr(),
                 6,
                 null(),
                 0,

@@ -259,15 +259,53 @@ fn vectors_export_and_check_cli() {
     let o = uvt(&["vectors", "check", out.to_str().unwrap()]);
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     assert!(String::from_utf8_lossy(&o.stdout).contains("match the core bit for bit"));
+    // At another configuration: the manifest names it, the per-sample records are its test's,
+    // and the set checks; an unknown name is refused with the accepted ones.
+    let exact = dir.path().join("exact");
+    let o = uvt(&[
+        "vectors",
+        "export",
+        "--scene",
+        &scene,
+        "--config",
+        "exact-12-12-8",
+        "--out",
+        exact.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let m = std::fs::read_to_string(exact.join("manifest.json")).unwrap();
+    assert!(m.contains("\"config\": \"exact-12-12-8\""), "{m}");
+    assert!(std::fs::read_to_string(exact.join("bsample_in.hex"))
+        .unwrap()
+        .is_empty());
+    assert!(!std::fs::read_to_string(exact.join("sample_in.hex"))
+        .unwrap()
+        .is_empty());
+    let o = uvt(&["vectors", "check", exact.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let o = uvt(&[
+        "vectors",
+        "export",
+        "--config",
+        "exact-9-9-9",
+        "--out",
+        "/tmp/never",
+    ]);
+    assert!(!o.status.success());
+    let e = String::from_utf8_lossy(&o.stderr);
+    assert!(
+        e.contains("--config \"exact-9-9-9\"") && e.contains("bounded-16-16-16-20"),
+        "{e}"
+    );
     // Truncate a file: non-zero exit naming it.
-    let f = out.join("sample_in.hex");
+    let f = out.join("bsample_in.hex");
     let t = std::fs::read_to_string(&f).unwrap();
     std::fs::write(&f, &t[..t.len() - 10]).unwrap();
     let o = uvt(&["vectors", "check", out.to_str().unwrap()]);
     assert!(!o.status.success());
     let e = String::from_utf8_lossy(&o.stderr);
     assert!(
-        e.contains("sample_in.hex") && e.contains("corrupted or truncated"),
+        e.contains("bsample_in.hex") && e.contains("corrupted or truncated"),
         "{e}"
     );
 }

@@ -73,11 +73,7 @@ impl Grid {
     }
     /// The triangle with every coordinate on the position grid.
     pub fn tri(&self, t: &Triangle) -> Triangle {
-        let q = |vs: [Vertex; 3]| {
-            vs.map(|v| Vertex::from_bits(v.bits().map(|b| Grid::floor(b, self.pos))))
-        };
-        Triangle::new(q(t.vertices(0)), q(t.vertices(1)))
-            .expect("rounding down stays in the domain")
+        on_grid(t, self.pos)
     }
     /// The sample with t, u, v on the t/u/v grid (t rounded down, u and v toward −∞: −1 is on
     /// every grid).
@@ -92,6 +88,12 @@ impl Grid {
         )
         .expect("rounding down keeps t, u, v in the domain")
     }
+}
+
+/// Triangle `t` with every coordinate rounded down onto the grid of `pos` fraction bits (2..=16).
+pub fn on_grid(t: &Triangle, pos: u32) -> Triangle {
+    let q = |vs: [Vertex; 3]| vs.map(|v| Vertex::from_bits(v.bits().map(|b| Grid::floor(b, pos))));
+    Triangle::new(q(t.vertices(0)), q(t.vertices(1))).expect("rounding down stays in the domain")
 }
 
 /// Input record.

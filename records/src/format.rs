@@ -14,8 +14,55 @@ use sha2::{Digest, Sha256};
 /// Version of this format (bump on any layout change). 2: the bounded sample-test records
 /// `bsample_{in,out}` (self-contained, no setup index). 3: the planar sample-test records
 /// `psample_{in,out}` (no earlier file's layout or bytes changed; a version-2 checker refuses
-/// the set by its version instead of skipping files it does not know).
-pub const FORMAT_VERSION: u32 = 3;
+/// the set by its version instead of skipping files it does not know). 4: `setup_in` names its
+/// configuration (word 31, [`CONFIG_FIELDS`]), so setup, bounds and the exact sample test are of
+/// any registry configuration; `setup_out` puts the architectural outputs first and gains the
+/// conservative epsilon (`eps_x`, `eps_y`, `eps_w`) before the internal coefficients.
+pub const FORMAT_VERSION: u32 = 4;
+
+/// The packed configuration word of `setup_in` (LSB first): datapath (0 exact, 1 bounded,
+/// 2 planar), fraction bits of positions, of t/u/v, of the bounds' grid, and the offset shift
+/// (0 for an exact configuration).
+pub const CONFIG_FIELDS: [(&str, u32, bool); 5] = [
+    ("datapath", 2, false),
+    ("pos_frac", 5, false),
+    ("tuv_frac", 5, false),
+    ("bnd_frac", 5, false),
+    ("off_shift", 6, false),
+];
+
+/// The fields of `setup_out` a setup unit must produce (what `--arch-only` checks): visibility,
+/// cull reason, class, the footprint, the time span, the lens-corner boxes (the per-tile
+/// bounds' inputs) with their presence bits, and the conservative epsilon: every field of words
+/// 0..=23 but the Laine 2011 presence bits `lens_x`, `lens_y`, `dual_x`, `dual_y`. The Laine
+/// coefficients (those bits and words 24..=107, `lens_*`, `dual_*`) are the model's own
+/// intermediate values, optional to check (the bounds unit `vectors/rtl/uvt_bounds.v` reads them).
+pub const SETUP_ARCHITECTURAL: [&str; 24] = [
+    "visible",
+    "cull",
+    "class",
+    "box_x_lo",
+    "box_x_hi",
+    "box_y_lo",
+    "box_y_hi",
+    "fp_x0",
+    "fp_y0",
+    "fp_x1",
+    "fp_y1",
+    "span_lo",
+    "span_hi",
+    "box_x_lo0",
+    "box_x_lo1",
+    "box_x_hi0",
+    "box_x_hi1",
+    "box_y_lo0",
+    "box_y_lo1",
+    "box_y_hi0",
+    "box_y_hi1",
+    "eps_x",
+    "eps_y",
+    "eps_w",
+];
 
 /// One field of a record.
 #[derive(Clone, Debug, Serialize, PartialEq, Eq)]
@@ -109,7 +156,9 @@ pub const STAGES: [&str; 7] = [
 pub fn layout(file: &str, spp: u32) -> Layout {
     let l = Layout::default();
     match file {
-        "setup_in" => tri_fields(l).packed(&[("viewport_w", 16, false), ("viewport_h", 16, false)]),
+        "setup_in" => tri_fields(l)
+            .packed(&[("viewport_w", 16, false), ("viewport_h", 16, false)])
+            .packed(&CONFIG_FIELDS),
         "setup_out" => {
             let mut l = l
                 .packed(&[
@@ -136,6 +185,10 @@ pub fn layout(file: &str, spp: u32) -> Layout {
                     }
                 }
             }
+            l = l
+                .w("eps_x", 32, true, 16)
+                .w("eps_y", 32, true, 16)
+                .w("eps_w", 32, true, 16);
             for a in ["x", "y"] {
                 for side in ["lo", "hi"] {
                     l = l

@@ -4,20 +4,20 @@
 //! or the architectural ones only). `uvt vectors check`, `ver`, `decode` and the C library go
 //! through here, so they cannot disagree on what a record means.
 
-use crate::format::{field_value, layout, show_field, Rec, STAGES};
+use crate::format::{field_value, layout, show_field, Rec, SETUP_ARCHITECTURAL, STAGES};
 
 use crate::{bsample, psample, stages};
 
 /// One of the seven record kinds (a stage's `*_in` / `*_out` pair).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Kind {
-    /// triangle setup (`setup_in` → `setup_out`), exact configuration
+    /// triangle setup (`setup_in` → `setup_out`) at the record's configuration
     Setup,
     /// per-tile bounds of Laine 2011 (`bounds_in` names a `setup_in` record)
     Bounds,
     /// the per-sample interval check
     Select,
-    /// the exact sample test (`sample_in` names a `setup_in` record)
+    /// the exact sample test (`sample_in` names a `setup_in` record of an exact configuration)
     Sample,
     /// the bounded sample test (self-contained; any bounded configuration)
     Bsample,
@@ -72,7 +72,7 @@ impl Kind {
     /// constants for the per-record paths (`tests/layout.rs` holds them equal to [`layout`]).
     pub fn words_in(self, spp: u32) -> u32 {
         match self {
-            Kind::Setup => 31,
+            Kind::Setup => 32,
             Kind::Bounds => 3,
             Kind::Select => 9,
             Kind::Sample => 6,
@@ -84,7 +84,7 @@ impl Kind {
     /// Words of an output record (the layout's, as [`Kind::words_in`]).
     pub fn words_out(self) -> u32 {
         match self {
-            Kind::Setup => 105,
+            Kind::Setup => 108,
             Kind::Bounds => 7,
             Kind::Select | Kind::Resolve => 1,
             Kind::Sample => 26,
@@ -97,10 +97,12 @@ impl Kind {
     pub fn needs_setup(self) -> bool {
         matches!(self, Kind::Bounds | Kind::Sample)
     }
-    /// The output fields a unit must produce (what `--arch-only` checks): the coverage and depth
-    /// of the sample tests and the inside bit of the interval check; every field otherwise.
+    /// The output fields a unit must produce (what `--arch-only` checks): setup's
+    /// [`SETUP_ARCHITECTURAL`] (not the Laine coefficients), the coverage and depth of the sample
+    /// tests and the inside bit of the interval check; every field otherwise.
     pub fn architectural(self) -> Option<&'static [&'static str]> {
         match self {
+            Kind::Setup => Some(&SETUP_ARCHITECTURAL),
             Kind::Sample | Kind::Bsample | Kind::Psample => Some(&["covered", "depth"]),
             Kind::Select => Some(&["inside"]),
             _ => None,

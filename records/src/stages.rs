@@ -4,11 +4,12 @@
 use embedded_graphics_core::pixelcolor::RgbColor;
 use uvt_core::bounds::laine::LaineCoeffs;
 use uvt_core::bounds::strategy::BoundsStrategy;
+use uvt_core::config::registry::{self, Config};
 use uvt_core::config::unit::Full;
 use uvt_core::sample::exact;
 use uvt_core::{
-    resolve_colors, setup, Cull, Exact, Interval, Laine2011, Lens, Ops, Outcome, PixelRect, Rgb888,
-    Sample, ScreenPos, Setup, SubPixel, Time, Triangle, UvtBox, Vertex, Viewport,
+    resolve_colors, setup, with_config, Cull, Interval, Laine2011, Lens, Ops, Outcome, PixelRect,
+    Rgb888, Sample, ScreenPos, Setup, SubPixel, Time, Triangle, UvtBox, Vertex, Viewport,
 };
 
 use crate::format::Rec;
@@ -27,33 +28,82 @@ pub fn tri_words(t: &Triangle) -> Rec {
     r
 }
 
-/// Input record of a triangle and viewport.
-pub fn enc_setup_in(t: &Triangle, vp: Viewport) -> Rec {
-    tri_words(t).packed(&[(vp.width() as i64, 16), (vp.height() as i64, 16)])
+/// The packed configuration word of a setup input record ([`crate::format::CONFIG_FIELDS`]).
+pub fn config_word(c: Config) -> Rec {
+    let datapath = match (c.off(), c.planar()) {
+        (None, _) => 0,
+        (Some(_), false) => 1,
+        (Some(_), true) => 2,
+    };
+    Rec::default().packed(&[
+        (datapath, 2),
+        (c.pos() as i64, 5),
+        (c.tuv() as i64, 5),
+        (c.bnd() as i64, 5),
+        (c.off().unwrap_or(0) as i64, 6),
+    ])
 }
 
-/// Decode a setup input record.
-pub fn dec_setup_in(w: &[u32]) -> Result<(Triangle, Viewport), String> {
+/// The configuration of a packed configuration word: an error naming the word's fields unless
+/// it is one of the registry's ([`registry::CONFIGS`]).
+pub fn dec_config(w: u32) -> Result<Config, String> {
+    let f = |bit: u32, width: u32| (w >> bit) & ((1 << width) - 1);
+    let (dp, pos, tuv, bnd, off) = (f(0, 2), f(2, 5), f(7, 5), f(12, 5), f(17, 6));
+    let name = match dp {
+        0 => format!("exact-{pos}-{tuv}-{bnd}"),
+        1 => format!("bounded-{pos}-{tuv}-{bnd}-{off}"),
+        2 => format!("planar-{pos}-{tuv}-{bnd}-{off}"),
+        _ => format!("datapath 3 (none)-{pos}-{tuv}-{bnd}-{off}"),
+    };
+    let known = (w >> 23 == 0 && (dp != 0 || off == 0))
+        .then(|| Config::parse(&name))
+        .flatten()
+        .filter(|c| registry::name_of(*c).is_some());
+    known.ok_or_else(|| {
+        format!(
+            "configuration word {w:#010x} ({name}) is not a registry configuration (one of {})",
+            registry::CONFIGS
+                .iter()
+                .map(|e| e.name)
+                .collect::<Vec<_>>()
+                .join(", ")
+        )
+    })
+}
+
+/// Input record of a triangle and viewport, set up at configuration `c`.
+pub fn enc_setup_in(t: &Triangle, vp: Viewport, c: Config) -> Rec {
+    let mut r = tri_words(t).packed(&[(vp.width() as i64, 16), (vp.height() as i64, 16)]);
+    r.0.extend(config_word(c).0);
+    r
+}
+
+/// Decode a setup input record: triangle, viewport, configuration.
+pub fn dec_setup_in(w: &[u32]) -> Result<(Triangle, Viewport, Config), String> {
     let g = |i: usize| w.get(i).copied().unwrap_or(0) as i32;
     let vert = |base: usize| {
         Vertex::from_bits([g(base), g(base + 1), g(base + 2), g(base + 3), g(base + 4)])
     };
     let t0 = [vert(0), vert(5), vert(10)];
     let t1 = [vert(15), vert(20), vert(25)];
-    let tri =
-        Triangle::new(t0, t1).map_err(|e| format!("input triangle refused by the core: {e}"))?;
+    let cfg = dec_config(w.get(31).copied().unwrap_or(0))?;
+    // On the configuration's position grid: `new_with` refuses an off-grid coordinate by name.
+    let tri = with_config!(cfg, P => Triangle::new_with::<P>(t0, t1))
+        .ok_or_else(|| format!("{cfg}: not a registry configuration"))?
+        .map_err(|e| format!("input triangle refused by the core at {cfg}: {e}"))?;
     let vw = w.get(30).copied().unwrap_or(0);
     let vp = Viewport::new(vw as u16, (vw >> 16) as u16)
         .map_err(|e| format!("input viewport refused: {e}"))?;
-    Ok((tri, vp))
+    Ok((tri, vp, cfg))
 }
 
-/// Setup and Laine coefficients of a setup input record (None if culled), plus the output record.
+/// Setup and Laine coefficients of a setup input record (None if culled), plus the output
+/// record: the core's setup at the record's configuration.
 pub fn run_setup(w: &[u32]) -> Result<(Option<(Setup, LaineCoeffs)>, Rec), String> {
-    let (tri, vp) = dec_setup_in(w)?;
+    let (tri, vp, cfg) = dec_setup_in(w)?;
     let mut ops = Ops::default();
-    // The committed vectors are of the exact configuration (`Exact`), whatever the default.
-    let out = setup::<Exact, Full>(&tri, vp, &mut ops);
+    let out = with_config!(cfg, P => setup::<P, Full>(&tri, vp, &mut ops))
+        .ok_or_else(|| format!("{cfg}: not a registry configuration"))?;
     let (vis, cull) = match out {
         Outcome::Visible(s) => (Some((s, Laine2011.prepare::<Full>(&s, &mut ops))), 0),
         Outcome::Culled(Cull::Outside) => (None, 1),
@@ -63,7 +113,7 @@ pub fn run_setup(w: &[u32]) -> Result<(Option<(Setup, LaineCoeffs)>, Rec), Strin
     let mut r = Rec::default();
     let Some((s, c)) = &vis else {
         r = r.packed(&[(0, 1), (cull, 2)]);
-        return Ok((None, pad(r, 105)));
+        return Ok((None, pad(r, 108)));
     };
     let b = |o: bool| o as i64;
     r = r.packed(&[
@@ -91,6 +141,8 @@ pub fn run_setup(w: &[u32]) -> Result<(Option<(Setup, LaineCoeffs)>, Rec), Strin
             r = r.i64(v[0]).i64(v[1]);
         }
     }
+    let eps = s.eps();
+    r = r.i32(eps.x()[0]).i32(eps.x()[1]).i32(eps.w());
     for l in &c.lens() {
         for side in [l.and_then(|l| l.lo), l.and_then(|l| l.hi)] {
             r = match side {
@@ -232,6 +284,11 @@ pub fn dec_sample_in(w: &[u32]) -> Result<(u32, u16, u16, Sample), String> {
 pub fn run_sample(setups: SetupLookup<'_>, w: &[u32]) -> Result<(Option<i32>, Rec), String> {
     let (tri, px, py, smp) = dec_sample_in(w)?;
     let (s, _) = setups(tri)?;
+    if s.prec().offset_shift().is_some() {
+        return Err(format!(
+            "sample records are the exact sample test: triangle {tri} is set up at a bounded or planar configuration (its sample test has bsample / psample records)"
+        ));
+    }
     if px >= s.viewport().width() || py >= s.viewport().height() {
         return Err(format!("pixel ({px},{py}) outside the viewport"));
     }

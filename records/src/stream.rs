@@ -20,7 +20,7 @@ use uvt_core::{
     Lens, PlanarPrecision, Sample, ScreenPos, Setup, SubPixel, Time, Triangle, Vertex, Viewport,
 };
 
-use crate::bsample::{enc_bsample_in, Grid};
+use crate::bsample::{enc_bsample_in, on_grid, Grid};
 use crate::format::Rec;
 use crate::kind::{Kind, MAX_SPP};
 use crate::psample::{enc_psample_in, static_of};
@@ -74,14 +74,15 @@ impl Shard {
 pub struct Stream {
     kind: Kind,
     grid: Option<Grid>,
+    setup: Config,
     spp: u32,
     seed: u64,
 }
 
 impl Stream {
     /// The stream of `kind` at configuration `config` (a registry name; `None`: the kind's
-    /// default — the registry's default for the bounded test, the planar configuration for the
-    /// planar test), `spp` samples per resolve record, seed `seed`. Errors name what is refused:
+    /// default — the registry's default for setup and the bounded test, the planar
+    /// configuration for the planar test), `spp` samples per resolve record, seed `seed`. Errors name what is refused:
     /// a kind whose records name a triangle of a set (bounds, sample), a configuration the kind's
     /// records are not made at, an spp outside 1..=64.
     pub fn new(kind: Kind, config: Option<&str>, seed: u64, spp: u32) -> Result<Stream, String> {
@@ -117,10 +118,7 @@ impl Stream {
                 only(registry::PLANAR)?;
                 None
             }
-            Kind::Setup => {
-                only(registry::EXACT)?;
-                None
-            }
+            Kind::Setup => None,
             Kind::Select | Kind::Resolve => {
                 if let Some(c) = cfg {
                     return Err(format!(
@@ -137,6 +135,7 @@ impl Stream {
         Ok(Stream {
             kind,
             grid,
+            setup: cfg.unwrap_or(registry::DEFAULT),
             spp,
             seed,
         })
@@ -150,7 +149,7 @@ impl Stream {
         match self.kind {
             Kind::Bsample => self.grid.map(|g| g.name()),
             Kind::Psample => Some(registry::PLANAR.to_string()),
-            Kind::Setup => Some(registry::EXACT.to_string()),
+            Kind::Setup => Some(self.setup.to_string()),
             _ => None,
         }
     }
@@ -168,7 +167,8 @@ impl Stream {
             }
             Kind::Setup => {
                 let (fam, t, vp, _) = draw(&mut rng, None, false);
-                (enc_setup_in(&t, vp), Some(FAMILIES[fam]))
+                let t = on_grid(&t, self.setup.pos());
+                (enc_setup_in(&t, vp, self.setup), Some(FAMILIES[fam]))
             }
             Kind::Psample => loop {
                 // A triangle the planar setup culls (det P' = 0) has no record: draw again (the

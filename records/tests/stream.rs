@@ -30,6 +30,8 @@ fn every_record_is_accepted_and_the_hard_cases_occur() {
         (Kind::Bsample, Some("planar-16-16-16-20")),
         (Kind::Psample, None),
         (Kind::Setup, None),
+        (Kind::Setup, Some("exact-8-8-4")),
+        (Kind::Setup, Some("planar-16-16-16-20")),
         (Kind::Select, None),
         (Kind::Resolve, None),
     ] {

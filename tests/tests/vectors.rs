@@ -14,7 +14,7 @@ fn committed() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../vectors")
 }
 
-const SETS: [&str; 3] = ["unit", "frame_a", "frame_b"];
+const SETS: [&str; 4] = ["unit", "unit_exact", "frame_a", "frame_b"];
 
 fn copy_set(from: &Path, to: &Path) {
     std::fs::create_dir_all(to).unwrap();
@@ -27,14 +27,14 @@ fn copy_set(from: &Path, to: &Path) {
 #[test]
 fn committed_vectors_match_the_core() {
     let c = check(&committed()).unwrap_or_else(|e| panic!("{e:#}"));
-    assert_eq!(c.sets.len(), 3);
+    assert_eq!(c.sets.len(), 4);
     assert!(c.records > 20_000, "{c:?}");
 }
 
 #[test]
 fn regenerated_vectors_are_byte_identical() {
     let dir = tempfile::tempdir().unwrap();
-    vectors::committed::export_default(dir.path(), vectors::committed::DEFAULT_SEED).unwrap();
+    vectors::committed::export_default(dir.path(), vectors::committed::DEFAULT_SEED, None).unwrap();
     for set in SETS {
         for e in std::fs::read_dir(dir.path().join(set)).unwrap() {
             let p = e.unwrap().path();
@@ -50,9 +50,10 @@ fn regenerated_vectors_are_byte_identical() {
     }
     // Deterministic: a second export is identical too.
     let again = tempfile::tempdir().unwrap();
-    vectors::committed::export_default(again.path(), vectors::committed::DEFAULT_SEED).unwrap();
-    let a = std::fs::read(dir.path().join("unit/sample_out.hex")).unwrap();
-    let b = std::fs::read(again.path().join("unit/sample_out.hex")).unwrap();
+    vectors::committed::export_default(again.path(), vectors::committed::DEFAULT_SEED, None)
+        .unwrap();
+    let a = std::fs::read(dir.path().join("unit_exact/sample_out.hex")).unwrap();
+    let b = std::fs::read(again.path().join("unit_exact/sample_out.hex")).unwrap();
     assert_eq!(sha256(&a), sha256(&b));
 }
 
@@ -74,8 +75,8 @@ fn truncated_or_corrupted_file_is_caught_by_its_checksum() {
 #[test]
 fn a_changed_bit_is_reported_with_file_line_and_field() {
     let dir = tempfile::tempdir().unwrap();
-    let set = dir.path().join("frame_b");
-    copy_set(&committed().join("frame_b"), &set);
+    let set = dir.path().join("unit_exact");
+    copy_set(&committed().join("unit_exact"), &set);
     // Change the depth (word 1) of the first covered sample, and fix the manifest checksum so
     // the change reaches the bit comparison.
     let text = std::fs::read_to_string(set.join("sample_out.hex")).unwrap();
@@ -119,8 +120,8 @@ fn corrupt_word(set: &Path, file: &str, line: usize, word: usize, value: u32) {
 #[test]
 fn out_of_domain_input_records_are_refused_with_file_record_and_field() {
     let dir = tempfile::tempdir().unwrap();
-    let set = dir.path().join("unit");
-    copy_set(&committed().join("unit"), &set);
+    let set = dir.path().join("unit_exact");
+    copy_set(&committed().join("unit_exact"), &set);
     // sample_in word 5 is t (raw I16F16): 256.0.
     corrupt_word(&set, "sample_in.hex", 2, 5, 256 << 16);
     // select_in word 0 is u_lo: -2.0.
@@ -140,64 +141,68 @@ fn out_of_domain_input_records_are_refused_with_file_record_and_field() {
     );
 }
 
-/// Frame vectors' resolved pixels (trace) equal the renderer's image for the same scene.
+/// Frame vectors' resolved pixels (trace) equal `uvt render`'s image of the same scene at the
+/// same configuration: the committed sets (the default configuration) and fresh exports at an
+/// exact, a coarse bounded and the planar configuration; every traced sample outside its
+/// tile's box is uncovered; the manifest names the configuration.
 #[test]
 fn frame_vectors_agree_with_the_renderer() {
-    use uvt_host::frame::driver::{run, RunOpts};
-    use uvt_host::frame::pipelines::Fixed;
-    for (set, text) in [
-        ("frame_a", vectors::committed::FRAME_A),
-        ("frame_b", vectors::committed::FRAME_B),
-    ] {
-        let s = uvt_host::scene::file::Scene::parse(text, set, Path::new(".")).unwrap();
-        let pat = uvt_host::scene::pattern::Pattern::new(s.pattern, s.spp, s.seed);
-        let core = s.core_tris().unwrap();
-        let colors = s.colors();
-        let o = RunOpts {
-            clear: [24, 24, 32],
-            image: true,
-            ..RunOpts::for_scene(&s, &colors)
-        };
-        let f = run(
-            // The committed frame vectors are of the exact configuration.
-            &Fixed::<_, uvt_core::Exact>::new_at(
-                uvt_core::Laine2011,
-                s.core_viewport(),
-                &core,
-                &pat,
-            ),
-            &pat,
-            &o,
-        );
-        let trace = std::fs::read_to_string(committed().join(set).join("trace.jsonl")).unwrap();
-        let mut n = 0;
-        for line in trace.lines().filter(|l| l.contains("\"type\":\"pixel\"")) {
-            let v: serde_json::Value = serde_json::from_str(line).unwrap();
-            let (x, y) = (
-                v["px"].as_u64().unwrap() as usize,
-                v["py"].as_u64().unwrap() as usize,
-            );
-            let rgb: Vec<u8> = v["rgb"]
-                .as_array()
-                .unwrap()
-                .iter()
-                .map(|c| c.as_u64().unwrap() as u8)
-                .collect();
-            assert_eq!(
-                rgb,
-                f.image[y * s.viewport.0 as usize + x].to_vec(),
-                "{set} pixel ({x},{y})"
-            );
-            n += 1;
-        }
-        assert_eq!(n, 32 * 32);
-        // Every traced sample outside its tile's box is uncovered (conservativeness, re-checkable).
-        for line in trace.lines().filter(|l| l.contains("\"type\":\"sample\"")) {
-            let v: serde_json::Value = serde_json::from_str(line).unwrap();
-            assert!(
-                v["inside"].as_bool().unwrap() || !v["covered"].as_bool().unwrap(),
-                "{set}: {line}"
-            );
+    use uvt_core::config::registry::{find, DEFAULT};
+    use uvt_host::render::{opts::RenderOpts, scene_render::render_with};
+    let fresh = tempfile::tempdir().unwrap();
+    let mut runs = vec![(committed(), DEFAULT)];
+    for name in ["exact-8-8-4", "bounded-8-8-8-28", "planar-16-16-16-20"] {
+        let cfg = find(name).unwrap();
+        let dir = fresh.path().join(name);
+        vectors::committed::export_default(&dir, vectors::committed::DEFAULT_SEED, Some(cfg))
+            .unwrap();
+        runs.push((dir, cfg));
+    }
+    for (root, cfg) in runs {
+        for (set, text) in [
+            ("frame_a", vectors::committed::FRAME_A),
+            ("frame_b", vectors::committed::FRAME_B),
+        ] {
+            let s = uvt_host::scene::file::Scene::parse(text, set, Path::new(".")).unwrap();
+            let o = RenderOpts {
+                precision: cfg,
+                ..RenderOpts::default()
+            };
+            let image = render_with(&s, &o).unwrap().fixed.image;
+            let dir = root.join(set);
+            let m: serde_json::Value =
+                serde_json::from_str(&std::fs::read_to_string(dir.join("manifest.json")).unwrap())
+                    .unwrap();
+            assert_eq!(m["config"], cfg.to_string(), "{}", dir.display());
+            let trace = std::fs::read_to_string(dir.join("trace.jsonl")).unwrap();
+            let mut n = 0;
+            for line in trace.lines().filter(|l| l.contains("\"type\":\"pixel\"")) {
+                let v: serde_json::Value = serde_json::from_str(line).unwrap();
+                let (x, y) = (
+                    v["px"].as_u64().unwrap() as usize,
+                    v["py"].as_u64().unwrap() as usize,
+                );
+                let rgb: Vec<u8> = v["rgb"]
+                    .as_array()
+                    .unwrap()
+                    .iter()
+                    .map(|c| c.as_u64().unwrap() as u8)
+                    .collect();
+                assert_eq!(
+                    rgb,
+                    image[y * s.viewport.0 as usize + x].to_vec(),
+                    "{set} at {cfg}: pixel ({x},{y})"
+                );
+                n += 1;
+            }
+            assert_eq!(n, 32 * 32);
+            for line in trace.lines().filter(|l| l.contains("\"type\":\"sample\"")) {
+                let v: serde_json::Value = serde_json::from_str(line).unwrap();
+                assert!(
+                    v["inside"].as_bool().unwrap() || !v["covered"].as_bool().unwrap(),
+                    "{set} at {cfg}: {line}"
+                );
+            }
         }
     }
 }

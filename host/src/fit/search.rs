@@ -93,17 +93,7 @@ fn search_at<P: Precision + Sync>(scene: &Scene, width: f64) -> anyhow::Result<V
     Ok(out)
 }
 
-/// The scene's core triangles and sample table on `P`'s grids.
+/// The scene's core triangles and sample table on `P`'s grids ([`Scene::inputs_at`]).
 pub(crate) fn inputs<P: Precision>(scene: &Scene) -> anyhow::Result<(Vec<Triangle>, Pattern)> {
-    let core = scene
-        .tris
-        .iter()
-        .enumerate()
-        .map(|(i, t)| {
-            t.to_core_with::<P>()
-                .map_err(|e| anyhow::anyhow!("triangles[{i}]: {e}"))
-        })
-        .collect::<anyhow::Result<Vec<_>>>()?;
-    let pat = Pattern::new(scene.pattern, scene.spp, scene.seed).with_tuv(P::TUV_FRAC);
-    Ok((core, pat))
+    scene.inputs_at::<P>()
 }

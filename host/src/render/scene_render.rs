@@ -40,20 +40,7 @@ fn pipelines<P: Precision + Sync>(scene: &Scene, o: &RenderOpts) -> Result<Rende
     };
     let default = o.precision == DEFAULT;
     let exact = Pattern::new(scene.pattern, scene.spp, scene.seed);
-    let pattern = if default {
-        exact.clone()
-    } else {
-        exact.with_tuv(P::TUV_FRAC)
-    };
-    let core = scene
-        .tris
-        .iter()
-        .enumerate()
-        .map(|(i, t)| {
-            t.to_core_with::<P>()
-                .map_err(|e| anyhow!("triangles[{i}]: {e}"))
-        })
-        .collect::<Result<Vec<_>>>()?;
+    let (core, pattern) = scene.inputs_at::<P>()?;
     let vp = scene.core_viewport();
     let colors = scene.colors();
     let opts = |label| RunOpts {

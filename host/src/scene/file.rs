@@ -22,7 +22,7 @@ use serde_json::{json, Value};
 use uvt_core::{Triangle, Viewport};
 
 use super::json::{self, color, num_array};
-use super::pattern::PatternKind;
+use super::pattern::{Pattern, PatternKind};
 use super::tri::{check_domain, SceneTri};
 use super::{budget, mesh};
 
@@ -58,6 +58,23 @@ impl Scene {
             .enumerate()
             .map(|(i, t)| t.to_core().map_err(|e| anyhow!("triangles[{i}]: {e}")))
             .collect()
+    }
+
+    /// The core's inputs at precision `P` — the triangles rounded to nearest on its position
+    /// grid and the sample table on its t/u/v grid — as every command running the core at a
+    /// configuration takes them (`uvt render`, `uvt fit`, `uvt precision`, the frame vectors).
+    pub fn inputs_at<P: uvt_core::Precision>(&self) -> Result<(Vec<Triangle>, Pattern)> {
+        let core = self
+            .tris
+            .iter()
+            .enumerate()
+            .map(|(i, t)| {
+                t.to_core_with::<P>()
+                    .map_err(|e| anyhow!("triangles[{i}]: {e}"))
+            })
+            .collect::<Result<Vec<_>>>()?;
+        let pat = Pattern::new(self.pattern, self.spp, self.seed).with_tuv(P::TUV_FRAC);
+        Ok((core, pat))
     }
 
     /// Flat colors of the triangles, in order.

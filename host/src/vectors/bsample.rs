@@ -222,33 +222,6 @@ pub fn unit(tris: &[(Triangle, Viewport)], seed: u64, g: Grid) -> BSet {
     set
 }
 
-/// Frame-level records: the triangles of a scene with the scene's own samples, at most
-/// `per_tri` per triangle, evenly strided over its footprint's (pixel, sample) list.
-pub fn frame(
-    tris: &[Triangle],
-    vp: Viewport,
-    pattern: &uvt_core::SamplePattern<'_>,
-    per_tri: usize,
-) -> BSet {
-    let mut set = BSet::default();
-    for t in tris {
-        let (x0, y0, x1, y1) = area::<BoundedPrecision>(t, vp);
-        let mut all = Vec::new();
-        for py in (y0 / 256) as u16..(y1 / 256) as u16 {
-            for px in (x0 / 256) as u16..(x1 / 256) as u16 {
-                for s in pattern.pixel(px, py) {
-                    all.push((ScreenPos::of(px, py, s), *s));
-                }
-            }
-        }
-        let step = all.len().div_ceil(per_tri).max(1);
-        for (p, s) in all.iter().step_by(step) {
-            set.push(t, vp, Grid::DEFAULT, *p, s);
-        }
-    }
-    set
-}
-
 /// A unit-level bounded set of configuration `g` (the named edge cases and 48 seeded random
 /// triangles of every kind, inputs rounded onto `g`'s grids), written as `bsample_in.hex` and
 /// `bsample_out.hex` into `dir`: the RTL test's vectors for the unit's other parameter values.

@@ -1,10 +1,13 @@
-//! The committed vector sets (`vectors/unit`, `vectors/frame_a`, `vectors/frame_b`): their seed
+//! The committed vector sets (`vectors/unit`, `vectors/unit_exact`, `vectors/frame_a`,
+//! `vectors/frame_b`): their seed
 //! and scenes, and the exports that write them ([`export_default`]) or a set for any scene file
 //! ([`export_scene`]).
 
 use std::path::Path;
 
 use anyhow::Result;
+
+use uvt_core::config::registry::{self, Config};
 
 use crate::scene::file::Scene;
 
@@ -35,23 +38,31 @@ pub const FRAME_B: &str = r#"{"format":"uvt-scene","version":1,"viewport":[32,32
   {"t0":[[0.2,-0.8,0.5,1.6],[0.9,-0.7,0.5,1.6],[0.5,-0.1,0.5,1.6]],"color":[70,140,220]}
  ]}"#;
 
-/// Export the committed set into `dir`: `unit/`, `frame_a/`, `frame_b/`.
-pub fn export_default(dir: &Path, seed: u64) -> Result<()> {
-    let unit = export::unit(seed)?;
+/// Export into `dir` the unit-level set and the two frame-level sets at configuration `cfg`
+/// (`unit/`, `frame_a/`, `frame_b/`); without one, the committed sets: those at the default
+/// configuration and the unit-level set at the exact one (`unit_exact/`, whose `sample_*`
+/// records are the exact sample test's).
+pub fn export_default(dir: &Path, seed: u64, cfg: Option<Config>) -> Result<()> {
+    let at = cfg.unwrap_or(registry::DEFAULT);
+    let unit = export::unit(seed, at)?;
     export::write(&unit, &dir.join("unit"), "unit", seed)?;
+    if cfg.is_none() {
+        let exact = export::unit(seed, registry::EXACT)?;
+        export::write(&exact, &dir.join("unit_exact"), "unit", seed)?;
+    }
     for (name, text) in [("frame_a", FRAME_A), ("frame_b", FRAME_B)] {
         let scene = Scene::parse(text, name, Path::new("."))?;
-        let set = export::frame(&scene, text)?;
+        let set = export::frame(&scene, text, at)?;
         export::write(&set, &dir.join(name), "frame", scene.seed)?;
     }
     Ok(())
 }
 
-/// Export frame-level vectors of one scene file into `dir`.
-pub fn export_scene(path: &Path, dir: &Path) -> Result<()> {
+/// Export frame-level vectors of one scene file into `dir` at configuration `cfg`.
+pub fn export_scene(path: &Path, dir: &Path, cfg: Config) -> Result<()> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| anyhow::anyhow!("cannot read scene file {}: {e}", path.display()))?;
     let scene = Scene::load(path)?;
-    let set = export::frame(&scene, &text)?;
+    let set = export::frame(&scene, &text, cfg)?;
     export::write(&set, dir, "frame", scene.seed)
 }

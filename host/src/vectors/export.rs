@@ -9,16 +9,17 @@ use embedded_graphics_core::pixelcolor::RgbColor;
 use rand::{Rng, SeedableRng};
 use serde_json::json;
 use uvt_core::bounds::laine::LaineCoeffs;
+use uvt_core::config::registry::Config;
 use uvt_core::config::unit::Full;
 use uvt_core::{
-    Lens, PixelRect, Rgb888, Sample, Setup, SubPixel, TileBuffer, Time, Triangle, UvtBox, Viewport,
+    with_config, Lens, PixelRect, Precision, Rgb888, Sample, Setup, SubPixel, TileBuffer, Time,
+    Triangle, UvtBox, Viewport,
 };
 
 use crate::scene::builtin::random_tri;
 use crate::scene::file::Scene;
-use crate::scene::pattern::Pattern;
 
-use super::bsample::{BCoverage, BSet, Grid};
+use super::bsample::{on_grid, BCoverage, BSet, Grid};
 use super::cases::{base_tri, named_cases, tri};
 use super::format::{layout, sha256, to_text, Rec, FORMAT_VERSION, STAGES};
 use super::psample::{PCase, PCoverage, PSet};
@@ -35,7 +36,6 @@ pub struct Case {
     pub setup_records: [usize; 2],
 }
 /// The records of one vector set, by file.
-#[derive(Default)]
 pub struct Set {
     /// records per file name (`setup_in`, …)
     pub files: BTreeMap<String, Vec<Rec>>,
@@ -57,13 +57,30 @@ pub struct Set {
     pub pcov: Option<PCoverage>,
     /// named groups of the planar records
     pub pcases: Vec<PCase>,
+    /// the configuration of the setup, bounds and per-sample records
+    pub config: Config,
 }
 impl Set {
+    fn new(config: Config, spp: u32) -> Set {
+        Set {
+            files: BTreeMap::new(),
+            cases: Vec::new(),
+            trace: None,
+            scene: None,
+            spp,
+            setups: Vec::new(),
+            tris: Vec::new(),
+            bcov: None,
+            pcov: None,
+            pcases: Vec::new(),
+            config,
+        }
+    }
     fn push(&mut self, file: &str, r: Rec) {
         self.files.entry(file.into()).or_default().push(r);
     }
     fn tri(&mut self, t: &Triangle, vp: Viewport) -> Result<u32> {
-        let input = enc_setup_in(t, vp);
+        let input = enc_setup_in(t, vp, self.config);
         let (s, out) = run_setup(&input.0).map_err(|e| anyhow!(e))?;
         self.push("setup_in", input);
         self.push("setup_out", out);
@@ -141,19 +158,20 @@ fn random_sample(rng: &mut rand_pcg::Pcg64, b: Option<&UvtBox>) -> Sample {
     )
     .expect("drawn inside the domain or a core box")
 }
-/// The unit-level set.
-pub fn unit(seed: u64) -> Result<Set> {
+/// The unit-level set at configuration `cfg`: setup, bounds and interval-check records of its
+/// setups (triangles rounded down onto its position grid); the exact sample test's records at an
+/// exact configuration; at a bounded or planar one its bounded test's records (`bsample_*`) and
+/// the planar static unit's (`psample_*`, configuration planar-16-16-16-20); resolve records.
+pub fn unit(seed: u64, cfg: Config) -> Result<Set> {
     let mut rng = rand_pcg::Pcg64::seed_from_u64(seed);
-    let mut set = Set {
-        spp: UNIT_RESOLVE_SPP,
-        ..Default::default()
-    };
+    let mut set = Set::new(cfg, UNIT_RESOLVE_SPP);
+    let exact = cfg.off().is_none();
     let start = |set: &Set| set.setups.len();
     for (name, list, side) in named_cases() {
         let first = start(&set);
         let vp = Viewport::new(side, side).map_err(|e| anyhow!("{e}"))?;
         for t in list {
-            set.tri(&t, vp)?;
+            set.tri(&on_grid(&t, cfg.pos()), vp)?;
         }
         set.cases.push(Case {
             name: name.into(),
@@ -167,7 +185,7 @@ pub fn unit(seed: u64) -> Result<Set> {
         let t = random_tri(&mut rng, i % 6)
             .to_core()
             .map_err(|e| anyhow!("{e}"))?;
-        set.tri(&t, vp)?;
+        set.tri(&on_grid(&t, cfg.pos()), vp)?;
     }
     set.cases.push(Case {
         name: format!(
@@ -206,7 +224,9 @@ pub fn unit(seed: u64) -> Result<Set> {
                         rng.gen_range(cell.x0..cell.x1),
                         rng.gen_range(cell.y0..cell.y1),
                     );
-                    set.sample(i, px, py, &smp)?;
+                    if exact {
+                        set.sample(i, px, py, &smp)?;
+                    }
                 }
             }
         }
@@ -228,7 +248,7 @@ pub fn unit(seed: u64) -> Result<Set> {
                 Time::from_bits(0),
             )
             .expect("u in [-1, 1]");
-            for i in tie[0]..=tie[1] {
+            for i in (tie[0]..=tie[1]).filter(|_| exact) {
                 set.sample(i as u32, 16, py, &smp)?;
             }
         }
@@ -240,7 +260,13 @@ pub fn unit(seed: u64) -> Result<Set> {
         let big = base_tri().map(|v| [v[0], v[1], z, v[3], v[4]]);
         btris.push((tri(big, big), vp32));
     }
-    set.bounded(bsample::unit(&btris, seed, Grid::DEFAULT));
+    if !exact {
+        set.bounded(bsample::unit(
+            &btris,
+            seed,
+            Grid::from_config(cfg).map_err(|e| anyhow!(e))?,
+        ));
+    }
     // Resolve: random colors, and the rounding edges (all 0, all 255, exact halves).
     let colors = |rng: &mut rand_pcg::Pcg64| {
         (0..UNIT_RESOLVE_SPP)
@@ -264,6 +290,9 @@ pub fn unit(seed: u64) -> Result<Set> {
         })
         .collect();
     set.resolve(&half);
+    if exact {
+        return Ok(set);
+    }
     // Planar sample-test records (its own random stream, after everything above): the t0 frame
     // of every triangle above (CoC dropped: static), the planar configuration's named cases,
     // depth saturation as for the bounded records, and domain-end random triangles.
@@ -294,34 +323,43 @@ pub fn unit(seed: u64) -> Result<Set> {
     set.planar(pset);
     Ok(set)
 }
-/// A frame-level set: every stage of one frame, in the renderer's order (8×8 screen tiles in
-/// raster order; triangles in submission order; bounds tiles aligned to the bounds-tile grid and
-/// clipped to footprint ∩ screen tile), plus `trace.jsonl`.
-pub fn frame(scene: &Scene, scene_json: &str) -> Result<Set> {
+/// A frame-level set at configuration `cfg`: every stage of one frame as `uvt render --precision
+/// CFG` runs it (triangles rounded onto its position grid, samples onto its t/u/v grid; 8×8
+/// screen tiles in raster order; triangles in submission order; bounds tiles aligned to the
+/// bounds-tile grid and clipped to footprint ∩ screen tile), plus `trace.jsonl`. Every sample
+/// inside a tile's box gets the configuration's sample-test record: `sample_*` at an exact
+/// configuration, `bsample_*` at a bounded one, `psample_*` (static triangles) and `bsample_*`
+/// (the others) at a planar one. A bounded configuration's set also has the planar static
+/// unit's records of the frame's static triangles (`psample_*`, up to 320 per triangle).
+pub fn frame(scene: &Scene, scene_json: &str, cfg: Config) -> Result<Set> {
+    with_config!(cfg, P => frame_at::<P>(scene, scene_json, cfg))
+        .ok_or_else(|| anyhow!("configuration {cfg} is not in the registry"))?
+}
+
+fn frame_at<P: Precision>(scene: &Scene, scene_json: &str, cfg: Config) -> Result<Set> {
     if scene.spp != 4 {
         return Err(anyhow!(
             "frame vectors use 4 samples per pixel (the scene has {})",
             scene.spp
         ));
     }
-    let pattern = Pattern::new(scene.pattern, scene.spp, scene.seed);
+    let (core, pattern) = scene.inputs_at::<P>()?;
     let vp = scene.core_viewport();
-    let core = scene.core_tris()?;
-    let mut set = Set {
-        spp: scene.spp as u32,
-        scene: Some(scene_json.into()),
-        ..Default::default()
-    };
+    let mut set = Set::new(cfg, scene.spp as u32);
+    set.scene = Some(scene_json.into());
+    let grid = Grid::from_config(cfg).ok();
+    let (mut bset, mut pset) = (BSet::default(), PSet::default());
     let mut trace = String::new();
     for (i, t) in core.iter().enumerate() {
         set.tri(t, vp)?;
         let rec = match &set.setups[i] {
             Some((s, _)) => {
                 json!({"type": "setup", "tri": i, "class": format!("{:?}", s.class()), "footprint": [s.footprint().x0, s.footprint().y0, s.footprint().x1, s.footprint().y1],
-                "span": [s.span().lo() as f64 / 65536.0, s.span().hi() as f64 / 65536.0]})
+                "span": [s.span().lo() as f64 / 65536.0, s.span().hi() as f64 / 65536.0],
+                "eps": [s.eps().x()[0] as f64 / 65536.0, s.eps().x()[1] as f64 / 65536.0, s.eps().w() as f64 / 65536.0]})
             }
             None => {
-                let o = uvt_core::setup::<uvt_core::Exact, Full>(t, vp, &mut Default::default());
+                let o = uvt_core::setup::<P, Full>(t, vp, &mut Default::default());
                 json!({"type": "setup", "tri": i, "culled": match o { uvt_core::Outcome::Culled(uvt_core::Cull::Degenerate) => "degenerate", _ => "outside" }})
             }
         };
@@ -363,18 +401,34 @@ pub fn frame(scene: &Scene, scene_json: &str) -> Result<Set> {
                         for px in cell.x0..cell.x1 {
                             for (si, smp) in q.pixel(px, py).iter().enumerate() {
                                 let inside = set.select(&b, smp);
-                                let hit = if inside {
-                                    set.sample(i as u32, px, py, smp)?
-                                } else {
-                                    // Trace only: the sample test outside the box (must miss).
-                                    uvt_core::sample::test::<uvt_core::Exact, Full>(
-                                        &s,
-                                        uvt_core::ScreenPos::of(px, py, smp),
-                                        smp,
-                                        &mut Default::default(),
-                                    )
-                                    .map(|h| h.depth)
-                                };
+                                let pos = uvt_core::ScreenPos::of(px, py, smp);
+                                // The configuration's sample test (also outside the box, for
+                                // the trace only: it must miss there).
+                                let hit = uvt_core::sample::test::<P, Full>(
+                                    &s,
+                                    pos,
+                                    smp,
+                                    &mut Default::default(),
+                                )
+                                .map(|h| h.depth);
+                                if inside {
+                                    let rec = match grid {
+                                        None => set.sample(i as u32, px, py, smp)?,
+                                        Some(_) if s.planar().is_some() => pset
+                                            .push(&core[i], vp, pos)
+                                            .and_then(|e| e.hit)
+                                            .map(|h| h.depth),
+                                        Some(g) => bset
+                                            .push(&core[i], vp, g, pos, smp)
+                                            .hit
+                                            .map(|h| h.depth),
+                                    };
+                                    if rec != hit {
+                                        return Err(anyhow!(
+                                            "triangle {i}, pixel ({px},{py}), sample {si}: the record gives {rec:?}, the core's sample test at {cfg} {hit:?}"
+                                        ));
+                                    }
+                                }
                                 if let (true, Some(d)) = (inside, hit) {
                                     fb.write((px - x0) as usize, (py - y0) as usize, si, color, d);
                                 }
@@ -402,9 +456,13 @@ pub fn frame(scene: &Scene, scene_json: &str) -> Result<Set> {
         }
     }
     set.trace = Some(trace);
-    let b = bsample::frame(&core, vp, &q, 320);
-    set.bounded(b);
-    set.planar(psample::frame(&core, vp, &q, 320));
+    if grid.is_some() {
+        set.bounded(bset);
+        if !cfg.planar() {
+            pset = psample::frame(&core, vp, &q, 320);
+        }
+        set.planar(pset);
+    }
     Ok(set)
 }
 
@@ -441,13 +499,19 @@ pub fn write(set: &Set, dir: &Path, kind: &str, seed: u64) -> Result<()> {
         "format": "uvt-vectors", "format_version": FORMAT_VERSION, "generator": format!("uvt {}", env!("CARGO_PKG_VERSION")),
         "kind": kind, "seed": seed, "resolve_spp": set.spp, "word_bits": 32,
         "notes": "one record per line; words are 8 hex digits separated by a space; two's complement; a field wider than 32 bits spans whole words, most significant first; value = raw / 2^frac",
+        "config": set.config.to_string(),
         "cases": set.cases, "files": files,
-        "bsample_config": {"name": Grid::DEFAULT.name(), "grid": Grid::DEFAULT, "core": "uvt_core::bounded_eval with uvt_core::BoundedPrecision = Bounded<16, 16, 16, 20>"},
-        "bsample_coverage": set.bcov,
-        "psample_config": {"name": psample::CONFIG, "core": "uvt_core::planar::planar_eval on the planar setup of uvt_core::PlanarPrecision = Planar<16, 16, 16, 20> (static triangles; culled ones have no record)"},
-        "psample_coverage": set.pcov,
-        "psample_cases": set.pcases,
     });
+    let mut manifest = manifest;
+    if let (Some(cov), Ok(g)) = (&set.bcov, Grid::from_config(set.config)) {
+        manifest["bsample_config"] = json!({"name": g.name(), "grid": g, "core": format!("uvt_core::bounded_eval at {}", g.name())});
+        manifest["bsample_coverage"] = json!(cov);
+    }
+    if let Some(cov) = &set.pcov {
+        manifest["psample_config"] = json!({"name": psample::CONFIG, "core": "uvt_core::planar::planar_eval on the planar setup of uvt_core::PlanarPrecision = Planar<16, 16, 16, 20> (static triangles; culled ones have no record)"});
+        manifest["psample_coverage"] = json!(cov);
+        manifest["psample_cases"] = json!(set.pcases);
+    }
     outputs.push((
         "manifest.json".into(),
         serde_json::to_string_pretty(&manifest)? + "\n",

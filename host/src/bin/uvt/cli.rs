@@ -229,11 +229,17 @@ pub enum SceneCmd {
 
 #[derive(Subcommand)]
 pub enum VecCmd {
-    /// Write vectors: without --scene the committed set (unit/, frame_a/, frame_b/) into DIR.
+    /// Write vectors: without --scene the committed sets (unit/, unit_exact/, frame_a/,
+    /// frame_b/) into DIR, or with --config the unit and frame sets at that configuration.
     Export {
         /// frame-level vectors of this scene file only
         #[arg(long)]
         scene: Option<PathBuf>,
+        /// configuration of every stage's records and the trace: `default` or a name of `uvt
+        /// configs` (without --scene: unit/, frame_a/, frame_b/ at it; default: the committed
+        /// sets)
+        #[arg(long)]
+        config: Option<String>,
         /// output directory
         #[arg(long)]
         out: PathBuf,
@@ -275,7 +281,8 @@ pub enum VecCmd {
     Ver {
         /// record kind: bsample, psample, setup, select or resolve
         kind: String,
-        /// compare the architectural fields only (covered, depth; inside)
+        /// compare the architectural fields only (covered, depth; inside; setup's outputs
+        /// before its Laine coefficients)
         #[arg(long)]
         arch_only: bool,
         /// samples per resolve record

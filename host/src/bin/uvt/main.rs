@@ -398,11 +398,23 @@ fn run(cli: Cli) -> Result<()> {
                 );
             }
         }
-        Cmd::Vectors(VecCmd::Export { scene, out, seed }) => {
+        Cmd::Vectors(VecCmd::Export {
+            scene,
+            config,
+            out,
+            seed,
+        }) => {
             uvt_host::render::scene_render::check_out_dir(&out)?;
+            let cfg = config
+                .map(|c| names::precision("--config", &c))
+                .transpose()?;
             match scene {
-                Some(p) => uvt_host::vectors::committed::export_scene(&p, &out)?,
-                None => uvt_host::vectors::committed::export_default(&out, seed)?,
+                Some(p) => uvt_host::vectors::committed::export_scene(
+                    &p,
+                    &out,
+                    cfg.unwrap_or(uvt_core::config::registry::DEFAULT),
+                )?,
+                None => uvt_host::vectors::committed::export_default(&out, seed, cfg)?,
             }
             say(&format!("wrote vectors to {}\n", out.display()))?;
         }
