@@ -8,8 +8,9 @@
 //   +JUNK=1        unknowns (x) on every data port during bubbles (slower: ~5x under Icarus)
 // Parameters (iverilog -P tb_bounds.X=…): BND, TUV, DSP_A, DSP_B the unit's (uvt_bounds.v);
 // SW, LENS_AT, DUAL_AT the setup_out format: words per record and first word of the lens and
-// dual coefficient blocks (format version 3: 105, 21, 69; version 4 inserts eps_x, eps_y,
-// eps_w at word 21: 108, 24, 72). A setup_out.hex whose lines are not SW words is refused.
+// dual coefficient blocks (format version 4, the default: 108, 24, 72; version 3, without
+// eps_x, eps_y, eps_w at words 21..23: 105, 21, 69). A setup_out.hex whose lines are not SW
+// words is refused.
 // Prints "PASS <n> records (<k> nonempty)" or "FAIL <errors> mismatching fields in <n> records";
 // each of the first 10 mismatches as "MISMATCH record <r> (line <r+1>) field <name>: expected
 // <hex> (<decimal>) observed <hex> (<decimal>)" followed by the record's inputs.
@@ -25,9 +26,9 @@ module tb_bounds;
     parameter TUV = 16;
     parameter DSP_A = 25;
     parameter DSP_B = 18;
-    parameter SW = 105;
-    parameter LENS_AT = 21;
-    parameter DUAL_AT = 69;
+    parameter SW = 108;
+    parameter LENS_AT = 24;
+    parameter DUAL_AT = 72;
     localparam WI = 3, WO = 7, MAXREC = 16384, MAXSET = 4096;
     reg [31:0] setup_mem [0:MAXSET*SW-1];
     reg [31:0] in_mem  [0:MAXREC*WI-1];
