@@ -140,7 +140,8 @@ fn rtl_bounds_unit_extensive() {
     }
 }
 
-/// Unknowns on every data port during the bubbles (`+JUNK=1`) change no result, and a flipped
+/// Unknowns on every data port during the bubbles (`+JUNK=1`) change no result, the bench takes
+/// the unit by macro, and a flipped
 /// bit of an expected field is reported by record, field, expected and observed (hex and
 /// decimal) — the nonempty bit of one record, the low bit of t_lo of another.
 #[test]
@@ -154,6 +155,19 @@ fn rtl_bounds_bench_reports_a_flipped_bit() {
         out.lines()
             .any(|l| l.starts_with(&format!("PASS {n} records ("))),
         "{out}"
+    );
+    // Your own unit by macro (`-DUVT_DUT=…`: no parameters passed), here the committed one.
+    let own = icarus::compile_with(
+        &dir.path().join("tb-own.vvp"),
+        &["UVT_DUT=uvt_bounds"],
+        &format_params(&from),
+        &SOURCES,
+    );
+    let out = run(&own, &from, &[]);
+    assert!(
+        out.lines()
+            .any(|l| l.starts_with(&format!("PASS {n} records ("))),
+        "-DUVT_DUT=uvt_bounds: {out}"
     );
     let set = dir.path().join("flipped");
     subset(&from, &set, &(0..n).collect::<Vec<_>>());

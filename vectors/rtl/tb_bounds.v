@@ -4,7 +4,7 @@
 // with bounds_out.hex. Plusargs:
 //   +SET=<dir>     the vector set (setup_out.hex, bounds_in.hex, bounds_out.hex; counted here)
 //   +SEED=<n>      the bubble pattern's seed (default 1); +BUBBLES=<percent> (default 25)
-//   +DRAIN=<k>     clocks to wait for the last results (default 100)
+//   +DRAIN=<k>     clocks to wait for the last results (default 200)
 //   +JUNK=1        unknowns (x) on every data port during bubbles (slower: ~5x under Icarus)
 // Parameters (iverilog -P tb_bounds.X=…): BND, TUV, DSP_A, DSP_B the unit's (uvt_bounds.v);
 // SW, LENS_AT, DUAL_AT the setup_out format: words per record and first word of the lens and
@@ -175,7 +175,7 @@ module tb_bounds;
         end
         if (!$value$plusargs("SEED=%d", seed)) seed = 1;
         if (!$value$plusargs("BUBBLES=%d", bubbles)) bubbles = 25;
-        if (!$value$plusargs("DRAIN=%d", drain) || drain < 1) drain = 100;
+        if (!$value$plusargs("DRAIN=%d", drain) || drain < 1) drain = 200;
         if (!$value$plusargs("JUNK=%d", junk_on)) junk_on = 0;
         $sformat(fname, "%0s/setup_out.hex", dir);
         count_file(fname);
