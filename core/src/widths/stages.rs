@@ -200,13 +200,26 @@ pub fn table(cfg: &Config) -> Table {
         mul(slope.bits(), recip.bits(), 4),
     ));
     let line = delta.mul(e);
+    // `laine::dual_t`: each of the 4 lines per axis once, at the tile end its slope picks, as
+    // `v0·D + (v1 − v0)·(x − ξa)`: per axis 4 products δ × E and 4 of the slope (≤ 2δ) × E.
     t.push(r(
         "bounds/tile",
-        "bounding line `δ_a·(ξb − x) + δ_b·(x − ξa)`",
+        "bounding line `δ_a·D + (δ_b − δ_a)·(x − ξa)`, one end per line",
         line,
         "i128",
         "exact (no division)",
-        mul(delta.bits(), ew13, 2 * 4 * 2 * 2),
+        two(
+            Mul {
+                a: delta.bits(),
+                b: ew13,
+                count: 2 * 4,
+            },
+            Mul {
+                a: delta.times(2).bits(),
+                b: ew13,
+                count: 2 * 4,
+            },
+        ),
     ));
     t.push(r(
         "bounds/tile",

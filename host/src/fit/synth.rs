@@ -112,7 +112,7 @@ pub fn bounds_md(synth: Option<&[SynthUnit]>, synth_path: &Path) -> String {
         uvt_core::config::registry::Config::of::<uvt_core::config::precision::DefaultPrecision>();
     let name = cfg.to_string();
     let mut s = format!(
-        "\nPer-tile bounds unit at `{name}` (`Laine2011::tile`; RTL `vectors/rtl/uvt_bounds.v`, synthesized counts from `{}`). The estimate is the width table's `bounds/tile` rows (`uvt cost --config {name}`): it counts each bounding line at both tile ends (32 line products), the RTL evaluates each line once, at the end its slope picks (16, as `dual_t`):\n\n| unit | bounds/tile DSP48E1 estimate | synthesized DSP48E1 / LUT / FF | MULT18X18D estimate | synthesized MULT18X18D / LUT4 / FF | Σ bit-products | products |\n|---|---|---|---|---|---|---|\n",
+        "\nPer-tile bounds unit at `{name}` (`Laine2011::tile`; RTL `vectors/rtl/uvt_bounds.v`, synthesized counts from `{}`). The estimate is the width table's `bounds/tile` rows (`uvt cost --config {name}`: 4 lens products, each bounding line once at the end its slope picks, 16 products, as `dual_t` and the RTL); `synth_ecp5` trims 3 pieces of each lens product that reach none of the bits read:\n\n| unit | bounds/tile DSP48E1 estimate | synthesized DSP48E1 / LUT / FF | MULT18X18D estimate | synthesized MULT18X18D / LUT4 / FF | Σ bit-products | products |\n|---|---|---|---|---|---|---|\n",
         synth_path.display()
     );
     let c = crate::config::multipliers::stage_costs(&cfg)
@@ -250,8 +250,9 @@ mod tests {
     /// product (4), per bounding line one 45 × 17 and one 46 × 17 (8 lines). The unit reads only
     /// the low 82 bits of a lens product; `synth_ecp5` removes the 3 of its 15 pieces that reach
     /// no lower bit (17-bit chunks at 34 × 51, 34 × 68 and 17 × 68), `synth_xilinx` keeps every
-    /// DSP48E1. The width table's `bounds/tile` estimate counts every line at both tile ends (32
-    /// products 44 × 13, tiled alike): 16 line products more than the RTL; `uvt units` shows both.
+    /// DSP48E1. The width table's `bounds/tile` estimate counts the same products (its magnitude
+    /// widths 44 × 13 and 45 × 13 tile as the RTL's signed 45 × 17 and 46 × 17): the same hard
+    /// multipliers before `synth_ecp5`'s trimming; `uvt units` shows both.
     #[test]
     fn bounds_unit_tiles_its_products_as_the_model_counts() {
         use crate::config::multipliers::{dsp48e1_tiling, ecp5_tiling, stage_costs, Tiling};
@@ -274,14 +275,10 @@ mod tests {
             .into_iter()
             .find(|g| g.stage == "bounds/tile")
             .unwrap();
-        let extra = |t: fn(u32, u32) -> Tiling| u64::from(16 * t(44, 13).hard);
         assert_eq!(
-            (est.dsp48e1, est.ecp5),
-            (
-                rtl(dsp48e1_tiling) + extra(dsp48e1_tiling),
-                rtl(ecp5_tiling) + extra(ecp5_tiling)
-            ),
-            "the bounds/tile estimate is no longer the RTL's products plus 16 line products: {est:?}"
+            (est.dsp48e1, est.ecp5, est.products),
+            (rtl(dsp48e1_tiling), rtl(ecp5_tiling), 4 + 16),
+            "the bounds/tile estimate is not the RTL's products: {est:?}"
         );
         let md = bounds_md(Some(&units), Path::new(path));
         let row = format!(
