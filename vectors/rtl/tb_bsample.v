@@ -135,8 +135,8 @@ module tb_bsample;
         $readmemh(in_file, in_mem, 0, n * WI - 1);
         $readmemh(out_file, out_mem, 0, n * WO - 1);
         errors = 0; issued = 0; got_e = 0; got_d = 0; tested = 0; skipped = 0;
-        // Flush the unit's pipeline (unknown valid bits after power-up).
-        repeat (60) @(negedge clk);
+        // Flush the unit's pipeline (unknown valid bits after power-up; PIPE = 1 has 63 stages).
+        repeat (80) @(negedge clk);
         for (r = 0; r < n; r = r + stride) begin
             w = r * WI;
             if (in_mem[w+31][7:2] != OFF || in_mem[w+31][12:8] != POS || in_mem[w+31][17:13] != TUV) begin

@@ -128,7 +128,7 @@ module uvt_bsample #(
     reg [15*(TW+DW)-1:0] s2_p;
     reg [15*31-1:0] s3_f;              // x y z w c per vertex, raw 2^-16, |.| <= 2^29
     wire signed [TW-1:0] s1_td;        // t at the multipliers (after d's register with PIPE)
-    uvt_bsample_dly #(.W(TW), .N(P1)) dl_t (clk, s1_t, s1_td);
+    uvt_dly #(.W(TW), .N(P1)) dl_t (clk, s1_t, s1_td);
     generate
         for (i = 0; i < 15; i = i + 1) begin : g_lerp
             if (MOTION && (DEFOCUS || i % 5 != 4)) begin : g_mul
@@ -137,8 +137,8 @@ module uvt_bsample #(
                 wire signed [DW-1:0] d = f1 - f0;
                 wire signed [DW-1:0] dd;
                 wire [FW-1:0] f0d;
-                uvt_bsample_dly #(.W(DW), .N(P1)) dl_d (clk, d, dd);
-                uvt_bsample_dly #(.W(FW), .N(P1 + MR)) dl_f0 (clk, f0, f0d);
+                uvt_dly #(.W(DW), .N(P1)) dl_d (clk, d, dd);
+                uvt_dly #(.W(FW), .N(P1 + MR)) dl_f0 (clk, f0, f0d);
                 wire signed [TW+DW-1:0] p;
                 uvt_mul #(.AW(TW), .BW(DW), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(MR)) m_t (s1_td, dd, p, clk);
                 always @(posedge clk) begin
@@ -152,7 +152,7 @@ module uvt_bsample #(
                 always @(posedge clk) s3_f[31*i +: 31] <= rnd[30:0];
             end else if (DEFOCUS || i % 5 != 4) begin : g_t0
                 wire [FW-1:0] f0d;
-                uvt_bsample_dly #(.W(FW), .N(P1 + MR)) dl_f0 (clk, s1_f0[FW*i +: FW], f0d);
+                uvt_dly #(.W(FW), .N(P1 + MR)) dl_f0 (clk, s1_f0[FW*i +: FW], f0d);
                 always @(posedge clk) s2_f0[FW*i +: FW] <= f0d;
                 wire signed [FW-1:0] g0 = s2_f0[FW*i +: FW];
                 wire signed [30:0] ft = g0 <<< (16 - POS);   // FW + 16 − POS = 31 bits
@@ -166,13 +166,13 @@ module uvt_bsample #(
     generate
         if (DEFOCUS) begin : g_uv
             wire [2*TW-1:0] uvd;
-            uvt_bsample_dly #(.W(2*TW), .N(P1 + MR)) dl_uv (clk, {s1_u, s1_v}, uvd);
+            uvt_dly #(.W(2*TW), .N(P1 + MR)) dl_uv (clk, {s1_u, s1_v}, uvd);
             always @(posedge clk) {s2_u, s2_v, s3_u, s3_v} <= {uvd, s2_u, s2_v};
         end
     endgenerate
     wire [69:0] vp1d, vp4d;            // {w, h, gx, gy} through the multipliers of stages 2, 4
-    uvt_bsample_dly #(.W(70), .N(P1 + MR)) dl_vp1 (clk, {s1_w, s1_h, s1_gx, s1_gy}, vp1d);
-    uvt_bsample_dly #(.W(70), .N(MR)) dl_vp4 (clk, {s4_w, s4_h, s4_gx, s4_gy}, vp4d);
+    uvt_dly #(.W(70), .N(P1 + MR)) dl_vp1 (clk, {s1_w, s1_h, s1_gx, s1_gy}, vp1d);
+    uvt_dly #(.W(70), .N(MR)) dl_vp4 (clk, {s4_w, s4_h, s4_gx, s4_gy}, vp4d);
     always @(posedge clk) begin
         {s2_w, s2_h, s2_gx, s2_gy} <= vp1d;
         {s3_w, s3_h, s3_gx, s3_gy} <= {s2_w, s2_h, s2_gx, s2_gy};
@@ -207,7 +207,7 @@ module uvt_bsample #(
                 assign y = yt;
             end
             wire [4*31-1:0] fd;
-            uvt_bsample_dly #(.W(4*31), .N(MR)) dl_f (clk, {s3_f[31*(5*i) +: 31],
+            uvt_dly #(.W(4*31), .N(MR)) dl_f (clk, {s3_f[31*(5*i) +: 31],
                 s3_f[31*(5*i+1) +: 31], s3_f[31*(5*i+2) +: 31], s3_f[31*(5*i+3) +: 31]}, fd);
             always @(posedge clk) begin
                 {xt, yt, zt, wt} <= fd;
@@ -251,7 +251,7 @@ module uvt_bsample #(
         end
     endgenerate
     wire [6*31-1:0] wz5d;
-    uvt_bsample_dly #(.W(6*31), .N(MR)) dl_wz5 (clk, {s5_wt, s5_zt}, wz5d);
+    uvt_dly #(.W(6*31), .N(MR)) dl_wz5 (clk, {s5_wt, s5_zt}, wz5d);
     always @(posedge clk) begin
         {s6_wt, s6_zt} <= wz5d;
         {s7_wt, s7_zt} <= {s6_wt, s6_zt};
@@ -280,9 +280,9 @@ module uvt_bsample #(
     endgenerate
     wire [6*AW+6*31-1:0] ab7d, ab9d;
     wire [3*31-1:0] zt10d;
-    uvt_bsample_dly #(.W(6*AW+6*31), .N(MR)) dl_ab7 (clk, {s7_a, s7_b, s7_wt, s7_zt}, ab7d);
-    uvt_bsample_dly #(.W(6*AW+6*31), .N(MR)) dl_ab9 (clk, {s9_a, s9_b, s9_wt, s9_zt}, ab9d);
-    uvt_bsample_dly #(.W(3*31), .N(P1)) dl_zt10 (clk, s10_zt, zt10d);
+    uvt_dly #(.W(6*AW+6*31), .N(MR)) dl_ab7 (clk, {s7_a, s7_b, s7_wt, s7_zt}, ab7d);
+    uvt_dly #(.W(6*AW+6*31), .N(MR)) dl_ab9 (clk, {s9_a, s9_b, s9_wt, s9_zt}, ab9d);
+    uvt_dly #(.W(3*31), .N(P1)) dl_zt10 (clk, s10_zt, zt10d);
     always @(posedge clk) begin
         {s8_a, s8_b, s8_wt, s8_zt} <= ab7d;
         {s9_a, s9_b, s9_wt, s9_zt} <= {s8_a, s8_b, s8_wt, s8_zt};
@@ -325,10 +325,10 @@ module uvt_bsample #(
     wire wpos_n = ($signed(s9_wt[30:0]) > 0) && ($signed(s9_wt[61:31]) > 0) &&
                   ($signed(s9_wt[92:62]) > 0);
     wire [3*EW+12:0] key_d;
-    uvt_bsample_dly #(.W(3*EW+13), .N(MR)) dl_key (clk, {s9_e, key_n, wpos_n}, key_d);
+    uvt_dly #(.W(3*EW+13), .N(MR)) dl_key (clk, {s9_e, key_n, wpos_n}, key_d);
     // sh = max(bit length of max|E'| − 24, 0); bit length of the max = that of the OR.
     wire [EW-1:0] e_or_d;
-    uvt_bsample_dly #(.W(EW), .N(P1)) dl_or (clk, e_or, e_or_d);
+    uvt_dly #(.W(EW), .N(P1)) dl_or (clk, e_or, e_or_d);
     reg [6:0] blen;
     integer k;
     always @(*) begin
@@ -338,7 +338,7 @@ module uvt_bsample #(
     end
     wire [5:0] sh_n = (blen > 24) ? blen - 7'd24 : 6'd0;
     wire [5:0] sh_d;
-    uvt_bsample_dly #(.W(6), .N(MR - P1)) dl_sh (clk, sh_n, sh_d);
+    uvt_dly #(.W(6), .N(MR - P1)) dl_sh (clk, sh_n, sh_d);
     always @(posedge clk) begin
         {s10_e, s10_pos, s10_neg, s10_gt, s10_lt, s10_wpos} <= key_d;
         s10_sh <= sh_d;
@@ -360,10 +360,10 @@ module uvt_bsample #(
     wire [12:0] key11;
     wire [3*25-1:0] e2_d;
     wire [6*AW+3*EW+3*31-1:0] abe_d;
-    uvt_bsample_dly #(.W(RW+2), .N(P1)) dl_det (clk, det_n, det);
-    uvt_bsample_dly #(.W(13), .N(P1)) dl_key11 (clk, {s10_pos, s10_neg, s10_gt, s10_lt, s10_wpos}, key11);
-    uvt_bsample_dly #(.W(75), .N(P1)) dl_e2 (clk, e2_n, e2_d);
-    uvt_bsample_dly #(.W(6*AW+3*EW+3*31), .N(P1)) dl_abe (clk, {s10_a, s10_b, s10_e, s10_wt}, abe_d);
+    uvt_dly #(.W(RW+2), .N(P1)) dl_det (clk, det_n, det);
+    uvt_dly #(.W(13), .N(P1)) dl_key11 (clk, {s10_pos, s10_neg, s10_gt, s10_lt, s10_wpos}, key11);
+    uvt_dly #(.W(75), .N(P1)) dl_e2 (clk, e2_n, e2_d);
+    uvt_dly #(.W(6*AW+3*EW+3*31), .N(P1)) dl_abe (clk, {s10_a, s10_b, s10_e, s10_wt}, abe_d);
     wire [2:0] k_pos = key11[12:10], k_neg = key11[9:7], k_gt = key11[6:4], k_lt = key11[3:1];
     wire k_wpos = key11[0];
     wire any_pos = |k_pos, any_neg = |k_neg;
@@ -413,14 +413,14 @@ module uvt_bsample #(
         end
     endgenerate
     wire [1:0] nc11d;
-    uvt_bsample_dly #(.W(2), .N(MR)) dl_nc11 (clk, {s11_sn, s11_cov}, nc11d);
+    uvt_dly #(.W(2), .N(MR)) dl_nc11 (clk, {s11_sn, s11_cov}, nc11d);
     always @(posedge clk) {s12_neg, s12_cov} <= nc11d;
     wire signed [55:0] nsum_n = $signed(s12_nz[0 +: 56]) + $signed(s12_nz[56 +: 56]) +
                                 $signed(s12_nz[112 +: 56]);
     wire signed [55:0] dsum_n = $signed(s12_nw[0 +: 56]) + $signed(s12_nw[56 +: 56]) +
                                 $signed(s12_nw[112 +: 56]);
     wire [113:0] sums_d;
-    uvt_bsample_dly #(.W(114), .N(P1)) dl_sums (clk, {nsum_n, dsum_n, s12_neg, s12_cov}, sums_d);
+    uvt_dly #(.W(114), .N(P1)) dl_sums (clk, {nsum_n, dsum_n, s12_neg, s12_cov}, sums_d);
     wire signed [55:0] nsum = sums_d[113:58], dsum = sums_d[57:2];
     wire s12_negd = sums_d[1], s12_covd = sums_d[0];
     reg signed [55:0] s13_num, s13_den;
@@ -439,13 +439,13 @@ module uvt_bsample #(
     wire [55:0] nmag_n = dneg_n ? -s13_num : s13_num;
     wire [79:0] dm1_n = {24'd0, s13_den} - 80'd1;
     wire [193:0] st_a;
-    uvt_bsample_dly #(.W(194), .N(P1)) dl_sta (clk, {dneg_n, nmag_n, dm1_n, s13_den, s13_cov}, st_a);
+    uvt_dly #(.W(194), .N(P1)) dl_sta (clk, {dneg_n, nmag_n, dm1_n, s13_den, s13_cov}, st_a);
     wire        dneg = st_a[193];
     wire [55:0] nmag = st_a[192:137];
     wire [79:0] dm1 = st_a[136:57];
     wire [79:0] mm_n = {nmag[54:0], 24'd0} + (dneg ? dm1 : 80'd0);
     wire [137:0] st_b;
-    uvt_bsample_dly #(.W(138), .N(P1)) dl_stb (clk, {dneg, mm_n, st_a[56:0]}, st_b);
+    uvt_dly #(.W(138), .N(P1)) dl_stb (clk, {dneg, mm_n, st_a[56:0]}, st_b);
     wire        mneg = st_b[137];
     wire [79:0] mm = st_b[136:57];
     wire signed [55:0] mden = st_b[56:1];
@@ -507,28 +507,4 @@ module uvt_bsample #(
     end
     assign depth = r_depth;
     assign out_covered = r_cov;
-endmodule
-
-// uvt_bsample_dly — N clocks of delay of a W-bit value (N = 0: the value itself; clk unused).
-module uvt_bsample_dly #(
-    parameter W = 1,
-    parameter N = 0
-) (
-    input  wire         clk,
-    input  wire [W-1:0] d,
-    output wire [W-1:0] q
-);
-    generate
-        if (N == 0) begin : g_wire
-            assign q = d;
-        end else if (N == 1) begin : g_one
-            reg [W-1:0] r;
-            always @(posedge clk) r <= d;
-            assign q = r;
-        end else begin : g_many
-            reg [W*N-1:0] r;
-            always @(posedge clk) r <= {r[W*(N-1)-1:0], d};
-            assign q = r[W*N-1 -: W];
-        end
-    endgenerate
 endmodule

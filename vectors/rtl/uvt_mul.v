@@ -220,3 +220,28 @@ module uvt_mul #(
         end
     endgenerate
 endmodule
+
+// uvt_dly — N clocks of delay of a W-bit value (N = 0: the value itself; clk unused): the
+// registers beside a pipelined product (uvt_bsample.v, uvt_psample.v with PIPE = 1).
+module uvt_dly #(
+    parameter W = 1,
+    parameter N = 0
+) (
+    input  wire         clk,
+    input  wire [W-1:0] d,
+    output wire [W-1:0] q
+);
+    generate
+        if (N == 0) begin : g_wire
+            assign q = d;
+        end else if (N == 1) begin : g_one
+            reg [W-1:0] r;
+            always @(posedge clk) r <= d;
+            assign q = r;
+        end else begin : g_many
+            reg [W*N-1:0] r;
+            always @(posedge clk) r <= {r[W*(N-1)-1:0], d};
+            assign q = r[W*N-1 -: W];
+        end
+    endgenerate
+endmodule
