@@ -36,17 +36,19 @@ device_args="--85k --package CABGA381 --out-of-context"
 unit_def() {
   case "$1" in
     bsample) echo "uvt_bsample|uvt_mul.v uvt_bsample.v|POS=16 TUV=16 OFF=20 DSP_A=18 DSP_B=18 PIPE=1|1|sample test" ;;
+    bsample-static) echo "uvt_bsample|uvt_mul.v uvt_bsample.v|POS=16 TUV=16 OFF=20 DSP_A=18 DSP_B=18 PIPE=1 MOTION=0 DEFOCUS=0|1|sample test" ;;
     bsample-pipe0) echo "uvt_bsample|uvt_mul.v uvt_bsample.v|POS=16 TUV=16 OFF=20 DSP_A=18 DSP_B=18 PIPE=0|1|sample test" ;;
     psample) echo "uvt_psample|uvt_mul.v uvt_psample.v|DSP_A=18 DSP_B=18|1|sample test" ;;
+    psample-pipe1) echo "uvt_psample|uvt_mul.v uvt_psample.v|DSP_A=18 DSP_B=18 PIPE=1|1|sample test" ;;
     mul31) echo "uvt_mul|uvt_mul.v|AW=31 BW=31 PA=18 PB=18 LW=0 REG=2|1|product" ;;
     *) return 1 ;;
   esac
 }
-known="bsample bsample-pipe0 psample mul31"
+known="bsample bsample-static bsample-pipe0 psample psample-pipe1 mul31"
 defaults="bsample psample"
 # The configuration each unit is built at (the precision sweep's names).
 config_of() {
-  case "$1" in bsample*) echo bounded-16-16-16-20 ;; psample) echo planar-16-16-16-20 ;; *) echo - ;; esac
+  case "$1" in bsample*) echo bounded-16-16-16-20 ;; psample*) echo planar-16-16-16-20 ;; *) echo - ;; esac
 }
 
 usage() { sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2; }
