@@ -9,7 +9,9 @@
 #
 #   bash vectors/rtl/pnr.sh [-o OUT.json] [-r WORKDIR] [-s SEED] [-f MHZ] [-k] [UNIT …]
 #
-# UNIT is a name of the table below (default: bsample psample). Each unit is synthesized with
+# UNIT is a name of the table below (default: bsample psample; the bounded builds bsample and
+# bsample-static have not routed yet, docs/rtl.md "Placed and routed speed"; psample-pipe1 is the
+# planar unit with PIPE = 1, mul31 a pipelined 31 × 31 product). Each unit is synthesized with
 # Yosys `synth_ecp5` (Debian's yosys) and placed and routed out of context (no I/O buffers: the
 # unit as a block inside a larger design) by nextpnr-ecp5 with the fixed seed SEED (default 1),
 # the router router2 and a target of MHZ (default 100) for the clock `clk`; --timing-allow-fail,
@@ -32,7 +34,7 @@ keep=
 device_args="--85k --package CABGA381 --out-of-context"
 
 # The units: NAME → "top|sources|chparam settings|results per clock|result".
-# Adding a unit is one line here (and its name in `defaults` if it is built by default).
+# Adding a unit is one line here and its name in `known` (and in `defaults` if built by default).
 unit_def() {
   case "$1" in
     bsample) echo "uvt_bsample|uvt_mul.v uvt_bsample.v|POS=16 TUV=16 OFF=20 DSP_A=18 DSP_B=18 PIPE=1|1|sample test" ;;
