@@ -3,8 +3,10 @@
 //! consistent with the RTL and with `host/report/synth.json` (the planar unit's builds present,
 //! each unit's parameters those of its RTL and configuration, results per second = Fmax × results
 //! per clock, resources within the device, the planar unit's multipliers as synthesized),
-//! docs/rtl.md shows its figures, and the script rejects bad input by name. `UVT_EXTENSIVE=1` also places and routes the small pipelined multiplier
-//! (`mul31`, about a minute; needs Debian's yosys, jq and PyPI access for the nextpnr venv).
+//! docs/rtl.md shows its figures, and the script rejects bad input by name. `UVT_EXTENSIVE=1`
+//! also places and routes the small pipelined multiplier (`mul31`, 8 s here once the venv
+//! exists; needs Debian's yosys, jq and PyPI access for the nextpnr venv, which `tests/run.sh`
+//! does not install).
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -217,4 +219,31 @@ fn pnr_script_places_and_routes_a_small_unit() {
     let u = unit(&j, "mul31");
     check_entry(u);
     assert_eq!(u["resources"]["MULT18X18D"]["used"], 4, "{u}");
+}
+
+/// `uvt precision` reads pnr.json from synth.json's folder: the table of the placed-and-routed
+/// units and, in the cost cell of each unit's configuration, its Fmax and results per second.
+#[test]
+fn precision_report_shows_the_pnr_figures() {
+    use uvt_host::precision::costs::Costs;
+    let j = load(&root().join("host/report/pnr.json"));
+    let c = Costs::load(
+        &root().join("host/report/no-such-m4.json"),
+        &root().join("host/report/synth.json"),
+    )
+    .unwrap();
+    let md = c.pnr_md();
+    for u in j["units"].as_array().unwrap() {
+        let name = u["unit"].as_str().unwrap();
+        let fmax = u["fmax_mhz"].as_f64().unwrap();
+        assert!(
+            md.contains(&format!("| {name} | `{}` |", u["top"].as_str().unwrap())),
+            "{md}"
+        );
+        let cell = c.of(u["config"].as_str().unwrap()).synth;
+        assert!(
+            cell.contains(&format!("ECP5 P&R {name}: {fmax:.1} MHz")),
+            "{name}: {cell}"
+        );
+    }
 }
