@@ -322,6 +322,59 @@ fn rtl_sample_test_unit_with_ecp5_tiling_passes_committed_records() {
     }
 }
 
+/// The faster build (`PIPE = 1`: registers inside every product and in the wide adder stages,
+/// as `vectors/rtl/pnr.sh` places and routes it) is bit-identical with the ECP5 tiling (frame_b;
+/// every set under `UVT_EXTENSIVE=1`, and the DSP48E1 tiling on frame_a), with the latencies the
+/// docs state, 23 and 63 clocks; the default build's are 11 and 46.
+#[test]
+fn rtl_pipelined_unit_passes_committed_records_with_its_latency() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = |k: &'static str, v: u32| (k, v.to_string());
+    let pipe = |ports: (u32, u32)| {
+        icarus::compile(
+            &dir.path()
+                .join(format!("tb-pipe-{}x{}.vvp", ports.0, ports.1)),
+            &[
+                p("tb_bsample.DSP_A", ports.0),
+                p("tb_bsample.DSP_B", ports.1),
+                p("tb_bsample.PIPE", 1),
+            ],
+            &["uvt_mul.v", "uvt_bsample.v", "tb_bsample.v"],
+        )
+    };
+    let mut runs = vec![((18, 18), "frame_b")];
+    if extensive() {
+        runs.extend([
+            ((18, 18), "unit"),
+            ((18, 18), "frame_a"),
+            ((25, 18), "frame_a"),
+        ]);
+    }
+    for (ports, set) in runs {
+        let out = run(&pipe(ports), &committed().join(set));
+        let n = coverage(set)["records"].as_u64().unwrap();
+        assert!(
+            out.contains(&format!("PASS {n} records")),
+            "{ports:?} {set}: {out}"
+        );
+        assert!(
+            out.lines().any(|l| l == "LATENCY edge 23 depth 63 clocks"),
+            "{ports:?} {set}: {out}"
+        );
+    }
+    // The default build's latency, on every 40th record of frame_b.
+    let out = icarus::run_vectors(
+        &build(dir.path(), Grid::DEFAULT),
+        &committed().join("frame_b"),
+        "bsample",
+        &["+STRIDE=40".to_string()],
+    );
+    assert!(
+        out.lines().any(|l| l == "LATENCY edge 11 depth 46 clocks"),
+        "{out}"
+    );
+}
+
 /// Whether the unit with `terms` = (motion, defocus) accepts class index `class` (bit 0
 /// motion, bit 1 defocus: static, motion, defocus, both).
 fn accepts(terms: (bool, bool), class: usize) -> bool {

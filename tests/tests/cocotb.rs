@@ -177,7 +177,10 @@ fn mutated_rtl_is_caught() {
     std::fs::copy(rtl.join("uvt_mul.v"), dir.path().join("uvt_mul.v")).unwrap();
     let src = std::fs::read_to_string(rtl.join("uvt_bsample.v")).unwrap();
     // The fill-rule tie key of an edge with E' = 0: reverse its comparison of b'.
-    let (from, to) = ("s10_gt[i] <= (bi > bj) ||", "s10_gt[i] <= (bi < bj) ||");
+    let (from, to) = (
+        "assign key_n[3+i] = (bi > bj) ||",
+        "assign key_n[3+i] = (bi < bj) ||",
+    );
     assert_eq!(
         src.matches(from).count(),
         1,

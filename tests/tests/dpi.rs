@@ -205,8 +205,8 @@ fn psample_dpi_passes_and_catches_a_corrupted_model_output() {
 fn bsample_dpi_catches_a_reversed_tie_key() {
     mutated(
         "bsample",
-        "(~s10_pos & ~s10_neg & s10_gt))",
-        "(~s10_pos & ~s10_neg & s10_lt))",
+        "(~k_pos & ~k_neg & k_gt))",
+        "(~k_pos & ~k_neg & k_lt))",
         "covered",
     );
 }
@@ -263,8 +263,8 @@ fn cpp_harness_catches_a_reversed_tie_key() {
     let rtl = mutant(
         dir.path(),
         "bsample",
-        "(~s10_pos & ~s10_neg & s10_gt))",
-        "(~s10_pos & ~s10_neg & s10_lt))",
+        "(~k_pos & ~k_neg & k_gt))",
+        "(~k_pos & ~k_neg & k_lt))",
     );
     let h = build_harness(dir.path(), &rtl);
     let (ok, out) = run(&h, &[seed(), 100_000, 10, 4].map(|n| n.to_string()));

@@ -209,6 +209,45 @@ fn rtl_planar_unit_passes_every_committed_record() {
     );
 }
 
+/// The faster build (`PIPE = 1`: registers inside the products, as `vectors/rtl/pnr.sh`
+/// measures it) is bit-identical at both tilings on frame_a (and the unit set under
+/// `UVT_EXTENSIVE=1`), with latency 9; the default build's is 6.
+#[test]
+fn rtl_pipelined_planar_unit_passes_committed_records_with_its_latency() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = |k: &'static str, v: u32| (k, v.to_string());
+    let sets: &[&str] = if uvt_tests::extensive() {
+        &["frame_a", "unit"]
+    } else {
+        &["frame_a"]
+    };
+    for ports in [(25, 18), (18, 18)] {
+        let tb = icarus::compile(
+            &dir.path()
+                .join(format!("tbp-pipe-{}x{}.vvp", ports.0, ports.1)),
+            &[
+                p("tb_psample.DSP_A", ports.0),
+                p("tb_psample.DSP_B", ports.1),
+                p("tb_psample.PIPE", 1),
+            ],
+            &["uvt_mul.v", "uvt_psample.v", "tb_psample.v"],
+        );
+        for set in sets {
+            let out = run(&tb, &committed().join(set));
+            let n = manifest(set)["psample_coverage"]["records"]
+                .as_u64()
+                .unwrap();
+            assert!(
+                out.lines().any(|l| l == format!("PASS {n} records")),
+                "{ports:?} {set}: {out}"
+            );
+            assert!(out.lines().any(|l| l == "LATENCY 9 clocks"), "{out}");
+        }
+    }
+    let out = run(&build(dir.path(), (25, 18)), &committed().join("frame_a"));
+    assert!(out.lines().any(|l| l == "LATENCY 6 clocks"), "{out}");
+}
+
 /// A predicate on an (input, output) record pair.
 type Kind = Box<dyn Fn(&[u32], &[u32]) -> bool>;
 

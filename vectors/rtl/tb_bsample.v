@@ -15,7 +15,8 @@
 // instead of uvt_bsample; `-DUVT_ARCH_ONLY` connects and checks only the architectural ports —
 // clk, in_valid, trin, vp_w, vp_h, xs, ys, t, u, v in; out_valid, out_covered, depth out — and
 // passes the unit no parameter. Any latency works: outputs are matched in issue order by
-// out_valid (+DRAIN=<clocks> waits that long for the last results, default 200).
+// out_valid (+DRAIN=<clocks> waits that long for the last results, default 200). Before the
+// verdict: "LATENCY edge <a> depth <b> clocks", the first sample's (−1: no such result).
 `ifndef UVT_DUT
 `define UVT_DUT uvt_bsample
 `endif
@@ -28,6 +29,7 @@ module tb_bsample;
     parameter DSP_B = 18;
     parameter MOTION = 1;              // the unit variant (uvt_bsample.v)
     parameter DEFOCUS = 1;
+    parameter PIPE = 0;                // the unit's pipelining (uvt_bsample.v; latency only)
     localparam NT = MOTION ? 30 : 15;  // trin words: key frame 1 only with MOTION
     localparam WI = 37, WO = 14, MAXREC = 16384;
     reg [31:0] in_mem  [0:MAXREC*WI-1];
@@ -55,7 +57,7 @@ module tb_bsample;
     assign {ab, e, det_sign, covered} = 0;
 `else
     `UVT_DUT #(.POS(POS), .TUV(TUV), .OFF(OFF), .DSP_A(DSP_A), .DSP_B(DSP_B),
-               .MOTION(MOTION), .DEFOCUS(DEFOCUS)) dut (
+               .MOTION(MOTION), .DEFOCUS(DEFOCUS), .PIPE(PIPE)) dut (
         .clk(clk), .in_valid(in_valid), .trin(trin), .vp_w(vp_w), .vp_h(vp_h), .xs(xs), .ys(ys),
         .t(t), .u(u), .v(v), .edge_valid(edge_valid), .ab(ab), .e(e), .det_sign(det_sign),
         .covered(covered), .out_valid(out_valid), .out_covered(out_covered), .depth(depth)
@@ -86,6 +88,15 @@ module tb_bsample;
     endtask
 
     // Outputs: compared on the falling edge, in issue order.
+    // Latency: clocks from the first sample's in_valid to its first edge / depth result.
+    integer clocks = 0, t_in = -1, lat_e = -1, lat_d = -1;
+    always @(posedge clk) begin
+        if (in_valid === 1'b1 && t_in < 0) t_in = clocks;
+        if (edge_valid === 1'b1 && lat_e < 0 && t_in >= 0) lat_e = clocks - t_in;
+        if (out_valid === 1'b1 && lat_d < 0 && t_in >= 0) lat_d = clocks - t_in;
+        clocks = clocks + 1;
+    end
+
     always @(negedge clk) begin
         if (edge_valid === 1'b1) begin
             ro = order[got_e];
@@ -124,8 +135,8 @@ module tb_bsample;
         $readmemh(in_file, in_mem, 0, n * WI - 1);
         $readmemh(out_file, out_mem, 0, n * WO - 1);
         errors = 0; issued = 0; got_e = 0; got_d = 0; tested = 0; skipped = 0;
-        // Flush the unit's pipeline (unknown valid bits after power-up).
-        repeat (60) @(negedge clk);
+        // Flush the unit's pipeline (unknown valid bits after power-up; PIPE = 1 has 63 stages).
+        repeat (80) @(negedge clk);
         for (r = 0; r < n; r = r + stride) begin
             w = r * WI;
             if (in_mem[w+31][7:2] != OFF || in_mem[w+31][12:8] != POS || in_mem[w+31][17:13] != TUV) begin
@@ -161,6 +172,7 @@ module tb_bsample;
             $display("MISMATCH %0d records issued, %0d edge and %0d depth results came out",
                      issued, got_e, got_d);
         end
+        $display("LATENCY edge %0d depth %0d clocks", lat_e, lat_d);
         if (errors == 0) $write("PASS %0d records", tested);
         else $write("FAIL %0d mismatching fields in %0d records", errors, tested);
 `ifdef UVT_ARCH_ONLY

@@ -13,7 +13,7 @@ module tb_mul;
     reg  signed [AW-1:0] a;
     reg  signed [BW-1:0] b;
     wire signed [AW+BW-1:0] p;
-    uvt_mul #(.AW(AW), .BW(BW), .PA(PA), .PB(PB), .LW(LW)) dut (.a(a), .b(b), .p(p));
+    uvt_mul #(.AW(AW), .BW(BW), .PA(PA), .PB(PB), .LW(LW)) dut (.a(a), .b(b), .p(p), .clk(1'b0));
     reg signed [AW+BW-1:0] want;
     reg signed [AW-1:0] ca [0:5];
     reg signed [BW-1:0] cb [0:5];

@@ -3,7 +3,8 @@
 //   +IN=<psample_in.hex> +OUT=<psample_out.hex> +N=<records>
 // The unit reads only the setup fields (n, σ, G, f), the viewport and the position of a record;
 // the raw vertices (words 0..11) are for the checker (`uvt vectors check`).
-// Prints "PASS <n> records" or "FAIL <errors> mismatching fields in <n> records"; each of the
+// Prints "LATENCY <clocks> clocks" (the first sample's), then "PASS <n> records" or "FAIL <errors>
+// mismatching fields in <n> records"; each of the
 // first 10 mismatches as "MISMATCH record <r> (line <r+1>) field <name>: expected <hex>
 // observed <hex>" followed by the record's input words in hex.
 // Your own unit: `-DUVT_DUT=my_unit` instantiates my_unit instead of uvt_psample;
@@ -17,7 +18,8 @@
 module tb_psample;
     parameter DSP_A = 25;              // the unit's multiplier tiling (uvt_mul.v)
     parameter DSP_B = 18;
-    localparam WI = 28, WO = 8, MAXREC = 16384, LAT = 6;
+    parameter PIPE = 0;                // the unit's pipelining (uvt_psample.v; latency only)
+    localparam WI = 28, WO = 8, MAXREC = 16384, LAT = 9;   // the longest: PIPE = 1
     reg [31:0] in_mem  [0:MAXREC*WI-1];
     reg [31:0] out_mem [0:MAXREC*WO-1];
     reg [8*1024-1:0] in_file, out_file;
@@ -41,7 +43,7 @@ module tb_psample;
     );
     assign e = 0;                      // the internal edge values are not checked
 `else
-    `UVT_DUT #(.DSP_A(DSP_A), .DSP_B(DSP_B)) dut (
+    `UVT_DUT #(.DSP_A(DSP_A), .DSP_B(DSP_B), .PIPE(PIPE)) dut (
         .clk(clk), .in_valid(in_valid), .n(nn), .sigma(sigma), .f(f), .g(g), .vp_w(vp_w),
         .vp_h(vp_h), .xs(xs), .ys(ys), .out_valid(out_valid), .covered(covered),
         .depth(depth), .e(e)
@@ -49,6 +51,14 @@ module tb_psample;
 `endif
 
     always #5 clk = ~clk;
+
+    // Latency: clocks from the first sample's in_valid to its result.
+    integer clocks = 0, t_in = -1, lat = -1;
+    always @(posedge clk) begin
+        if (in_valid === 1'b1 && t_in < 0) t_in = clocks;
+        if (out_valid === 1'b1 && lat < 0 && t_in >= 0) lat = clocks - t_in;
+        clocks = clocks + 1;
+    end
 
     task show_inputs(input integer rec);
         begin
@@ -125,6 +135,7 @@ module tb_psample;
             errors = errors + 1;
             $display("MISMATCH %0d records issued, %0d results came out", issued, got);
         end
+        $display("LATENCY %0d clocks", lat);
         if (errors == 0) $write("PASS %0d records", issued);
         else $write("FAIL %0d mismatching fields in %0d records", errors, issued);
 `ifdef UVT_ARCH_ONLY

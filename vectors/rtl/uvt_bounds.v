@@ -186,7 +186,7 @@ module uvt_bounds #(
             // stage 4: n·r (exact: < 2^81)
             wire signed [MW+RW+1:0] p;
             uvt_mul #(.AW(MW+1), .BW(RW+1), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_nr (
-                $signed({1'b0, s3_m}), $signed({1'b0, s3_r}), p);
+                $signed({1'b0, s3_m}), $signed({1'b0, s3_r}), p, clk);
             reg [PW-1:0] s4_p;
             reg [1:0] s4_code;
             reg s4_up;
@@ -265,8 +265,8 @@ module uvt_bounds #(
                 end
                 wire signed [DW+16:0] p0;
                 wire signed [DW+17:0] p1;
-                uvt_mul #(.AW(DW), .BW(17), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_v0 (s3_v0, s3_span, p0);
-                uvt_mul #(.AW(DW+1), .BW(17), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_sl (s3_sl, s3_dx, p1);
+                uvt_mul #(.AW(DW), .BW(17), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_v0 (s3_v0, s3_span, p0, clk);
+                uvt_mul #(.AW(DW+1), .BW(17), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_sl (s3_sl, s3_dx, p1, clk);
                 reg signed [DW+16:0] s4_p0;
                 reg signed [DW+17:0] s4_p1;
                 always @(posedge clk) begin

@@ -43,7 +43,11 @@ module uvt_bsample #(
     // Xilinx DSP48E1 (the default), 18 × 18 for Lattice ECP5 MULT18X18D
     parameter DSP_A = 25,
     parameter DSP_B = 18,
-    parameter LUTW = 8
+    parameter LUTW = 8,
+    // PIPE = 1: registers inside every multiplier (uvt_mul REG = 2: the partial products and
+    // the sums of four) and in the wide adder stages, all products on hard multipliers (no LUT
+    // chunk), for a faster clock: LAT_EDGE = 23, LAT = 63 instead of 11, 46 (same results)
+    parameter PIPE = 0
 ) (
     input  wire               clk,
     input  wire               in_valid,
@@ -72,8 +76,11 @@ module uvt_bsample #(
     localparam AW = 51 - OFF;          // |a'| < 2^(50-OFF)
     localparam EW = 2 * AW;            // |E'| < 2^(2·AW-1)
     localparam RW = EW + 32;           // E'·w, sums of three
-    localparam LAT_EDGE = 11;
-    localparam LAT = 46;
+    localparam MR = PIPE ? 2 : 0;      // clocks inside each multiplier (uvt_mul REG)
+    localparam P1 = PIPE ? 1 : 0;      // one more register where a wide stage is split
+    localparam LWE = PIPE ? 0 : LUTW;  // a LUT chunk's rows are a serial adder chain
+    localparam LAT_EDGE = 11 + 2 * P1 + 5 * MR;
+    localparam LAT = LAT_EDGE + 35 + MR + 3 * P1;
 
     reg [LAT:1] vld;
     always @(posedge clk) vld <= {vld[LAT-1:1], in_valid};
@@ -120,16 +127,22 @@ module uvt_bsample #(
     reg [15*FW-1:0] s2_f0;
     reg [15*(TW+DW)-1:0] s2_p;
     reg [15*31-1:0] s3_f;              // x y z w c per vertex, raw 2^-16, |.| <= 2^29
+    wire signed [TW-1:0] s1_td;        // t at the multipliers (after d's register with PIPE)
+    uvt_dly #(.W(TW), .N(P1)) dl_t (clk, s1_t, s1_td);
     generate
         for (i = 0; i < 15; i = i + 1) begin : g_lerp
             if (MOTION && (DEFOCUS || i % 5 != 4)) begin : g_mul
                 wire signed [FW-1:0] f0 = s1_f0[FW*i +: FW];
                 wire signed [FW-1:0] f1 = s1_f1[FW*i +: FW];
                 wire signed [DW-1:0] d = f1 - f0;
+                wire signed [DW-1:0] dd;
+                wire [FW-1:0] f0d;
+                uvt_dly #(.W(DW), .N(P1)) dl_d (clk, d, dd);
+                uvt_dly #(.W(FW), .N(P1 + MR)) dl_f0 (clk, f0, f0d);
                 wire signed [TW+DW-1:0] p;
-                uvt_mul #(.AW(TW), .BW(DW), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_t (s1_t, d, p);
+                uvt_mul #(.AW(TW), .BW(DW), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(MR)) m_t (s1_td, dd, p, clk);
                 always @(posedge clk) begin
-                    s2_f0[FW*i +: FW] <= f0;
+                    s2_f0[FW*i +: FW] <= f0d;
                     s2_p[(TW+DW)*i +: TW+DW] <= p;
                 end
                 wire signed [FW-1:0] g0 = s2_f0[FW*i +: FW];
@@ -138,7 +151,9 @@ module uvt_bsample #(
                 wire signed [47:0] rnd = sum >>> 16;
                 always @(posedge clk) s3_f[31*i +: 31] <= rnd[30:0];
             end else if (DEFOCUS || i % 5 != 4) begin : g_t0
-                always @(posedge clk) s2_f0[FW*i +: FW] <= s1_f0[FW*i +: FW];
+                wire [FW-1:0] f0d;
+                uvt_dly #(.W(FW), .N(P1 + MR)) dl_f0 (clk, s1_f0[FW*i +: FW], f0d);
+                always @(posedge clk) s2_f0[FW*i +: FW] <= f0d;
                 wire signed [FW-1:0] g0 = s2_f0[FW*i +: FW];
                 wire signed [30:0] ft = g0 <<< (16 - POS);   // FW + 16 − POS = 31 bits
                 always @(posedge clk) s3_f[31*i +: 31] <= ft;
@@ -150,14 +165,19 @@ module uvt_bsample #(
     reg signed [21:0] s2_gx, s2_gy, s3_gx, s3_gy, s4_gx, s4_gy, s5_gx, s5_gy;
     generate
         if (DEFOCUS) begin : g_uv
-            always @(posedge clk) {s2_u, s2_v, s3_u, s3_v} <= {s1_u, s1_v, s2_u, s2_v};
+            wire [2*TW-1:0] uvd;
+            uvt_dly #(.W(2*TW), .N(P1 + MR)) dl_uv (clk, {s1_u, s1_v}, uvd);
+            always @(posedge clk) {s2_u, s2_v, s3_u, s3_v} <= {uvd, s2_u, s2_v};
         end
     endgenerate
+    wire [69:0] vp1d, vp4d;            // {w, h, gx, gy} through the multipliers of stages 2, 4
+    uvt_dly #(.W(70), .N(P1 + MR)) dl_vp1 (clk, {s1_w, s1_h, s1_gx, s1_gy}, vp1d);
+    uvt_dly #(.W(70), .N(MR)) dl_vp4 (clk, {s4_w, s4_h, s4_gx, s4_gy}, vp4d);
     always @(posedge clk) begin
-        {s2_w, s2_h, s2_gx, s2_gy} <= {s1_w, s1_h, s1_gx, s1_gy};
+        {s2_w, s2_h, s2_gx, s2_gy} <= vp1d;
         {s3_w, s3_h, s3_gx, s3_gy} <= {s2_w, s2_h, s2_gx, s2_gy};
         {s4_w, s4_h, s4_gx, s4_gy} <= {s3_w, s3_h, s3_gx, s3_gy};
-        {s5_w, s5_h, s5_gx, s5_gy} <= {s4_w, s4_h, s4_gx, s4_gy};
+        {s5_w, s5_h, s5_gx, s5_gy} <= vp4d;
     end
 
     // ---- stages 4–5: step 2, lens x = x_t + rnd16(U·c_t), y = y_t + rnd16(V·c_t) -------------
@@ -172,8 +192,8 @@ module uvt_bsample #(
                 wire signed [30:0] c = s3_f[31*(5*i+4) +: 31];
                 reg signed [TW+30:0] pu, pv;
                 wire signed [TW+30:0] mu, mv;
-                uvt_mul #(.AW(TW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_u (s3_u, c, mu);
-                uvt_mul #(.AW(TW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_v (s3_v, c, mv);
+                uvt_mul #(.AW(TW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(MR)) m_u (s3_u, c, mu, clk);
+                uvt_mul #(.AW(TW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(MR)) m_v (s3_v, c, mv, clk);
                 always @(posedge clk) begin
                     pu <= mu;
                     pv <= mv;
@@ -186,9 +206,11 @@ module uvt_bsample #(
                 assign x = xt;
                 assign y = yt;
             end
+            wire [4*31-1:0] fd;
+            uvt_dly #(.W(4*31), .N(MR)) dl_f (clk, {s3_f[31*(5*i) +: 31],
+                s3_f[31*(5*i+1) +: 31], s3_f[31*(5*i+2) +: 31], s3_f[31*(5*i+3) +: 31]}, fd);
             always @(posedge clk) begin
-                {xt, yt, zt, wt} <= {s3_f[31*(5*i) +: 31], s3_f[31*(5*i+1) +: 31],
-                                     s3_f[31*(5*i+2) +: 31], s3_f[31*(5*i+3) +: 31]};
+                {xt, yt, zt, wt} <= fd;
                 s5_x[32*i +: 32] <= x;
                 s5_y[32*i +: 32] <= y;
                 s5_wt[31*i +: 31] <= wt;
@@ -208,10 +230,10 @@ module uvt_bsample #(
             reg signed [52:0] mw, mh;      // gx·w, gy·w: |.| <= 2^48
             wire signed [44:0] px, py;
             wire signed [52:0] pw, ph;
-            uvt_mul #(.AW(13), .BW(32), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_x (s5_w, x, px);
-            uvt_mul #(.AW(13), .BW(32), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_y (s5_h, y, py);
-            uvt_mul #(.AW(22), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_w (s5_gx, w, pw);
-            uvt_mul #(.AW(22), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_h (s5_gy, w, ph);
+            uvt_mul #(.AW(13), .BW(32), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(MR)) m_x (s5_w, x, px, clk);
+            uvt_mul #(.AW(13), .BW(32), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(MR)) m_y (s5_h, y, py, clk);
+            uvt_mul #(.AW(22), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(MR)) m_w (s5_gx, w, pw, clk);
+            uvt_mul #(.AW(22), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(MR)) m_h (s5_gy, w, ph, clk);
             always @(posedge clk) begin
                 mx <= px;
                 my <= py;
@@ -228,8 +250,10 @@ module uvt_bsample #(
             end
         end
     endgenerate
+    wire [6*31-1:0] wz5d;
+    uvt_dly #(.W(6*31), .N(MR)) dl_wz5 (clk, {s5_wt, s5_zt}, wz5d);
     always @(posedge clk) begin
-        {s6_wt, s6_zt} <= {s5_wt, s5_zt};
+        {s6_wt, s6_zt} <= wz5d;
         {s7_wt, s7_zt} <= {s6_wt, s6_zt};
     end
 
@@ -245,8 +269,8 @@ module uvt_bsample #(
             wire signed [AW-1:0] bj = s7_b[AW*((i+2)%3) +: AW];
             reg signed [EW-1:0] p1, p2;
             wire signed [EW-1:0] q1, q2;
-            uvt_mul #(.AW(AW), .BW(AW), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_1 (ai, bj, q1);
-            uvt_mul #(.AW(AW), .BW(AW), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_2 (aj, bi, q2);
+            uvt_mul #(.AW(AW), .BW(AW), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(MR)) m_1 (ai, bj, q1, clk);
+            uvt_mul #(.AW(AW), .BW(AW), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(MR)) m_2 (aj, bi, q2, clk);
             always @(posedge clk) begin
                 p1 <= q1;
                 p2 <= q2;
@@ -254,14 +278,21 @@ module uvt_bsample #(
             always @(posedge clk) s9_e[EW*i +: EW] <= p1 - p2;
         end
     endgenerate
+    wire [6*AW+6*31-1:0] ab7d, ab9d;
+    wire [3*31-1:0] zt10d;
+    uvt_dly #(.W(6*AW+6*31), .N(MR)) dl_ab7 (clk, {s7_a, s7_b, s7_wt, s7_zt}, ab7d);
+    uvt_dly #(.W(6*AW+6*31), .N(MR)) dl_ab9 (clk, {s9_a, s9_b, s9_wt, s9_zt}, ab9d);
+    uvt_dly #(.W(3*31), .N(P1)) dl_zt10 (clk, s10_zt, zt10d);
     always @(posedge clk) begin
-        {s8_a, s8_b, s8_wt, s8_zt} <= {s7_a, s7_b, s7_wt, s7_zt};
+        {s8_a, s8_b, s8_wt, s8_zt} <= ab7d;
         {s9_a, s9_b, s9_wt, s9_zt} <= {s8_a, s8_b, s8_wt, s8_zt};
-        {s10_a, s10_b, s10_wt, s10_zt} <= {s9_a, s9_b, s9_wt, s9_zt};
-        s11_zt <= s10_zt;
+        {s10_a, s10_b, s10_wt, s10_zt} <= ab9d;
+        s11_zt <= zt10d;
     end
 
     // ---- stage 10: rare-path products E'·w, tie keys, |E'| bit length ----------------------
+    // With PIPE the product takes MR more clocks; the other results wait for it in delay
+    // registers, and |E'|'s OR is registered before its bit length (P1 of the MR clocks).
     reg [3*RW-1:0] s10_q;
     reg [3*EW-1:0] s10_e;
     reg [2:0] s10_pos, s10_neg, s10_gt, s10_lt;
@@ -269,12 +300,13 @@ module uvt_bsample #(
     reg [5:0] s10_sh;
     wire [3*EW-1:0] e_mag;
     wire [EW-1:0] e_or = e_mag[0 +: EW] | e_mag[EW +: EW] | e_mag[2*EW +: EW];
+    wire [11:0] key_n;                 // {pos, neg, gt, lt}, each of the three edges
     generate
         for (i = 0; i < 3; i = i + 1) begin : g_key
             wire signed [EW-1:0] ek = s9_e[EW*i +: EW];
             wire signed [30:0] wk = s9_wt[31*i +: 31];
             wire signed [EW+30:0] qk;
-            uvt_mul #(.AW(EW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_q (ek, wk, qk);
+            uvt_mul #(.AW(EW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(MR)) m_q (ek, wk, qk, clk);
             assign e_mag[EW*i +: EW] = ek[EW-1] ? -ek : ek;
             // tie key κ = cmp((b', a', w)_{k+1}, (b', a', w)_{k+2}), lexicographic, signed
             wire signed [AW-1:0] ai = s9_a[AW*((i+1)%3) +: AW];
@@ -283,55 +315,73 @@ module uvt_bsample #(
             wire signed [AW-1:0] aj = s9_a[AW*((i+2)%3) +: AW];
             wire signed [AW-1:0] bj = s9_b[AW*((i+2)%3) +: AW];
             wire signed [30:0]   wj = s9_wt[31*((i+2)%3) +: 31];
-            always @(posedge clk) begin
-                s10_q[RW*i +: RW] <= {qk[EW+30], qk};
-                s10_pos[i] <= (ek > 0);
-                s10_neg[i] <= (ek < 0);
-                s10_gt[i] <= (bi > bj) || (bi == bj && ((ai > aj) || (ai == aj && wi > wj)));
-                s10_lt[i] <= (bi < bj) || (bi == bj && ((ai < aj) || (ai == aj && wi < wj)));
-            end
+            assign key_n[9+i] = (ek > 0);
+            assign key_n[6+i] = (ek < 0);
+            assign key_n[3+i] = (bi > bj) || (bi == bj && ((ai > aj) || (ai == aj && wi > wj)));
+            assign key_n[i] = (bi < bj) || (bi == bj && ((ai < aj) || (ai == aj && wi < wj)));
+            always @(posedge clk) s10_q[RW*i +: RW] <= {qk[EW+30], qk};
         end
     endgenerate
+    wire wpos_n = ($signed(s9_wt[30:0]) > 0) && ($signed(s9_wt[61:31]) > 0) &&
+                  ($signed(s9_wt[92:62]) > 0);
+    wire [3*EW+12:0] key_d;
+    uvt_dly #(.W(3*EW+13), .N(MR)) dl_key (clk, {s9_e, key_n, wpos_n}, key_d);
     // sh = max(bit length of max|E'| − 24, 0); bit length of the max = that of the OR.
+    wire [EW-1:0] e_or_d;
+    uvt_dly #(.W(EW), .N(P1)) dl_or (clk, e_or, e_or_d);
     reg [6:0] blen;
     integer k;
     always @(*) begin
         blen = 0;
         for (k = 0; k < EW; k = k + 1)
-            if (e_or[k]) blen = k + 1;
+            if (e_or_d[k]) blen = k + 1;
     end
+    wire [5:0] sh_n = (blen > 24) ? blen - 7'd24 : 6'd0;
+    wire [5:0] sh_d;
+    uvt_dly #(.W(6), .N(MR - P1)) dl_sh (clk, sh_n, sh_d);
     always @(posedge clk) begin
-        s10_e <= s9_e;
-        s10_wpos <= ($signed(s9_wt[30:0]) > 0) && ($signed(s9_wt[61:31]) > 0) &&
-                    ($signed(s9_wt[92:62]) > 0);
-        s10_sh <= (blen > 24) ? blen - 7'd24 : 6'd0;
+        {s10_e, s10_pos, s10_neg, s10_gt, s10_lt, s10_wpos} <= key_d;
+        s10_sh <= sh_d;
     end
 
     // ---- stage 11: steps 6–7, orientation and coverage; E'' = floor(E' / 2^sh) --------------
-    wire signed [RW+1:0] det = $signed(s10_q[0 +: RW]) + $signed(s10_q[RW +: RW]) +
-                               $signed(s10_q[2*RW +: RW]);
-    wire any_pos = |s10_pos, any_neg = |s10_neg;
-    wire sp = s10_wpos ? (any_pos && !any_neg) : (det > 0);
-    wire sn = s10_wpos ? (any_neg && !any_pos) : (det < 0);
-    wire [2:0] in_k = sp ? (s10_pos | (~s10_pos & ~s10_neg & s10_gt))
-                         : (s10_neg | (~s10_pos & ~s10_neg & s10_lt));
+    // With PIPE the sum det is registered (P1) before the sign tests; the rest waits for it.
+    wire signed [RW+1:0] det_n = $signed(s10_q[0 +: RW]) + $signed(s10_q[RW +: RW]) +
+                                 $signed(s10_q[2*RW +: RW]);
+    wire [3*25-1:0] e2_n;
+    generate
+        for (i = 0; i < 3; i = i + 1) begin : g_shift
+            wire signed [EW-1:0] ek = s10_e[EW*i +: EW];
+            wire signed [EW-1:0] es = ek >>> s10_sh;
+            assign e2_n[25*i +: 25] = es[24:0];
+        end
+    endgenerate
+    wire signed [RW+1:0] det;
+    wire [12:0] key11;
+    wire [3*25-1:0] e2_d;
+    wire [6*AW+3*EW+3*31-1:0] abe_d;
+    uvt_dly #(.W(RW+2), .N(P1)) dl_det (clk, det_n, det);
+    uvt_dly #(.W(13), .N(P1)) dl_key11 (clk, {s10_pos, s10_neg, s10_gt, s10_lt, s10_wpos}, key11);
+    uvt_dly #(.W(75), .N(P1)) dl_e2 (clk, e2_n, e2_d);
+    uvt_dly #(.W(6*AW+3*EW+3*31), .N(P1)) dl_abe (clk, {s10_a, s10_b, s10_e, s10_wt}, abe_d);
+    wire [2:0] k_pos = key11[12:10], k_neg = key11[9:7], k_gt = key11[6:4], k_lt = key11[3:1];
+    wire k_wpos = key11[0];
+    wire any_pos = |k_pos, any_neg = |k_neg;
+    wire sp = k_wpos ? (any_pos && !any_neg) : (det > 0);
+    wire sn = k_wpos ? (any_neg && !any_pos) : (det < 0);
+    wire [2:0] in_k = sp ? (k_pos | (~k_pos & ~k_neg & k_gt))
+                         : (k_neg | (~k_pos & ~k_neg & k_lt));
     reg s11_sp, s11_sn, s11_cov;
     reg [3*AW-1:0] s11_a, s11_b;
     reg [3*EW-1:0] s11_e;
     reg [3*31-1:0] s11_wt;
     reg [3*25-1:0] s11_e2;
-    generate
-        for (i = 0; i < 3; i = i + 1) begin : g_shift
-            wire signed [EW-1:0] ek = s10_e[EW*i +: EW];
-            wire signed [EW-1:0] es = ek >>> s10_sh;
-            always @(posedge clk) s11_e2[25*i +: 25] <= es[24:0];
-        end
-    endgenerate
     always @(posedge clk) begin
         s11_sp <= sp;
         s11_sn <= sn;
         s11_cov <= (sp || sn) && (&in_k);
-        {s11_a, s11_b, s11_e, s11_wt} <= {s10_a, s10_b, s10_e, s10_wt};
+        {s11_a, s11_b, s11_e, s11_wt} <= abe_d;
+        s11_e2 <= e2_d;
     end
     generate
         for (i = 0; i < 3; i = i + 1) begin : g_out
@@ -344,43 +394,62 @@ module uvt_bsample #(
     assign covered = s11_cov;
 
     // ---- stages 12–13: step 8, num = Σ E''·z, den = Σ E''·w (times the orientation sign) -----
+    // With PIPE the products take MR more clocks and the sums are registered (P1) before
+    // the sign is applied.
     reg [3*56-1:0] s12_nz, s12_nw;
-    reg s12_neg, s12_cov, s13_cov;
+    reg s12_neg, s12_cov;
     generate
         for (i = 0; i < 3; i = i + 1) begin : g_depth
             wire signed [24:0] e2 = s11_e2[25*i +: 25];
             wire signed [30:0] zk = s11_zt[31*i +: 31];
             wire signed [30:0] wk = s11_wt[31*i +: 31];
             wire signed [55:0] pz, pw;
-            uvt_mul #(.AW(25), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_z (e2, zk, pz);
-            uvt_mul #(.AW(25), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_w (e2, wk, pw);
+            uvt_mul #(.AW(25), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(MR)) m_z (e2, zk, pz, clk);
+            uvt_mul #(.AW(25), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(MR)) m_w (e2, wk, pw, clk);
             always @(posedge clk) begin
                 s12_nz[56*i +: 56] <= pz;
                 s12_nw[56*i +: 56] <= pw;
             end
         end
     endgenerate
-    always @(posedge clk) begin
-        s12_neg <= s11_sn;
-        s12_cov <= s11_cov;
-        s13_cov <= s12_cov;
-    end
-    wire signed [55:0] nsum = $signed(s12_nz[0 +: 56]) + $signed(s12_nz[56 +: 56]) +
-                              $signed(s12_nz[112 +: 56]);
-    wire signed [55:0] dsum = $signed(s12_nw[0 +: 56]) + $signed(s12_nw[56 +: 56]) +
-                              $signed(s12_nw[112 +: 56]);
+    wire [1:0] nc11d;
+    uvt_dly #(.W(2), .N(MR)) dl_nc11 (clk, {s11_sn, s11_cov}, nc11d);
+    always @(posedge clk) {s12_neg, s12_cov} <= nc11d;
+    wire signed [55:0] nsum_n = $signed(s12_nz[0 +: 56]) + $signed(s12_nz[56 +: 56]) +
+                                $signed(s12_nz[112 +: 56]);
+    wire signed [55:0] dsum_n = $signed(s12_nw[0 +: 56]) + $signed(s12_nw[56 +: 56]) +
+                                $signed(s12_nw[112 +: 56]);
+    wire [113:0] sums_d;
+    uvt_dly #(.W(114), .N(P1)) dl_sums (clk, {nsum_n, dsum_n, s12_neg, s12_cov}, sums_d);
+    wire signed [55:0] nsum = sums_d[113:58], dsum = sums_d[57:2];
+    wire s12_negd = sums_d[1], s12_covd = sums_d[0];
     reg signed [55:0] s13_num, s13_den;
+    reg s13_cov;
     always @(posedge clk) begin
-        s13_num <= s12_neg ? -nsum : nsum;
-        s13_den <= s12_neg ? -dsum : dsum;
+        s13_num <= s12_negd ? -nsum : nsum;
+        s13_den <= s12_negd ? -dsum : dsum;
+        s13_cov <= s12_covd;
     end
 
     // ---- stage 14: divider set-up. q = floor(num·2^24 / den) saturated to [−2^31, 2^31−2];
     // den <= 0 gives the far end. Unsigned M / D with M = |num|·2^24 (+ D − 1 when num < 0,
     // so that floor of the negative quotient = −floor(M / D)); Q >= 2^31 saturates.
-    wire        dneg = s13_num[55];
-    wire [55:0] nmag = dneg ? -s13_num : s13_num;
-    wire [79:0] mm = {nmag[54:0], 24'd0} + (dneg ? {24'd0, s13_den} - 80'd1 : 80'd0);
+    // With PIPE two more registers: after |num| and D − 1 (P1), and after M (P1).
+    wire        dneg_n = s13_num[55];
+    wire [55:0] nmag_n = dneg_n ? -s13_num : s13_num;
+    wire [79:0] dm1_n = {24'd0, s13_den} - 80'd1;
+    wire [193:0] st_a;
+    uvt_dly #(.W(194), .N(P1)) dl_sta (clk, {dneg_n, nmag_n, dm1_n, s13_den, s13_cov}, st_a);
+    wire        dneg = st_a[193];
+    wire [55:0] nmag = st_a[192:137];
+    wire [79:0] dm1 = st_a[136:57];
+    wire [79:0] mm_n = {nmag[54:0], 24'd0} + (dneg ? dm1 : 80'd0);
+    wire [137:0] st_b;
+    uvt_dly #(.W(138), .N(P1)) dl_stb (clk, {dneg, mm_n, st_a[56:0]}, st_b);
+    wire        mneg = st_b[137];
+    wire [79:0] mm = st_b[136:57];
+    wire signed [55:0] mden = st_b[56:1];
+    wire        mcov = st_b[0];
     // Stage j of the divider in slice j of each vector (j = 0: set-up, 31: quotient done).
     reg  [31:0] dv_bad;                // den <= 0: the far end
     reg  [31:0] dv_sat;                // Q >= 2^31: saturate
@@ -391,13 +460,13 @@ module uvt_bsample #(
     reg  [32*31-1:0] dv_q;             // quotient bits so far
     always @(posedge clk) begin
         dv_r[0 +: 57] <= {8'd0, mm[79:31]};
-        dv_d[0 +: 55] <= s13_den[54:0];
+        dv_d[0 +: 55] <= mden[54:0];
         dv_m[0 +: 31] <= mm[30:0];
         dv_q[0 +: 31] <= 31'd0;
-        dv_neg[0] <= dneg;
-        dv_cov[0] <= s13_cov;
-        dv_bad[0] <= (s13_den <= 0);
-        dv_sat[0] <= {8'd0, mm[79:31]} >= {2'd0, s13_den[54:0]};
+        dv_neg[0] <= mneg;
+        dv_cov[0] <= mcov;
+        dv_bad[0] <= (mden <= 0);
+        dv_sat[0] <= {8'd0, mm[79:31]} >= {2'd0, mden[54:0]};
     end
     // ---- stages 15–45: restoring division, quotient bit 30 − j at stage j -------------------
     generate

@@ -15,17 +15,24 @@
 //   fewer LUT partial-product bits (h × other operand's width), then A on port PA.
 // The partial products are summed in the fabric (or the DSP cascade, as synthesis packs them);
 // the sum is the exact AW+BW-bit product.
+// REG = 0 (default): combinational, the terms summed one after the other; `clk` is unused.
+// REG = 1: the terms (hard products and the LUT product) are registered, then summed as a
+// balanced tree; p follows the inputs by 1 clock. REG = 2: the sums of groups of four terms
+// (a two-level tree) are registered too; p follows the inputs by 2 clocks. The value is the
+// same; only the timing differs (uvt_bsample's PIPE uses REG = 2 for a faster clock).
 `timescale 1ns / 1ps
 module uvt_mul #(
     parameter AW = 18,
     parameter BW = 32,
     parameter PA = 25,
     parameter PB = 18,
-    parameter LW = 8
+    parameter LW = 8,
+    parameter REG = 0
 ) (
     input  wire signed [AW-1:0]    a,
     input  wire signed [BW-1:0]    b,
-    output wire signed [AW+BW-1:0] p
+    output wire signed [AW+BW-1:0] p,
+    input  wire                    clk
 );
     // Unsigned low chunks of an n-bit operand on a p-bit signed port.
     function integer nlow(input integer n, input integer pw);
@@ -100,7 +107,9 @@ module uvt_mul #(
         end
     endgenerate
 
-    // Running sum of the terms: acc[t+1] = acc[t] + term t.
+    // The terms, each shifted to its place: hard products, then the LUT product (or 0); with
+    // REG = 0 their running sum acc[t+1] = acc[t] + term t.
+    wire [PW*NT-1:0] term;
     wire [PW*(NT+1)-1:0] acc;
     assign acc[0 +: PW] = {PW{1'b0}};
     genvar i, j;
@@ -123,8 +132,9 @@ module uvt_mul #(
                 end
                 wire signed [PA+PB-1:0] pp = xp * yp;   // one hard multiplier
                 wire signed [PW-1:0] pe = pp;
+                assign term[PW*(i*YN+j) +: PW] = pe <<< (i*(PA-1) + j*(PB-1));
                 assign acc[PW*(i*YN+j+1) +: PW] =
-                    $signed(acc[PW*(i*YN+j) +: PW]) + (pe <<< (i*(PA-1) + j*(PB-1)));
+                    $signed(acc[PW*(i*YN+j) +: PW]) + $signed(term[PW*(i*YN+j) +: PW]);
             end
         end
         // The LUT product: a signed top chunk t (TH bits) times the signed operand o (OW bits)
@@ -162,10 +172,76 @@ module uvt_mul #(
             end
             wire signed [OW+TH-1:0] s = r[(OW+TH)*TH +: OW+TH];
             wire signed [PW-1:0] se = s;
-            assign acc[PW*NT +: PW] = $signed(acc[PW*(NT-1) +: PW]) + (se <<< SH);
+            assign term[PW*(NT-1) +: PW] = se <<< SH;
+            assign acc[PW*NT +: PW] = $signed(acc[PW*(NT-1) +: PW]) + $signed(term[PW*(NT-1) +: PW]);
         end else begin : g_nolut
+            assign term[PW*(NT-1) +: PW] = {PW{1'b0}};
             assign acc[PW*NT +: PW] = acc[PW*(NT-1) +: PW];
         end
     endgenerate
-    assign p = acc[PW*NT +: PW];
+    generate
+        if (REG == 0) begin : g_comb
+            assign p = acc[PW*NT +: PW];
+        end else begin : g_reg
+            // Registered terms, padded with zeros to NG groups of four.
+            localparam NG = (NT + 3) / 4;
+            reg  [PW*NT-1:0] tr;
+            always @(posedge clk) tr <= term;
+            wire [PW*4*NG-1:0] tp;
+            if (4 * NG > NT) begin : g_pad
+                assign tp = {{(PW*(4*NG-NT)){1'b0}}, tr};
+            end else begin : g_nopad
+                assign tp = tr;
+            end
+            // Group sums (t0 + t1) + (t2 + t3), registered with REG >= 2.
+            wire [PW*NG-1:0] gs;
+            reg  [PW*NG-1:0] gr;
+            for (i = 0; i < NG; i = i + 1) begin : g_grp
+                wire [PW-1:0] t0 = tp[PW*(4*i) +: PW], t1 = tp[PW*(4*i+1) +: PW];
+                wire [PW-1:0] t2 = tp[PW*(4*i+2) +: PW], t3 = tp[PW*(4*i+3) +: PW];
+                assign gs[PW*i +: PW] = (t0 + t1) + (t2 + t3);
+            end
+            if (REG >= 2) begin : g_reg2
+                always @(posedge clk) gr <= gs;
+            end else begin : g_reg1
+                always @(*) gr = gs;
+            end
+            // Sum of the groups (at most 4 in every use: up to 16 terms), a tree again.
+            wire [PW*4-1:0] gp;
+            if (NG < 4) begin : g_gpad
+                assign gp = {{(PW*(4-NG)){1'b0}}, gr};
+            end else begin : g_gnopad
+                assign gp = gr[PW*4-1:0];
+            end
+            assign p = (gp[0 +: PW] + gp[PW +: PW]) + (gp[2*PW +: PW] + gp[3*PW +: PW]);
+            if (NG > 4) begin : g_too_many
+                uvt_mul_REG_supports_at_most_16_terms error ();   // elaboration error
+            end
+        end
+    endgenerate
+endmodule
+
+// uvt_dly — N clocks of delay of a W-bit value (N = 0: the value itself; clk unused): the
+// registers beside a pipelined product (uvt_bsample.v, uvt_psample.v with PIPE = 1).
+module uvt_dly #(
+    parameter W = 1,
+    parameter N = 0
+) (
+    input  wire         clk,
+    input  wire [W-1:0] d,
+    output wire [W-1:0] q
+);
+    generate
+        if (N == 0) begin : g_wire
+            assign q = d;
+        end else if (N == 1) begin : g_one
+            reg [W-1:0] r;
+            always @(posedge clk) r <= d;
+            assign q = r;
+        end else begin : g_many
+            reg [W*N-1:0] r;
+            always @(posedge clk) r <= {r[W*(N-1)-1:0], d};
+            assign q = r[W*N-1 -: W];
+        end
+    endgenerate
 endmodule

@@ -23,10 +23,13 @@
 //   1  inputs; gx = 2xs − 256W, gy = 256H − 2ys, 256W (21 bits signed each)
 //   2  direction: 3 products 21 × 13 (gx·H, gy·W, 256W·H), each truncated to 32 bits (exact)
 //   3  12 products 32 × 32 → 64: n_k,i · d_i (9) and G_i · d_i (3)
-//   4  sums E_k = Σ_i n_k,i·d_i and acc = Σ_i G_i·d_i (64 bits, exact)
+//   4  sums E_k = Σ_i n_k,i·d_i and acc = Σ_i G_i·d_i (64 bits, exact); the depth shift
+//      amount clamp(f + 33, 0, 96), which depends on f alone
 //   5  coverage (sign tests, fill rule); depth shift: acc·2^33 arithmetically shifted right by
-//      clamp(f + 33, 0, 96) (= the floor for f >= −33), saturation flag for f < −33, acc ≠ 0
+//      that amount (= the floor for f >= −33), saturation flag for f < −33, acc ≠ 0
 //   6  clamp to the depth range, 0 when not covered; outputs registered
+// With PIPE = 1 the products of stage 2 take one more clock and those of stage 3 two more
+// (uvt_mul REG, all on hard multipliers): LAT = 9.
 // Every product goes through uvt_mul.v, which tiles it into hard multipliers as the cost model
 // (host/src/cost.rs, host/src/planar.rs PRODUCTS) counts: 3·1 + 12·2 = 27 DSP48E1 (25 × 18),
 // 3·1 + 12·4 = 51 MULT18X18D (18 × 18).
@@ -45,7 +48,10 @@ module uvt_psample #(
     // Xilinx DSP48E1 (the default), 18 × 18 for Lattice ECP5 MULT18X18D
     parameter DSP_A = 25,
     parameter DSP_B = 18,
-    parameter LUTW = 8
+    parameter LUTW = 8,
+    // PIPE = 1: registers inside the products (uvt_mul REG: 1 in stage 2, 2 in stage 3), all
+    // on hard multipliers, for a faster clock: LAT = 9 instead of 6 (same results)
+    parameter PIPE = 0
 ) (
     input  wire               clk,
     input  wire               in_valid,
@@ -62,7 +68,10 @@ module uvt_psample #(
     output wire signed [31:0] depth,
     output wire [191:0]       e
 );
-    localparam LAT = 6;
+    localparam R2 = PIPE ? 1 : 0;      // clocks inside the stage-2 products (uvt_mul REG)
+    localparam R3 = PIPE ? 2 : 0;      // and inside the stage-3 products
+    localparam LWE = PIPE ? 0 : LUTW;  // a LUT chunk's rows are a serial adder chain
+    localparam LAT = 6 + R2 + R3;
 
     reg [LAT:1] vld;
     always @(posedge clk) vld <= {vld[LAT-1:1], in_valid};
@@ -90,9 +99,11 @@ module uvt_psample #(
 
     // ---- stage 2: d = (gx·H, gy·W, 256W·H) ---------------------------------------------------
     wire signed [33:0] px, py, pw;
-    uvt_mul #(.AW(21), .BW(13), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_dx (s1_gx, s1_h, px);
-    uvt_mul #(.AW(21), .BW(13), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_dy (s1_gy, s1_w, py);
-    uvt_mul #(.AW(21), .BW(13), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_dw (s1_w8, s1_h, pw);
+    uvt_mul #(.AW(21), .BW(13), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(R2)) m_dx (s1_gx, s1_h, px, clk);
+    uvt_mul #(.AW(21), .BW(13), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(R2)) m_dy (s1_gy, s1_w, py, clk);
+    uvt_mul #(.AW(21), .BW(13), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(R2)) m_dw (s1_w8, s1_h, pw, clk);
+    wire [392:0] s1d;                  // {n, g, neg, f} beside the products
+    uvt_dly #(.W(393), .N(R2)) dl_s1 (clk, {s1_n, s1_g, s1_neg, s1_f}, s1d);
     reg [95:0]  s2_d;                  // |d_i| <= 2^30: the low 32 bits are exact
     reg [287:0] s2_n;
     reg [95:0]  s2_g;
@@ -100,10 +111,7 @@ module uvt_psample #(
     reg signed [7:0] s2_f;
     always @(posedge clk) begin
         s2_d <= {pw[31:0], py[31:0], px[31:0]};
-        s2_n <= s1_n;
-        s2_g <= s1_g;
-        s2_neg <= s1_neg;
-        s2_f <= s1_f;
+        {s2_n, s2_g, s2_neg, s2_f} <= s1d;
     end
 
     // ---- stage 3: n_k,i·d_i and G_i·d_i -----------------------------------------------------
@@ -119,7 +127,7 @@ module uvt_psample #(
                 wire signed [31:0] a = s2_n[32*(3*k+i) +: 32];
                 wire signed [31:0] b = s2_d[32*i +: 32];
                 wire signed [63:0] p;
-                uvt_mul #(.AW(32), .BW(32), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_e (a, b, p);
+                uvt_mul #(.AW(32), .BW(32), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(R3)) m_e (a, b, p, clk);
                 always @(posedge clk) s3_pn[64*(3*k+i) +: 64] <= p;
             end
         end
@@ -127,22 +135,22 @@ module uvt_psample #(
             wire signed [31:0] a = s2_g[32*i +: 32];
             wire signed [31:0] b = s2_d[32*i +: 32];
             wire signed [63:0] p;
-            uvt_mul #(.AW(32), .BW(32), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_g (a, b, p);
+            uvt_mul #(.AW(32), .BW(32), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(R3)) m_g (a, b, p, clk);
             always @(posedge clk) s3_pg[64*i +: 64] <= p;
         end
     endgenerate
-    always @(posedge clk) begin
-        s3_n <= s2_n;
-        s3_neg <= s2_neg;
-        s3_f <= s2_f;
-    end
+    wire [296:0] s2d;                  // {n, neg, f} beside the products
+    uvt_dly #(.W(297), .N(R3)) dl_s2 (clk, {s2_n, s2_neg, s2_f}, s2d);
+    always @(posedge clk) {s3_n, s3_neg, s3_f} <= s2d;
 
     // ---- stage 4: E_k and acc (each |.| < 3·2^61: no overflow in 64 bits) ------------------
     reg [3*64-1:0] s4_e;
     reg signed [63:0] s4_acc;
+    wire signed [8:0] amt9 = s3_f + 9'sd33;
     reg [287:0] s4_n;
     reg         s4_neg;
-    reg signed [7:0] s4_f;
+    reg signed [8:0] s4_amt9;          // f + 33 (below)
+    reg [6:0]   s4_amt;                // its clamp: the depth shift, ready before stage 5
     generate
         for (k = 0; k < 3; k = k + 1) begin : g_sum
             always @(posedge clk)
@@ -155,7 +163,8 @@ module uvt_psample #(
         s4_acc <= $signed(s3_pg[0 +: 64]) + $signed(s3_pg[64 +: 64]) + $signed(s3_pg[128 +: 64]);
         s4_n <= s3_n;
         s4_neg <= s3_neg;
-        s4_f <= s3_f;
+        s4_amt9 <= amt9;
+        s4_amt <= (amt9 < 0) ? 7'd0 : (amt9 > 96) ? 7'd96 : amt9[6:0];
     end
 
     // ---- stage 5: coverage; depth shift -----------------------------------------------------
@@ -175,15 +184,15 @@ module uvt_psample #(
     endgenerate
     // acc·2^33 >>> clamp(f + 33, 0, 96): floor(acc / 2^min(f, 63)) for f >= 0, the exact
     // acc·2^(−f) for −33 <= f < 0; below −33 any acc ≠ 0 leaves the depth range (|.| >= 2^34).
-    wire signed [8:0]  amt9 = s4_f + 9'sd33;
-    wire [6:0]         amt = (amt9 < 0) ? 7'd0 : (amt9 > 96) ? 7'd96 : amt9[6:0];
+    // The shift (s4_amt) depends on f alone: computed in stage 4, beside the sums.
+    wire [6:0]         amt = s4_amt;
     wire signed [96:0] x97 = {s4_acc, 33'd0};
     reg  signed [96:0] s5_sv;
     reg                s5_big, s5_neg_acc, s5_cov;
     reg [3*64-1:0]     s5_e;
     always @(posedge clk) begin
         s5_sv <= x97 >>> amt;
-        s5_big <= (amt9 < 0) && (s4_acc != 0);
+        s5_big <= (s4_amt9 < 0) && (s4_acc != 0);
         s5_neg_acc <= s4_acc[63];
         s5_cov <= &inside;
         s5_e <= s4_e;

