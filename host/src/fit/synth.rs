@@ -145,6 +145,24 @@ mod tests {
     use crate::config::units::{unit_sample_cost, UNITS};
     use uvt_core::config::registry::Config;
 
+    /// The table row `bounds_md` / `planar_md` print for a unit: estimates beside `syn`.
+    fn table_row(
+        unit: &str,
+        dsp: impl std::fmt::Display,
+        ecp5: impl std::fmt::Display,
+        syn: &SynthUnit,
+    ) -> String {
+        format!(
+            "| {unit} | {dsp} | {} / {} / {} | {ecp5} | {} / {} / {} |",
+            syn.xilinx.dsp48e1,
+            syn.xilinx.lut,
+            syn.xilinx.ff,
+            syn.ecp5.mult18x18d,
+            syn.ecp5.lut4,
+            syn.ecp5.ff
+        )
+    }
+
     fn committed() -> (&'static str, Vec<SynthUnit>) {
         let path = concat!(env!("CARGO_MANIFEST_DIR"), "/report/synth.json");
         (path, load_units(Path::new(path)).unwrap().unwrap())
@@ -190,17 +208,7 @@ mod tests {
             "static-only at {name}: estimate (DSP48E1, MULT18X18D) against synthesized ({path})"
         );
         let md = planar_md(Some(&units), Path::new(path));
-        let row = format!(
-            "| static-only | {} | {} / {} / {} | {} | {} / {} / {} |",
-            est.dsp48e1,
-            syn.xilinx.dsp48e1,
-            syn.xilinx.lut,
-            syn.xilinx.ff,
-            est.ecp5,
-            syn.ecp5.mult18x18d,
-            syn.ecp5.lut4,
-            syn.ecp5.ff
-        );
+        let row = table_row("static-only", est.dsp48e1, est.ecp5, syn);
         assert!(md.contains(&row), "{md}");
         assert!(planar_md(None, Path::new(path)).contains("not synthesized"));
     }
@@ -281,17 +289,7 @@ mod tests {
             "the bounds/tile estimate is not the RTL's products: {est:?}"
         );
         let md = bounds_md(Some(&units), Path::new(path));
-        let row = format!(
-            "| bounds | {} | {} / {} / {} | {} | {} / {} / {} |",
-            est.dsp48e1,
-            syn.xilinx.dsp48e1,
-            syn.xilinx.lut,
-            syn.xilinx.ff,
-            est.ecp5,
-            syn.ecp5.mult18x18d,
-            syn.ecp5.lut4,
-            syn.ecp5.ff
-        );
+        let row = table_row("bounds", est.dsp48e1, est.ecp5, syn);
         assert!(md.contains(&row), "{md}");
         assert!(bounds_md(None, Path::new(path)).contains("not synthesized"));
     }
