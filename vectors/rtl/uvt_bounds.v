@@ -9,6 +9,10 @@
 //        that grid (`Interval::round_out`; a no-op at 16)
 //   DSP_A, DSP_B, LUTW  the multiplier tiling of every product (uvt_mul.v): 25 × 18 for DSP48E1
 //        (default), 18 × 18 for ECP5
+//   PIPE 0 (default): LAT = 26; 1: LAT = 27, the same results one clock later: the lens
+//        products registered inside uvt_mul (REG = 2: the lens path then ends at stage 9, still
+//        ahead of the dual path) and stage 26 split in two (docs/rtl.md "Placed and routed
+//        speed" for what each gives)
 // The default configuration bounded-16-16-16-20 (and the exact one) is BND = TUV = 16, the only
 // values the committed records exercise (tests/tests/bounds_rtl.rs); others are untested.
 //
@@ -24,7 +28,8 @@
 //   dual_xi[32(2a+e) +: 32]   footprint start ξa (e = 0) and end ξb (e = 1) of axis a
 //   dual_delta[64(8a+4m+2t+e) +: 64]  δmin (m = 0) / δmax (m = 1) at time t, footprint end e
 //   nonempty, u_lo, u_hi, v_lo, v_hi, t_lo, t_hi   bounds_out words 0..6 (the box; all zero
-//                       when the tile is empty), with out_valid, LAT = 26 clocks after in_valid
+//                       when the tile is empty), with out_valid, LAT = 26 + PIPE clocks after
+//                       in_valid
 // The unit reads the bits the model's ranges allow (core/src/bounds/laine.rs and the width table,
 // `uvt widths`, core/README.md): |base| < 2^58, |d| ≤ 3·2^56 (so |n| < 2^58 where it is
 // multiplied, and n·r < 2^81), r ≤ 2^80 (81 bits), |δ| < 2^44 (45 bits), ξ < 2^16; every line
@@ -36,7 +41,8 @@
 //          3  the cases of `RecipConstraint::solve`: d > 0: n < 0 empty, n ≥ d all of [0, 1];
 //             d < 0: n ≥ 0 all, |n| > |d| empty; d = 0: n ≥ 0 all, else empty; otherwise the
 //             product |n| · (d > 0 ? r_up : r_dn)
-//          4  the product, exact in 82 bits (uvt_mul; `mul_shr64`'s n·r)
+//          4  the product, exact in 82 bits (uvt_mul; `mul_shr64`'s n·r); with PIPE = 1 it
+//             is registered inside uvt_mul and stages 4–7 below become 6–9
 //          5  q = product >> 64, plus 1 when d > 0 and the low 64 bits are nonzero (ceil);
 //             clamped to 1: d > 0 gives s ∈ [0, q], d < 0 gives s ∈ [q, 1]
 //          6  `meet` of [0, 1] with the present sides (empty when one is empty or lo > hi)
@@ -54,7 +60,8 @@
 //          24  the intervals [0, q + (rem ≠ 0)] (d > 0) and [q, 1] (d < 0)
 //          25  their `meet`, then `round_out(TUV)`
 //   26     t = span ∩ the present axes' t intervals; nonempty unless a present lens axis or
-//          dual axis is empty or t is; the outputs registered (zero when empty)
+//          dual axis is empty or t is; the outputs registered (zero when empty). With PIPE = 1
+//          the meet is registered in 26 and the emptiness test and the outputs are stage 27.
 // No reset: hold in_valid low for LAT clocks after power-up (the valid pipeline fills with 0).
 `timescale 1ns / 1ps
 module uvt_bounds #(
@@ -62,7 +69,8 @@ module uvt_bounds #(
     parameter TUV = 16,
     parameter DSP_A = 25,
     parameter DSP_B = 18,
-    parameter LUTW = 8
+    parameter LUTW = 8,
+    parameter PIPE = 0
 ) (
     input  wire               clk,
     input  wire               in_valid,
@@ -89,7 +97,8 @@ module uvt_bounds #(
     output reg signed [31:0]  t_lo,
     output reg signed [31:0]  t_hi
 );
-    localparam LAT = 26;
+    localparam LAT = 26 + PIPE;
+    localparam MR = 2 * PIPE;  // clocks inside the lens products (uvt_mul REG)
     localparam signed [17:0] ONE = 18'sd65536;     // 1.0 in t/u/v raw units
     localparam signed [17:0] STEP = 18'sd1 <<< (16 - TUV);   // the TUV grid's step
     localparam NW = 66;        // n = ±(x·2^BND − base), signed
@@ -185,15 +194,19 @@ module uvt_bounds #(
             end
             // stage 4: n·r (exact: < 2^81)
             wire signed [MW+RW+1:0] p;
-            uvt_mul #(.AW(MW+1), .BW(RW+1), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_nr (
+            // With PIPE the product takes MR more clocks; its case code and d's sign wait for it.
+            uvt_mul #(.AW(MW+1), .BW(RW+1), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(MR)) m_nr (
                 $signed({1'b0, s3_m}), $signed({1'b0, s3_r}), p, clk);
+            wire [1:0] s3_code_d;
+            wire s3_up_d;
+            uvt_dly #(.W(3), .N(MR)) dl_code (clk, {s3_code, s3_up}, {s3_code_d, s3_up_d});
             reg [PW-1:0] s4_p;
             reg [1:0] s4_code;
             reg s4_up;
             always @(posedge clk) begin
                 s4_p <= p[PW-1:0];
-                s4_code <= s3_code;
-                s4_up <= s3_up;
+                s4_code <= s3_code_d;
+                s4_up <= s3_up_d;
             end
             // stage 5: ÷2^64, ceil for d > 0, clamp to 1
             wire [PW-64:0] q = s4_p[PW-1:64] + (s4_up && s4_p[63:0] != 64'd0);
@@ -349,12 +362,13 @@ module uvt_bounds #(
     endgenerate
 
     // ---- delays to stage 25: the lens results (from 7), span and flags (from 1) -------------
-    localparam UW = 2 * 18 * 2 + 2;    // u, v: lo, hi, empty (stage 7 → 25: 18 registers)
+    localparam UW = 2 * 18 * 2 + 2;    // u, v: lo, hi, empty (stage 7 + MR → 25: 18 − MR registers)
+    localparam UD = 18 - MR;
     localparam XW = 64 + 2;            // span, dual_on (stage 1 → 25: 24 registers)
-    reg [18*UW-1:0] u_d;
+    reg [UD*UW-1:0] u_d;
     reg [24*XW-1:0] x_d;
     always @(posedge clk) begin
-        u_d <= {u_d[17*UW-1:0], s7_lo, s7_hi, s7_e};
+        u_d <= {u_d[(UD-1)*UW-1:0], s7_lo, s7_hi, s7_e};
         x_d <= {x_d[23*XW-1:0], s1_slo, s1_shi, s1_don};
     end
 
@@ -362,7 +376,7 @@ module uvt_bounds #(
     wire [2*18-1:0] ul, uh;
     wire [1:0] ue, don;
     wire signed [31:0] slo, shi;
-    assign {ul, uh, ue} = u_d[17*UW +: UW];
+    assign {ul, uh, ue} = u_d[(UD-1)*UW +: UW];
     assign {slo, shi, don} = x_d[23*XW +: XW];
     wire signed [31:0] txl = don[0] ? $signed(s25_lo[0 +: 18]) : -32'sd65536;
     wire signed [31:0] txh = don[0] ? $signed(s25_hi[0 +: 18]) : 32'sd65536;
@@ -370,14 +384,22 @@ module uvt_bounds #(
     wire signed [31:0] tyh = don[1] ? $signed(s25_hi[18 +: 18]) : 32'sd65536;
     wire signed [31:0] m1 = slo > txl ? slo : txl, tl = m1 > tyl ? m1 : tyl;
     wire signed [31:0] m2 = shi < txh ? shi : txh, th = m2 < tyh ? m2 : tyh;
-    wire ok = !(ue[0] | ue[1] | (don[0] & s25_e[0]) | (don[1] & s25_e[1])) && tl <= th;
+    wire bad = ue[0] | ue[1] | (don[0] & s25_e[0]) | (don[1] & s25_e[1]);
+    // PIPE = 1: the meet, the flags and the lens results registered here (stage 26), the test
+    // tl ≤ th and the outputs one clock later.
+    wire signed [31:0] tl_p, th_p;
+    wire bad_p;
+    wire [2*18-1:0] ul_p, uh_p;
+    uvt_dly #(.W(2 * 32 + 1 + 4 * 18), .N(PIPE)) dl_meet (clk, {tl, th, bad, ul, uh},
+                                                        {tl_p, th_p, bad_p, ul_p, uh_p});
+    wire ok = !bad_p && tl_p <= th_p;
     always @(posedge clk) begin
         nonempty <= ok;
-        u_lo <= ok ? $signed(ul[0 +: 18]) : 32'sd0;
-        u_hi <= ok ? $signed(uh[0 +: 18]) : 32'sd0;
-        v_lo <= ok ? $signed(ul[18 +: 18]) : 32'sd0;
-        v_hi <= ok ? $signed(uh[18 +: 18]) : 32'sd0;
-        t_lo <= ok ? tl : 32'sd0;
-        t_hi <= ok ? th : 32'sd0;
+        u_lo <= ok ? $signed(ul_p[0 +: 18]) : 32'sd0;
+        u_hi <= ok ? $signed(uh_p[0 +: 18]) : 32'sd0;
+        v_lo <= ok ? $signed(ul_p[18 +: 18]) : 32'sd0;
+        v_hi <= ok ? $signed(uh_p[18 +: 18]) : 32'sd0;
+        t_lo <= ok ? tl_p : 32'sd0;
+        t_hi <= ok ? th_p : 32'sd0;
     end
 endmodule

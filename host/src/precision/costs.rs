@@ -128,7 +128,7 @@ impl Costs {
             return String::new();
         };
         let mut s = format!(
-            "\nPlaced and routed for a Lattice ECP5 ({}; `{}`, {}, seed {}, target {} MHz; from `{}`):\n\n| unit | top | configuration | Fmax MHz | results/s | MULT18X18D | TRELLIS_COMB (LUT4, carry) | TRELLIS_FF | critical path (from → to) |\n|---|---|---|---|---|---|---|---|---|\n",
+            "\nPlaced and routed for a Lattice ECP5 ({}; `{}`, {}, seed {}, target {} MHz; from `{}`):\n\n| unit | top | configuration | Fmax MHz | results/s | MULT18X18D | TRELLIS_COMB (LUT4, carry) | TRELLIS_FF | of them the harness's | critical path (from → to) | nextpnr options |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
             v["device"].as_str().unwrap_or("?"),
             v["script"].as_str().unwrap_or("?"),
             v["nextpnr"].as_str().unwrap_or("?"),
@@ -142,7 +142,7 @@ impl Costs {
         };
         for u in v["units"].as_array().into_iter().flatten() {
             s += &format!(
-                "| {} | `{}` | {} | {:.1} | {:.1} M ({}) | {} | {} | {} | `{}` → `{}` ({:.2} ns) |\n",
+                "| {} | `{}` | {} | {:.1} | {:.1} M ({}) | {} | {} | {} | {} | `{}` → `{}` ({:.2} ns) | {} |\n",
                 u["unit"].as_str().unwrap_or("?"),
                 u["top"].as_str().unwrap_or("?"),
                 u["config"].as_str().unwrap_or("?"),
@@ -152,9 +152,18 @@ impl Costs {
                 used(u, "MULT18X18D"),
                 used(u, "TRELLIS_COMB"),
                 used(u, "TRELLIS_FF"),
+                // In context the counts include pnr.sh's harness (one flip-flop per input and
+                // output bit); out of context there is none.
+                u["harness"]["TRELLIS_FF"]
+                    .as_u64()
+                    .map_or("–".to_string(), |n| format!("{n} FF")),
                 u["critical_path"]["from"].as_str().unwrap_or("?"),
                 u["critical_path"]["to"].as_str().unwrap_or("?"),
                 u["critical_path"]["ns"].as_f64().unwrap_or(f64::NAN),
+                match u["nextpnr_args"].as_str() {
+                    Some(a) if !a.is_empty() => format!("`{a}`"),
+                    _ => "–".to_string(),
+                },
             );
         }
         s
@@ -200,10 +209,11 @@ impl Costs {
             .iter()
             .map(|u| {
                 format!(
-                    "ECP5 P&R {}: {:.1} MHz, {:.1} M/s",
+                    "ECP5 P&R {}: {:.1} MHz, {:.1} M {}s/s",
                     u["unit"].as_str().unwrap_or("?"),
                     u["fmax_mhz"].as_f64().unwrap_or(f64::NAN),
-                    u["results_per_second"].as_f64().unwrap_or(f64::NAN) / 1e6
+                    u["results_per_second"].as_f64().unwrap_or(f64::NAN) / 1e6,
+                    u["result"].as_str().unwrap_or("result")
                 )
             })
             .collect();

@@ -168,6 +168,7 @@ impl<B: BoundsStrategy, P: Precision> Pipeline for MotionPipeline<B, P> {
     fn admits(tile: &MotionTile, s: &Sample, _: &mut Ops) -> bool {
         match *tile {
             MotionTile::Static => true,
+            // slab_of < SLABS ≤ u8::BITS (asserted at SLABS): the shift is in range.
             MotionTile::Slabs(mask) => (mask >> slab_of(s.t().to_bits())) & 1 != 0,
         }
     }

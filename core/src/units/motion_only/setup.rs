@@ -13,6 +13,8 @@ use crate::stats::Ops;
 
 /// Number of equal time slabs of the shutter with their own screen box.
 pub const SLABS: usize = 4;
+// A tile's slab mask is a `u8` (`MotionTile::Slabs`): one bit per slab, shifts by < 8.
+const _: () = assert!(SLABS <= u8::BITS as usize);
 
 /// One static or moving in-focus triangle's data for the slab cull and the sample test. Built
 /// only by [`motion_setup`] from a checked [`Triangle`] and [`Viewport`], so every field is in
