@@ -41,6 +41,20 @@ fn run(tb: &Path, set: &Path) -> String {
     icarus::run_vectors(tb, set, "psample", &[])
 }
 
+/// Run the bench `tb` on committed set `set`, assert it passes every planar record of the set
+/// (`what` names the build in the message), and return its output.
+fn passes_set(tb: &Path, set: &str, what: &str) -> String {
+    let out = run(tb, &committed().join(set));
+    let n = manifest(set)["psample_coverage"]["records"]
+        .as_u64()
+        .unwrap();
+    assert!(
+        out.lines().any(|l| l == format!("PASS {n} records")),
+        "{what} {set}: {out}"
+    );
+    out
+}
+
 fn records(set: &Path, file: &str) -> Vec<Vec<u32>> {
     std::fs::read_to_string(set.join(file))
         .unwrap()
@@ -189,24 +203,10 @@ fn rtl_planar_unit_passes_every_committed_record() {
     let dir = tempfile::tempdir().unwrap();
     let tb = build(dir.path(), (25, 18));
     for set in ["unit", "frame_a", "frame_b"] {
-        let out = run(&tb, &committed().join(set));
-        let n = manifest(set)["psample_coverage"]["records"]
-            .as_u64()
-            .unwrap();
-        assert!(
-            out.lines().any(|l| l == format!("PASS {n} records")),
-            "{set}: {out}"
-        );
+        passes_set(&tb, set, "DSP48E1 tiling");
     }
     let ecp5 = build(dir.path(), (18, 18));
-    let out = run(&ecp5, &committed().join("frame_a"));
-    let n = manifest("frame_a")["psample_coverage"]["records"]
-        .as_u64()
-        .unwrap();
-    assert!(
-        out.lines().any(|l| l == format!("PASS {n} records")),
-        "{out}"
-    );
+    passes_set(&ecp5, "frame_a", "ECP5 tiling");
 }
 
 /// The faster build (`PIPE = 1`: registers inside the products, as `vectors/rtl/pnr.sh`
@@ -233,14 +233,7 @@ fn rtl_pipelined_planar_unit_passes_committed_records_with_its_latency() {
             &["uvt_mul.v", "uvt_psample.v", "tb_psample.v"],
         );
         for set in sets {
-            let out = run(&tb, &committed().join(set));
-            let n = manifest(set)["psample_coverage"]["records"]
-                .as_u64()
-                .unwrap();
-            assert!(
-                out.lines().any(|l| l == format!("PASS {n} records")),
-                "{ports:?} {set}: {out}"
-            );
+            let out = passes_set(&tb, set, &format!("PIPE = 1, {ports:?}"));
             assert!(out.lines().any(|l| l == "LATENCY 9 clocks"), "{out}");
         }
     }
