@@ -304,6 +304,64 @@ fn rtl_multiplier_is_exact_and_tiles_as_the_cost_model_counts() {
     }
 }
 
+/// The pipelined forms of `uvt_mul.v` (`REG` = 1, 2: registered terms, a LUT chunk's rows
+/// summed four at a time, as the units' `PIPE = 1` builds use them) are the exact product with
+/// the same tiling as the combinational form, at the LUT chunk limits the place-and-route units
+/// use: 17 bits (up to 15 rows in 4 terms) on the ECP5 ports for the sample test's pairs, and
+/// 8 bits for the bounds unit's 59 × 82 product (17 terms: the three-level group sum).
+#[test]
+fn rtl_pipelined_multiplier_is_exact_and_tiles_as_the_combinational_one() {
+    let seed = seed();
+    let nr = if extensive() { 20_000 } else { 300 };
+    let dir = tempfile::tempdir().unwrap();
+    let p = |k: &'static str, v: u32| (k, v.to_string());
+    let pairs = [
+        (18, 32),
+        (18, 31),
+        (13, 32),
+        (22, 31),
+        (31, 31),
+        (62, 31),
+        (25, 31),
+    ];
+    let runs = pairs.iter().map(|&(a, b)| (a, b, 17)).chain([(59, 82, 8)]);
+    for (a, b, lw) in runs {
+        let mut lines = Vec::new();
+        for reg in 0..3 {
+            let tb = icarus::compile(
+                &dir.path().join(format!("mul-{a}x{b}-{lw}-{reg}.vvp")),
+                &[
+                    p("tb_mul.AW", a),
+                    p("tb_mul.BW", b),
+                    p("tb_mul.PA", 18),
+                    p("tb_mul.PB", 18),
+                    p("tb_mul.LW", lw),
+                    p("tb_mul.REG", reg),
+                ],
+                &["uvt_mul.v", "tb_mul.v"],
+            );
+            let out = icarus::run(&tb, &[format!("+SEED={seed}"), format!("+NR={nr}")]);
+            let pass = out
+                .lines()
+                .find(|l| l.starts_with("PASS "))
+                .unwrap_or_else(|| {
+                    panic!("{a} × {b}, LW = {lw}, REG = {reg} (UVT_SEED={seed}): {out}")
+                });
+            lines.push(pass.to_string());
+        }
+        assert!(
+            lines.iter().all(|l| *l == lines[0]),
+            "{a} × {b}, LW = {lw}: REG 0, 1, 2 tile differently: {lines:?}"
+        );
+        assert!(lines[0].contains("LUT bits (swap"), "{}", lines[0]);
+        assert!(
+            !lines[0].contains(", 0 LUT bits"),
+            "{a} × {b}: no LUT chunk: {}",
+            lines[0]
+        );
+    }
+}
+
 /// The unit with its multipliers tiled for the ECP5's 18 × 18 ports is bit-identical too (the
 /// frame_b set; every set under `UVT_EXTENSIVE=1`).
 #[test]
@@ -323,56 +381,72 @@ fn rtl_sample_test_unit_with_ecp5_tiling_passes_committed_records() {
 }
 
 /// The faster build (`PIPE = 1`: registers inside every product and in the wide adder stages,
-/// as `vectors/rtl/pnr.sh` places and routes it) is bit-identical with the ECP5 tiling (frame_b;
-/// every set under `UVT_EXTENSIVE=1`, and the DSP48E1 tiling on frame_a), with the latencies the
-/// docs state, 23 and 63 clocks; the default build's are 11 and 46.
+/// as `vectors/rtl/pnr.sh` places and routes it) is bit-identical with the ECP5 tiling at the
+/// LUT chunk limits pnr.sh builds, 8 and 17 bits (frame_b; every set under `UVT_EXTENSIVE=1`,
+/// and the DSP48E1 tiling on frame_a), with the latencies the docs state, 23 and 63 clocks;
+/// the default build's are 11 and 46, with 17-bit LUT chunks too (every 16th record of frame_b;
+/// all of them under `UVT_EXTENSIVE=1`: the serial LUT rows make this build slow in Icarus).
 #[test]
 fn rtl_pipelined_unit_passes_committed_records_with_its_latency() {
     let dir = tempfile::tempdir().unwrap();
     let p = |k: &'static str, v: u32| (k, v.to_string());
-    let pipe = |ports: (u32, u32)| {
+    let unit = |ports: (u32, u32), lutw: u32, pipe: u32| {
         icarus::compile(
             &dir.path()
-                .join(format!("tb-pipe-{}x{}.vvp", ports.0, ports.1)),
+                .join(format!("tb-pipe{pipe}-{}x{}-{lutw}.vvp", ports.0, ports.1)),
             &[
                 p("tb_bsample.DSP_A", ports.0),
                 p("tb_bsample.DSP_B", ports.1),
-                p("tb_bsample.PIPE", 1),
+                p("tb_bsample.LUTW", lutw),
+                p("tb_bsample.PIPE", pipe),
             ],
             &["uvt_mul.v", "uvt_bsample.v", "tb_bsample.v"],
         )
     };
-    let mut runs = vec![((18, 18), "frame_b")];
+    let mut runs = vec![((18, 18), 8, "frame_b"), ((18, 18), 17, "frame_b")];
     if extensive() {
         runs.extend([
-            ((18, 18), "unit"),
-            ((18, 18), "frame_a"),
-            ((25, 18), "frame_a"),
+            ((18, 18), 8, "unit"),
+            ((18, 18), 8, "frame_a"),
+            ((18, 18), 17, "unit"),
+            ((25, 18), 8, "frame_a"),
         ]);
     }
-    for (ports, set) in runs {
-        let out = run(&pipe(ports), &committed().join(set));
+    for (ports, lutw, set) in runs {
+        let out = run(&unit(ports, lutw, 1), &committed().join(set));
         let n = coverage(set)["records"].as_u64().unwrap();
         assert!(
             out.contains(&format!("PASS {n} records")),
-            "{ports:?} {set}: {out}"
+            "{ports:?} LUTW {lutw} {set}: {out}"
         );
         assert!(
             out.lines().any(|l| l == "LATENCY edge 23 depth 63 clocks"),
-            "{ports:?} {set}: {out}"
+            "{ports:?} LUTW {lutw} {set}: {out}"
         );
     }
-    // The default build's latency, on every 40th record of frame_b.
-    let out = icarus::run_vectors(
-        &build(dir.path(), Grid::DEFAULT),
-        &committed().join("frame_b"),
-        "bsample",
-        &["+STRIDE=40".to_string()],
-    );
-    assert!(
-        out.lines().any(|l| l == "LATENCY edge 11 depth 46 clocks"),
-        "{out}"
-    );
+    // The default build's latency, on every 40th record of frame_b; with 17-bit LUT chunks
+    // (pnr.sh's bsample-lut17) on every 16th.
+    for (tb, stride) in [
+        (build(dir.path(), Grid::DEFAULT), 40),
+        (unit((18, 18), 17, 0), if extensive() { 1 } else { 16 }),
+    ] {
+        let out = icarus::run_vectors(
+            &tb,
+            &committed().join("frame_b"),
+            "bsample",
+            &[format!("+STRIDE={stride}")],
+        );
+        let n = coverage("frame_b")["records"].as_u64().unwrap();
+        let checked = n.div_ceil(stride);
+        assert!(
+            out.contains(&format!("PASS {checked} records")),
+            "stride {stride}: {out}"
+        );
+        assert!(
+            out.lines().any(|l| l == "LATENCY edge 11 depth 46 clocks"),
+            "{out}"
+        );
+    }
 }
 
 /// Whether the unit with `terms` = (motion, defocus) accepts class index `class` (bit 0

@@ -157,6 +157,15 @@ fn committed_pnr_report_is_consistent() {
         assert_eq!(b["result"], "tile", "{name}");
     }
     assert_eq!(unit(&j, "bounds-pipe1")["params"]["PIPE"], 1);
+    // A routed bounded sample-test unit at the default configuration: 17-bit LUT chunks (the
+    // LUTW = 8 build does not route on the 85F, docs/rtl.md), fewer multipliers than the
+    // default tiling's 126.
+    let b = unit(&j, "bsample-lut17");
+    assert_eq!(b["top"], "uvt_bsample");
+    assert_eq!(b["config"], uvt_host::config::names::DEFAULT_NAME);
+    assert_eq!(b["params"]["LUTW"], 17);
+    let mult = b["resources"]["MULT18X18D"]["used"].as_u64().unwrap();
+    assert!(mult < 126, "bsample-lut17: {mult} MULT18X18D");
     let synth = load(&root().join("host/report/synth.json"));
     let sp = synth["units"]
         .as_array()

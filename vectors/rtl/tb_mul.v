@@ -1,7 +1,9 @@
 // tb_mul — uvt_mul against the plain `*` for one operand-width pair: every corner pair
 // (−2^(n−1), −2^(n−1)+1, −1, 0, 1, 2^(n−1)−1 of each operand) and NR seeded random pairs.
+// REG > 0 (the pipelined forms): each pair is held for REG clocks before p is compared.
 // Prints "PASS n products AWxBW: h hard multipliers, l LUT bits (layout)" or each mismatch with operands, expected and observed.
-//   iverilog -g2005 -Ptb_mul.AW=18 -Ptb_mul.BW=32 [-Ptb_mul.PA=25 -Ptb_mul.PB=18] uvt_mul.v tb_mul.v
+//   iverilog -g2005 -Ptb_mul.AW=18 -Ptb_mul.BW=32 [-Ptb_mul.PA=25 -Ptb_mul.PB=18 -Ptb_mul.LW=8
+//     -Ptb_mul.REG=0] uvt_mul.v tb_mul.v
 //   vvp -n a.out [+SEED=n] [+NR=n]
 `timescale 1ns / 1ps
 module tb_mul;
@@ -10,10 +12,12 @@ module tb_mul;
     parameter PA = 25;
     parameter PB = 18;
     parameter LW = 8;
+    parameter REG = 0;
+    reg clk = 1'b0;
     reg  signed [AW-1:0] a;
     reg  signed [BW-1:0] b;
     wire signed [AW+BW-1:0] p;
-    uvt_mul #(.AW(AW), .BW(BW), .PA(PA), .PB(PB), .LW(LW)) dut (.a(a), .b(b), .p(p), .clk(1'b0));
+    uvt_mul #(.AW(AW), .BW(BW), .PA(PA), .PB(PB), .LW(LW), .REG(REG)) dut (.a(a), .b(b), .p(p), .clk(clk));
     reg signed [AW+BW-1:0] want;
     reg signed [AW-1:0] ca [0:5];
     reg signed [BW-1:0] cb [0:5];
@@ -21,6 +25,11 @@ module tb_mul;
     task check;
         begin
             #1;
+            repeat (REG) begin
+                clk = 1'b1;
+                #1 clk = 1'b0;
+                #1;
+            end
             want = a * b;
             n = n + 1;
             if (p !== want) begin

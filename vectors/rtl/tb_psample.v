@@ -18,6 +18,7 @@
 module tb_psample;
     parameter DSP_A = 25;              // the unit's multiplier tiling (uvt_mul.v)
     parameter DSP_B = 18;
+    parameter LUTW = 8;
     parameter PIPE = 0;                // the unit's pipelining (uvt_psample.v; latency only)
     localparam WI = 28, WO = 8, MAXREC = 16384, LAT = 9;   // the longest: PIPE = 1
     reg [31:0] in_mem  [0:MAXREC*WI-1];
@@ -43,7 +44,7 @@ module tb_psample;
     );
     assign e = 0;                      // the internal edge values are not checked
 `else
-    `UVT_DUT #(.DSP_A(DSP_A), .DSP_B(DSP_B), .PIPE(PIPE)) dut (
+    `UVT_DUT #(.DSP_A(DSP_A), .DSP_B(DSP_B), .LUTW(LUTW), .PIPE(PIPE)) dut (
         .clk(clk), .in_valid(in_valid), .n(nn), .sigma(sigma), .f(f), .g(g), .vp_w(vp_w),
         .vp_h(vp_h), .xs(xs), .ys(ys), .out_valid(out_valid), .covered(covered),
         .depth(depth), .e(e)

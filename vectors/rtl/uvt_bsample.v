@@ -44,9 +44,9 @@ module uvt_bsample #(
     parameter DSP_A = 25,
     parameter DSP_B = 18,
     parameter LUTW = 8,
-    // PIPE = 1: registers inside every multiplier (uvt_mul REG = 2: the partial products and
-    // the sums of four) and in the wide adder stages, all products on hard multipliers (no LUT
-    // chunk), for a faster clock: LAT_EDGE = 23, LAT = 63 instead of 11, 46 (same results)
+    // PIPE = 1: registers inside every multiplier (uvt_mul REG = 2: the partial products, LUT
+    // chunks as sums of four rows, and the sums of four) and in the wide adder stages, for a
+    // faster clock: LAT_EDGE = 23, LAT = 63 instead of 11, 46 (same results)
     parameter PIPE = 0
 ) (
     input  wire               clk,
@@ -78,7 +78,6 @@ module uvt_bsample #(
     localparam RW = EW + 32;           // E'·w, sums of three
     localparam MR = PIPE ? 2 : 0;      // clocks inside each multiplier (uvt_mul REG)
     localparam P1 = PIPE ? 1 : 0;      // one more register where a wide stage is split
-    localparam LWE = PIPE ? 0 : LUTW;  // a LUT chunk's rows are a serial adder chain
     localparam LAT_EDGE = 11 + 2 * P1 + 5 * MR;
     localparam LAT = LAT_EDGE + 35 + MR + 3 * P1;
 
@@ -140,7 +139,7 @@ module uvt_bsample #(
                 uvt_dly #(.W(DW), .N(P1)) dl_d (clk, d, dd);
                 uvt_dly #(.W(FW), .N(P1 + MR)) dl_f0 (clk, f0, f0d);
                 wire signed [TW+DW-1:0] p;
-                uvt_mul #(.AW(TW), .BW(DW), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(MR)) m_t (s1_td, dd, p, clk);
+                uvt_mul #(.AW(TW), .BW(DW), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(MR)) m_t (s1_td, dd, p, clk);
                 always @(posedge clk) begin
                     s2_f0[FW*i +: FW] <= f0d;
                     s2_p[(TW+DW)*i +: TW+DW] <= p;
@@ -192,8 +191,8 @@ module uvt_bsample #(
                 wire signed [30:0] c = s3_f[31*(5*i+4) +: 31];
                 reg signed [TW+30:0] pu, pv;
                 wire signed [TW+30:0] mu, mv;
-                uvt_mul #(.AW(TW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(MR)) m_u (s3_u, c, mu, clk);
-                uvt_mul #(.AW(TW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(MR)) m_v (s3_v, c, mv, clk);
+                uvt_mul #(.AW(TW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(MR)) m_u (s3_u, c, mu, clk);
+                uvt_mul #(.AW(TW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(MR)) m_v (s3_v, c, mv, clk);
                 always @(posedge clk) begin
                     pu <= mu;
                     pv <= mv;
@@ -230,10 +229,10 @@ module uvt_bsample #(
             reg signed [52:0] mw, mh;      // gx·w, gy·w: |.| <= 2^48
             wire signed [44:0] px, py;
             wire signed [52:0] pw, ph;
-            uvt_mul #(.AW(13), .BW(32), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(MR)) m_x (s5_w, x, px, clk);
-            uvt_mul #(.AW(13), .BW(32), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(MR)) m_y (s5_h, y, py, clk);
-            uvt_mul #(.AW(22), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(MR)) m_w (s5_gx, w, pw, clk);
-            uvt_mul #(.AW(22), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(MR)) m_h (s5_gy, w, ph, clk);
+            uvt_mul #(.AW(13), .BW(32), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(MR)) m_x (s5_w, x, px, clk);
+            uvt_mul #(.AW(13), .BW(32), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(MR)) m_y (s5_h, y, py, clk);
+            uvt_mul #(.AW(22), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(MR)) m_w (s5_gx, w, pw, clk);
+            uvt_mul #(.AW(22), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(MR)) m_h (s5_gy, w, ph, clk);
             always @(posedge clk) begin
                 mx <= px;
                 my <= py;
@@ -269,8 +268,8 @@ module uvt_bsample #(
             wire signed [AW-1:0] bj = s7_b[AW*((i+2)%3) +: AW];
             reg signed [EW-1:0] p1, p2;
             wire signed [EW-1:0] q1, q2;
-            uvt_mul #(.AW(AW), .BW(AW), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(MR)) m_1 (ai, bj, q1, clk);
-            uvt_mul #(.AW(AW), .BW(AW), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(MR)) m_2 (aj, bi, q2, clk);
+            uvt_mul #(.AW(AW), .BW(AW), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(MR)) m_1 (ai, bj, q1, clk);
+            uvt_mul #(.AW(AW), .BW(AW), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(MR)) m_2 (aj, bi, q2, clk);
             always @(posedge clk) begin
                 p1 <= q1;
                 p2 <= q2;
@@ -306,7 +305,7 @@ module uvt_bsample #(
             wire signed [EW-1:0] ek = s9_e[EW*i +: EW];
             wire signed [30:0] wk = s9_wt[31*i +: 31];
             wire signed [EW+30:0] qk;
-            uvt_mul #(.AW(EW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(MR)) m_q (ek, wk, qk, clk);
+            uvt_mul #(.AW(EW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(MR)) m_q (ek, wk, qk, clk);
             assign e_mag[EW*i +: EW] = ek[EW-1] ? -ek : ek;
             // tie key κ = cmp((b', a', w)_{k+1}, (b', a', w)_{k+2}), lexicographic, signed
             wire signed [AW-1:0] ai = s9_a[AW*((i+1)%3) +: AW];
@@ -404,8 +403,8 @@ module uvt_bsample #(
             wire signed [30:0] zk = s11_zt[31*i +: 31];
             wire signed [30:0] wk = s11_wt[31*i +: 31];
             wire signed [55:0] pz, pw;
-            uvt_mul #(.AW(25), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(MR)) m_z (e2, zk, pz, clk);
-            uvt_mul #(.AW(25), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(MR)) m_w (e2, wk, pw, clk);
+            uvt_mul #(.AW(25), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(MR)) m_z (e2, zk, pz, clk);
+            uvt_mul #(.AW(25), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(MR)) m_w (e2, wk, pw, clk);
             always @(posedge clk) begin
                 s12_nz[56*i +: 56] <= pz;
                 s12_nw[56*i +: 56] <= pw;

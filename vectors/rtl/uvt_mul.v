@@ -15,11 +15,13 @@
 //   fewer LUT partial-product bits (h × other operand's width), then A on port PA.
 // The partial products are summed in the fabric (or the DSP cascade, as synthesis packs them);
 // the sum is the exact AW+BW-bit product.
-// REG = 0 (default): combinational, the terms summed one after the other; `clk` is unused.
-// REG = 1: the terms (hard products and the LUT product) are registered, then summed as a
-// balanced tree; p follows the inputs by 1 clock. REG = 2: the sums of groups of four terms
+// REG = 0 (default): combinational, the terms summed one after the other and the LUT product's
+// rows a serial chain of adders; `clk` is unused.
+// REG = 1: the terms are registered, then summed as a balanced tree; the LUT product enters as
+// ceil(h/4) terms, each the sum of four of its rows as a two-level tree (no serial chain before
+// the register); p follows the inputs by 1 clock. REG = 2: the sums of groups of four terms
 // (a two-level tree) are registered too; p follows the inputs by 2 clocks. The value is the
-// same; only the timing differs (uvt_bsample's PIPE uses REG = 2 for a faster clock).
+// same; only the timing differs (the units' PIPE uses REG = 2 for a faster clock).
 `timescale 1ns / 1ps
 module uvt_mul #(
     parameter AW = 18,
@@ -93,7 +95,11 @@ module uvt_mul #(
     localparam YK = nlow(YW, PB), YH = top(YW, PB);
     localparam XN = XK + (LX ? 0 : 1);  // hard-multiplier pieces of X
     localparam YN = YK + (LY ? 0 : 1);
-    localparam NT = XN * YN + 1;        // terms: hard products, then the LUT product (or 0)
+    localparam LH = LX ? XH : (LY ? YH : 0);  // rows of the LUT product (0: none)
+    // Terms: hard products, then the LUT product (one term, or 0, with REG = 0; with REG >= 1
+    // one term per group of four rows).
+    localparam NL = (REG == 0 || LH == 0) ? 1 : (LH + 3) / 4;
+    localparam NT = XN * YN + NL;
 
     wire signed [XW-1:0] x;
     wire signed [YW-1:0] y;
@@ -107,8 +113,8 @@ module uvt_mul #(
         end
     endgenerate
 
-    // The terms, each shifted to its place: hard products, then the LUT product (or 0); with
-    // REG = 0 their running sum acc[t+1] = acc[t] + term t.
+    // The terms, each shifted to its place: hard products, then the LUT product's terms (or 0);
+    // with REG = 0 their running sum acc[t+1] = acc[t] + term t.
     wire [PW*NT-1:0] term;
     wire [PW*(NT+1)-1:0] acc;
     assign acc[0 +: PW] = {PW{1'b0}};
@@ -138,9 +144,10 @@ module uvt_mul #(
             end
         end
         // The LUT product: a signed top chunk t (TH bits) times the signed operand o (OW bits)
-        // as a shift-and-add of TH rows, shifted to the chunk's position.
+        // as a shift-and-add of TH rows (row q: t[q]·o·2^q, the top row subtracted), shifted
+        // to the chunk's position.
         if (LX || LY) begin : g_lut
-            localparam TH = LX ? XH : YH;
+            localparam TH = LH;
             localparam OW = LX ? YW : XW;
             localparam SH = LX ? XK * (PA - 1) : YK * (PB - 1);
             wire signed [TH-1:0] t;
@@ -152,28 +159,57 @@ module uvt_mul #(
                 assign t = y[YW-1 -: YH];
                 assign o = x;
             end
-            // Row q adds t[q]·o·2^q (the top row subtracts it); the partial sum after row q is
-            // OW+q+1 bits signed, and each row is one (OW+1)-bit adder above the q bits that
-            // are final already (no sign extension to the full width).
-            wire [(TH+1)*(OW+TH)-1:0] r;
-            assign r[0 +: OW+TH] = {(OW+TH){1'b0}};
-            for (j = 0; j < TH; j = j + 1) begin : g_row
-                wire signed [OW-1:0] pr = {OW{t[j]}} & o;
-                wire signed [OW+j-1:0] prev = r[(OW+TH)*j +: OW+j];  // previous sum >> 0
-                wire signed [OW:0] hi = (j == TH - 1)
-                    ? $signed(prev[OW+j-1:j]) - pr
-                    : $signed(prev[OW+j-1:j]) + pr;
-                if (j == 0) begin : g_first
-                    assign r[(OW+TH)*(j+1) +: OW+TH] = $signed(hi);
-                end else begin : g_next
-                    wire signed [OW+j:0] nx = {hi, prev[j-1:0]};
-                    assign r[(OW+TH)*(j+1) +: OW+TH] = $signed(nx);
+            if (REG == 0) begin : g_chain
+                // The rows one after the other: the partial sum after row q is OW+q+1 bits
+                // signed, and each row is one (OW+1)-bit adder above the q bits that are final
+                // already (no sign extension to the full width).
+                wire [(TH+1)*(OW+TH)-1:0] r;
+                assign r[0 +: OW+TH] = {(OW+TH){1'b0}};
+                for (j = 0; j < TH; j = j + 1) begin : g_row
+                    wire signed [OW-1:0] pr = {OW{t[j]}} & o;
+                    wire signed [OW+j-1:0] prev = r[(OW+TH)*j +: OW+j];  // previous sum >> 0
+                    wire signed [OW:0] hi = (j == TH - 1)
+                        ? $signed(prev[OW+j-1:j]) - pr
+                        : $signed(prev[OW+j-1:j]) + pr;
+                    if (j == 0) begin : g_first
+                        assign r[(OW+TH)*(j+1) +: OW+TH] = $signed(hi);
+                    end else begin : g_next
+                        wire signed [OW+j:0] nx = {hi, prev[j-1:0]};
+                        assign r[(OW+TH)*(j+1) +: OW+TH] = $signed(nx);
+                    end
                 end
+                wire signed [OW+TH-1:0] s = r[(OW+TH)*TH +: OW+TH];
+                wire signed [PW-1:0] se = s;
+                assign term[PW*(NT-1) +: PW] = se <<< SH;
+                assign acc[PW*NT +: PW] =
+                    $signed(acc[PW*(NT-1) +: PW]) + $signed(term[PW*(NT-1) +: PW]);
+            end else begin : g_tree
+                // Rows in groups of four, each group (r0 + r1) + (r2 + r3) one term. Range: |o|
+                // <= 2^(OW−1) and a row is 0 or ±o·2^q (q <= TH−1), so |row| <= 2^(OW+TH−2);
+                // a group below the top one (q + 4 <= TH − 1) sums to less than |o|·2^(q+4)
+                // <= 2^(OW+TH−2), the top group (positive rows below one negative row) to at
+                // most |o|·2^(TH−1) in magnitude, and so does every partial sum: OW+TH bits
+                // signed hold each value exactly, and the terms sum to t·o.
+                for (i = 0; i < NL; i = i + 1) begin : g_grp
+                    wire [4*(OW+TH)-1:0] rw;
+                    for (j = 0; j < 4; j = j + 1) begin : g_row
+                        if (4 * i + j < TH) begin : g_on
+                            wire signed [OW-1:0] pm = {OW{t[4*i+j]}} & o;
+                            wire signed [OW+TH-1:0] pr = pm;          // sign-extended
+                            wire signed [OW+TH-1:0] sh = pr <<< (4 * i + j);
+                            assign rw[(OW+TH)*j +: OW+TH] = (4 * i + j == TH - 1) ? -sh : sh;
+                        end else begin : g_off
+                            assign rw[(OW+TH)*j +: OW+TH] = {(OW+TH){1'b0}};
+                        end
+                    end
+                    wire signed [OW+TH-1:0] gsum =
+                        ($signed(rw[0 +: OW+TH]) + $signed(rw[OW+TH +: OW+TH])) +
+                        ($signed(rw[2*(OW+TH) +: OW+TH]) + $signed(rw[3*(OW+TH) +: OW+TH]));
+                    wire signed [PW-1:0] ge = gsum;
+                    assign term[PW*(XN*YN+i) +: PW] = ge <<< SH;
+                end
+                assign acc[PW*NT +: PW] = {PW{1'b0}};   // unused: REG >= 1 sums the terms as a tree
             end
-            wire signed [OW+TH-1:0] s = r[(OW+TH)*TH +: OW+TH];
-            wire signed [PW-1:0] se = s;
-            assign term[PW*(NT-1) +: PW] = se <<< SH;
-            assign acc[PW*NT +: PW] = $signed(acc[PW*(NT-1) +: PW]) + $signed(term[PW*(NT-1) +: PW]);
         end else begin : g_nolut
             assign term[PW*(NT-1) +: PW] = {PW{1'b0}};
             assign acc[PW*NT +: PW] = acc[PW*(NT-1) +: PW];
@@ -206,16 +242,24 @@ module uvt_mul #(
             end else begin : g_reg1
                 always @(*) gr = gs;
             end
-            // Sum of the groups (at most 4 in every use: up to 16 terms), a tree again.
-            wire [PW*4-1:0] gp;
-            if (NG < 4) begin : g_gpad
-                assign gp = {{(PW*(4-NG)){1'b0}}, gr};
+            // Sum of the groups, a tree again: two levels for up to 4 groups (16 terms), three
+            // for up to 8 (32 terms; the bounds unit's 59 × 82 product with its LUT rows).
+            localparam NG4 = NG <= 4 ? 4 : 8;
+            wire [PW*NG4-1:0] gp;
+            if (NG < NG4) begin : g_gpad
+                assign gp = {{(PW*(NG4-NG)){1'b0}}, gr};
             end else begin : g_gnopad
-                assign gp = gr[PW*4-1:0];
+                assign gp = gr;
             end
-            assign p = (gp[0 +: PW] + gp[PW +: PW]) + (gp[2*PW +: PW] + gp[3*PW +: PW]);
-            if (NG > 4) begin : g_too_many
-                uvt_mul_REG_supports_at_most_16_terms error ();   // elaboration error
+            wire [PW-1:0] lo4 = (gp[0 +: PW] + gp[PW +: PW]) + (gp[2*PW +: PW] + gp[3*PW +: PW]);
+            if (NG4 == 4) begin : g_sum4
+                assign p = lo4;
+            end else begin : g_sum8
+                assign p = lo4 + ((gp[4*PW +: PW] + gp[5*PW +: PW]) +
+                                  (gp[6*PW +: PW] + gp[7*PW +: PW]));
+            end
+            if (NG > 8) begin : g_too_many
+                uvt_mul_REG_supports_at_most_32_terms error ();   // elaboration error
             end
         end
     endgenerate

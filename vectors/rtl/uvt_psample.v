@@ -29,7 +29,7 @@
 //      that amount (= the floor for f >= −33), saturation flag for f < −33, acc ≠ 0
 //   6  clamp to the depth range, 0 when not covered; outputs registered
 // With PIPE = 1 the products of stage 2 take one more clock and those of stage 3 two more
-// (uvt_mul REG, all on hard multipliers): LAT = 9.
+// (uvt_mul REG; a LUT chunk's rows summed four at a time): LAT = 9.
 // Every product goes through uvt_mul.v, which tiles it into hard multipliers as the cost model
 // (host/src/cost.rs, host/src/planar.rs PRODUCTS) counts: 3·1 + 12·2 = 27 DSP48E1 (25 × 18),
 // 3·1 + 12·4 = 51 MULT18X18D (18 × 18).
@@ -49,8 +49,8 @@ module uvt_psample #(
     parameter DSP_A = 25,
     parameter DSP_B = 18,
     parameter LUTW = 8,
-    // PIPE = 1: registers inside the products (uvt_mul REG: 1 in stage 2, 2 in stage 3), all
-    // on hard multipliers, for a faster clock: LAT = 9 instead of 6 (same results)
+    // PIPE = 1: registers inside the products (uvt_mul REG: 1 in stage 2, 2 in stage 3), for
+    // a faster clock: LAT = 9 instead of 6 (same results)
     parameter PIPE = 0
 ) (
     input  wire               clk,
@@ -70,7 +70,6 @@ module uvt_psample #(
 );
     localparam R2 = PIPE ? 1 : 0;      // clocks inside the stage-2 products (uvt_mul REG)
     localparam R3 = PIPE ? 2 : 0;      // and inside the stage-3 products
-    localparam LWE = PIPE ? 0 : LUTW;  // a LUT chunk's rows are a serial adder chain
     localparam LAT = 6 + R2 + R3;
 
     reg [LAT:1] vld;
@@ -99,9 +98,9 @@ module uvt_psample #(
 
     // ---- stage 2: d = (gx·H, gy·W, 256W·H) ---------------------------------------------------
     wire signed [33:0] px, py, pw;
-    uvt_mul #(.AW(21), .BW(13), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(R2)) m_dx (s1_gx, s1_h, px, clk);
-    uvt_mul #(.AW(21), .BW(13), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(R2)) m_dy (s1_gy, s1_w, py, clk);
-    uvt_mul #(.AW(21), .BW(13), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(R2)) m_dw (s1_w8, s1_h, pw, clk);
+    uvt_mul #(.AW(21), .BW(13), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(R2)) m_dx (s1_gx, s1_h, px, clk);
+    uvt_mul #(.AW(21), .BW(13), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(R2)) m_dy (s1_gy, s1_w, py, clk);
+    uvt_mul #(.AW(21), .BW(13), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(R2)) m_dw (s1_w8, s1_h, pw, clk);
     wire [392:0] s1d;                  // {n, g, neg, f} beside the products
     uvt_dly #(.W(393), .N(R2)) dl_s1 (clk, {s1_n, s1_g, s1_neg, s1_f}, s1d);
     reg [95:0]  s2_d;                  // |d_i| <= 2^30: the low 32 bits are exact
@@ -127,7 +126,7 @@ module uvt_psample #(
                 wire signed [31:0] a = s2_n[32*(3*k+i) +: 32];
                 wire signed [31:0] b = s2_d[32*i +: 32];
                 wire signed [63:0] p;
-                uvt_mul #(.AW(32), .BW(32), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(R3)) m_e (a, b, p, clk);
+                uvt_mul #(.AW(32), .BW(32), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(R3)) m_e (a, b, p, clk);
                 always @(posedge clk) s3_pn[64*(3*k+i) +: 64] <= p;
             end
         end
@@ -135,7 +134,7 @@ module uvt_psample #(
             wire signed [31:0] a = s2_g[32*i +: 32];
             wire signed [31:0] b = s2_d[32*i +: 32];
             wire signed [63:0] p;
-            uvt_mul #(.AW(32), .BW(32), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(R3)) m_g (a, b, p, clk);
+            uvt_mul #(.AW(32), .BW(32), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(R3)) m_g (a, b, p, clk);
             always @(posedge clk) s3_pg[64*i +: 64] <= p;
         end
     endgenerate
