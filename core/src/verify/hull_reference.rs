@@ -14,7 +14,8 @@
 
 use uvt_testkit::{cases, seed, Rng};
 
-use crate::bounds::hull::faces::{eps_margin, face_culls, hull_faces, swept_points, HullCoeffs};
+use crate::bounds::hull::faces::{eps_margin, face_culls, swept_points, HullCoeffs};
+use crate::bounds::hull::hull_faces;
 use crate::bounds::hull::tiles::HullTiles;
 use crate::config::precision::{Bounded, Exact, Precision};
 use crate::config::unit::Full;

@@ -16,3 +16,4 @@ mod interval_corners;
 mod planar_corners;
 pub(crate) mod planar_frozen;
 mod width_corners;
+mod wrap_reference;

@@ -162,7 +162,7 @@ fn lens_point(p: &[i32; 5], su: i64, sv: i64) -> [i64; 3] {
 
 /// `p × q`, exact: |p|, |q| ≤ 2^30 so each product ≤ 2^60 and each component < 2^61.
 #[allow(clippy::arithmetic_side_effects)]
-fn cross(p: &[i64; 3], q: &[i64; 3]) -> [i128; 3] {
+pub(crate) fn cross(p: &[i64; 3], q: &[i64; 3]) -> [i128; 3] {
     let [px, py, pw] = p.map(i128::from);
     let [qx, qy, qw] = q.map(i128::from);
     [py * qw - pw * qy, pw * qx - px * qw, px * qy - py * qx]
@@ -170,7 +170,7 @@ fn cross(p: &[i64; 3], q: &[i64; 3]) -> [i128; 3] {
 
 /// `n·p`, exact: |n| < 2^61 and |p| ≤ 2^30, so each product < 2^91 and the sum < 2^93.
 #[allow(clippy::arithmetic_side_effects)]
-fn dot(n: &[i128; 3], p: &[i64; 3]) -> i128 {
+pub(crate) fn dot(n: &[i128; 3], p: &[i64; 3]) -> i128 {
     n[0] * i128::from(p[0]) + n[1] * i128::from(p[1]) + n[2] * i128::from(p[2])
 }
 
@@ -196,7 +196,7 @@ fn same_face(m: &[i128; 3], n: &[i128; 3]) -> Option<bool> {
 /// `n·d(xs, ys)` as `a·xs + b·ys + c` with d from `sample::direction`:
 /// d = ((2xs − 256W)·H, (256H − 2ys)·W, 256·W·H), so a = 2H·n0, b = −2W·n1,
 /// c = 256·W·H·(n2 + n1 − n0). |n| < 2^61, W, H ≤ 2^11: |a|, |b| < 2^73, |c| < 2^93.
-fn face_of(n: &[i128; 3], vp: Viewport) -> Option<HullFace> {
+pub(crate) fn face_of(n: &[i128; 3], vp: Viewport) -> Option<HullFace> {
     let (w, h) = (i128::from(vp.width()), i128::from(vp.height()));
     let one = SUBPIXEL_ONE;
     let a = n[0].checked_mul(h.checked_mul(2)?)?;
@@ -206,9 +206,10 @@ fn face_of(n: &[i128; 3], vp: Viewport) -> Option<HullFace> {
     Some(HullFace { a, b, c })
 }
 
-/// The faces of the cone of `pts`: every plane through the origin and two points that has all
-/// points on one side (both orientations when all points lie on it).
-pub fn hull_faces(pts: &[[i64; 3]], vp: Viewport, ops: &mut Ops) -> HullCoeffs {
+/// The faces of the cone of `pts` by trying every pair of points (O(n³)): the definition, used
+/// where some point has w ≤ 0 and as the reference of the gift wrapping
+/// ([`crate::bounds::hull::wrap`]).
+pub fn pair_faces(pts: &[[i64; 3]], vp: Viewport, ops: &mut Ops) -> HullCoeffs {
     let mut normals = [[0i128; 3]; MAX_FACES];
     let mut out = HullCoeffs {
         faces: [HullFace::default(); MAX_FACES],
