@@ -412,16 +412,23 @@ fn rtl_pipelined_unit_passes_committed_records_with_its_latency() {
             ((25, 18), 8, "frame_a"),
         ]);
     }
+    // Every checked record passes, and the first result came `latency` clocks after its input.
+    let passes = |out: &str, n: u64, latency: &str, what: &str| {
+        assert!(out.contains(&format!("PASS {n} records")), "{what}: {out}");
+        assert!(
+            out.lines()
+                .any(|l| l == format!("LATENCY {latency} clocks")),
+            "{what}: {out}"
+        );
+    };
     for (ports, lutw, set) in runs {
         let out = run(&unit(ports, lutw, 1), &committed().join(set));
         let n = coverage(set)["records"].as_u64().unwrap();
-        assert!(
-            out.contains(&format!("PASS {n} records")),
-            "{ports:?} LUTW {lutw} {set}: {out}"
-        );
-        assert!(
-            out.lines().any(|l| l == "LATENCY edge 23 depth 63 clocks"),
-            "{ports:?} LUTW {lutw} {set}: {out}"
+        passes(
+            &out,
+            n,
+            "edge 23 depth 63",
+            &format!("{ports:?} LUTW {lutw} {set}"),
         );
     }
     // The default build's latency, on every 40th record of frame_b; with 17-bit LUT chunks
@@ -437,14 +444,11 @@ fn rtl_pipelined_unit_passes_committed_records_with_its_latency() {
             &[format!("+STRIDE={stride}")],
         );
         let n = coverage("frame_b")["records"].as_u64().unwrap();
-        let checked = n.div_ceil(stride);
-        assert!(
-            out.contains(&format!("PASS {checked} records")),
-            "stride {stride}: {out}"
-        );
-        assert!(
-            out.lines().any(|l| l == "LATENCY edge 11 depth 46 clocks"),
-            "{out}"
+        passes(
+            &out,
+            n.div_ceil(stride),
+            "edge 11 depth 46",
+            &format!("stride {stride}"),
         );
     }
 }

@@ -48,6 +48,14 @@ fn same(pts: &[[i64; 3]], vp: Viewport, what: &str, t: &mut Tally) {
     t.0[4] += op.setup;
 }
 
+/// Every class, so every swept point count (3, 6, 12, 24).
+const CLASSES: [Class; 4] = [
+    Class::Static,
+    Class::Motion,
+    Class::Defocus,
+    Class::MotionDefocus,
+];
+
 fn vps() -> [Viewport; 3] {
     [(40u16, 30u16), (2048, 2048), (1, 9)].map(|(w, h)| Viewport::new(w, h).unwrap())
 }
@@ -63,12 +71,7 @@ fn wrap_matches_the_pair_search_on_random_triangles() {
             continue;
         };
         let vp = vps()[case as usize % 3];
-        for class in [
-            Class::Static,
-            Class::Motion,
-            Class::Defocus,
-            Class::MotionDefocus,
-        ] {
+        for class in CLASSES {
             let (pts, n) = swept_points(&tri, class);
             let pts = &pts[..n];
             if !all_in_front(pts) {
@@ -193,12 +196,7 @@ fn wrap_matches_the_pair_search_at_the_domain_corners() {
     let mut t = Tally::default();
     for vp in vps() {
         for tri in crate::verify::eps_corners::tris() {
-            for class in [
-                Class::Static,
-                Class::Motion,
-                Class::Defocus,
-                Class::MotionDefocus,
-            ] {
+            for class in CLASSES {
                 let (pts, n) = swept_points(&tri, class);
                 if all_in_front(&pts[..n]) {
                     same(
@@ -221,17 +219,11 @@ fn wrap_is_used_where_it_costs_fewer_ops() {
     let seed = seed();
     let mut rng = Rng(seed ^ 0x31c5);
     let mut acc = [[0u64; 3]; 4];
-    let classes = [
-        Class::Static,
-        Class::Motion,
-        Class::Defocus,
-        Class::MotionDefocus,
-    ];
     for _ in 0..cases(1_000, 20_000) {
         let Some(tri) = random_tri(&mut rng) else {
             continue;
         };
-        for (a, class) in acc.iter_mut().zip(classes) {
+        for (a, class) in acc.iter_mut().zip(CLASSES) {
             let (pts, n) = swept_points(&tri, class);
             let pts = &pts[..n];
             if !all_in_front(pts) {
@@ -251,7 +243,7 @@ fn wrap_is_used_where_it_costs_fewer_ops() {
             a[2] += op.setup;
         }
     }
-    for (a, class) in acc.iter().zip(classes) {
+    for (a, class) in acc.iter().zip(CLASSES) {
         let n = swept_points(&crate::verify::eps_corners::tris()[0], class).1;
         let (wrap, pair) = (a[1] / a[0].max(1), a[2] / a[0].max(1));
         assert!(a[0] >= 100, "{class:?}: {} sets", a[0]);
