@@ -25,6 +25,14 @@
 # `m4_report.sh --units OUT.json PREC` does the same at configuration PREC (UVT_M4_PREC; the
 # default configuration or planar-16-16-16-20), e.g. `--units /tmp/m4_units_planar.json
 # planar-16-16-16-20`; without PREC the output is the default configuration's, as before.
+# `m4_report.sh --strategies [OUT.json]` measures every bounds strategy of the bench on the bench
+# rows' own triangles (quick size; `uvt m4-workload`: every 2nd triangle of a game row, every
+# 16th of a dense row, the whole sample table, bounds tile 1): m4_stages built once per row with
+# the row linked in (UVT_M4_WORKLOAD), run on the Cortex-M4F under QEMU, and the same program on
+# the host, whose counts must equal the Cortex-M's line for line. Writes per row, strategy and
+# triangle class the counts (triangles, visible, tiles, admits, tested, covered, core ops) and the
+# instructions of setup, tile walk, predicate and sample test to OUT.json (default
+# host/report/m4_strategies.json), which `uvt bench-ste` reads for its whole-cost column.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 tdir=${CARGO_TARGET_DIR:-target}
@@ -33,6 +41,54 @@ json_items() { local n=$#; local i=0; for r in "$@"; do i=$((i + 1)); if [[ $i -
 # Move a finished temporary file into place (nothing half-written), print it and stop.
 publish() { mv "$1" "$2"; cat "$2"; exit 0; }
 sec() { printf '%d' "0x$(readelf -S -W "$1" | awk -v s="$2" '{for (i = 1; i <= NF; i++) if ($i == s) print $(i + 4)}')"; }
+if [[ "${1:-}" == "--strategies" ]]; then
+  json=${2:-host/report/m4_strategies.json}
+  elf=$tdir/thumbv7em-none-eabihf/release/examples/m4_stages
+  cargo build -q --release -p uvt-host --bin uvt
+  cargo build -q --release -p uvt-demo --example m4_stages
+  work=$(mktemp -d)
+  trap 'rm -rf "$work"' EXIT
+  rows=()
+  for scene in game dense; do
+    every=2
+    [[ $scene == dense ]] && every=16
+    for row in static motion motion2 defocus defocus2 both both2; do
+      echo "m4_report --strategies: $scene $row (every $every)" >&2
+      w=$work/$scene-$row.bin
+      "$tdir/release/uvt" m4-workload --scene "$scene" --row "$row" --quick --every "$every" --out "$w" >/dev/null
+      host=$("$tdir/release/examples/m4_stages" "$w")
+      UVT_M4_WORKLOAD=$w cargo build -q --release -p uvt-demo --example m4_stages --target thumbv7em-none-eabihf
+      m4=$(timeout 1200 qemu-system-arm -machine mps2-an386 -cpu cortex-m4 -nographic -monitor none \
+          -semihosting-config enable=on,target=native -icount shift=0 -kernel "$elf")
+      cal=$(echo "$m4" | awk -F= '/^calibration/ {print $2}')
+      [[ $cal -ge 7999922 && $cal -le 8000082 ]] || { echo "calibration $cal, expected 8000002 +- 80" >&2; exit 1; }
+      # The same work with the same bits: every count of every line equal (insn aside).
+      strip() { echo "$1" | grep -E '^(workload|stage) ' | sed 's/ insn=.*//'; }
+      if [[ "$(strip "$host")" != "$(strip "$m4")" ]]; then
+        diff <(strip "$host") <(strip "$m4") >&2 || true
+        echo "m4_stages: the Cortex-M4F's counts differ from the host's ($scene $row)" >&2
+        exit 1
+      fi
+      [[ $(echo "$m4" | grep -c '^stage ') -ge 7 ]] || { echo "m4_stages: no stage lines ($scene $row)" >&2; exit 1; }
+      lines=$(echo "$m4" | awk '$1 == "stage" {
+        n = split($0, f, " "); out = "{\"strategy\": \"" $2 "\", \"class\": \"" $3 "\"";
+        for (i = 4; i <= n; i++) { split(f[i], kv, "="); v = kv[2];
+          if (kv[1] == "ops" || kv[1] == "insn") v = "[" v "]";
+          out = out ", \"" kv[1] "\": " v }
+        print out "}" }' | paste -sd, -)
+      rows+=("{\"scene\": \"$scene\", \"row\": \"$row\", \"every\": $every, \"stages\": [$lines]}")
+    done
+  done
+  {
+    echo "{"
+    echo "  \"target\": \"Cortex-M4F (thumbv7em-none-eabihf, QEMU mps2-an386, -icount shift=0): m4_stages on each quick bench row's own triangles (every 'every'-th), default configuration, bounds tile 1; per strategy and triangle class: counts, core ops [setup, bounds, rows, predicate, sample] and instructions [setup, tile walk, predicate, sample test] (SysTick laps, 40 instructions per tick)\","
+    echo "  \"rows\": ["
+    json_items "${rows[@]}"
+    echo "  ]"
+    echo "}"
+  } >"$json.tmp"
+  publish "$json.tmp" "$json"
+fi
 if [[ "${1:-}" == "--units" ]]; then
   json=${2:-host/report/m4_units.json}
   uprec=${3:-}

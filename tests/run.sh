@@ -35,9 +35,10 @@ echo "== rustfmt"
 rustup component add rustfmt >/dev/null 2>&1 || true
 cargo fmt --all --check
 
-echo "== clippy (warnings are errors), host and the bare-metal program"
+echo "== clippy (warnings are errors), host and the bare-metal programs"
 cargo clippy --locked --workspace --all-targets -- -D warnings
 cargo clippy --locked -p uvt-demo --example m4_render --target thumbv7em-none-eabihf -- -D warnings
+cargo clippy --locked -p uvt-demo --example m4_stages --target thumbv7em-none-eabihf -- -D warnings
 cargo clippy --locked -p uvt-demo --example m4_render --target thumbv7m-none-eabi -- -D warnings
 
 echo "== tests"

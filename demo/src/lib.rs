@@ -19,5 +19,6 @@
 
 pub mod cost;
 pub mod scene;
+pub mod workload;
 
 pub use scene::{prims, render, unit_prims, viewport, DemoResult, BOUNDS_TILE, SAMPLES, SIZE, SPP};

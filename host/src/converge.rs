@@ -49,6 +49,10 @@ pub struct Point {
     pub tested: u64,
     /// samples covered
     pub covered: u64,
+    /// whole modelled Cortex-M4F instructions of the frame, setup included (its counts times
+    /// the strategy's per-call figures pooled over the bench rows,
+    /// [`crate::bench::m4_stages::M4Stages::pooled`])
+    pub m4: f64,
 }
 
 /// Run the sweep on `scene` (its own pattern kind and seed; the viewport, tile and colors as in
@@ -83,6 +87,7 @@ pub fn sweep(scene: &Scene, repeats: usize) -> Result<Vec<Point>> {
             }
         }
     }
+    let stages = crate::bench::m4_stages::committed()?;
     let mut out = Vec::new();
     for spp in SPP_STEPS {
         let pat = Pattern::new(scene.pattern, spp, scene.seed);
@@ -111,17 +116,27 @@ pub fn sweep(scene: &Scene, repeats: usize) -> Result<Vec<Point>> {
                 ms: r.ms,
                 tested: r.stats.samples_tested,
                 covered: r.stats.samples_covered,
+                m4: stages
+                    .pooled(name)
+                    .ok_or_else(|| anyhow!("no Cortex-M4F stage figures for {name}"))?
+                    .total(
+                        r.stats.triangles,
+                        r.stats.tiles_visited,
+                        r.stats.samples_admitted,
+                        r.stats.samples_tested,
+                    ),
             });
         }
     }
     Ok(out)
 }
 
-/// The sweep as a Markdown table: one row per spp, per strategy RMSE / ms / sample tests.
+/// The sweep as a Markdown table: one row per spp, per strategy ms / sample tests / whole
+/// Cortex-M4F instructions (millions, setup included).
 pub fn table_md(points: &[Point]) -> String {
     let mut s = String::from("| spp | RMSE (0..255) |");
     for n in strategies() {
-        s += &format!(" {n} ms / tests |");
+        s += &format!(" {n} ms / tests / M4 Minsn |");
     }
     s += "\n|---|---|";
     s += &"---|".repeat(strategies().count());
@@ -132,7 +147,7 @@ pub fn table_md(points: &[Point]) -> String {
         s += &format!("| {spp} | {:.3} |", first.rmse);
         for n in strategies() {
             if let Some(p) = row.iter().find(|p| p.strategy == n) {
-                s += &format!(" {:.0} / {} |", p.ms, p.tested);
+                s += &format!(" {:.0} / {} / {:.1} |", p.ms, p.tested, p.m4 / 1e6);
             }
         }
         s += "\n";
@@ -201,7 +216,7 @@ pub fn write(points: &[Point], scene: &Scene, out: &Path) -> Result<Vec<PathBuf>
     let json = out.join("converge.json");
     let svg = out.join("converge.svg");
     let head = format!(
-        "# uvt converge — {} ({}×{}, {} triangles, bounds tile {})\n\nReference: f64 pipeline, {} independent 64-spp frames averaged. Same image for every strategy at equal spp; times are the core's wall time on this machine.\n\n",
+        "# uvt converge — {} ({}×{}, {} triangles, bounds tile {})\n\nReference: f64 pipeline, {} independent 64-spp frames averaged. Same image for every strategy at equal spp; times are the core's wall time on this machine; M4 Minsn = whole modelled Cortex-M4F instructions of the frame in millions, setup included (the frame's counts times each strategy's instructions per call on the bench rows' own triangles, `host/report/m4_strategies.json`).\n\n",
         scene.name,
         scene.viewport.0,
         scene.viewport.1,

@@ -5,6 +5,7 @@
 //! their compositions and the list of every named strategy ([`registry`]). The conservativeness proof of each is at the top of its
 //! file.
 
+pub mod auto;
 pub mod bbox;
 pub mod edge_time;
 pub mod hull;

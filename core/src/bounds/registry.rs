@@ -12,8 +12,10 @@
 //! | `hull+lens-t` | [`hull_lens()`] |
 //! | `hull+edge-t` | [`hull_edge()`] |
 //! | `best` | [`best()`] |
+//! | `auto` | [`Auto`]: Laine 2011, hull or hull+edge-t per triangle |
 //!
 //! [`BboxScan`]: crate::bounds::bbox::BboxScan
+//! [`Auto`]: crate::bounds::auto::Auto
 
 use crate::bounds::edge_time::EdgeTime;
 use crate::bounds::hull::HullCull;
@@ -48,7 +50,7 @@ pub const fn best() -> HullCull<EdgeTime<Hyper>> {
 }
 
 /// The name of every strategy of the registry, in the order of the tables (module docs).
-pub const STRATEGIES: [&str; 8] = [
+pub const STRATEGIES: [&str; 9] = [
     "bbox",
     "laine2011",
     "hull",
@@ -57,6 +59,7 @@ pub const STRATEGIES: [&str; 8] = [
     "hull+lens-t",
     "hull+edge-t",
     "best",
+    "auto",
 ];
 
 /// `with_strategy!(name, s => body)`: `Some(body)` with `s` bound to the strategy named `name`
@@ -103,6 +106,10 @@ macro_rules! with_strategy {
             }
             "best" => {
                 let $s = $crate::bounds::registry::best();
+                ::core::option::Option::Some($body)
+            }
+            "auto" => {
+                let $s = $crate::bounds::auto::Auto::new();
                 ::core::option::Option::Some($body)
             }
             _ => ::core::option::Option::None,

@@ -24,6 +24,13 @@ impl Class {
             Class::MotionDefocus => 3,
         }
     }
+    /// Every class, in [`Class::index`] order.
+    pub const ALL: [Class; 4] = [
+        Class::Static,
+        Class::Motion,
+        Class::Defocus,
+        Class::MotionDefocus,
+    ];
     /// Name for reports and errors: "static", "motion", "defocus", "motion+defocus".
     pub fn name(self) -> &'static str {
         match self {

@@ -2,7 +2,12 @@
 //! over a frame by name, at any precision (also used by `uvt converge` and `uvt fit`);
 //! [`ste_table`] runs every strategy, the f64 reference and the axis-aligned limit over the
 //! benchmark scenes and writes the table. `ste_table` uses `strategy`, never the other way round
-//! (nor this `mod.rs`).
+//! (nor this `mod.rs`). [`workload`] writes a row's own work for the Cortex-M strategy
+//! harness, [`m4_stages`] reads what it measured, and [`auto_rule`] derives the rule of the
+//! `auto` strategy from it.
 
+pub mod auto_rule;
+pub mod m4_stages;
 pub mod ste_table;
 pub mod strategy;
+pub mod workload;

@@ -31,6 +31,7 @@ use crate::oracle::search::Effort;
 use crate::scene::builtin::{bench_scene, Bench, Blur};
 use crate::scene::pattern::Pattern;
 
+use super::m4_stages::M4Stages;
 use super::strategy::{per, run_strategy_at, strategies, StratResult};
 
 /// The two efforts of the axis-aligned limit (dense points per pixel, face-search proposals per
@@ -140,7 +141,13 @@ pub fn run_table(
     sweep: bool,
     effort: Option<[Effort; 2]>,
 ) -> Vec<BenchRow> {
-    rows_at::<uvt_core::DefaultPrecision>(quick, scenes, rows, sweep, effort)
+    let stages = stage_file().ok().flatten();
+    rows_at::<uvt_core::DefaultPrecision>(quick, scenes, rows, sweep, effort, stages)
+}
+
+/// The committed Cortex-M4F stage costs ([`super::m4_stages::committed`]).
+pub fn stage_file() -> anyhow::Result<Option<&'static M4Stages>> {
+    super::m4_stages::committed().map(Some)
 }
 
 /// [`run_table`] with the core at the configuration named `precision` (a name of the registry
@@ -167,7 +174,8 @@ pub fn run_table_of(
     sweep: bool,
     effort: Option<[Effort; 2]>,
 ) -> anyhow::Result<Vec<BenchRow>> {
-    with_config!(cfg, P => rows_at::<P>(quick, scenes, rows, sweep, effort))
+    let stages = stage_file()?;
+    with_config!(cfg, P => rows_at::<P>(quick, scenes, rows, sweep, effort, stages))
         .ok_or_else(|| anyhow::anyhow!("configuration {cfg} is not in the registry"))
 }
 
@@ -183,13 +191,17 @@ pub fn timing_runs(quick: bool) -> usize {
     }
 }
 
+/// The rows at precision `P`; `stages` (measured at the default configuration) gives the whole
+/// Cortex-M4F cost of each tile-1 run at that configuration.
 fn rows_at<P: Precision + Sync>(
     quick: bool,
     scenes: &[Bench],
     rows: &[Blur],
     sweep: bool,
     effort: Option<[Effort; 2]>,
+    stages: Option<&M4Stages>,
 ) -> Vec<BenchRow> {
+    let stages = stages.filter(|_| Config::of::<P>().same(&uvt_core::config::registry::DEFAULT));
     let mut out = Vec::new();
     let total = scenes.len() * rows.len();
     for &kind in scenes {
@@ -243,7 +255,14 @@ fn rows_at<P: Precision + Sync>(
                     })
                     .collect()
             };
-            let strategies = at(1, runs);
+            let mut strategies = at(1, runs);
+            // The whole cost: this run's counts times the row's instructions per call.
+            let stage_row = stages.and_then(|m| m.row(kind.name(), &row.name()));
+            for x in &mut strategies {
+                x.m4 = stage_row
+                    .and_then(|r| r.per_call(x.name))
+                    .map(|pc| x.m4_of(&pc));
+            }
             let tile_sweep = if sweep {
                 let mut v = vec![strategies.clone()];
                 v.extend([2u8, 4, 8].iter().map(|&t| at(t, 1)));
@@ -404,6 +423,7 @@ pub fn table_md(rows: &[BenchRow]) -> String {
             "\n".to_string()
         };
     }
+    s += &whole_cost_md(rows);
     if rows.iter().any(|r| !r.tile_sweep.is_empty()) {
         s += "\nSTE (%) by bounds-tile size 1 / 2 / 4 / 8\n\n| Scene |";
         for n in strategies() {
@@ -428,5 +448,116 @@ pub fn table_md(rows: &[BenchRow]) -> String {
             s += "\n";
         }
     }
+    s
+}
+
+/// Spearman's rank correlation of `a` and `b` (average ranks for ties; 0 for fewer than 2
+/// values or a constant side).
+pub fn spearman(a: &[f64], b: &[f64]) -> f64 {
+    fn ranks(x: &[f64]) -> Vec<f64> {
+        let mut idx: Vec<usize> = (0..x.len()).collect();
+        idx.sort_by(|&i, &j| x[i].total_cmp(&x[j]));
+        let mut r = vec![0.0; x.len()];
+        let mut i = 0;
+        while i < idx.len() {
+            let mut j = i;
+            while j + 1 < idx.len() && x[idx[j + 1]] == x[idx[i]] {
+                j += 1;
+            }
+            for &k in &idx[i..=j] {
+                r[k] = (i + j) as f64 / 2.0 + 1.0;
+            }
+            i = j + 1;
+        }
+        r
+    }
+    let n = a.len().min(b.len());
+    if n < 2 {
+        return 0.0;
+    }
+    let (ra, rb) = (ranks(&a[..n]), ranks(&b[..n]));
+    let mean = (n as f64 + 1.0) / 2.0;
+    let (mut sab, mut saa, mut sbb) = (0.0, 0.0, 0.0);
+    for (x, y) in ra.iter().zip(&rb) {
+        sab += (x - mean) * (y - mean);
+        saa += (x - mean) * (x - mean);
+        sbb += (y - mean) * (y - mean);
+    }
+    if saa == 0.0 || sbb == 0.0 {
+        0.0
+    } else {
+        sab / (saa * sbb).sqrt()
+    }
+}
+
+/// The whole-cost table: per strategy the modelled Cortex-M4F instructions per covered sample
+/// with setup included and the core wall ms; `auto` against the cheapest fixed strategy and
+/// Laine 2011; the rank correlation of whole cost and wall time per row and over every row (each
+/// strategy's cost and time divided by Laine 2011's in the same row), beside the same for the
+/// ops column without setup. Empty when no row has stage figures.
+pub fn whole_cost_md(rows: &[BenchRow]) -> String {
+    let with: Vec<&BenchRow> = rows
+        .iter()
+        .filter(|r| r.strategies.iter().all(|x| x.m4.is_some()))
+        .collect();
+    if with.is_empty() {
+        return String::new();
+    }
+    let laine = Laine2011.name();
+    let auto = uvt_core::bounds::auto::Auto::new().name();
+    let mut s = String::from(
+        "\nWhole cost per strategy (bounds tile 1×1): Cortex-M4F instructions per covered sample, setup included (this run's counts of triangles, tiles, samples through the box and predicate and sample tests, times the instructions per call measured on the quick row's own triangles by `bash demo/m4_report.sh --strategies`, host/report/m4_strategies.json) / core wall ms; cheapest = the fixed strategy (every one but auto) with the fewest instructions; ρ = Spearman rank correlation over the row's strategies of whole instructions and wall ms (\"ops ρ\": of the cost table's ops per covered sample without setup, and wall ms)\n\n| Scene |"
+    );
+    for n in strategies() {
+        s += &format!(" {n} |");
+    }
+    s += " cheapest fixed | auto ÷ cheapest | auto ÷ Laine (M4) | auto ÷ Laine (ms) | ρ | ops ρ |\n|---|";
+    s += &"---|".repeat(strategies().count() + 6);
+    s += "\n";
+    let (mut all_m4, mut all_ms, mut all_ops) = (Vec::new(), Vec::new(), Vec::new());
+    for r in &with {
+        let m4 = |n: &str| r.strat(n).and_then(|x| x.m4_per_covered()).unwrap_or(0.0);
+        let ms = |n: &str| r.strat(n).map_or(0.0, |x| x.ms);
+        s += &format!("| {} |", name_of(r));
+        for x in &r.strategies {
+            s += &format!(" {:.0} / {:.0} |", x.m4_per_covered().unwrap_or(0.0), x.ms);
+        }
+        let cheapest = r
+            .strategies
+            .iter()
+            .filter(|x| x.name != auto)
+            .min_by(|a, b| {
+                a.m4.unwrap_or(f64::MAX)
+                    .total_cmp(&b.m4.unwrap_or(f64::MAX))
+            });
+        let (cn, cv) = cheapest.map_or(("-", 0.0), |x| (x.name, x.m4_per_covered().unwrap_or(0.0)));
+        let (v_m4, v_ms, v_ops): (Vec<f64>, Vec<f64>, Vec<f64>) = (
+            r.strategies.iter().map(|x| x.m4.unwrap_or(0.0)).collect(),
+            r.strategies.iter().map(|x| x.ms).collect(),
+            r.strategies.iter().map(|x| x.ops_per_covered()).collect(),
+        );
+        let (l_m4, l_ms, l_ops) = (
+            r.strat(laine).and_then(|x| x.m4).unwrap_or(1.0),
+            ms(laine),
+            r.strat(laine).map_or(1.0, |x| x.ops_per_covered()),
+        );
+        all_m4.extend(v_m4.iter().map(|v| per_f(*v, l_m4)));
+        all_ms.extend(v_ms.iter().map(|v| per_f(*v, l_ms)));
+        all_ops.extend(v_ops.iter().map(|v| per_f(*v, l_ops)));
+        s += &format!(
+            " {cn} | {:.3} | {:.3} | {:.3} | {:.2} | {:.2} |\n",
+            per_f(m4(auto), cv),
+            per_f(m4(auto), m4(laine)),
+            per_f(ms(auto), ms(laine)),
+            spearman(&v_m4, &v_ms),
+            spearman(&v_ops, &v_ms)
+        );
+    }
+    s += &format!(
+        "\nOver every row (each strategy's whole instructions and wall ms divided by Laine 2011's in its row, {} points): ρ = {:.2}; ops ρ = {:.2}.\n",
+        all_m4.len(),
+        spearman(&all_m4, &all_ms),
+        spearman(&all_ops, &all_ms)
+    );
     s
 }

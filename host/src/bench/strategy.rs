@@ -32,6 +32,10 @@ pub struct StratResult {
     /// wall ms of the frame (no oracle); in `bench-ste`'s tile-1 runs the fastest of
     /// [`timing_runs`](super::ste_table::timing_runs) frames
     pub ms: f64,
+    /// the frame's whole modelled Cortex-M4F instructions, setup included (this run's counts
+    /// times the row's measured instructions per call, [`super::m4_stages`]); `None` where no
+    /// figures exist (other rows, other tiles)
+    pub m4: Option<f64>,
 }
 
 impl StratResult {
@@ -55,6 +59,26 @@ impl StratResult {
     /// Predicate ops per tested sample.
     pub fn ops_predicate(&self) -> f64 {
         per(self.stats.ops_predicate, self.stats.samples_tested)
+    }
+    /// The whole modelled Cortex-M4F instructions (setup included) per covered sample.
+    pub fn m4_per_covered(&self) -> Option<f64> {
+        self.m4.map(|x| {
+            if self.stats.samples_covered == 0 {
+                0.0
+            } else {
+                x / self.stats.samples_covered as f64
+            }
+        })
+    }
+    /// The whole modelled Cortex-M4F instructions of this frame from per-call figures `pc`.
+    pub fn m4_of(&self, pc: &super::m4_stages::PerCall) -> f64 {
+        let s = &self.stats;
+        pc.total(
+            s.triangles,
+            s.tiles_visited,
+            s.samples_admitted,
+            s.samples_tested,
+        )
     }
     /// All per-tile, per-row, predicate and sample-test ops per covered sample.
     pub fn ops_per_covered(&self) -> f64 {
@@ -126,6 +150,7 @@ where
         tile: o.tile,
         stats: f.stats,
         ms: f.time.as_secs_f64() * 1e3,
+        m4: None,
     };
     (r, f.image)
 }

@@ -256,7 +256,7 @@ pub fn fit_md(f: &Fit) -> String {
         f.planar_degenerate.1
     );
     s += &format!(
-        "\nNarrowest configuration meeting the tolerance: **{}**.\n\n## Bounds strategy and tile size\n\nCost = setup ops + tile ops + predicate ops + sample tests × ops per test × width factor {:.3} (`host/src/fit/search.rs`); score = covered samples per unit of cost.\n\n| strategy | tile | STE | tested | covered | setup ops | tile ops | predicate ops | ops/test | cost | score |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
+        "\nNarrowest configuration meeting the tolerance: **{}**.\n\n## Bounds strategy and tile size\n\nCost = whole Cortex-M4F instructions, setup included: this frame's triangles, tiles, samples of kept tiles and sample tests times the strategy's instructions per call, measured on the bench rows' own triangles (`host/report/m4_strategies.json`, `bash demo/m4_report.sh --strategies`; default configuration, tile 1); score = covered samples per instruction. Ops cost = setup ops + tile ops + predicate ops + sample tests × ops per test × width factor {:.3} (`host/src/fit/search.rs`).\n\n| strategy | tile | STE | tested | covered | setup ops | tile ops | predicate ops | ops/test | ops cost | M4 instructions | score |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n",
         f.config, f.width_factor
     );
     for r in &f.strategies {
@@ -266,7 +266,7 @@ pub fn fit_md(f: &Fit) -> String {
             ""
         };
         s += &format!(
-            "| {}{mark} | {} | {:.2}% | {} | {} | {} | {} | {} | {:.1} | {:.0} | {:.3e} |\n",
+            "| {}{mark} | {} | {:.2}% | {} | {} | {} | {} | {} | {:.1} | {:.0} | {:.0} | {:.3e} |\n",
             r.strategy,
             r.tile,
             100.0 * r.ste,
@@ -276,6 +276,7 @@ pub fn fit_md(f: &Fit) -> String {
             r.ops_tile,
             r.ops_predicate,
             r.ops_per_test,
+            r.ops_cost,
             r.cost,
             r.score
         );

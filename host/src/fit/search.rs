@@ -2,14 +2,18 @@
 //! scene's inputs on a configuration's grids.
 //!
 //! **Cost of a bounds strategy and tile size** (from the bench machinery's counters, one frame
-//! of the scene at the chosen configuration): `setup ops + tile-bounds ops + per-sample predicate
-//! ops + sample tests × s`, with `s` the counted operations per sample test of that frame times
-//! the sample test's width factor `Σ bit-products / (products · 32 · 32)` of the chosen unit and
-//! configuration (its products in units of a 32 × 32 product; the counters count ≤ 32-bit
-//! operations). Every strategy covers the same samples (bounds are conservative), so the score —
-//! covered samples per unit of cost, i.e. STE per unit of per-test cost — ranks by total cost;
-//! ties go to the earlier strategy of [`crate::bench::strategy::strategies`] (the registry's
-//! order) and the smaller tile.
+//! of the scene at the chosen configuration): the whole Cortex-M4F instructions, setup included —
+//! triangles × instructions per setup + visited tiles × per tile + samples of kept tiles × per
+//! sample through the box and predicate + sample tests × per test, the per-call figures of the
+//! strategy measured on the bench rows' own triangles and pooled over them
+//! ([`crate::bench::m4_stages`], the same figures `bench-ste`'s whole-cost table uses; measured
+//! at the default configuration and bounds tile 1). Beside it, the width-weighted ops figure:
+//! `setup ops + tile-bounds ops + per-sample predicate ops + sample tests × s`, with `s` the
+//! counted operations per sample test times the sample test's width factor
+//! `Σ bit-products / (products · 32 · 32)` of the chosen unit and configuration. Every strategy
+//! covers the same samples (bounds are conservative), so the score — covered samples per
+//! instruction — ranks by whole cost; ties go to the earlier strategy of
+//! [`crate::bench::strategy::strategies`] (the registry's order) and the smaller tile.
 
 use serde::Serialize;
 use uvt_core::config::registry::Config;
@@ -43,9 +47,11 @@ pub struct StratCost {
     pub ops_predicate: u64,
     /// counted ops per sample test
     pub ops_per_test: f64,
-    /// total cost (module docs)
+    /// width-weighted ops (module docs)
+    pub ops_cost: f64,
+    /// whole Cortex-M4F instructions, setup included (module docs)
     pub cost: f64,
-    /// covered samples per unit of cost
+    /// covered samples per instruction of `cost`
     pub score: f64,
 }
 
@@ -73,8 +79,17 @@ fn search_at<P: Precision + Sync>(scene: &Scene, width: f64) -> anyhow::Result<V
                 .ok_or_else(|| anyhow::anyhow!("unknown strategy {name}"))?;
             let s = &r.stats;
             let per_test = s.ops_sample as f64 / s.samples_tested.max(1) as f64;
-            let cost = (s.ops_setup + s.ops_bounds + s.ops_predicate) as f64
+            let ops_cost = (s.ops_setup + s.ops_bounds + s.ops_predicate) as f64
                 + s.samples_tested as f64 * per_test * width;
+            let cost = crate::bench::m4_stages::committed()?
+                .pooled(name)
+                .ok_or_else(|| anyhow::anyhow!("no Cortex-M4F stage figures for {name}"))?
+                .total(
+                    s.triangles,
+                    s.tiles_visited,
+                    s.samples_admitted,
+                    s.samples_tested,
+                );
             out.push(StratCost {
                 strategy: name.to_string(),
                 tile,
@@ -85,6 +100,7 @@ fn search_at<P: Precision + Sync>(scene: &Scene, width: f64) -> anyhow::Result<V
                 ops_tile: s.ops_bounds,
                 ops_predicate: s.ops_predicate,
                 ops_per_test: per_test,
+                ops_cost,
                 cost,
                 score: s.samples_covered as f64 / cost.max(1.0),
             });

@@ -20,6 +20,8 @@ pub struct FrameStats {
     pub tiles_visited: u64,
     /// of which empty
     pub tiles_skipped: u64,
+    /// samples of the kept bounds tiles (each put through the tile's box and predicate)
+    pub samples_admitted: u64,
     /// samples tested (inside the tile intervals)
     pub samples_tested: u64,
     /// samples covered
@@ -50,6 +52,7 @@ impl FrameStats {
             &mut self.culled_degenerate,
             &mut self.tiles_visited,
             &mut self.tiles_skipped,
+            &mut self.samples_admitted,
             &mut self.samples_tested,
             &mut self.samples_covered,
             &mut self.footprint_samples,
@@ -66,6 +69,7 @@ impl FrameStats {
             o.culled_degenerate,
             o.tiles_visited,
             o.tiles_skipped,
+            o.samples_admitted,
             o.samples_tested,
             o.samples_covered,
             o.footprint_samples,

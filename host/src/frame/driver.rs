@@ -241,6 +241,8 @@ fn band<P: FramePipeline>(
                 st.tiles_skipped += 1;
                 continue;
             };
+            st.samples_admitted +=
+                (cell.x1 - cell.x0) as u64 * (cell.y1 - cell.y0) as u64 * s as u64;
             tested_samples.clear();
             let mut lo = [f64::MAX; 3];
             let mut hi = [f64::MIN; 3];

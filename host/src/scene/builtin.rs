@@ -52,6 +52,21 @@ impl Blur {
             Blur::Both2 => "both x2",
         }
     }
+    /// The command-line name: the label without " x" (static, motion, motion2, defocus,
+    /// defocus2, both, both2).
+    pub fn name(self) -> String {
+        self.label().replace(" x", "")
+    }
+    /// The row of a command-line name ([`Blur::name`]); the error lists the names.
+    pub fn from_name(name: &str) -> anyhow::Result<Blur> {
+        Blur::ALL
+            .into_iter()
+            .find(|x| x.name() == name)
+            .ok_or_else(|| {
+                let all: Vec<String> = Blur::ALL.iter().map(|b| b.name()).collect();
+                anyhow::anyhow!("unknown row {name:?} ({})", all.join(", "))
+            })
+    }
     fn motion(self) -> f64 {
         match self {
             Blur::Motion | Blur::Both => 1.0,
@@ -75,6 +90,25 @@ pub enum Bench {
     Game,
     /// ~0.4 px triangles
     Dense,
+}
+
+impl Bench {
+    /// Both scenes, in the table's order.
+    pub const ALL: [Bench; 2] = [Bench::Game, Bench::Dense];
+    /// The command-line name (game, dense).
+    pub fn name(self) -> &'static str {
+        match self {
+            Bench::Game => "game",
+            Bench::Dense => "dense",
+        }
+    }
+    /// The scene of a command-line name; the error lists the names.
+    pub fn from_name(name: &str) -> anyhow::Result<Bench> {
+        Bench::ALL
+            .into_iter()
+            .find(|b| b.name() == name)
+            .ok_or_else(|| anyhow::anyhow!("unknown scene {name:?} (game, dense)"))
+    }
 }
 
 /// A camera pose looking from `eye` at `target`, both moved by `travel` (a pan).

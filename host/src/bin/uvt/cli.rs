@@ -85,6 +85,36 @@ pub enum Cmd {
         #[arg(long, default_value = names::DEFAULT_ALIAS)]
         precision: String,
     },
+    /// Write a bench row's own work (triangles, sample table, viewport; bounds tile 1) as the
+    /// Cortex-M strategy harness takes it (demo/examples/m4_stages; `bash demo/m4_report.sh
+    /// --strategies` runs it for every row).
+    M4Workload {
+        /// bench scene: game or dense
+        #[arg(long)]
+        scene: String,
+        /// bench row: static, motion, motion2, defocus, defocus2, both, both2
+        #[arg(long)]
+        row: String,
+        /// the quick size (a quarter of the resolution and tessellation)
+        #[arg(long)]
+        quick: bool,
+        /// keep every N-th triangle of the row (from the first)
+        #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..))]
+        every: u32,
+        /// output file
+        #[arg(long)]
+        out: PathBuf,
+    },
+    /// Derive the rule of the `auto` bounds strategy from the Cortex-M4F stage costs and write
+    /// it as Rust source (core/src/bounds/auto/rule.rs).
+    AutoRule {
+        /// the stage costs (`bash demo/m4_report.sh --strategies` writes them)
+        #[arg(long, default_value = uvt_host::bench::m4_stages::DEFAULT_PATH)]
+        m4: PathBuf,
+        /// output file
+        #[arg(long, default_value = "core/src/bounds/auto/rule.rs")]
+        out: PathBuf,
+    },
     /// Image error against run time: every bounds strategy at 1..64 spp against a 256-spp f64
     /// reference; writes converge.md, converge.json, converge.svg.
     Converge {

@@ -180,17 +180,12 @@ fn run(cli: Cli) -> Result<()> {
                     .map_err(|m| anyhow!("--limit-effort {e:?}: {m}"))?,
             };
             let kinds: Vec<Bench> = match scene.as_deref() {
-                None => vec![Bench::Game, Bench::Dense],
-                Some("game") => vec![Bench::Game],
-                Some("dense") => vec![Bench::Dense],
-                Some(o) => bail!("--scene: unknown scene {o:?} (game, dense)"),
+                None => Bench::ALL.to_vec(),
+                Some(n) => vec![Bench::from_name(n).map_err(|e| anyhow!("--scene: {e}"))?],
             };
             let rows_sel: Vec<Blur> = match row.as_deref() {
                 None => Blur::ALL.to_vec(),
-                Some(r) => vec![Blur::ALL
-                    .into_iter()
-                    .find(|x| x.label().replace(" x", "") == r)
-                    .ok_or_else(|| anyhow!("--row: unknown row {r:?} (static, motion, motion2, defocus, defocus2, both, both2)"))?],
+                Some(r) => vec![Blur::from_name(r).map_err(|e| anyhow!("--row: {e}"))?],
             };
             let rows = uvt_host::bench::ste_table::run_table_of(
                 cfg,
@@ -204,6 +199,30 @@ fn run(cli: Cli) -> Result<()> {
             if let Some(p) = json {
                 write_atomic(&p, (serde_json::to_string_pretty(&rows)? + "\n").as_bytes())?;
             }
+        }
+        Cmd::M4Workload {
+            scene,
+            row,
+            quick,
+            every,
+            out,
+        } => {
+            let kind = Bench::from_name(&scene).map_err(|e| anyhow!("--scene: {e}"))?;
+            let row = Blur::from_name(&row).map_err(|e| anyhow!("--row: {e}"))?;
+            let bytes = uvt_host::bench::workload::bench_workload(kind, row, quick, every)?;
+            write_atomic(&out, &bytes)?;
+            say(&format!(
+                "wrote {} ({} bytes)\n",
+                out.display(),
+                bytes.len()
+            ))?;
+        }
+        Cmd::AutoRule { m4, out } => {
+            let stages = uvt_host::bench::m4_stages::M4Stages::load(&m4)?;
+            let rules = uvt_host::bench::auto_rule::derive(&stages)?;
+            let src = uvt_host::bench::auto_rule::rule_source(&rules, &m4.display().to_string());
+            write_atomic(&out, src.as_bytes())?;
+            say(&src)?;
         }
         Cmd::Converge {
             scene,

@@ -1,0 +1,180 @@
+//! `auto`: a bounds strategy chosen per triangle ([`Auto`]). Setup already knows the triangle's
+//! class and its footprint; the rule ([`RULE`], one [`Tier`] per class) keeps Laine 2011 (the
+//! cheapest setup) below a footprint area and takes a heavier strategy with cheaper tiles,
+//! predicates and fewer sample tests ([`Pick`]) from that area on. The rule is derived from
+//! measured Cortex-M4F instructions per stage and per strategy on the bench rows' own triangles
+//! (`uvt auto-rule`, which writes [`rule`] from `host/report/m4_strategies.json`; its module
+//! docs give the totals). [`tier`] holds the rule's types.
+//!
+//! **Why it is conservative.** For each triangle `auto` is exactly one of the registry's
+//! strategies — its coefficients, row spans, tile bounds and predicate are that strategy's,
+//! unchanged (the enums below only carry them) — and every one of those strategies is
+//! conservative (the proof at the top of its file). A sample the sample test covers is therefore
+//! never outside its tile's bounds, whatever the rule picks; the rule decides the cost only.
+//!
+//! **Cost.** The choice adds 3 operations to setup (the footprint's area: one multiply; one
+//! compare with the class's threshold; one select); per tile and per sample nothing beyond the
+//! picked strategy's own work (one branch on the variant).
+#![warn(
+    clippy::arithmetic_side_effects,
+    clippy::indexing_slicing,
+    clippy::cast_possible_truncation,
+    clippy::cast_sign_loss,
+    clippy::cast_possible_wrap
+)]
+
+use crate::bounds::edge_time::{EdgeCoeffs, EdgeTile, EdgeTime};
+use crate::bounds::hull::tiles::HullTiles;
+use crate::bounds::hull::HullCull;
+use crate::bounds::laine::{Laine2011, LaineCoeffs};
+use crate::bounds::registry::{hull, hull_edge};
+use crate::bounds::strategy::{BoundsStrategy, RowSpan, TileBounds, UvtBox};
+use crate::config::unit::Unit;
+use crate::input::PixelRect;
+use crate::setup::Setup;
+use crate::stats::Ops;
+
+pub mod rule;
+pub mod tier;
+
+pub use rule::RULE;
+pub use tier::{Pick, Tier};
+
+/// The per-triangle choice: the registry's `auto` ([`Auto::new`]) follows [`RULE`]; any other
+/// rule ([`Auto::with_rule`]) is as conservative (module docs) and serves the tests, which force
+/// every pick.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Auto {
+    rule: [Tier; 4],
+}
+
+impl Default for Auto {
+    fn default() -> Self {
+        Auto::new()
+    }
+}
+
+/// The picked strategy's coefficients.
+#[derive(Clone, Copy, Debug)]
+pub enum AutoCoeffs {
+    /// Laine 2011's
+    Laine(LaineCoeffs),
+    /// hull's
+    Hull((HullTiles, LaineCoeffs)),
+    /// hull+edge-t's
+    HullEdge((HullTiles, EdgeCoeffs<LaineCoeffs>)),
+}
+
+/// The picked strategy's tile.
+#[derive(Clone, Copy, Debug)]
+pub enum AutoTile {
+    /// a box (Laine 2011, hull)
+    Box(UvtBox),
+    /// hull+edge-t's tile
+    Edge(EdgeTile<UvtBox>),
+}
+
+impl TileBounds for AutoTile {
+    #[inline]
+    fn uvt_box(&self) -> &UvtBox {
+        match self {
+            AutoTile::Box(b) => b,
+            AutoTile::Edge(e) => e.uvt_box(),
+        }
+    }
+    #[inline]
+    fn predicate(&self, u: i32, v: i32, t: i32, ops: &mut Ops) -> bool {
+        match self {
+            AutoTile::Box(b) => b.predicate(u, v, t, ops),
+            AutoTile::Edge(e) => e.predicate(u, v, t, ops),
+        }
+    }
+}
+
+const HULL: HullCull<Laine2011> = hull();
+const HULL_EDGE: HullCull<EdgeTime<Laine2011>> = hull_edge();
+
+impl Auto {
+    /// The registry's `auto`: the derived [`RULE`].
+    pub const fn new() -> Auto {
+        Auto { rule: RULE }
+    }
+    /// `auto` with another rule (one tier per class, [`crate::config::class::Class::index`]
+    /// order).
+    pub const fn with_rule(rule: [Tier; 4]) -> Auto {
+        Auto { rule }
+    }
+    /// What the rule picks for a set-up triangle (its class's tier at its footprint's area).
+    pub fn pick(&self, setup: &Setup) -> Pick {
+        let fp = setup.footprint;
+        // Footprint sides ≤ 2048 (viewport): the area ≤ 2^22.
+        let area = u32::from(fp.x1.saturating_sub(fp.x0))
+            .saturating_mul(u32::from(fp.y1.saturating_sub(fp.y0)));
+        self.rule
+            .get(setup.class.index())
+            .map_or(Pick::Laine, |t| t.pick(area))
+    }
+}
+
+impl BoundsStrategy for Auto {
+    type Coeffs = AutoCoeffs;
+    type Tile = AutoTile;
+    fn name(&self) -> &'static str {
+        "auto"
+    }
+    fn prepare<U: Unit>(&self, setup: &Setup, ops: &mut Ops) -> AutoCoeffs {
+        ops.add_setup(3);
+        match self.pick(setup) {
+            Pick::Laine => AutoCoeffs::Laine(Laine2011.prepare::<U>(setup, ops)),
+            Pick::Hull => AutoCoeffs::Hull(HULL.prepare::<U>(setup, ops)),
+            Pick::HullEdge => AutoCoeffs::HullEdge(HULL_EDGE.prepare::<U>(setup, ops)),
+        }
+    }
+    fn tile<U: Unit>(
+        &self,
+        setup: &Setup,
+        c: &AutoCoeffs,
+        tile: PixelRect,
+        ops: &mut Ops,
+    ) -> Option<AutoTile> {
+        match c {
+            AutoCoeffs::Laine(c) => Laine2011.tile::<U>(setup, c, tile, ops).map(AutoTile::Box),
+            AutoCoeffs::Hull(c) => HULL.tile::<U>(setup, c, tile, ops).map(AutoTile::Box),
+            AutoCoeffs::HullEdge(c) => HULL_EDGE.tile::<U>(setup, c, tile, ops).map(AutoTile::Edge),
+        }
+    }
+    fn row_span(
+        &self,
+        setup: &Setup,
+        c: &AutoCoeffs,
+        row: PixelRect,
+        bt: u16,
+        ops: &mut Ops,
+    ) -> RowSpan {
+        match c {
+            AutoCoeffs::Laine(c) => Laine2011.row_span(setup, c, row, bt, ops),
+            AutoCoeffs::Hull(c) => HULL.row_span(setup, c, row, bt, ops),
+            AutoCoeffs::HullEdge(c) => HULL_EDGE.row_span(setup, c, row, bt, ops),
+        }
+    }
+    fn span_tile<U: Unit>(
+        &self,
+        setup: &Setup,
+        c: &AutoCoeffs,
+        span: &RowSpan,
+        tile: PixelRect,
+        ops: &mut Ops,
+    ) -> Option<AutoTile> {
+        match c {
+            AutoCoeffs::Laine(c) => Laine2011
+                .span_tile::<U>(setup, c, span, tile, ops)
+                .map(AutoTile::Box),
+            AutoCoeffs::Hull(c) => HULL
+                .span_tile::<U>(setup, c, span, tile, ops)
+                .map(AutoTile::Box),
+            AutoCoeffs::HullEdge(c) => HULL_EDGE
+                .span_tile::<U>(setup, c, span, tile, ops)
+                .map(AutoTile::Edge),
+        }
+    }
+}

@@ -1,0 +1,178 @@
+//! The Cortex-M4F instructions per stage of every bounds strategy on the bench rows' own
+//! triangles, as `bash demo/m4_report.sh --strategies` writes them
+//! (`host/report/m4_strategies.json`; the harness is `demo/examples/m4_stages`), and the
+//! per-call figures read from them: instructions per setup (per submitted triangle), per
+//! visited bounds tile (row spans and tile bounds), per sample put through the box and
+//! predicate, and per sample test.
+
+use std::collections::BTreeMap;
+use std::path::Path;
+
+use anyhow::Context;
+use serde::Deserialize;
+
+/// The committed file (relative to the repository root).
+pub const DEFAULT_PATH: &str = "host/report/m4_strategies.json";
+
+/// The committed file's text, built in: every command reads the same figures wherever it runs.
+const COMMITTED: &str = include_str!("../../report/m4_strategies.json");
+
+/// The committed figures ([`DEFAULT_PATH`], built in); the error says why they do not parse.
+pub fn committed() -> anyhow::Result<&'static M4Stages> {
+    static PARSED: std::sync::OnceLock<Result<M4Stages, String>> = std::sync::OnceLock::new();
+    PARSED
+        .get_or_init(|| serde_json::from_str(COMMITTED).map_err(|e| e.to_string()))
+        .as_ref()
+        .map_err(|e| anyhow::anyhow!("{DEFAULT_PATH} (built in): {e}"))
+}
+
+/// One strategy on one class of one row.
+#[derive(Clone, Debug, Deserialize)]
+pub struct StageLine {
+    /// registry name
+    pub strategy: String,
+    /// triangle class name
+    pub class: String,
+    /// triangles set up
+    pub triangles: u64,
+    /// visible ones
+    pub visible: u64,
+    /// bounds tiles visited
+    pub tiles: u64,
+    /// samples of kept tiles put through the box and predicate
+    pub admits: u64,
+    /// samples tested
+    pub tested: u64,
+    /// samples covered
+    pub covered: u64,
+    /// core ops: setup, bounds, rows, predicate, sample
+    pub ops: [u64; 5],
+    /// instructions: setup, tile walk, predicate, sample test
+    pub insn: [u64; 4],
+}
+
+/// One bench row's lines.
+#[derive(Clone, Debug, Deserialize)]
+pub struct StageRow {
+    /// game or dense
+    pub scene: String,
+    /// row name (`Blur::name`)
+    pub row: String,
+    /// every `every`-th triangle of the quick row
+    pub every: u32,
+    /// per strategy and class
+    pub stages: Vec<StageLine>,
+}
+
+/// The file.
+#[derive(Clone, Debug, Deserialize)]
+pub struct M4Stages {
+    /// how it was measured
+    pub target: String,
+    /// the rows
+    pub rows: Vec<StageRow>,
+}
+
+impl M4Stages {
+    /// Read `path`; the error names it.
+    pub fn load(path: &Path) -> anyhow::Result<M4Stages> {
+        let text =
+            std::fs::read_to_string(path).with_context(|| format!("reading {}", path.display()))?;
+        serde_json::from_str(&text).with_context(|| format!("parsing {}", path.display()))
+    }
+
+    /// The lines of row (`scene`, `row`).
+    pub fn row(&self, scene: &str, row: &str) -> Option<&StageRow> {
+        self.rows.iter().find(|r| r.scene == scene && r.row == row)
+    }
+
+    /// Per-call figures of every (strategy, class) pooled over every row.
+    pub fn per_class(&self) -> BTreeMap<(String, String), PerCall> {
+        let mut m: BTreeMap<(String, String), StageSum> = BTreeMap::new();
+        for l in self.rows.iter().flat_map(|r| &r.stages) {
+            m.entry((l.strategy.clone(), l.class.clone()))
+                .or_default()
+                .add(l);
+        }
+        m.into_iter().map(|(k, s)| (k, s.per_call())).collect()
+    }
+}
+
+impl M4Stages {
+    /// Per-call figures of `strategy` pooled over every row and class (for a scene that is not
+    /// a bench row).
+    pub fn pooled(&self, strategy: &str) -> Option<PerCall> {
+        let mut s = StageSum::default();
+        for l in self.rows.iter().flat_map(|r| &r.stages) {
+            if l.strategy == strategy {
+                s.add(l);
+            }
+        }
+        (s.triangles > 0).then(|| s.per_call())
+    }
+}
+
+impl StageRow {
+    /// Per-call figures of `strategy` on this row, pooled over its classes.
+    pub fn per_call(&self, strategy: &str) -> Option<PerCall> {
+        let mut s = StageSum::default();
+        for l in self.stages.iter().filter(|l| l.strategy == strategy) {
+            s.add(l);
+        }
+        (s.triangles > 0).then(|| s.per_call())
+    }
+}
+
+/// Sums of counts and instructions.
+#[derive(Clone, Copy, Debug, Default)]
+struct StageSum {
+    triangles: u64,
+    tiles: u64,
+    admits: u64,
+    tested: u64,
+    insn: [u64; 4],
+}
+
+impl StageSum {
+    fn add(&mut self, l: &StageLine) {
+        self.triangles += l.triangles;
+        self.tiles += l.tiles;
+        self.admits += l.admits;
+        self.tested += l.tested;
+        for (a, b) in self.insn.iter_mut().zip(l.insn) {
+            *a += b;
+        }
+    }
+    fn per_call(&self) -> PerCall {
+        let d = |a: u64, b: u64| if b == 0 { 0.0 } else { a as f64 / b as f64 };
+        PerCall {
+            setup: d(self.insn[0], self.triangles),
+            tile: d(self.insn[1], self.tiles),
+            admit: d(self.insn[2], self.admits),
+            test: d(self.insn[3], self.tested),
+        }
+    }
+}
+
+/// Cortex-M4F instructions per call of each stage.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct PerCall {
+    /// per submitted triangle (setup and the strategy's preparation)
+    pub setup: f64,
+    /// per visited bounds tile (row spans and tile bounds)
+    pub tile: f64,
+    /// per sample of a kept tile (sample loop, box and predicate)
+    pub admit: f64,
+    /// per sample test
+    pub test: f64,
+}
+
+impl PerCall {
+    /// The instructions of a frame with these counts.
+    pub fn total(&self, triangles: u64, tiles: u64, admits: u64, tested: u64) -> f64 {
+        self.setup * triangles as f64
+            + self.tile * tiles as f64
+            + self.admit * admits as f64
+            + self.test * tested as f64
+    }
+}

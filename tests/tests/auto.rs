@@ -1,0 +1,217 @@
+//! The per-triangle strategy `auto` (`core/src/bounds/auto/`): conservative like every
+//! strategy it picks — proptest and a seeded-random sweep (`UVT_SEED`, printed on failure;
+//! `UVT_EXTENSIVE=1` for many more cases), each case a whole-viewport brute force against the
+//! sample test at the exact and bounded precisions (the default OFF = 20 and the coarse OFF = 28,
+//! where a missing epsilon term fails), every triangle kind and bounds-tile size — with the
+//! registry's rule and with rules that force every pick and split by area; the same counters and
+//! ops as the strategy it picks (the variants carry that strategy's values unchanged); and the
+//! tier's threshold on its boundary.
+
+use proptest::prelude::*;
+use uvt_core::bounds::auto::{Auto, Pick, Tier, RULE};
+use uvt_core::bounds::registry::{hull, hull_edge};
+use uvt_core::{Bounded, BoundsStrategy, Exact, Laine2011, Prim, SamplePattern, Viewport};
+use uvt_tests::kinds::{make, Kind, ALL_KINDS, NP};
+use uvt_tests::*;
+
+/// Every class takes `heavy` from `from_px` pixels on.
+const fn all(heavy: Pick, from_px: u32) -> Auto {
+    let t = Tier { heavy, from_px };
+    Auto::with_rule([t; 4])
+}
+
+/// The rules of the brute force: the registry's, each pick forced, and area splits.
+fn rules() -> [Auto; 6] {
+    [
+        Auto::new(),
+        all(Pick::Laine, u32::MAX),
+        all(Pick::Hull, 0),
+        all(Pick::HullEdge, 0),
+        all(Pick::Hull, 30),
+        Auto::with_rule([
+            Tier {
+                heavy: Pick::Hull,
+                from_px: 12,
+            },
+            Tier {
+                heavy: Pick::HullEdge,
+                from_px: 40,
+            },
+            Tier {
+                heavy: Pick::Hull,
+                from_px: 60,
+            },
+            Tier {
+                heavy: Pick::HullEdge,
+                from_px: 20,
+            },
+        ]),
+    ]
+}
+
+fn check_at<P: uvt_core::Precision>(
+    t: &uvt_core::Triangle,
+    pat: &SamplePattern<'_>,
+) -> Result<u64, String> {
+    let vp = Viewport::new(24, 20).unwrap();
+    let mut covered = 0;
+    for bt in [1u16, 2, 4, 8] {
+        for a in rules() {
+            covered += check_conservative_with::<_, P>(&a, t, vp, pat, bt)?;
+        }
+    }
+    Ok(covered)
+}
+
+fn check_case(kind: Kind, p: &[f64; NP], pat_seed: u64) -> Result<u64, String> {
+    let samples = mixed_samples(pat_seed);
+    let pat = SamplePattern::new(2, 8, &samples).unwrap();
+    let t = make(kind, p);
+    Ok(check_at::<Exact>(&t, &pat)?
+        + check_at::<uvt_core::BoundedPrecision>(&t, &pat)?
+        + check_at::<Bounded<16, 16, 16, 28>>(&t, &pat)?)
+}
+
+fn params() -> impl Strategy<Value = [f64; NP]> {
+    proptest::array::uniform32(-1.0f64..=1.0).prop_flat_map(|a| {
+        proptest::array::uniform16(-1.0f64..=1.0).prop_map(move |b| {
+            let mut p = [0.0; NP];
+            p[..32].copy_from_slice(&a);
+            p[32..].copy_from_slice(&b);
+            p
+        })
+    })
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: cases(24, 1000), failure_persistence: None, ..ProptestConfig::default() })]
+    #[test]
+    fn auto_conservative(p in params(), pat_seed in any::<u64>(), k in 0usize..8) {
+        if let Err(msg) = check_case(ALL_KINDS[k], &p, pat_seed) {
+            prop_assert!(false, "{}", msg);
+        }
+    }
+}
+
+/// Seeded random sweep over every kind (cycled); must cover samples, or it proves nothing.
+#[test]
+fn auto_conservative_seeded_random() {
+    let seed = seed();
+    let mut rng = Rng(seed ^ 0xa070);
+    let mut covered = 0u64;
+    for case in 0..cases(32, 1500) {
+        let k = (case % 8) as usize;
+        let mut p = [0.0; NP];
+        p.iter_mut().for_each(|x| *x = rng.range(-1.0, 1.0));
+        match check_case(ALL_KINDS[k], &p, rng.next_u64()) {
+            Ok(c) => covered += c,
+            Err(msg) => panic!(
+                "{msg}\n  kind {:?}, case {case}, rerun with UVT_SEED={seed}",
+                ALL_KINDS[k]
+            ),
+        }
+    }
+    assert!(
+        covered > 1000,
+        "only {covered} covered samples (seed {seed})"
+    );
+}
+
+/// With a pick forced, `auto` renders with exactly the counters and ops of that strategy (its
+/// setup ops plus the choice's 3): tiles visited and skipped, samples tested and covered,
+/// bounds, row and predicate ops — on every kind, tile sizes 1 and 4.
+#[test]
+fn forced_pick_is_that_strategy() {
+    let seed = seed();
+    let mut rng = Rng(seed ^ 0xa071);
+    let vp = Viewport::new(24, 20).unwrap();
+    let samples = random_samples(&mut rng, 2, 16);
+    let pat = SamplePattern::new(2, 16, &samples).unwrap();
+    let mut picked = [0u64; 3];
+    for case in 0..cases(64, 2000) {
+        let k = (case % 8) as usize;
+        let mut p = [0.0; NP];
+        p.iter_mut().for_each(|x| *x = rng.range(-1.0, 1.0));
+        let prims = [Prim {
+            tri: make(ALL_KINDS[k], &p),
+            color: uvt_core::Rgb888::new(255, 255, 255),
+        }];
+        for bt in [1u8, 4] {
+            let pairs = [
+                (
+                    render_stats(all(Pick::Laine, u32::MAX), &prims, vp, &pat, bt),
+                    render_stats(Laine2011, &prims, vp, &pat, bt),
+                ),
+                (
+                    render_stats(all(Pick::Hull, 0), &prims, vp, &pat, bt),
+                    render_stats(hull(), &prims, vp, &pat, bt),
+                ),
+                (
+                    render_stats(all(Pick::HullEdge, 0), &prims, vp, &pat, bt),
+                    render_stats(hull_edge(), &prims, vp, &pat, bt),
+                ),
+            ];
+            for (i, (a, s)) in pairs.iter().enumerate() {
+                let visible: u64 = s.by_class.iter().sum();
+                let mut want = *s;
+                want.ops.setup += 3 * visible;
+                assert_eq!(
+                    *a, want,
+                    "auto forced to {:?} differs from it: kind {:?}, case {case}, tile {bt}, rerun with UVT_SEED={seed}",
+                    Pick::ALL[i], ALL_KINDS[k]
+                );
+                picked[i] += a.samples_tested;
+            }
+        }
+    }
+    assert!(
+        picked.iter().all(|&n| n > 0),
+        "a pick tested nothing: {picked:?}"
+    );
+}
+
+/// The tier on its boundary: `from_px − 1` pixels keep Laine 2011, `from_px` take the heavy
+/// pick; `u32::MAX` never does; the registry's rule names a heavy pick only with a threshold.
+#[test]
+fn tier_threshold_boundary() {
+    let t = Tier {
+        heavy: Pick::HullEdge,
+        from_px: 57,
+    };
+    assert_eq!(t.pick(56), Pick::Laine);
+    assert_eq!(t.pick(57), Pick::HullEdge);
+    assert_eq!(t.pick(u32::MAX - 1), Pick::HullEdge);
+    let never = Tier {
+        heavy: Pick::Hull,
+        from_px: u32::MAX,
+    };
+    assert_eq!(never.pick(1 << 22), Pick::Laine);
+    for (i, r) in RULE.iter().enumerate() {
+        assert_eq!(
+            r.heavy == Pick::Laine,
+            r.from_px == u32::MAX,
+            "class {i}: {r:?}"
+        );
+    }
+    assert_eq!(Auto::new().name(), "auto");
+}
+
+/// The committed rule is what `uvt auto-rule` derives from the committed stage file: deriving
+/// it again gives `core/src/bounds/auto/rule.rs` byte for byte (a rule edited by hand, or stage
+/// figures re-measured without regenerating the rule, fails).
+#[test]
+fn committed_rule_is_derived_from_the_committed_stage_costs() {
+    let root = concat!(env!("CARGO_MANIFEST_DIR"), "/..");
+    let stages = uvt_host::bench::m4_stages::committed().expect("committed stage figures");
+    let rules = uvt_host::bench::auto_rule::derive(stages).expect("derive");
+    let want =
+        uvt_host::bench::auto_rule::rule_source(&rules, uvt_host::bench::m4_stages::DEFAULT_PATH);
+    let have = std::fs::read_to_string(format!("{root}/core/src/bounds/auto/rule.rs")).unwrap();
+    assert!(
+        have == want,
+        "core/src/bounds/auto/rule.rs is not the derived rule; regenerate with `uvt auto-rule`.\nderived:\n{want}"
+    );
+    for (r, d) in RULE.iter().zip(&rules) {
+        assert_eq!(*r, d.tier);
+    }
+}
