@@ -1,5 +1,6 @@
-//! Every named bounds strategy, defined once: the composed ones (swept-hull tile culling in front
-//! of the others) and [`STRATEGIES`], the names every command, table and report takes, with
+//! Every named bounds strategy, defined once: [`STRATEGIES`], the names every command, table and
+//! report takes (the composed strategies, swept-hull tile culling in front of the others, are
+//! built in [`crate::bounds::composed`] and re-exported here), with
 //! [`with_strategy!`](crate::with_strategy) binding a name to its strategy value.
 //!
 //! | name | strategy |
@@ -15,39 +16,12 @@
 //! | `auto` | [`Auto`]: Laine 2011, hull or hull+edge-t per triangle |
 //!
 //! [`BboxScan`]: crate::bounds::bbox::BboxScan
+//! [`Laine2011`]: crate::bounds::laine::Laine2011
+//! [`LensTime`]: crate::bounds::lens_time::LensTime
+//! [`Hyper`]: crate::bounds::hyper::Hyper
 //! [`Auto`]: crate::bounds::auto::Auto
 
-use crate::bounds::edge_time::EdgeTime;
-use crate::bounds::hull::HullCull;
-use crate::bounds::hyper::Hyper;
-use crate::bounds::laine::Laine2011;
-use crate::bounds::lens_time::LensTime;
-
-/// Lens slabs of "lens-t" and "hull+lens-t".
-pub const BEST_SLABS: usize = 4;
-
-/// Swept-hull tile culling in front of Laine 2011 ("hull").
-pub const fn hull() -> HullCull<Laine2011> {
-    HullCull::new(Laine2011, "hull")
-}
-
-/// Swept-hull tile culling in front of lens-dependent time bounds ("hull+lens-t").
-pub const fn hull_lens() -> HullCull<LensTime<BEST_SLABS>> {
-    HullCull::new(LensTime, "hull+lens-t")
-}
-
-/// Swept-hull tile culling in front of edge-direction time bounds on Laine 2011
-/// ("hull+edge-t").
-pub const fn hull_edge() -> HullCull<EdgeTime<Laine2011>> {
-    HullCull::new(EdgeTime::new(Laine2011, "edge-t"), "hull+edge-t")
-}
-
-/// The combined strategy: swept-hull tile culling in front of the edge-direction time bound
-/// (motion-only triangles) on the bilinear (u, t) / (v, t) surfaces ("best": the highest STE of
-/// the bench-ste rows; the edge bound adds 34 ops per tile on motion-only triangles only).
-pub const fn best() -> HullCull<EdgeTime<Hyper>> {
-    HullCull::new(EdgeTime::new(Hyper, "edge-t+hyper"), "best")
-}
+pub use crate::bounds::composed::{best, hull, hull_edge, hull_lens, BEST_SLABS};
 
 /// The name of every strategy of the registry, in the order of the tables (module docs).
 pub const STRATEGIES: [&str; 9] = [
@@ -84,12 +58,12 @@ macro_rules! with_strategy {
                 ::core::option::Option::Some($body)
             }
             "hull" => {
-                let $s = $crate::bounds::registry::hull();
+                let $s = $crate::bounds::composed::hull();
                 ::core::option::Option::Some($body)
             }
             "lens-t" => {
                 let $s =
-                    $crate::bounds::lens_time::LensTime::<{ $crate::bounds::registry::BEST_SLABS }>;
+                    $crate::bounds::lens_time::LensTime::<{ $crate::bounds::composed::BEST_SLABS }>;
                 ::core::option::Option::Some($body)
             }
             "hyper" => {
@@ -97,15 +71,15 @@ macro_rules! with_strategy {
                 ::core::option::Option::Some($body)
             }
             "hull+lens-t" => {
-                let $s = $crate::bounds::registry::hull_lens();
+                let $s = $crate::bounds::composed::hull_lens();
                 ::core::option::Option::Some($body)
             }
             "hull+edge-t" => {
-                let $s = $crate::bounds::registry::hull_edge();
+                let $s = $crate::bounds::composed::hull_edge();
                 ::core::option::Option::Some($body)
             }
             "best" => {
-                let $s = $crate::bounds::registry::best();
+                let $s = $crate::bounds::composed::best();
                 ::core::option::Option::Some($body)
             }
             "auto" => {

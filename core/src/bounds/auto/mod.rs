@@ -23,11 +23,11 @@
     clippy::cast_possible_wrap
 )]
 
+use crate::bounds::composed::{hull, hull_edge};
 use crate::bounds::edge_time::{EdgeCoeffs, EdgeTile, EdgeTime};
 use crate::bounds::hull::tiles::HullTiles;
 use crate::bounds::hull::HullCull;
 use crate::bounds::laine::{Laine2011, LaineCoeffs};
-use crate::bounds::registry::{hull, hull_edge};
 use crate::bounds::strategy::{BoundsStrategy, RowSpan, TileBounds, UvtBox};
 use crate::config::unit::Unit;
 use crate::input::PixelRect;

@@ -12,6 +12,14 @@ use crate::bounds::hull::faces::{HullCoeffs, HullFace, MAX_FACES, SUBPIXEL_ONE};
 use crate::input::PixelRect;
 use crate::stats::Ops;
 
+/// Most faces a triangle keeps in per-tile form: the first [`KEPT_FACES`] of the greedy order
+/// ([`HullTiles::of`]). Keeping fewer faces only culls fewer tiles (conservative); on the quick
+/// bench scenes no triangle keeps more than 6 (`tests/tests/hull.rs` measures the most on each,
+/// so the cap changes no decision there). It sets the per-triangle record: 8 faces of 3 × 128
+/// bits and 2 corner bits, against 24 before — the record every strategy with hull culling
+/// stores and copies per triangle.
+pub const KEPT_FACES: usize = 8;
+
 /// Largest grid of footprint pixels per axis on which setup measures each face's culling to
 /// order the faces (8 × 8 = 64 points, one bit each).
 const ORDER_GRID: u32 = 8;
@@ -162,10 +170,11 @@ impl TileFace {
 }
 
 /// Per-triangle faces in per-tile form, kept only if they can cull a tile of the footprint, and
-/// ordered so that the faces culling the most footprint pixels come first.
+/// ordered so that the faces culling the most footprint pixels come first; at most
+/// [`KEPT_FACES`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct HullTiles {
-    faces: [TileFace; MAX_FACES],
+    faces: [TileFace; KEPT_FACES],
     len: usize,
     /// every kept face lies in the documented ranges (|a'|, |b'| < 2^81, |c'| < 2^125), so no
     /// per-tile or per-row evaluation overflows and row spans are exact ([`HullTiles::span`])
@@ -181,7 +190,7 @@ impl HullTiles {
             c: 0,
             hi_x: false,
             hi_y: false,
-        }; MAX_FACES],
+        }; KEPT_FACES],
         len: 0,
         spans: true,
     };
@@ -195,12 +204,16 @@ impl HullTiles {
     /// cost"): each face folded ([`TileFace::of`]; 4 ops), dropped if it does not cull the
     /// footprint pixel where it is least (5 ops; then it culls no tile inside `fp`), and the
     /// kept ones ordered greedily by the pixels of an up to 8 × 8 grid over `fp` they cull that
-    /// no earlier face culls (5 ops per face and grid pixel, 2 per face and pick).
+    /// no earlier face culls (5 ops per face and grid pixel, 2 per face and pick); the first
+    /// [`KEPT_FACES`] of that order are stored.
     pub fn of(hull: &HullCoeffs, fp: PixelRect, ops: &mut Ops) -> HullTiles {
         let mut out = HullTiles::EMPTY;
         if fp.is_empty() {
             return out;
         }
+        // Every face that culls some tile of the footprint, before the greedy order picks the
+        // stored ones.
+        let mut cand = [TileFace::default(); MAX_FACES];
         let w = u32::from(fp.x1.saturating_sub(fp.x0));
         let h = u32::from(fp.y1.saturating_sub(fp.y0));
         let (gx, gy) = (w.min(ORDER_GRID), h.min(ORDER_GRID));
@@ -248,18 +261,16 @@ impl HullTiles {
                     }
                 }
             }
-            if let (Some(slot), Some(m)) = (out.faces.get_mut(n), masks.get_mut(n)) {
-                out.spans &= t.in_range();
+            if let (Some(slot), Some(m)) = (cand.get_mut(n), masks.get_mut(n)) {
                 *slot = t;
                 *m = mask;
                 n = n.saturating_add(1);
             }
         }
-        out.len = n;
         // Greedy order: next, the face culling the most grid pixels not yet culled (the first
-        // such on ties, so the order is deterministic).
+        // such on ties, so the order is deterministic); stored up to KEPT_FACES.
         let mut covered = 0u64;
-        for k in 0..n {
+        for k in 0..n.min(KEPT_FACES) {
             let mut pick = k;
             let mut gain = 0u32;
             for (i, m) in masks.iter().enumerate().take(n).skip(k) {
@@ -269,9 +280,14 @@ impl HullTiles {
                     (pick, gain) = (i, g);
                 }
             }
-            out.faces.swap(k, pick);
+            cand.swap(k, pick);
             masks.swap(k, pick);
             covered |= masks.get(k).copied().unwrap_or(0);
+            if let (Some(slot), Some(t)) = (out.faces.get_mut(k), cand.get(k)) {
+                out.spans &= t.in_range();
+                *slot = *t;
+                out.len = k.saturating_add(1);
+            }
         }
         out
     }
