@@ -43,6 +43,20 @@ pub const ALL_KINDS: [Kind; 8] = [
 /// Parameters per triangle.
 pub const NP: usize = 48;
 
+/// Proptest's strategy for a kind's parameters: [`NP`] values in [−1, 1] (proptest's arrays
+/// stop at 32, hence two).
+pub fn params() -> impl proptest::strategy::Strategy<Value = [f64; NP]> {
+    use proptest::strategy::Strategy;
+    proptest::array::uniform32(-1.0f64..=1.0).prop_flat_map(|a| {
+        proptest::array::uniform16(-1.0f64..=1.0).prop_map(move |b| {
+            let mut p = [0.0; NP];
+            p[..32].copy_from_slice(&a);
+            p[32..].copy_from_slice(&b);
+            p
+        })
+    })
+}
+
 /// Map parameters in [-1, 1] to a triangle of the given kind (shrinks toward simple shapes).
 pub fn make(kind: Kind, p: &[f64; NP]) -> Triangle {
     if let Kind::Extreme = kind {

@@ -11,7 +11,7 @@ use proptest::prelude::*;
 use uvt_core::bounds::auto::{Auto, Pick, Tier, RULE};
 use uvt_core::bounds::registry::{hull, hull_edge};
 use uvt_core::{Bounded, BoundsStrategy, Exact, Laine2011, Prim, SamplePattern, Viewport};
-use uvt_tests::kinds::{make, Kind, ALL_KINDS, NP};
+use uvt_tests::kinds::{make, params, Kind, ALL_KINDS, NP};
 use uvt_tests::*;
 
 /// Every class takes `heavy` from `from_px` pixels on.
@@ -70,17 +70,6 @@ fn check_case(kind: Kind, p: &[f64; NP], pat_seed: u64) -> Result<u64, String> {
     Ok(check_at::<Exact>(&t, &pat)?
         + check_at::<uvt_core::BoundedPrecision>(&t, &pat)?
         + check_at::<Bounded<16, 16, 16, 28>>(&t, &pat)?)
-}
-
-fn params() -> impl Strategy<Value = [f64; NP]> {
-    proptest::array::uniform32(-1.0f64..=1.0).prop_flat_map(|a| {
-        proptest::array::uniform16(-1.0f64..=1.0).prop_map(move |b| {
-            let mut p = [0.0; NP];
-            p[..32].copy_from_slice(&a);
-            p[32..].copy_from_slice(&b);
-            p
-        })
-    })
 }
 
 proptest! {

@@ -9,7 +9,7 @@ use uvt_core::bounds::hyper::Hyper;
 use uvt_core::bounds::lens_time::LensTime;
 use uvt_core::bounds::registry::{best, hull, hull_lens};
 use uvt_core::{BboxScan, Laine2011, SamplePattern, Viewport};
-use uvt_tests::kinds::{make, Kind, ALL_KINDS, NP};
+use uvt_tests::kinds::{make, params, Kind, ALL_KINDS, NP};
 use uvt_tests::*;
 
 fn check_all(kind: Kind, p: &[f64; NP], pat_seed: u64) -> Result<u64, String> {
@@ -91,17 +91,6 @@ fn check_bounded(kind: Kind, p: &[f64; NP], pat_seed: u64) -> Result<u64, String
     at!(Bounded<16, 16, 16, 24>);
     at!(Bounded<16, 16, 16, 28>);
     Ok(covered)
-}
-
-fn params() -> impl Strategy<Value = [f64; NP]> {
-    proptest::array::uniform32(-1.0f64..=1.0).prop_flat_map(|a| {
-        proptest::array::uniform16(-1.0f64..=1.0).prop_map(move |b| {
-            let mut p = [0.0; NP];
-            p[..32].copy_from_slice(&a);
-            p[32..].copy_from_slice(&b);
-            p
-        })
-    })
 }
 
 fn config() -> ProptestConfig {

@@ -15,7 +15,7 @@ use uvt_core::{
     setup, Bounded, BoundsStrategy, Exact, Laine2011, Outcome, PixelRect, SamplePattern,
     TileBounds, Triangle, Vertex, Viewport,
 };
-use uvt_tests::kinds::{make, Kind, ALL_KINDS, NP};
+use uvt_tests::kinds::{make, params, Kind, ALL_KINDS, NP};
 use uvt_tests::*;
 
 /// The triangle without its CoC: motion-only (or static) whatever the kind.
@@ -77,17 +77,6 @@ fn check_case(kind: Kind, p: &[f64; NP], pat_seed: u64) -> Result<(u64, u64), St
         act += u64::from(r.1);
     }
     Ok((covered, act))
-}
-
-fn params() -> impl Strategy<Value = [f64; NP]> {
-    proptest::array::uniform32(-1.0f64..=1.0).prop_flat_map(|a| {
-        proptest::array::uniform16(-1.0f64..=1.0).prop_map(move |b| {
-            let mut p = [0.0; NP];
-            p[..32].copy_from_slice(&a);
-            p[32..].copy_from_slice(&b);
-            p
-        })
-    })
 }
 
 proptest! {

@@ -7,10 +7,10 @@
 //!
 //! | class | triangles | rule | with the rule | laine2011 | hull | hull+edge-t |
 //! |---|---|---|---|---|---|---|
-//! | static | 4665 | hull from 27 px | 392.0 | 519.1 | 470.1 | 479.2 |
-//! | motion | 9330 | hull from 69 px | 1439.4 | 1684.1 | 1677.1 | 1827.6 |
-//! | defocus | 9330 | hull from 90 px | 1070.5 | 1317.5 | 1461.5 | 1483.6 |
-//! | motion+defocus | 9330 | hull from 133 px | 2075.6 | 2326.8 | 2741.2 | 2939.3 |
+//! | static | 4665 | hull from 27 px | 390.6 | 519.1 | 458.4 | 464.9 |
+//! | motion | 9330 | hull from 69 px | 1437.3 | 1684.1 | 1654.4 | 1799.7 |
+//! | defocus | 9330 | hull from 80 px | 1068.9 | 1317.5 | 1438.2 | 1455.0 |
+//! | motion+defocus | 9330 | hull from 133 px | 2074.1 | 2326.8 | 2718.5 | 2911.4 |
 
 use crate::bounds::auto::tier::{Pick, Tier};
 
@@ -26,7 +26,7 @@ pub const RULE: [Tier; 4] = [
     },
     Tier {
         heavy: Pick::Hull,
-        from_px: 90,
+        from_px: 80,
     },
     Tier {
         heavy: Pick::Hull,
