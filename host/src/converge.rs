@@ -51,8 +51,9 @@ pub struct Point {
     pub covered: u64,
     /// whole modelled Cortex-M4F instructions of the frame, setup included (its counts times
     /// the strategy's per-call figures pooled over the bench rows,
-    /// [`crate::bench::m4_stages::M4Stages::pooled`])
-    pub m4: f64,
+    /// [`crate::bench::m4_stages::M4Stages::pooled`]); `None` for a strategy the stage harness
+    /// does not measure (the bounding-box scan, not a bench strategy)
+    pub m4: Option<f64>,
 }
 
 /// Run the sweep on `scene` (its own pattern kind and seed; the viewport, tile and colors as in
@@ -116,15 +117,14 @@ pub fn sweep(scene: &Scene, repeats: usize) -> Result<Vec<Point>> {
                 ms: r.ms,
                 tested: r.stats.samples_tested,
                 covered: r.stats.samples_covered,
-                m4: stages
-                    .pooled(name)
-                    .ok_or_else(|| anyhow!("no Cortex-M4F stage figures for {name}"))?
-                    .total(
+                m4: stages.pooled(name).map(|c| {
+                    c.total(
                         r.stats.triangles,
                         r.stats.tiles_visited,
                         r.stats.samples_admitted,
                         r.stats.samples_tested,
-                    ),
+                    )
+                }),
             });
         }
     }
@@ -147,7 +147,8 @@ pub fn table_md(points: &[Point]) -> String {
         s += &format!("| {spp} | {:.3} |", first.rmse);
         for n in strategies() {
             if let Some(p) = row.iter().find(|p| p.strategy == n) {
-                s += &format!(" {:.0} / {} / {:.1} |", p.ms, p.tested, p.m4 / 1e6);
+                let m4 = p.m4.map_or("–".to_string(), |m| format!("{:.1}", m / 1e6));
+                s += &format!(" {:.0} / {} / {m4} |", p.ms, p.tested);
             }
         }
         s += "\n";
