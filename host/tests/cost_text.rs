@@ -1,5 +1,6 @@
-//! `core/README.md`'s hardware-cost paragraph quotes `uvt cost`: its figures must be what the
-//! command prints today (the width table above it is checked by `core/src/widths/mod.rs`).
+//! `core/README.md`'s hardware-cost paragraph quotes `uvt cost`, and `docs/bounds.md` holds
+//! `uvt cost --strategies`: their figures must be what the command prints today (the width table
+//! above it is checked by `core/src/widths/mod.rs`).
 
 use uvt_host::config::multipliers::summary_md;
 
@@ -79,4 +80,29 @@ fn core_readme_cost_paragraph_is_what_uvt_cost_prints() {
             "core/README.md lacks `{w}` (what `uvt cost` prints); regenerate the paragraph"
         );
     }
+}
+
+/// `docs/bounds.md`'s hardware figure per strategy and stage is what `uvt cost --strategies`
+/// prints today at the default configuration.
+#[test]
+fn bounds_doc_strategy_figures_are_what_uvt_cost_prints() {
+    let want =
+        uvt_host::config::strategy_cost::strategies_md(&uvt_core::config::registry::Config::of::<
+            uvt_core::DefaultPrecision,
+        >());
+    let doc =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/../docs/bounds.md")).unwrap();
+    let begin = doc
+        .find("<!-- strategy-cost:begin")
+        .expect("begin marker in docs/bounds.md");
+    let body = &doc[begin..];
+    let body = &body[body.find('\n').unwrap() + 1..];
+    let end = body
+        .find("<!-- strategy-cost:end -->")
+        .expect("end marker in docs/bounds.md");
+    assert_eq!(
+        body[..end].trim(),
+        want.trim(),
+        "docs/bounds.md's strategy cost section differs from `uvt cost --strategies`; regenerate it"
+    );
 }

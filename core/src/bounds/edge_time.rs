@@ -325,6 +325,7 @@ impl<S: BoundsStrategy> BoundsStrategy for EdgeTime<S> {
     }
     // Gated on the unit: the edge bound only with `U::MOTION` (a class without motion gets none
     // on every unit).
+    #[inline(always)]
     fn prepare<U: Unit>(&self, setup: &Setup, ops: &mut Ops) -> Self::Coeffs {
         let edge = if U::MOTION && setup.class.motion() {
             edge_axis(setup, ops)

@@ -188,9 +188,11 @@ fn axis_form(d: &Corners) -> Option<HyperAxis> {
     })
 }
 
-/// Setup ops of [`axis_form`] per axis: 16 lines × 6 (K: 2 mul + 1 sub; S: 1 sub; T: 1 select;
-/// α: 1 add) + 2 surfaces × 3 components (α, β, γ) × 8 (the corner map of [`surface`]).
-const AXIS_FORM_OPS: u64 = 16 * 6 + 2 * 3 * 8;
+/// Setup ops of [`axis_form`] per axis: 8 lines (4 lower, 4 upper: t ∈ {0, 1} × 2 lens
+/// corners) × 6 (K: 2 mul + 1 sub; S: 1 sub; T: 1 min/max; α: 1 add) + 2 surfaces × 3
+/// components (α, β, γ) × 5 (the adds and subtracts of [`surface`]'s corner map; its ×2^k are
+/// shifts).
+const AXIS_FORM_OPS: u64 = 8 * 6 + 2 * 3 * 5;
 
 /// The tile's start and width along one axis: `(min(x0, x1), |x1 − x0|)`. A renderer tile has
 /// x0 < x1, so the ordering is the identity there (not counted, as in `bounds::dual_t`).
@@ -247,6 +249,7 @@ impl BoundsStrategy for Hyper {
     fn name(&self) -> &'static str {
         "hyper"
     }
+    #[inline(always)]
     fn prepare<U: Unit>(&self, setup: &Setup, ops: &mut Ops) -> HyperCoeffs {
         let laine = Laine2011.prepare::<U>(setup, ops);
         let axes = (setup.class == Class::MotionDefocus).then(|| {

@@ -181,6 +181,7 @@ impl BoundsStrategy for Laine2011 {
     // Gated on the unit: lens terms only with `U::DEFOCUS`, dual lines only with `U::MOTION`
     // (for an accepted class the same coefficients: a class without defocus gets no lens axis,
     // one without motion no dual axis, on every unit).
+    #[inline(always)]
     fn prepare<U: Unit>(&self, setup: &Setup, ops: &mut Ops) -> LaineCoeffs {
         // Filled in place (no array `map` of the ~100-byte axis values: each would be copied).
         let mut c = LaineCoeffs {

@@ -182,6 +182,7 @@ impl<const R: usize> BoundsStrategy for LensTime<R> {
         "lens-t"
     }
 
+    #[inline(always)]
     fn prepare<U: Unit>(&self, setup: &Setup, ops: &mut Ops) -> Self::Coeffs {
         let laine = Laine2011.prepare::<U>(setup, ops);
         let slabs = (setup.class == Class::MotionDefocus).then(|| {

@@ -15,8 +15,10 @@
 
 pub mod mag;
 pub mod markdown;
+pub mod ops;
 pub mod row;
 pub mod stages;
+pub mod strategies;
 
 #[cfg(test)]
 mod tests {

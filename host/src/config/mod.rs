@@ -7,6 +7,8 @@
 //! - [`names`]: the core's configuration and bounds-strategy registries on the command line
 //!   (what `--precision`, `--config` and `--bounds` accept);
 //! - [`multipliers`]: hard multipliers (DSP48E1, ECP5) and LUT bits of a configuration's stages;
+//! - [`strategy_cost`]: the width-weighted hardware figure of every bounds strategy's stages
+//!   (operators of `uvt_core::widths::strategies`, tiled by [`multipliers`]);
 //! - [`units`]: the unit variants and their sample-test multipliers at a configuration;
 //! - [`dq`]: the documented error distance d_q of a primitive (uses [`crate::frame::compare`]);
 //! - [`planar_static`]: the planar static configuration (`uvt_core::config::registry::PLANAR`).
@@ -15,4 +17,5 @@ pub mod dq;
 pub mod multipliers;
 pub mod names;
 pub mod planar_static;
+pub mod strategy_cost;
 pub mod units;

@@ -122,6 +122,7 @@ impl BoundsStrategy for Auto {
     fn name(&self) -> &'static str {
         "auto"
     }
+    #[inline(always)]
     fn prepare<U: Unit>(&self, setup: &Setup, ops: &mut Ops) -> AutoCoeffs {
         ops.add_setup(3);
         match self.pick(setup) {

@@ -7,10 +7,10 @@
 //!
 //! | class | triangles | rule | with the rule | laine2011 | hull | hull+edge-t |
 //! |---|---|---|---|---|---|---|
-//! | static | 4665 | hull from 27 px | 390.6 | 519.1 | 458.4 | 464.9 |
-//! | motion | 9330 | hull from 69 px | 1437.3 | 1684.1 | 1654.4 | 1799.7 |
-//! | defocus | 9330 | hull from 80 px | 1068.9 | 1317.5 | 1438.2 | 1455.0 |
-//! | motion+defocus | 9330 | hull from 133 px | 2074.1 | 2326.8 | 2718.5 | 2911.4 |
+//! | static | 4665 | hull from 27 px | 383.6 | 512.0 | 451.7 | 453.0 |
+//! | motion | 9330 | hull from 69 px | 1423.2 | 1669.9 | 1640.9 | 1775.7 |
+//! | defocus | 9330 | hull from 80 px | 1054.9 | 1303.4 | 1424.9 | 1431.2 |
+//! | motion+defocus | 9330 | hull from 133 px | 2059.9 | 2312.6 | 2705.1 | 2887.4 |
 
 use crate::bounds::auto::tier::{Pick, Tier};
 

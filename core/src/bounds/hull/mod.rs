@@ -142,6 +142,7 @@ impl<S: BoundsStrategy> BoundsStrategy for HullCull<S> {
     fn name(&self) -> &'static str {
         self.name
     }
+    #[inline(always)]
     fn prepare<U: Unit>(&self, setup: &Setup, ops: &mut Ops) -> Self::Coeffs {
         let (pts, n) = swept_points(&setup.tri, setup.class);
         let pts = pts.get(..n).unwrap_or(&[]);

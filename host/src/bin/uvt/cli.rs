@@ -164,12 +164,18 @@ pub enum Cmd {
         config: Option<String>,
     },
     /// The hardware multiplier cost model (from the width table): totals per sweep
-    /// configuration and stage, or every multiplier of one configuration.
+    /// configuration and stage, or every multiplier of one configuration; with --strategies
+    /// the width-weighted figure of every bounds strategy's stages (at --config, default
+    /// bounded-16-16-16-20).
     Cost {
         /// configuration name (exact-P-T-B or bounded-P-T-B-O, any in range; not planar-…);
         /// omitted: the sweep's totals
         #[arg(long)]
         config: Option<String>,
+        /// every bounds strategy's operators per triangle, tile, row span and sample, weighted
+        /// by width (DSP48E1, MULT18X18D, adder, compare and divider bits)
+        #[arg(long)]
+        strategies: bool,
     },
     /// Which unit a scene needs: the smallest unit variant, the narrowest configuration whose
     /// error statement meets the tolerance (pixels, or clip units for primitives stated in clip

@@ -312,7 +312,17 @@ fn run(cli: Cli) -> Result<()> {
             }
             say(&md)?;
         }
-        Cmd::Cost { config } => match config {
+        Cmd::Cost {
+            config,
+            strategies: true,
+        } => {
+            let cfg = match config {
+                Some(name) => names::model_config(&name)?,
+                None => uvt_core::config::registry::Config::of::<uvt_core::DefaultPrecision>(),
+            };
+            say(&uvt_host::config::strategy_cost::strategies_md(&cfg))?;
+        }
+        Cmd::Cost { config, .. } => match config {
             Some(name) => {
                 let cfg = names::model_config(&name)?;
                 say(&uvt_host::config::multipliers::cost_md(&cfg))?;

@@ -1,0 +1,90 @@
+//! Every registry strategy's operators by width ([`inventory`]), composed from the operators of
+//! its parts, one file per part: the composed strategies run their parts' code (the hull's cull
+//! in front of the inner strategy's bounds; `auto` holds every candidate's unit and picks per
+//! triangle), so their inventories are the sums of their parts'.
+
+pub mod edge_time;
+pub mod hull;
+pub mod hyper;
+pub mod laine;
+pub mod lens_time;
+
+use crate::config::registry::Config;
+use crate::widths::ops::{Classes, Inventory, OpKind, Stage};
+use crate::widths::row::ext;
+
+/// The operators of the strategy named `name` (one of
+/// [`STRATEGIES`](crate::bounds::registry::STRATEGIES)) at configuration `cfg`; `None` for any
+/// other name.
+pub fn inventory(name: &str, cfg: &Config) -> Option<Inventory> {
+    let mut inv = Inventory::default();
+    let i = &mut inv;
+    match name {
+        "bbox" => {}
+        "laine2011" => laine::push(i, cfg),
+        "hull" => {
+            hull::push(i, cfg);
+            laine::push(i, cfg);
+        }
+        "lens-t" => {
+            laine::push(i, cfg);
+            lens_time::push(i, cfg);
+        }
+        "hyper" => {
+            laine::push(i, cfg);
+            hyper::push(i, cfg);
+        }
+        "hull+lens-t" => {
+            hull::push(i, cfg);
+            laine::push(i, cfg);
+            lens_time::push(i, cfg);
+        }
+        "hull+edge-t" => {
+            hull::push(i, cfg);
+            edge_time::push(i, cfg);
+            laine::push(i, cfg);
+        }
+        "best" => {
+            hull::push(i, cfg);
+            edge_time::push(i, cfg);
+            laine::push(i, cfg);
+            hyper::push(i, cfg);
+        }
+        "auto" => {
+            auto_pick(i);
+            hull::push(i, cfg);
+            edge_time::push(i, cfg);
+            laine::push(i, cfg);
+        }
+        _ => return None,
+    }
+    Some(inv)
+}
+
+/// `Auto::pick`: the footprint's area and the tier compare, per triangle, every class.
+fn auto_pick(inv: &mut Inventory) {
+    let side = ext().bits();
+    let area = side.saturating_mul(2);
+    let tri = Stage::Triangle;
+    inv.op(
+        tri,
+        "footprint sides `x1 − x0`, `y1 − y0`",
+        OpKind::Add { bits: side },
+        2,
+        Classes::ALL,
+    );
+    inv.op(
+        tri,
+        "footprint area",
+        OpKind::Mul { a: side, b: side },
+        1,
+        Classes::ALL,
+    );
+    inv.op(
+        tri,
+        "tier compare `area ≥ from_px`",
+        OpKind::Cmp { bits: area },
+        1,
+        Classes::ALL,
+    );
+}
