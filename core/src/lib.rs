@@ -67,6 +67,7 @@ pub use error::{Error, Field, SampleField};
 pub use input::{PixelRect, Prim, Sample, SamplePattern, Triangle, Vertex, Viewport};
 pub use raster::renderer::{MotionRenderer, Raster, RenderError, Renderer, StaticRenderer};
 pub use raster::tile_buffer::{resolve_colors, DepthTest, PixelStats, TileBuffer};
+pub use raster::zmax::{DepthCull, NoZmax, Zmax};
 pub use sample::bounded::BoundedEval;
 pub use sample::exact::ExactEval;
 pub use sample::planar::PlanarEval;

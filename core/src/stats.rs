@@ -19,6 +19,9 @@ pub struct Ops {
     /// per-row span steps of a bounds strategy ([`crate::BoundsStrategy::row_span`]; 0 for
     /// strategies without one)
     pub rows: u64,
+    /// Zmax culling ([`crate::raster::zmax`]): each triangle's depth floor, and per kept bounds
+    /// tile the reads of its stored maximum and the comparison (0 without Zmax)
+    pub zmax: u64,
 }
 
 impl Ops {
@@ -29,6 +32,7 @@ impl Ops {
         self.sample = self.sample.saturating_add(o.sample);
         self.predicate = self.predicate.saturating_add(o.predicate);
         self.rows = self.rows.saturating_add(o.rows);
+        self.zmax = self.zmax.saturating_add(o.zmax);
     }
     /// Count `n` row-span operations (saturating).
     #[inline]
@@ -50,6 +54,11 @@ impl Ops {
     pub fn add_sample(&mut self, n: u64) {
         self.sample = self.sample.saturating_add(n);
     }
+    /// Count `n` Zmax operations (saturating).
+    #[inline]
+    pub fn add_zmax(&mut self, n: u64) {
+        self.zmax = self.zmax.saturating_add(n);
+    }
 }
 
 /// Frame counters.
@@ -68,6 +77,8 @@ pub struct Stats {
     pub tiles_visited: u64,
     /// bounds tiles whose bounds were empty or that a row span skipped (no sample test)
     pub tiles_skipped: u64,
+    /// kept bounds tiles skipped by Zmax culling (the triangle is hidden there; 0 without it)
+    pub tiles_zculled: u64,
     /// samples inside their tile's intervals (= sample tests run)
     pub samples_tested: u64,
     /// samples the sample test covered
@@ -101,6 +112,7 @@ impl Stats {
         }
         sum(&mut self.tiles_visited, o.tiles_visited);
         sum(&mut self.tiles_skipped, o.tiles_skipped);
+        sum(&mut self.tiles_zculled, o.tiles_zculled);
         sum(&mut self.samples_tested, o.samples_tested);
         sum(&mut self.samples_covered, o.samples_covered);
         sum(&mut self.samples_written, o.samples_written);

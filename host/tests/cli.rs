@@ -585,7 +585,7 @@ fn example_scenes_render() {
         assert_eq!(r["coverage_fixed_vs_f64"]["beyond_bound"].as_u64(), Some(0));
         n += 1;
     }
-    assert_eq!(n, 3, "host/scenes holds three example scenes");
+    assert_eq!(n, 4, "host/scenes holds four example scenes");
 }
 
 #[test]

@@ -1,4 +1,6 @@
-//! Stage 4 — the tile framebuffer ([`tile_buffer`]) and the render loop ([`renderer`]).
+//! Stage 4 — the tile framebuffer ([`tile_buffer`]), the render loop ([`renderer`]) and its
+//! optional Zmax culling ([`zmax`]).
 
 pub mod renderer;
 pub mod tile_buffer;
+pub mod zmax;

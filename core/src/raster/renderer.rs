@@ -12,16 +12,20 @@
 //! [`TileBuffer`] and counts in [`Stats`] (`samples_covered = samples_written +
 //! samples_occluded`). Resolve averages the S samples per channel with round-half-up.
 
+use core::marker::PhantomData;
+
 use embedded_graphics_core::draw_target::DrawTarget;
 use embedded_graphics_core::pixelcolor::Rgb888;
 use embedded_graphics_core::prelude::{Pixel, Point};
 
 use crate::bounds::laine::Laine2011;
+use crate::config::formats::DEPTH_NEAR;
 use crate::config::precision::{DefaultPrecision, PlanarPrecision};
 use crate::config::unit::{Full, MotionOnly, StaticOnly, Unit};
 use crate::error::Error;
 use crate::input::{PixelRect, Prim, SamplePattern, Viewport};
 use crate::raster::tile_buffer::{tile_size, DepthTest, PixelStats, TileBuffer};
+use crate::raster::zmax::{self, DepthCull, NoZmax};
 use crate::sample::pos::ScreenPos;
 use crate::setup::{Cull, Outcome};
 use crate::stats::{Ops, Stats};
@@ -36,8 +40,11 @@ use crate::units::select::PipelineOf;
 /// own tests), else the general pipeline. Generic code names it with the bound
 /// `(P, U): Select<B>` ([`crate::units::select::Select`]), which every precision and unit
 /// satisfy.
-pub type Renderer<B, const N: usize, P = DefaultPrecision, U = Full> =
-    Raster<PipelineOf<B, P, U>, N>;
+///
+/// `Z` turns Zmax culling on ([`crate::raster::zmax::Zmax`]) or leaves it out ([`NoZmax`], the default):
+/// `Renderer<Laine2011, 64, DefaultPrecision, Full, Zmax>`.
+pub type Renderer<B, const N: usize, P = DefaultPrecision, U = Full, Z = NoZmax> =
+    Raster<PipelineOf<B, P, U>, N, Z>;
 
 /// The static-only unit's renderer at the planar configuration (`planar-16-16-16-20`).
 pub type StaticRenderer<const N: usize> = Renderer<Laine2011, N, PlanarPrecision, StaticOnly>;
@@ -46,18 +53,22 @@ pub type StaticRenderer<const N: usize> = Renderer<Laine2011, N, PlanarPrecision
 pub type MotionRenderer<const N: usize, P = DefaultPrecision> =
     Renderer<Laine2011, N, P, MotionOnly>;
 
-/// The render loop over pipeline `L`, holding at most `N` visible triangles (module docs).
-/// [`Renderer`] names it by precision and unit; a pipeline can also be named directly (e.g. the
-/// general pipeline on a unit that has its own, to compare the two).
-pub struct Raster<L: Pipeline, const N: usize> {
+/// The render loop over pipeline `L`, holding at most `N` visible triangles (module docs), with
+/// Zmax culling `Z` ([`crate::raster::zmax`]; [`NoZmax`] compiles it out). [`Renderer`] names it
+/// by precision and unit; a pipeline can also be named directly (e.g. the general pipeline on a
+/// unit that has its own, to compare the two).
+pub struct Raster<L: Pipeline, const N: usize, Z: DepthCull = NoZmax> {
     pipe: L,
     vp: Viewport,
-    entries: heapless::Vec<(L::Entry, Rgb888), N>,
+    /// per visible triangle: its entry, color and depth floor ([`Pipeline::depth_floor`] with
+    /// Zmax, else `DEPTH_NEAR`)
+    entries: heapless::Vec<(L::Entry, Rgb888, i32), N>,
+    cull: PhantomData<Z>,
     /// counters accumulated over setup and every rendered tile
     pub stats: Stats,
 }
 
-impl<L: Pipeline, const N: usize> Raster<L, N> {
+impl<L: Pipeline, const N: usize, Z: DepthCull> Raster<L, N, Z> {
     /// Set every triangle up exactly once, in order, with bounds strategy `bounds`. Fails with
     /// [`Error::ClassNotInUnit`] (naming the first such primitive, culled or not) if a
     /// primitive's class is not accepted by the unit — every class is checked before any setup
@@ -77,6 +88,7 @@ impl<L: Pipeline, const N: usize> Raster<L, N> {
             pipe: L::new(bounds),
             vp,
             entries: heapless::Vec::new(),
+            cull: PhantomData,
             stats: Stats::default(),
         }
     }
@@ -119,8 +131,13 @@ impl<L: Pipeline, const N: usize> Raster<L, N> {
                     if let Some(c) = stats.by_class.get_mut(L::class(&e).index()) {
                         Stats::inc(c);
                     }
+                    let floor = if Z::ENABLED {
+                        L::depth_floor(&e, &mut stats.ops)
+                    } else {
+                        DEPTH_NEAR
+                    };
                     entries
-                        .push((e, p.color))
+                        .push((e, p.color, floor))
                         .map_err(|_| Error::TooManyTriangles { capacity: N })
                 }
             };
@@ -135,7 +152,7 @@ impl<L: Pipeline, const N: usize> Raster<L, N> {
     /// The visible triangles' pipeline entries (the general pipeline's: setup and the
     /// strategy's coefficients), in order.
     pub fn entries(&self) -> impl Iterator<Item = &L::Entry> {
-        self.entries.iter().map(|(e, _)| e)
+        self.entries.iter().map(|(e, _, _)| e)
     }
 
     /// Render the screen tile whose top-left pixel is (`x0`, `y0`) into `fb` (cleared first).
@@ -158,7 +175,7 @@ impl<L: Pipeline, const N: usize> Raster<L, N> {
             ..
         } = self;
         let mut ops = Ops::default();
-        for (entry, color) in entries.iter() {
+        for (entry, color, floor) in entries.iter() {
             let region = L::footprint(entry).intersect(&screen);
             if region.is_empty() {
                 continue;
@@ -171,6 +188,16 @@ impl<L: Pipeline, const N: usize> Raster<L, N> {
                     Stats::inc(&mut stats.tiles_skipped);
                     return;
                 };
+                if Z::ENABLED {
+                    // The cell lies inside the screen tile: the offsets are in [0, TW], [0, TH].
+                    let rel = |a: u16, b: u16| usize::from(a.saturating_sub(b));
+                    let cols = (rel(cell.x0, screen.x0), rel(cell.x1, screen.x0));
+                    let rows = (rel(cell.y0, screen.y0), rel(cell.y1, screen.y0));
+                    if zmax::hidden_in(*floor, fb, cols, rows, ops) {
+                        Stats::inc(&mut stats.tiles_zculled);
+                        return;
+                    }
+                }
                 let at = Cell {
                     cell,
                     screen,

@@ -127,6 +127,26 @@ impl<const TW: usize, const TH: usize, const S: usize> TileBuffer<TW, TH, S> {
         self.depth.get(y)?.get(x)?.get(s).copied()
     }
 
+    /// The largest stored depth over every sample of the pixels `cols.0..cols.1` ×
+    /// `rows.0..rows.1` (ranges clipped to the buffer), and how many slots were read: the tile
+    /// maximum of Zmax culling ([`crate::raster::zmax`]). `i32::MIN` with 0 reads for an empty
+    /// range; an empty slot reads as [`DEPTH_EMPTY`].
+    pub fn max_depth(&self, cols: (usize, usize), rows: (usize, usize)) -> (i32, u64) {
+        let mut max = i32::MIN;
+        let mut reads = 0u64;
+        let pick = |r: (usize, usize), n: usize| r.0.min(n)..r.1.min(n);
+        for row in self.depth.get(pick(rows, TH)).unwrap_or(&[]) {
+            for px in row.get(pick(cols, TW)).unwrap_or(&[]) {
+                for &d in px {
+                    max = max.max(d);
+                }
+                // S ≤ 64 (compile-time check).
+                reads = reads.saturating_add(S as u64);
+            }
+        }
+        (max, reads)
+    }
+
     /// Stored color of one sample, if in range.
     pub fn sample_color(&self, x: usize, y: usize, s: usize) -> Option<Rgb888> {
         self.color.get(y)?.get(x)?.get(s).copied()

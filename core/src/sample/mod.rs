@@ -8,12 +8,21 @@ pub mod exact;
 pub mod planar;
 pub mod pos;
 
+use crate::config::class::Class;
 use crate::config::precision::Precision;
 use crate::config::unit::Unit;
 use crate::input::Sample;
 use crate::sample::pos::{Hit, ScreenPos};
 use crate::setup::Setup;
 use crate::stats::Ops;
+
+/// Whether a triangle of `class` takes the planar test at precision `P` on unit `U`: a
+/// `Planar` precision's static class — static as the unit sees it (gated as in setup: a
+/// constant on the static-only unit, whose program then has no bounded datapath).
+#[inline(always)]
+pub fn takes_planar<P: Precision, U: Unit>(class: Class) -> bool {
+    P::PLANAR && !(U::MOTION && class.motion()) && !(U::DEFOCUS && class.defocus())
+}
 
 /// The sample test of precision `P` on unit `U` for a setup made at `P` ([`crate::setup::setup`]
 /// or [`Setup::unculled`] with the same `P`), chosen at compile time: the planar test for a
@@ -30,9 +39,7 @@ pub fn test<P: Precision, U: Unit>(
     if !U::accepts(setup.class) {
         return None;
     }
-    // A `Planar` precision's static class (gated as in setup: a constant on the static-only
-    // unit, whose program then has no bounded datapath).
-    if P::PLANAR && !(U::MOTION && setup.class.motion()) && !(U::DEFOCUS && setup.class.defocus()) {
+    if takes_planar::<P, U>(setup.class) {
         return planar::test(setup, pos, ops);
     }
     if P::OFFSET_SHIFT.is_some() {

@@ -10,6 +10,7 @@ use crate::config::class::Class;
 use crate::config::precision::Precision;
 use crate::config::unit::Unit;
 use crate::input::{PixelRect, Sample, Triangle, Viewport};
+use crate::raster::zmax;
 use crate::sample;
 use crate::sample::pos::{Hit, ScreenPos};
 use crate::setup::{setup, Outcome, Setup};
@@ -86,5 +87,10 @@ impl<B: BoundsStrategy, P: Precision, U: Unit> Pipeline for General<B, P, U> {
     #[inline(always)]
     fn test(entry: &Self::Entry, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> Option<Hit> {
         sample::test::<P, U>(&entry.0, pos, s, ops)
+    }
+
+    /// [`zmax::depth_floor`] of the setup.
+    fn depth_floor(entry: &Self::Entry, ops: &mut Ops) -> i32 {
+        zmax::depth_floor::<P, U>(&entry.0, ops)
     }
 }

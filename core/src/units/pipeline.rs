@@ -14,6 +14,7 @@
 
 use crate::bounds::strategy::BoundsStrategy;
 use crate::config::class::Class;
+use crate::config::formats::DEPTH_NEAR;
 use crate::config::unit::Unit;
 use crate::input::{PixelRect, Sample, Triangle, Viewport};
 use crate::sample::pos::{Hit, ScreenPos};
@@ -68,6 +69,12 @@ pub trait Pipeline: Sized {
     fn admits(tile: &Self::Tile, s: &Sample, ops: &mut Ops) -> bool;
     /// The sample test of a sample at screen position `pos`: the depth on a hit.
     fn test(entry: &Self::Entry, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> Option<Hit>;
+    /// A lower bound of every depth [`Self::test`] outputs for this triangle (Zmax culling,
+    /// [`crate::raster::zmax`]), its operations counted in `ops.zmax`. Default:
+    /// [`DEPTH_NEAR`], never culled.
+    fn depth_floor(_entry: &Self::Entry, _ops: &mut Ops) -> i32 {
+        DEPTH_NEAR
+    }
     /// The operations of one sample test that [`Self::test`] does not count itself (the
     /// specialised units count theirs in the render loop; default: none).
     #[inline(always)]

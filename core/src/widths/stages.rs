@@ -440,5 +440,39 @@ pub fn table(cfg: &Config) -> Table {
         "`(Σ + S/2)/S`",
         [None, None],
     ));
+    // ---- Zmax culling (optional, `raster::zmax`) ----
+    let two_z = c.times(2).add(Mag::int(1));
+    t.push(r(
+        "zmax",
+        "floor numerator `(2z − 1)·2^24`, per vertex and shutter end",
+        two_z.mul(Mag::pow2(DEPTH_FRAC)),
+        "i64",
+        "exact (2^24: shift)",
+        [None, None],
+    ));
+    t.push(r(
+        "zmax",
+        "floor divisor `2w ± 1` (w ≥ 1 raw, else no floor)",
+        two_z,
+        "i64",
+        "exact (±1: half an LSB each of z, w)",
+        [None, None],
+    ));
+    t.push(r(
+        "zmax",
+        "depth floor `min ⌊num/den⌋`, clamped to the depth range",
+        Mag::int((1 << 31) - 1),
+        "i32",
+        "floor; divide (6 per triangle)",
+        [None, None],
+    ));
+    t.push(r(
+        "zmax",
+        "tile maximum (one register of `ZMAX_BITS` per bounds tile), compare `floor ≥ max`",
+        Mag::int((1 << 31) - 1),
+        "i32",
+        "max of the tile's stored depths",
+        [None, None],
+    ));
     t
 }

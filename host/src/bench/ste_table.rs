@@ -313,6 +313,7 @@ fn name_of(r: &BenchRow) -> String {
         match r.scene {
             Bench::Game => "GAME",
             Bench::Dense => "DENSE",
+            Bench::Occluded => "OCCLUDED",
         }
         .to_string()
     } else {

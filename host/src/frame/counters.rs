@@ -20,6 +20,8 @@ pub struct FrameStats {
     pub tiles_visited: u64,
     /// of which empty
     pub tiles_skipped: u64,
+    /// kept bounds tiles Zmax culling skipped (0 without it, [`RunOpts::zmax`](super::driver::RunOpts::zmax))
+    pub tiles_zculled: u64,
     /// samples of the kept bounds tiles (each put through the tile's box and predicate)
     pub samples_admitted: u64,
     /// samples tested (inside the tile intervals)
@@ -42,6 +44,8 @@ pub struct FrameStats {
     pub ops_predicate: u64,
     /// per-row span ops of the bounds strategy
     pub ops_rows: u64,
+    /// Zmax ops: depth floors, tile-maximum reads and comparisons (`uvt_core::Ops::zmax`)
+    pub ops_zmax: u64,
 }
 
 impl FrameStats {
@@ -52,6 +56,7 @@ impl FrameStats {
             &mut self.culled_degenerate,
             &mut self.tiles_visited,
             &mut self.tiles_skipped,
+            &mut self.tiles_zculled,
             &mut self.samples_admitted,
             &mut self.samples_tested,
             &mut self.samples_covered,
@@ -62,6 +67,7 @@ impl FrameStats {
             &mut self.ops_sample,
             &mut self.ops_predicate,
             &mut self.ops_rows,
+            &mut self.ops_zmax,
         ];
         let b = [
             o.triangles,
@@ -69,6 +75,7 @@ impl FrameStats {
             o.culled_degenerate,
             o.tiles_visited,
             o.tiles_skipped,
+            o.tiles_zculled,
             o.samples_admitted,
             o.samples_tested,
             o.samples_covered,
@@ -79,6 +86,7 @@ impl FrameStats {
             o.ops_sample,
             o.ops_predicate,
             o.ops_rows,
+            o.ops_zmax,
         ];
         for (x, y) in a.into_iter().zip(b) {
             *x += y;
@@ -93,6 +101,7 @@ impl FrameStats {
         self.ops_sample += o.sample;
         self.ops_predicate += o.predicate;
         self.ops_rows += o.rows;
+        self.ops_zmax += o.zmax;
     }
     /// STE of the pipeline's bounds (covered / tested), in [0, 1].
     pub fn ste(&self) -> f64 {

@@ -50,6 +50,9 @@ pub struct RunOpts<'a> {
     pub label: &'a str,
     /// exact triangles for the oracle's dense sampling (`None`: no oracle)
     pub oracle: Option<&'a [SceneTri]>,
+    /// Zmax culling (`uvt_core::raster::zmax`): a kept bounds tile is skipped for a triangle
+    /// whose depth floor is not below the largest depth stored in the tile
+    pub zmax: bool,
 }
 
 impl<'a> RunOpts<'a> {
@@ -65,6 +68,7 @@ impl<'a> RunOpts<'a> {
             image: false,
             label: &scene.name,
             oracle: None,
+            zmax: false,
         }
     }
 }
@@ -94,7 +98,12 @@ pub fn run<P: FramePipeline>(p: &P, pattern: &Pattern, o: &RunOpts<'_>) -> Frame
         .map(|i| {
             let mut ops = Ops::default();
             let s = match p.setup(i, &mut ops) {
-                SetupOut::Visible(s, class) => SetupOut::Visible(p.footprint(&s), class),
+                SetupOut::Visible(s, class) => {
+                    if o.zmax {
+                        p.depth_floor(&s, &mut ops);
+                    }
+                    SetupOut::Visible(p.footprint(&s), class)
+                }
                 SetupOut::Culled(c) => SetupOut::Culled(c),
             };
             (s, ops)
@@ -167,6 +176,27 @@ pub fn run<P: FramePipeline>(p: &P, pattern: &Pattern, o: &RunOpts<'_>) -> Frame
     }
 }
 
+/// The Zmax test of a kept bounds tile (`uvt_core::raster::zmax`, the renderer's decision and
+/// counts): the largest depth stored over every sample of the cell's pixels (band rows from
+/// `y0`, `w` pixels wide, `s` samples each) against the triangle's floor.
+fn zmax_hides(
+    floor: f64,
+    depth: &[f64],
+    cell: PixelRect,
+    (y0, w, s): (u16, usize, usize),
+    ops: &mut Ops,
+) -> bool {
+    let mut max = f64::NEG_INFINITY;
+    for py in cell.y0..cell.y1 {
+        let row = (py - y0) as usize * w;
+        let slots = &depth[(row + cell.x0 as usize) * s..(row + cell.x1 as usize) * s];
+        max = slots.iter().fold(max, |m, &d| m.max(d));
+        ops.add_zmax(slots.len() as u64);
+    }
+    ops.add_zmax(1);
+    floor >= max
+}
+
 fn band<P: FramePipeline>(
     p: &P,
     pat: &Pattern,
@@ -213,6 +243,12 @@ fn band<P: FramePipeline>(
         };
         let setup = &setup;
         let col = o.colors[i as usize];
+        // The floor again, its ops counted in the first pass.
+        let floor = if o.zmax {
+            p.depth_floor(setup, &mut Ops::default())
+        } else {
+            f64::NEG_INFINITY
+        };
         // Row → span → tiles (`uvt_core::walk_tiles`): the same cells in the same order as
         // `region.cells(bt)`; a cell outside its row's span counts as visited and skipped.
         // A row starts where a cell's y0 changes; its span is computed once, at its first cell.
@@ -241,6 +277,10 @@ fn band<P: FramePipeline>(
                 st.tiles_skipped += 1;
                 continue;
             };
+            if o.zmax && zmax_hides(floor, &depth, cell, (y0, w, s), &mut ops) {
+                st.tiles_zculled += 1;
+                continue;
+            }
             st.samples_admitted +=
                 (cell.x1 - cell.x0) as u64 * (cell.y1 - cell.y0) as u64 * s as u64;
             tested_samples.clear();

@@ -45,6 +45,12 @@ pub trait FramePipeline: Sync {
     fn test(&self, s: &Self::Setup, px: u16, py: u16, idx: usize, ops: &mut Ops) -> Option<f64>;
     /// the far depth the buffer is cleared to
     fn far(&self) -> f64;
+    /// a lower bound of every depth [`Self::test`] outputs for the triangle (Zmax culling,
+    /// `uvt_core::raster::zmax`), its operations counted in `ops.zmax`; default: −∞, never
+    /// culled
+    fn depth_floor(&self, _s: &Self::Setup, _ops: &mut Ops) -> f64 {
+        f64::NEG_INFINITY
+    }
     /// the bounds as real (u, v, t) ranges
     fn ranges(&self, b: &Self::Bounds) -> [(f64, f64); 3];
 }

@@ -105,6 +105,9 @@ where
     fn far(&self) -> f64 {
         i32::MAX as f64
     }
+    fn depth_floor(&self, s: &Self::Setup, ops: &mut Ops) -> f64 {
+        uvt_core::raster::zmax::depth_floor::<P, Full>(&s.0, ops) as f64
+    }
     fn ranges(&self, b: &Self::Bounds) -> [(f64, f64); 3] {
         let r = |i: uvt_core::Interval| (i.lo() as f64 / 65536.0, i.hi() as f64 / 65536.0);
         let b = b.uvt_box();

@@ -90,6 +90,9 @@ pub enum Bench {
     Game,
     /// ~0.4 px triangles
     Dense,
+    /// the game street seen through a near fence of wide planks, drawn first (the occlusion
+    /// rows of `uvt bench-zmax`; not a `bench-ste` row)
+    Occluded,
 }
 
 impl Bench {
@@ -100,14 +103,15 @@ impl Bench {
         match self {
             Bench::Game => "game",
             Bench::Dense => "dense",
+            Bench::Occluded => "occluded",
         }
     }
     /// The scene of a command-line name; the error lists the names.
     pub fn from_name(name: &str) -> anyhow::Result<Bench> {
-        Bench::ALL
+        [Bench::Game, Bench::Dense, Bench::Occluded]
             .into_iter()
             .find(|b| b.name() == name)
-            .ok_or_else(|| anyhow::anyhow!("unknown scene {name:?} (game, dense)"))
+            .ok_or_else(|| anyhow::anyhow!("unknown scene {name:?} (game, dense, occluded)"))
     }
 }
 
@@ -139,7 +143,7 @@ pub fn bench_scene(kind: Bench, row: Blur, quick: bool) -> Scene {
     let q = if quick { 4 } else { 1 };
     let viewport = (960 / q as u16, 540 / q as u16);
     let (eye, target) = match kind {
-        Bench::Game => (DVec3::new(0.0, 1.7, 9.0), DVec3::new(0.0, 1.2, 0.0)),
+        Bench::Game | Bench::Occluded => (DVec3::new(0.0, 1.7, 9.0), DVec3::new(0.0, 1.2, 0.0)),
         Bench::Dense => (DVec3::new(0.0, 1.0, 7.0), DVec3::new(0.0, 0.6, 0.0)),
     };
     // Camera motion: a pan to the right with a little forward travel.
@@ -150,15 +154,31 @@ pub fn bench_scene(kind: Bench, row: Blur, quick: bool) -> Scene {
         far: 200.0,
         aperture: 0.06 * row.aperture(),
         focus: match kind {
-            Bench::Game => 8.0,
+            Bench::Game | Bench::Occluded => 8.0,
             Bench::Dense => 7.0,
         },
+        focus_range: 0.0,
         t0: panning(eye, target, DVec3::ZERO),
         t1: panning(eye, target, travel),
     };
     let mut list = Vec::new();
+    if kind == Bench::Occluded {
+        // Five planks 1.1 m wide with 0.5 m gaps, 3.5 m in front of the camera, submitted
+        // first (front to back): ~60% of the screen hides the street.
+        let n = (12 / q as u32).max(1);
+        for i in 0..5 {
+            let p = at(DVec3::new(-3.2 + i as f64 * 1.6, 1.5, 5.5));
+            let c = [110 + i as u8 * 20, 80, 60];
+            list.push(inst(
+                subdivided_box(DVec3::new(0.55, 2.2, 0.05), n),
+                p,
+                p,
+                c,
+            ));
+        }
+    }
     match kind {
-        Bench::Game => {
+        Bench::Game | Bench::Occluded => {
             let cells = 84 / q as u32;
             list.push(inst(
                 mesh::grid((60.0, 60.0), (cells, cells)),
@@ -200,14 +220,7 @@ pub fn bench_scene(kind: Bench, row: Blur, quick: bool) -> Scene {
         }
     }
     let tris = mesh::to_clip(&cam, &list, viewport);
-    let name = format!(
-        "{}/{}",
-        match kind {
-            Bench::Game => "game",
-            Bench::Dense => "dense",
-        },
-        row.label()
-    );
+    let name = format!("{}/{}", kind.name(), row.label());
     let scene = Scene::builtin(name, viewport, tris);
     check_domain(&scene.tris).expect("built-in scene inside the domain");
     scene
@@ -317,6 +330,7 @@ pub fn default_scene() -> Scene {
         far: 100.0,
         aperture: 0.05,
         focus: 6.0,
+        focus_range: 0.0,
         t0: panning(eye, target, DVec3::ZERO),
         t1: panning(eye, target, travel),
     };

@@ -3,7 +3,7 @@
 //! turned into clip-space triangles by the host (f64, glam).
 //!
 //! `"camera": {"fov_y": 60, "near": 0.1, "far": 100, "aperture": 0.05, "focus": 5,
-//!             "t0": {"eye":[..], "target":[..], "up":[0,1,0]}, "t1": {…}}`
+//!             "focus_range": 2, "t0": {"eye":[..], "target":[..], "up":[0,1,0]}, "t1": {…}}`
 //! `"meshes": [{"obj": "file.obj"} | {"grid": {"size":[sx,sz], "cells":[nx,nz]}} |
 //!             {"sphere": {"radius": r, "segments": n}},
 //!             "model": {"translate":[..], "rotate":[x°,y°,z°], "scale": s}, "model_t1": {…},
@@ -13,6 +13,14 @@
 //! Thin lens with aperture radius A and focus distance F: a lens point u shifts clip x by
 //! `u·P00·A·(w/F − 1)`, so CoC(w) = a·w + b with a = P00·A/F, b = −P00·A (signed, affine in w).
 //! The same c moves y by v·c, i.e. the lens is scaled by P00/P11 vertically (the core's model).
+//! **Focus range** R (Wu et al. 2014's depth of field with an in-focus range): every depth in
+//! `[F₀, F₁] = [F − R/2, F + R/2]` is sharp and each side blurs as a thin lens focused at the
+//! nearer end: CoC(w) = P00·A·(w/F₀ − 1) for w < F₀, 0 on `[F₀, F₁]`, P00·A·(w/F₁ − 1) for
+//! w > F₁ — continuous, piecewise affine, and R = 0 is the plain thin lens. Each vertex takes
+//! the CoC of its own w at each shutter end ([`Lens::coc`]); the core interpolates it like every
+//! vertex value, so it is exact at the vertices, and a triangle whose vertices all lie in the
+//! range at both ends has CoC 0 everywhere: the core classes it static or motion-only and the
+//! cheaper unit applies.
 //!
 //! Keys are checked strictly ([`super::json`]), a mesh's triangle count is checked against the
 //! memory budget before it is generated ([`super::budget`]); user documentation:
@@ -50,8 +58,10 @@ pub struct Camera {
     pub far: f64,
     /// lens radius (0 = pinhole)
     pub aperture: f64,
-    /// focus distance
+    /// focus distance (the middle of the in-focus range)
     pub focus: f64,
+    /// depth extent of the in-focus range around `focus` (0 = a plain thin lens)
+    pub focus_range: f64,
     /// pose at t = 0
     pub t0: Pose,
     /// pose at t = 1
@@ -85,13 +95,14 @@ impl Camera {
         DMat4::perspective_rh(self.fov_y.to_radians(), aspect, self.near, self.far)
     }
 
-    /// CoC coefficients (a, b) in clip units for this camera: CoC(w) = a·w + b.
-    pub fn coc(&self, aspect: f64) -> (f64, f64) {
-        if self.aperture == 0.0 {
-            return (0.0, 0.0);
+    /// The lens of this camera at `aspect` (module docs).
+    pub fn lens(&self, aspect: f64) -> Lens {
+        let half = self.focus_range / 2.0;
+        Lens {
+            k: self.proj(aspect).x_axis.x * self.aperture,
+            near: self.focus - half,
+            far: self.focus + half,
         }
-        let p00 = self.proj(aspect).x_axis.x;
-        (p00 * self.aperture / self.focus, -p00 * self.aperture)
     }
 
     /// View-projection at both ends.
@@ -102,17 +113,45 @@ impl Camera {
     }
 }
 
+/// A thin lens with an in-focus range, in clip units (module docs).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Lens {
+    /// `P00·A`: the CoC slope scale (0 = pinhole)
+    pub k: f64,
+    /// near end of the in-focus range `F − R/2` (> 0 when `k ≠ 0`)
+    pub near: f64,
+    /// far end `F + R/2`
+    pub far: f64,
+}
+
+impl Lens {
+    /// Signed CoC of a vertex at view distance `w`: negative in front of the range, 0 inside
+    /// it (ends included), positive behind it.
+    pub fn coc(&self, w: f64) -> f64 {
+        if self.k == 0.0 {
+            0.0
+        } else if w < self.near {
+            // k·(w/F₀ − 1), evaluated as a·w + b (a = k/F₀, b = −k: the plain lens's form)
+            self.k / self.near * w - self.k
+        } else if w > self.far {
+            self.k / self.far * w - self.k
+        } else {
+            0.0
+        }
+    }
+}
+
 /// Clip-space triangles of instances seen by `cam` on a W×H viewport.
 pub fn to_clip(cam: &Camera, inst: &[Instance], viewport: (u16, u16)) -> Vec<SceneTri> {
     let aspect = viewport.0 as f64 / viewport.1 as f64;
     let (vp0, vp1) = cam.view_proj(aspect);
-    let (a, b) = cam.coc(aspect);
+    let lens = cam.lens(aspect);
     let mut out = Vec::with_capacity(inst.iter().map(|i| i.mesh.tris.len()).sum());
     for ins in inst {
         let (c0, c1) = (vp0 * ins.m0, vp1 * ins.m1);
         let clip = |m: &DMat4, p: DVec3| {
             let q: DVec4 = *m * p.extend(1.0);
-            [q.x, q.y, q.z, q.w, a * q.w + b]
+            [q.x, q.y, q.z, q.w, lens.coc(q.w)]
         };
         let v0: Vec<_> = ins.mesh.pos.iter().map(|&p| clip(&c0, p)).collect();
         let v1: Vec<_> = ins.mesh.pos.iter().map(|&p| clip(&c1, p)).collect();
@@ -319,7 +358,16 @@ pub fn build(
     let c = json::object(
         cam,
         "camera",
-        &["fov_y", "near", "far", "aperture", "focus", "t0", "t1"],
+        &[
+            "fov_y",
+            "near",
+            "far",
+            "aperture",
+            "focus",
+            "focus_range",
+            "t0",
+            "t1",
+        ],
     )?;
     let t0 = pose(c.get("t0"), "camera.t0")?;
     let camera = Camera {
@@ -328,6 +376,7 @@ pub fn build(
         far: number(c.get("far"), "camera.far", 100.0)?,
         aperture: number(c.get("aperture"), "camera.aperture", 0.0)?,
         focus: number(c.get("focus"), "camera.focus", 1.0)?,
+        focus_range: number(c.get("focus_range"), "camera.focus_range", 0.0)?,
         t0,
         t1: if c.contains_key("t1") {
             pose(c.get("t1"), "camera.t1")?
@@ -343,6 +392,17 @@ pub fn build(
     }
     if camera.aperture != 0.0 && camera.focus <= 0.0 {
         bail!("camera.focus: must be positive when aperture is set");
+    }
+    if camera.focus_range.is_nan() || camera.focus_range < 0.0 {
+        bail!("camera.focus_range: {} is negative", camera.focus_range);
+    }
+    if camera.aperture != 0.0 && camera.focus_range >= 2.0 * camera.focus {
+        bail!(
+            "camera.focus_range: {} must be less than twice the focus distance {} (the range \
+             [focus − range/2, focus + range/2] must start in front of the camera)",
+            camera.focus_range,
+            camera.focus
+        );
     }
     let list = meshes
         .as_array()

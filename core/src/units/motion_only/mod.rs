@@ -58,9 +58,11 @@ use core::marker::PhantomData;
 
 use crate::bounds::strategy::BoundsStrategy;
 use crate::config::class::Class;
+use crate::config::formats::DEPTH_NEAR;
 use crate::config::precision::Precision;
 use crate::config::unit::MotionOnly;
 use crate::input::{PixelRect, Sample, Triangle, Viewport};
+use crate::raster::zmax;
 use crate::sample::pos::{Hit, ScreenPos};
 use crate::setup::Outcome;
 use crate::stats::Ops;
@@ -179,6 +181,17 @@ impl<B: BoundsStrategy, P: Precision> Pipeline for MotionPipeline<B, P> {
             MotionEntry::Motion(m) => motion_test::<P>(m, pos, s),
             MotionEntry::Static(st) if P::PLANAR => static_test(st, pos),
             MotionEntry::Static(_) => None,
+        }
+    }
+
+    /// The motion path's [`zmax::floor_of`] its ends' `(w, z)` (the bounded test's lerp
+    /// rounds to nearest, as the floor's proof takes it); a planar static triangle: none.
+    fn depth_floor(entry: &MotionEntry, ops: &mut Ops) -> i32 {
+        match entry {
+            MotionEntry::Motion(m) => {
+                zmax::floor_of(&m.base.map(|end| end.map(|v| (v[2], v[3]))), ops)
+            }
+            MotionEntry::Static(_) => DEPTH_NEAR,
         }
     }
 

@@ -85,6 +85,17 @@ pub enum Cmd {
         #[arg(long, default_value = names::DEFAULT_ALIAS)]
         precision: String,
     },
+    /// Every bounds strategy with and without Zmax culling on the occlusion rows (the game
+    /// street behind a near fence) and the open game rows: sample tests, tiles skipped, whole
+    /// ops and wall time; fails if an image differs with Zmax
+    BenchZmax {
+        /// quarter resolution and tessellation
+        #[arg(long)]
+        quick: bool,
+        /// also write the rows as JSON here
+        #[arg(long)]
+        json: Option<PathBuf>,
+    },
     /// Write a bench row's own work (triangles, sample table, viewport; bounds tile 1) as the
     /// Cortex-M strategy harness takes it (demo/examples/m4_stages; `bash demo/m4_report.sh
     /// --strategies` runs it for every row).

@@ -66,7 +66,7 @@ fn builtin(name: &str) -> Result<Scene> {
         Some(b) => (b, true),
         None => (name, false),
     };
-    for kind in [Bench::Game, Bench::Dense] {
+    for kind in [Bench::Game, Bench::Dense, Bench::Occluded] {
         for row in Blur::ALL {
             if bench_name(kind, row) == base {
                 let mut s = builtin::bench_scene(kind, row, quick);
@@ -82,17 +82,13 @@ fn builtin(name: &str) -> Result<Scene> {
 }
 
 fn bench_name(kind: Bench, row: Blur) -> String {
-    let k = match kind {
-        Bench::Game => "game",
-        Bench::Dense => "dense",
-    };
-    format!("{k}-{}", row.label().replace(" x", ""))
+    format!("{}-{}", kind.name(), row.label().replace(" x", ""))
 }
 
 /// Every name [`builtin`] accepts: `default`, then each benchmark row and its `-quick` form.
 fn builtin_names() -> Vec<String> {
     let mut v = vec!["default".to_string()];
-    for kind in [Bench::Game, Bench::Dense] {
+    for kind in [Bench::Game, Bench::Dense, Bench::Occluded] {
         for row in Blur::ALL {
             v.push(bench_name(kind, row));
             v.push(bench_name(kind, row) + "-quick");
@@ -196,6 +192,13 @@ fn run(cli: Cli) -> Result<()> {
                 (!no_limit).then_some(effort),
             )?;
             say(&uvt_host::bench::ste_table::table_md(&rows))?;
+            if let Some(p) = json {
+                write_atomic(&p, (serde_json::to_string_pretty(&rows)? + "\n").as_bytes())?;
+            }
+        }
+        Cmd::BenchZmax { quick, json } => {
+            let rows = uvt_host::bench::zmax::run_rows::<uvt_core::DefaultPrecision>(quick)?;
+            say(&uvt_host::bench::zmax::table_md(&rows))?;
             if let Some(p) = json {
                 write_atomic(&p, (serde_json::to_string_pretty(&rows)? + "\n").as_bytes())?;
             }

@@ -1,0 +1,165 @@
+//! `uvt bench-zmax`: every bounds strategy with and without Zmax culling
+//! (`uvt_core::raster::zmax`) on the occlusion rows (the game street behind a near fence,
+//! [`Bench::Occluded`]) and, for contrast, the game rows without the fence: sample tests, tiles
+//! skipped, the whole operation count (setup, tiles, rows, predicates, sample tests and Zmax's
+//! own floors, reads and comparisons) and wall time, each pair checked for an identical image.
+
+use anyhow::{bail, Result};
+use serde::Serialize;
+use uvt_core::Precision;
+
+use crate::frame::driver::RunOpts;
+use crate::scene::builtin::{bench_scene, Bench, Blur};
+use crate::scene::pattern::Pattern;
+
+use super::strategy::{run_strategy_at, strategies, StratResult};
+
+/// The rows: the occluded street and the open street, static, motion, defocus and both.
+pub const ROWS: [(Bench, Blur); 8] = [
+    (Bench::Occluded, Blur::Static),
+    (Bench::Occluded, Blur::Motion),
+    (Bench::Occluded, Blur::Defocus),
+    (Bench::Occluded, Blur::Both),
+    (Bench::Game, Blur::Static),
+    (Bench::Game, Blur::Motion),
+    (Bench::Game, Blur::Defocus),
+    (Bench::Game, Blur::Both),
+];
+
+/// One strategy on one row, without and with Zmax.
+#[derive(Clone, Debug, Serialize)]
+pub struct Pair {
+    /// without Zmax
+    pub off: StratResult,
+    /// with Zmax
+    pub on: StratResult,
+}
+
+impl Pair {
+    /// Sample tests saved by Zmax, as a fraction of those without it.
+    pub fn saved(&self) -> f64 {
+        1.0 - ratio(self.on.stats.samples_tested, self.off.stats.samples_tested)
+    }
+    /// Kept bounds tiles Zmax skipped, as a fraction of the kept tiles.
+    pub fn culled(&self) -> f64 {
+        let s = &self.on.stats;
+        ratio(s.tiles_zculled, s.tiles_visited - s.tiles_skipped)
+    }
+}
+
+/// Every strategy's pair on one row.
+#[derive(Clone, Debug, Serialize)]
+pub struct ZmaxRow {
+    /// scene
+    pub scene: Bench,
+    /// row
+    pub row: Blur,
+    /// viewport
+    pub viewport: (u16, u16),
+    /// triangles
+    pub triangles: usize,
+    /// per strategy, in the bench's order
+    pub pairs: Vec<Pair>,
+}
+
+fn ratio(a: u64, b: u64) -> f64 {
+    if b == 0 {
+        0.0
+    } else {
+        a as f64 / b as f64
+    }
+}
+
+/// Whole operations of a run: setup (incl. the strategy's preparation), tiles, rows,
+/// predicates, sample tests and Zmax.
+pub fn whole_ops(r: &StratResult) -> u64 {
+    let s = &r.stats;
+    s.ops_setup + s.ops_bounds + s.ops_rows + s.ops_predicate + s.ops_sample + s.ops_zmax
+}
+
+/// Run every row at precision `P` (`quick`: the quarter size). Fails if an image differs with
+/// Zmax, or Zmax tests more samples than without it.
+pub fn run_rows<P: Precision + Sync>(quick: bool) -> Result<Vec<ZmaxRow>> {
+    let mut out = Vec::new();
+    for (kind, row) in ROWS {
+        let s = bench_scene(kind, row, quick);
+        let (tris, pattern): (_, Pattern) = s.inputs_at::<P>()?;
+        let colors = s.colors();
+        let mut pairs = Vec::new();
+        for name in strategies() {
+            let go = |zmax: bool| {
+                let o = RunOpts {
+                    image: true,
+                    zmax,
+                    ..RunOpts::for_scene(&s, &colors)
+                };
+                run_strategy_at::<P>(name, s.core_viewport(), &tris, &pattern, &o)
+            };
+            // Each side twice, the faster frame kept (the first warms the caches); the
+            // counters and the image of both are the same (deterministic).
+            let best = |zmax: bool| match (go(zmax), go(zmax)) {
+                (Some(x), Some(y)) => Some(if y.0.ms < x.0.ms { y } else { x }),
+                _ => None,
+            };
+            let (Some((off, a)), Some((on, b))) = (best(false), best(true)) else {
+                bail!("{name}: not a registry strategy");
+            };
+            if a != b {
+                let at = a.iter().zip(&b).position(|(x, y)| x != y);
+                bail!(
+                    "{} {name}: the image differs with Zmax (first pixel {at:?})",
+                    s.name
+                );
+            }
+            if on.stats.samples_tested > off.stats.samples_tested {
+                bail!("{} {name}: Zmax tested more samples", s.name);
+            }
+            pairs.push(Pair { off, on });
+        }
+        out.push(ZmaxRow {
+            scene: kind,
+            row,
+            viewport: s.viewport,
+            triangles: s.tris.len(),
+            pairs,
+        });
+    }
+    Ok(out)
+}
+
+/// The Markdown table: per row and strategy, samples tested without / with Zmax and the saving,
+/// kept tiles skipped, whole ops without / with per covered sample of the run without Zmax
+/// (the same visible work; with Zmax fewer samples are covered because fewer are tested), their
+/// ratio, and wall ms (the faster of two frames each).
+pub fn table_md(rows: &[ZmaxRow]) -> String {
+    let mut s = String::from(
+        "| row | strategy | tested | tested, Zmax | saved | tiles skipped | ops / covered | \
+         ops / covered, Zmax | ops ratio | ms | ms, Zmax | image |\n\
+         |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n",
+    );
+    for r in rows {
+        for (i, p) in r.pairs.iter().enumerate() {
+            let label = if i == 0 {
+                format!("{} {}", r.scene.name(), r.row.label())
+            } else {
+                String::new()
+            };
+            let cov = p.off.stats.samples_covered.max(1) as f64;
+            let (a, b) = (whole_ops(&p.off) as f64, whole_ops(&p.on) as f64);
+            s += &format!(
+                "| {label} | {} | {} | {} | {:.1}% | {:.1}% | {:.1} | {:.1} | {:.3} | {:.1} | {:.1} | same |\n",
+                p.off.name,
+                p.off.stats.samples_tested,
+                p.on.stats.samples_tested,
+                100.0 * p.saved(),
+                100.0 * p.culled(),
+                a / cov,
+                b / cov,
+                b / a.max(1.0),
+                p.off.ms,
+                p.on.ms,
+            );
+        }
+    }
+    s
+}
