@@ -14,7 +14,8 @@
 //! 3. [`sample`] — the sample test: the exact test, the bounded (hardware-width) test of a
 //!    [`Bounded`] precision and the planar static test of a [`Planar`] precision, behind one
 //!    dispatch.
-//! 4. [`raster`] — the tile framebuffer, resolve and the render loop; [`units`] — the
+//! 4. [`raster`] — the tile framebuffer, resolve, the render loop and its optional Zmax culling
+//!    ([`Zmax`], Akenine-Möller et al. 2007 §3.4); [`units`] — the
 //!    static-only unit's own setup, 2D tile cull and sample test at a [`Planar`] precision, and
 //!    the motion-only unit's own setup, time-slab tile cull and sample test at a bounded
 //!    precision.

@@ -598,7 +598,7 @@ fn scene_export_writes_a_loadable_scene() {
     // `default` has no quick form.
     assert!(list.lines().any(|l| l == "game-motion-quick"), "{list}");
     assert!(!list.lines().any(|l| l == "default-quick"), "{list}");
-    assert_eq!(list.lines().count(), 29, "{list}");
+    assert_eq!(list.lines().count(), 43, "{list}");
     for name in list.lines().filter(|l| l.ends_with("-quick")) {
         let o = uvt(&[
             "scene",
