@@ -24,15 +24,34 @@ pub fn same_tile(
                     pa.covered, pa.written, pb.covered, pb.written
                 ));
             }
+        }
+    }
+    same_samples(full, unit, x0, y0, ("full", name))
+}
+
+/// The first sample whose depth or colour differs between tiles `a` and `b` (named
+/// `names.0`, `names.1`), both rendered at screen tile (`x0`, `y0`).
+pub fn same_samples(
+    a: &TileBuffer<8, 8, 4>,
+    b: &TileBuffer<8, 8, 4>,
+    x0: u16,
+    y0: u16,
+    names: (&str, &str),
+) -> Result<(), String> {
+    for ty in 0..8usize {
+        for tx in 0..8usize {
+            let (x, y) = (x0 as usize + tx, y0 as usize + ty);
             for s in 0..4 {
-                let (da, db) = (full.depth(tx, ty, s), unit.depth(tx, ty, s));
-                let (ca, cb) = (full.sample_color(tx, ty, s), unit.sample_color(tx, ty, s));
+                let (da, db) = (a.depth(tx, ty, s), b.depth(tx, ty, s));
+                let (ca, cb) = (a.sample_color(tx, ty, s), b.sample_color(tx, ty, s));
                 if da != db || ca != cb {
                     let hex = |d: Option<i32>| d.map(|d| format!("{d} ({d:#010x})"));
                     return Err(format!(
-                        "pixel ({x}, {y}) sample {s}: full depth {:?} color {ca:?}, \
-                         {name} depth {:?} color {cb:?}",
+                        "pixel ({x}, {y}) sample {s}: {} depth {:?} color {ca:?}, \
+                         {} depth {:?} color {cb:?}",
+                        names.0,
                         hex(da),
+                        names.1,
                         hex(db)
                     ));
                 }

@@ -16,6 +16,7 @@ use uvt_host::frame::pipelines::Fixed;
 use uvt_host::scene::file::Scene;
 use uvt_host::scene::pattern::Pattern;
 use uvt_tests::kinds::{make, ALL_KINDS, NP};
+use uvt_tests::tiles::same_samples;
 use uvt_tests::{cases, dump, dump_sample, random_samples, seed, snap_samples, snap_tri, Rng};
 
 const CAP: usize = 64;
@@ -270,21 +271,9 @@ where
                             a.written, b.written, a.tested, b.tested
                         ));
                     }
-                    for s in 0..4 {
-                        let (da, db) = (fa.depth(tx, ty, s), fb.depth(tx, ty, s));
-                        let (ca, cb) = (fa.sample_color(tx, ty, s), fb.sample_color(tx, ty, s));
-                        if da != db || ca != cb {
-                            let hex = |d: Option<i32>| d.map(|d| format!("{d} ({d:#010x})"));
-                            return Err(format!(
-                                "pixel ({x}, {y}) sample {s}: without Zmax depth {:?} color \
-                                 {ca:?}, with {:?} {cb:?}",
-                                hex(da),
-                                hex(db)
-                            ));
-                        }
-                    }
                 }
             }
+            same_samples(&fa, &fb, x0, y0, ("without Zmax", "with Zmax"))?;
         }
     }
     let (a, b): (Stats, Stats) = (off.stats, on.stats);
