@@ -203,7 +203,7 @@ impl<L: Pipeline, const N: usize, Z: DepthCull> Raster<L, N, Z> {
                     screen,
                     color: *color,
                 };
-                shade_cell::<L, Z, TW, TH, S>(entry, &tile, &at, pattern, fb, stats, ops);
+                shade_cell::<L, TW, TH, S>(entry, &tile, &at, pattern, fb, stats, ops);
             });
         }
         stats.ops.add(&ops);
@@ -275,10 +275,9 @@ struct Cell {
 
 /// The one per-cell sample loop of every pipeline: each sample of the bounds tile that the tile
 /// step admits is tested ([`Pipeline::test`], its operations counted by the test or
-/// [`Pipeline::count`]), counted per pixel, and on a hit depth-tested into the buffer; with
-/// Zmax (`Z`), a written sample refreshes its pixel's Zmax register.
+/// [`Pipeline::count`]), counted per pixel, and on a hit depth-tested into the buffer.
 #[inline(always)]
-fn shade_cell<L: Pipeline, Z: DepthCull, const TW: usize, const TH: usize, const S: usize>(
+fn shade_cell<L: Pipeline, const TW: usize, const TH: usize, const S: usize>(
     entry: &L::Entry,
     tile: &L::Tile,
     at: &Cell,
@@ -313,9 +312,6 @@ fn shade_cell<L: Pipeline, Z: DepthCull, const TW: usize, const TH: usize, const
                     Some(DepthTest::Written) => {
                         Stats::inc(&mut stats.samples_written);
                         fb.count_written(tx, ty);
-                        if Z::ENABLED {
-                            ops.add_zmax(fb.refresh_max(tx, ty));
-                        }
                     }
                     Some(DepthTest::Occluded) => Stats::inc(&mut stats.samples_occluded),
                     None => {}

@@ -57,11 +57,6 @@ pub enum DepthTest {
 pub struct TileBuffer<const TW: usize, const TH: usize, const S: usize> {
     color: [[[Rgb888; S]; TW]; TH],
     depth: [[[i32; S]; TW]; TH],
-    /// per pixel, the largest stored depth of its `S` samples: Zmax culling's per-pixel register
-    /// ([`crate::raster::zmax`]), refreshed by [`Self::refresh_max`] after a write when the
-    /// renderer runs Zmax, else left at its clear value (a register never refreshed is at least
-    /// the pixel's true maximum, since writes only lower depths: reading it stays conservative)
-    zmax: [[i32; TW]; TH],
     pub(crate) stats: [[PixelStats; TW]; TH],
 }
 
@@ -89,7 +84,6 @@ impl<const TW: usize, const TH: usize, const S: usize> TileBuffer<TW, TH, S> {
         TileBuffer {
             color: [[[clear; S]; TW]; TH],
             depth: [[[DEPTH_EMPTY; S]; TW]; TH],
-            zmax: [[DEPTH_EMPTY; TW]; TH],
             stats: [[PixelStats::default(); TW]; TH],
         }
     }
@@ -133,31 +127,21 @@ impl<const TW: usize, const TH: usize, const S: usize> TileBuffer<TW, TH, S> {
         self.depth.get(y)?.get(x)?.get(s).copied()
     }
 
-    /// Refresh pixel (x, y)'s Zmax register to the largest of its `S` stored depths (after a
-    /// write; [`crate::raster::zmax`]); returns the slots read (`S`, 0 out of range).
-    pub fn refresh_max(&mut self, x: usize, y: usize) -> u64 {
-        let Some(d) = self.depth.get(y).and_then(|r| r.get(x)) else {
-            return 0;
-        };
-        let max = d.iter().copied().max().unwrap_or(DEPTH_EMPTY);
-        if let Some(z) = self.zmax.get_mut(y).and_then(|r| r.get_mut(x)) {
-            *z = max;
-        }
-        // S ≤ 64 (compile-time check).
-        S as u64
-    }
-
-    /// The tile maximum of Zmax culling ([`crate::raster::zmax`]): the largest Zmax register
-    /// over the pixels `cols.0..cols.1` × `rows.0..rows.1` (clipped to the buffer), and how
-    /// many registers were read. `i32::MIN` with 0 reads for an empty range.
+    /// The largest stored depth over every sample of the pixels `cols.0..cols.1` ×
+    /// `rows.0..rows.1` (ranges clipped to the buffer), and how many slots were read: the tile
+    /// maximum of Zmax culling ([`crate::raster::zmax`]). `i32::MIN` with 0 reads for an empty
+    /// range; an empty slot reads as [`DEPTH_EMPTY`].
     pub fn max_depth(&self, cols: (usize, usize), rows: (usize, usize)) -> (i32, u64) {
         let mut max = i32::MIN;
         let mut reads = 0u64;
         let pick = |r: (usize, usize), n: usize| r.0.min(n)..r.1.min(n);
-        for row in self.zmax.get(pick(rows, TH)).unwrap_or(&[]) {
-            for &z in row.get(pick(cols, TW)).unwrap_or(&[]) {
-                max = max.max(z);
-                reads = reads.saturating_add(1);
+        for row in self.depth.get(pick(rows, TH)).unwrap_or(&[]) {
+            for px in row.get(pick(cols, TW)).unwrap_or(&[]) {
+                for &d in px {
+                    max = max.max(d);
+                }
+                // S ≤ 64 (compile-time check).
+                reads = reads.saturating_add(S as u64);
             }
         }
         (max, reads)
@@ -184,7 +168,6 @@ impl<const TW: usize, const TH: usize, const S: usize> TileBuffer<TW, TH, S> {
         let mut fb = TileBuffer {
             color: [[[Rgb888::BLACK; S]; TW]; TH],
             depth: [[[0; S]; TW]; TH],
-            zmax: [[0; TW]; TH],
             stats: [[PixelStats::default(); TW]; TH],
         };
         fb.clear_fill(clear);
@@ -198,11 +181,9 @@ impl<const TW: usize, const TH: usize, const S: usize> TileBuffer<TW, TH, S> {
     pub(crate) fn clear_fill(&mut self, clear: Rgb888) {
         let pixels = self.color.iter_mut().flatten();
         let pixels = pixels.zip(self.depth.iter_mut().flatten());
-        let pixels = pixels.zip(self.zmax.iter_mut().flatten());
-        for (((c, d), z), st) in pixels.zip(self.stats.iter_mut().flatten()) {
+        for ((c, d), st) in pixels.zip(self.stats.iter_mut().flatten()) {
             *c = [clear; S];
             *d = [DEPTH_EMPTY; S];
-            *z = DEPTH_EMPTY;
             *st = PixelStats::default();
         }
     }

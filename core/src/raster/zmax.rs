@@ -36,20 +36,17 @@
 //! `sample::planar`): [`DEPTH_NEAR`] too. `tests/tests/zmax.rs` checks the floor against every
 //! covered sample's depth at every precision.
 //!
-//! **The tile's maximum** ([`TileBuffer::max_depth`]). The buffer keeps one Zmax register per
-//! pixel — the largest of its `S` stored depths, in the depth format ([`ZMAX_BITS`], no rounding)
-//! — refreshed after every write ([`TileBuffer::refresh_max`]: an `S`-input maximum; writes only
-//! lower depths, so a register is never below its pixel's true maximum) and cleared with the
-//! buffer to [`crate::config::formats::DEPTH_EMPTY`] = `i32::MAX`, above every floor (a tile with
-//! an empty slot is never culled). A bounds tile's maximum is the largest register of its pixels
-//! (a `b²`-input maximum; for a unit with a fixed bounds tile size the registers can be kept per
-//! bounds tile instead, one per tile, refreshed from the same `b²·S` values). The comparison is
-//! [`hides`]: `floor ≥ max`, the depth test's tie rule (a sample is written only when strictly
-//! nearer, so a sample at exactly the stored depth loses).
+//! **The tile's maximum** ([`TileBuffer::max_depth`]): the largest stored depth over every
+//! sample of the tile's pixels (an empty slot holds [`crate::config::formats::DEPTH_EMPTY`] =
+//! `i32::MAX`, above every floor, so a tile with an empty slot is never culled). The model
+//! computes it when it is read; hardware keeps it as a per-tile register ([`ZMAX_BITS`], the
+//! depth format) refreshed by a max-reduction of the tile's samples when one is written. The
+//! comparison is [`hides`]: `floor ≥ max`, the depth test's tie rule (a sample is written only
+//! when strictly nearer, so a sample at exactly the stored depth loses).
 //!
 //! **Cost** (counted in [`Ops::zmax`], apart from every other stage): the floor, [`FLOOR_OPS`]
-//! per triangle; per written sample the register's refresh (`S` slot reads); per kept bounds
-//! tile one read per pixel register and the final comparison.
+//! per triangle; per kept bounds tile, one read-and-compare per sample of the tile (the model's
+//! max) and the final comparison.
 
 use crate::config::formats::{DEPTH_FAR, DEPTH_FRAC, DEPTH_NEAR};
 use crate::config::precision::Precision;
@@ -141,8 +138,8 @@ pub fn hides(floor: i32, max: i32, ops: &mut Ops) -> bool {
     floor >= max
 }
 
-/// The Zmax test of one kept bounds tile of `fb`: tile-relative pixels `cols` × `rows` (the
-/// tile's maximum from its pixels' registers, the reads counted, then [`hides`]).
+/// The Zmax test of one kept bounds tile of `fb`: tile-relative pixels `x0..x1` × `y0..y1`
+/// (the tile's maximum read with its reads counted, then [`hides`]).
 #[inline]
 pub(crate) fn hidden_in<const TW: usize, const TH: usize, const S: usize>(
     floor: i32,
