@@ -98,6 +98,9 @@ pub enum Bench {
 impl Bench {
     /// Both scenes, in the table's order.
     pub const ALL: [Bench; 2] = [Bench::Game, Bench::Dense];
+    /// Every built-in benchmark scene: the bench-ste scenes and the occlusion scene of
+    /// `uvt bench-zmax` (the names `uvt scene list` and `--scene` take).
+    pub const NAMED: [Bench; 3] = [Bench::Game, Bench::Dense, Bench::Occluded];
     /// The command-line name (game, dense).
     pub fn name(self) -> &'static str {
         match self {
@@ -108,10 +111,13 @@ impl Bench {
     }
     /// The scene of a command-line name; the error lists the names.
     pub fn from_name(name: &str) -> anyhow::Result<Bench> {
-        [Bench::Game, Bench::Dense, Bench::Occluded]
+        Bench::NAMED
             .into_iter()
             .find(|b| b.name() == name)
-            .ok_or_else(|| anyhow::anyhow!("unknown scene {name:?} (game, dense, occluded)"))
+            .ok_or_else(|| {
+                let all: Vec<&str> = Bench::NAMED.iter().map(|b| b.name()).collect();
+                anyhow::anyhow!("unknown scene {name:?} ({})", all.join(", "))
+            })
     }
 }
 

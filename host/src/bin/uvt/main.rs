@@ -66,7 +66,7 @@ fn builtin(name: &str) -> Result<Scene> {
         Some(b) => (b, true),
         None => (name, false),
     };
-    for kind in [Bench::Game, Bench::Dense, Bench::Occluded] {
+    for kind in Bench::NAMED {
         for row in Blur::ALL {
             if bench_name(kind, row) == base {
                 let mut s = builtin::bench_scene(kind, row, quick);
@@ -88,7 +88,7 @@ fn bench_name(kind: Bench, row: Blur) -> String {
 /// Every name [`builtin`] accepts: `default`, then each benchmark row and its `-quick` form.
 fn builtin_names() -> Vec<String> {
     let mut v = vec!["default".to_string()];
-    for kind in [Bench::Game, Bench::Dense, Bench::Occluded] {
+    for kind in Bench::NAMED {
         for row in Blur::ALL {
             v.push(bench_name(kind, row));
             v.push(bench_name(kind, row) + "-quick");
