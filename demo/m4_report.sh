@@ -41,19 +41,32 @@ json_items() { local n=$#; local i=0; for r in "$@"; do i=$((i + 1)); if [[ $i -
 # Move a finished temporary file into place (nothing half-written), print it and stop.
 publish() { mv "$1" "$2"; cat "$2"; exit 0; }
 sec() { printf '%d' "0x$(readelf -S -W "$1" | awk -v s="$2" '{for (i = 1; i <= NF; i++) if ($i == s) print $(i + 4)}')"; }
-if [[ "${1:-}" == "--strategies" ]]; then
-  json=${2:-host/report/m4_strategies.json}
+# `m4_report.sh --zmax [OUT.json]` does the same on the occlusion rows (`uvt bench-zmax`: the game
+# street behind a near fence, static, motion, defocus, both; every 2nd triangle) and adds per row
+# Zmax culling's own instructions (`uvt_demo::zmax_cost`: the depth floor per visible triangle,
+# the tile check per kept bounds tile, the register refresh per written sample at 16 spp) — the
+# "zmax" line of m4_stages, which `--strategies` records too. Writes OUT.json (default
+# host/report/m4_zmax.json), which `uvt bench-zmax` reads for its Cortex-M4F column.
+if [[ "${1:-}" == "--strategies" || "${1:-}" == "--zmax" ]]; then
+  if [[ "$1" == "--zmax" ]]; then
+    json=${2:-host/report/m4_zmax.json}
+    plan=("occluded static motion defocus both")
+  else
+    json=${2:-host/report/m4_strategies.json}
+    plan=("game static motion motion2 defocus defocus2 both both2" "dense static motion motion2 defocus defocus2 both both2")
+  fi
   elf=$tdir/thumbv7em-none-eabihf/release/examples/m4_stages
   cargo build -q --release -p uvt-host --bin uvt
   cargo build -q --release -p uvt-demo --example m4_stages
   work=$(mktemp -d)
   trap 'rm -rf "$work"' EXIT
   rows=()
-  for scene in game dense; do
+  for line in "${plan[@]}"; do
+    read -r scene row_names <<<"$line"
     every=2
     [[ $scene == dense ]] && every=16
-    for row in static motion motion2 defocus defocus2 both both2; do
-      echo "m4_report --strategies: $scene $row (every $every)" >&2
+    for row in $row_names; do
+      echo "m4_report $1: $scene $row (every $every)" >&2
       w=$work/$scene-$row.bin
       "$tdir/release/uvt" m4-workload --scene "$scene" --row "$row" --quick --every "$every" --out "$w" >/dev/null
       host=$("$tdir/release/examples/m4_stages" "$w")
@@ -63,7 +76,7 @@ if [[ "${1:-}" == "--strategies" ]]; then
       cal=$(echo "$m4" | awk -F= '/^calibration/ {print $2}')
       [[ $cal -ge 7999922 && $cal -le 8000082 ]] || { echo "calibration $cal, expected 8000002 +- 80" >&2; exit 1; }
       # The same work with the same bits: every count of every line equal (insn aside).
-      strip() { echo "$1" | grep -E '^(workload|stage) ' | sed 's/ insn=.*//'; }
+      strip() { echo "$1" | grep -E '^(workload|stage|zmax) ' | sed 's/ insn=.*//'; }
       if [[ "$(strip "$host")" != "$(strip "$m4")" ]]; then
         diff <(strip "$host") <(strip "$m4") >&2 || true
         echo "m4_stages: the Cortex-M4F's counts differ from the host's ($scene $row)" >&2
@@ -76,12 +89,18 @@ if [[ "${1:-}" == "--strategies" ]]; then
           if (kv[1] == "ops" || kv[1] == "insn") v = "[" v "]";
           out = out ", \"" kv[1] "\": " v }
         print out "}" }' | paste -sd, -)
-      rows+=("{\"scene\": \"$scene\", \"row\": \"$row\", \"every\": $every, \"stages\": [$lines]}")
+      zline=$(echo "$m4" | awk '$1 == "zmax" {
+        out = "{"; for (i = 2; i <= NF; i++) { split($i, kv, "="); v = kv[2];
+          if (kv[1] == "insn") v = "[" v "]";
+          out = out (i > 2 ? ", " : "") "\"" kv[1] "\": " v }
+        print out "}" }')
+      [[ -n "$zline" ]] || { echo "m4_stages: no zmax line ($scene $row)" >&2; exit 1; }
+      rows+=("{\"scene\": \"$scene\", \"row\": \"$row\", \"every\": $every, \"stages\": [$lines], \"zmax\": $zline}")
     done
   done
   {
     echo "{"
-    echo "  \"target\": \"Cortex-M4F (thumbv7em-none-eabihf, QEMU mps2-an386, -icount shift=0): m4_stages on each quick bench row's own triangles (every 'every'-th), default configuration, bounds tile 1; per strategy and triangle class: counts, core ops [setup, bounds, rows, predicate, sample] and instructions [setup, tile walk, predicate, sample test] (SysTick laps, 40 instructions per tick)\","
+    echo "  \"target\": \"Cortex-M4F (thumbv7em-none-eabihf, QEMU mps2-an386, -icount shift=0): m4_stages on each quick bench row's own triangles (every 'every'-th), default configuration, bounds tile 1; per strategy and triangle class: counts, core ops [setup, bounds, rows, predicate, sample] and instructions [setup, tile walk, predicate, sample test]; zmax: Zmax culling's calls [depth floor per visible triangle, tile check, register refresh at spp 16] and their instructions (SysTick laps, 40 instructions per tick)\","
     echo "  \"rows\": ["
     json_items "${rows[@]}"
     echo "  ]"

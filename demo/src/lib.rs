@@ -20,5 +20,6 @@
 pub mod cost;
 pub mod scene;
 pub mod workload;
+pub mod zmax_cost;
 
 pub use scene::{prims, render, unit_prims, viewport, DemoResult, BOUNDS_TILE, SAMPLES, SIZE, SPP};

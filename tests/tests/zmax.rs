@@ -435,7 +435,8 @@ fn occlusion_rows_render_identically_and_cull() {
 }
 
 /// The core renderer and the host's frame driver make the same Zmax decisions: on a stress
-/// scene with overlap, the same samples tested and tiles skipped with Zmax.
+/// scene with overlap, the same samples tested and written, tiles skipped and Zmax operations
+/// (floors, register refreshes, tile checks) with Zmax.
 #[test]
 fn core_renderer_and_frame_driver_skip_the_same_tiles() {
     let mut rng = Rng(seed() ^ 0x2a);
@@ -465,11 +466,13 @@ fn core_renderer_and_frame_driver_skip_the_same_tiles() {
     let f = run(&Fixed::new(Laine2011, vp, &tris, &pattern), &pattern, &o);
     let core = (
         r.stats.samples_tested,
+        r.stats.samples_written,
         r.stats.tiles_zculled,
         r.stats.ops.zmax,
     );
     let host = (
         f.stats.samples_tested,
+        f.stats.samples_written,
         f.stats.tiles_zculled,
         f.stats.ops_zmax,
     );
@@ -477,7 +480,7 @@ fn core_renderer_and_frame_driver_skip_the_same_tiles() {
     assert_eq!(
         core,
         host,
-        "UVT_SEED={}: (tested, skipped, zmax ops)",
+        "UVT_SEED={}: (tested, written, skipped, zmax ops)",
         seed()
     );
 }

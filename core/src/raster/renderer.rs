@@ -25,7 +25,7 @@ use crate::config::unit::{Full, MotionOnly, StaticOnly, Unit};
 use crate::error::Error;
 use crate::input::{PixelRect, Prim, SamplePattern, Viewport};
 use crate::raster::tile_buffer::{tile_size, DepthTest, PixelStats, TileBuffer};
-use crate::raster::zmax::{self, DepthCull, NoZmax};
+use crate::raster::zmax::{DepthCull, NoZmax, ZmaxRegisters};
 use crate::sample::pos::ScreenPos;
 use crate::setup::{Cull, Outcome};
 use crate::stats::{Ops, Stats};
@@ -175,6 +175,8 @@ impl<L: Pipeline, const N: usize, Z: DepthCull> Raster<L, N, Z> {
             ..
         } = self;
         let mut ops = Ops::default();
+        // The Zmax registers of this screen tile (zero-sized without Zmax).
+        let mut zregs = <Z::Registers<TW, TH> as ZmaxRegisters<TW, TH>>::cleared();
         for (entry, color, floor) in entries.iter() {
             let region = L::footprint(entry).intersect(&screen);
             if region.is_empty() {
@@ -193,7 +195,7 @@ impl<L: Pipeline, const N: usize, Z: DepthCull> Raster<L, N, Z> {
                     let rel = |a: u16, b: u16| usize::from(a.saturating_sub(b));
                     let cols = (rel(cell.x0, screen.x0), rel(cell.x1, screen.x0));
                     let rows = (rel(cell.y0, screen.y0), rel(cell.y1, screen.y0));
-                    if zmax::hidden_in(*floor, fb, cols, rows, ops) {
+                    if zregs.hides(*floor, cols, rows, ops) {
                         Stats::inc(&mut stats.tiles_zculled);
                         return;
                     }
@@ -203,7 +205,15 @@ impl<L: Pipeline, const N: usize, Z: DepthCull> Raster<L, N, Z> {
                     screen,
                     color: *color,
                 };
-                shade_cell::<L, TW, TH, S>(entry, &tile, &at, pattern, fb, stats, ops);
+                shade_cell::<L, _, TW, TH, S>(
+                    entry,
+                    &tile,
+                    &at,
+                    pattern,
+                    (fb, &mut zregs),
+                    stats,
+                    ops,
+                );
             });
         }
         stats.ops.add(&ops);
@@ -275,14 +285,21 @@ struct Cell {
 
 /// The one per-cell sample loop of every pipeline: each sample of the bounds tile that the tile
 /// step admits is tested ([`Pipeline::test`], its operations counted by the test or
-/// [`Pipeline::count`]), counted per pixel, and on a hit depth-tested into the buffer.
+/// [`Pipeline::count`]), counted per pixel, and on a hit depth-tested into the buffer; a written
+/// sample refreshes its pixel's Zmax register (`R`; nothing without Zmax).
 #[inline(always)]
-fn shade_cell<L: Pipeline, const TW: usize, const TH: usize, const S: usize>(
+fn shade_cell<
+    L: Pipeline,
+    R: ZmaxRegisters<TW, TH>,
+    const TW: usize,
+    const TH: usize,
+    const S: usize,
+>(
     entry: &L::Entry,
     tile: &L::Tile,
     at: &Cell,
     pattern: &SamplePattern<'_>,
-    fb: &mut TileBuffer<TW, TH, S>,
+    (fb, zregs): (&mut TileBuffer<TW, TH, S>, &mut R),
     stats: &mut Stats,
     ops: &mut Ops,
 ) {
@@ -312,6 +329,7 @@ fn shade_cell<L: Pipeline, const TW: usize, const TH: usize, const S: usize>(
                     Some(DepthTest::Written) => {
                         Stats::inc(&mut stats.samples_written);
                         fb.count_written(tx, ty);
+                        zregs.refresh(fb, tx, ty, ops);
                     }
                     Some(DepthTest::Occluded) => Stats::inc(&mut stats.samples_occluded),
                     None => {}

@@ -128,9 +128,10 @@ impl<const TW: usize, const TH: usize, const S: usize> TileBuffer<TW, TH, S> {
     }
 
     /// The largest stored depth over every sample of the pixels `cols.0..cols.1` ×
-    /// `rows.0..rows.1` (ranges clipped to the buffer), and how many slots were read: the tile
-    /// maximum of Zmax culling ([`crate::raster::zmax`]). `i32::MIN` with 0 reads for an empty
-    /// range; an empty slot reads as [`DEPTH_EMPTY`].
+    /// `rows.0..rows.1` (ranges clipped to the buffer), and how many slots were read: a pixel's
+    /// Zmax register refresh, and the reduction the registers' tile maximum equals
+    /// ([`crate::raster::zmax`]). `i32::MIN` with 0 reads for an empty range; an empty slot
+    /// reads as [`DEPTH_EMPTY`].
     pub fn max_depth(&self, cols: (usize, usize), rows: (usize, usize)) -> (i32, u64) {
         let mut max = i32::MIN;
         let mut reads = 0u64;

@@ -36,19 +36,26 @@
 //! `sample::planar`): [`DEPTH_NEAR`] too. `tests/tests/zmax.rs` checks the floor against every
 //! covered sample's depth at every precision.
 //!
-//! **The tile's maximum** ([`TileBuffer::max_depth`]): the largest stored depth over every
-//! sample of the tile's pixels (an empty slot holds [`crate::config::formats::DEPTH_EMPTY`] =
-//! `i32::MAX`, above every floor, so a tile with an empty slot is never culled). The model
-//! computes it when it is read; hardware keeps it as a per-tile register ([`ZMAX_BITS`], the
-//! depth format) refreshed by a max-reduction of the tile's samples when one is written. The
-//! comparison is [`hides`]: `floor ≥ max`, the depth test's tie rule (a sample is written only
-//! when strictly nearer, so a sample at exactly the stored depth loses).
+//! **The Zmax registers** ([`DepthCull::Registers`]: [`PixelMax`] with Zmax, the zero-sized
+//! [`NoRegisters`] without, so a renderer without Zmax carries and updates nothing). Per pixel of
+//! the screen tile, one register in the depth format ([`ZMAX_BITS`], no rounding): the largest of
+//! the pixel's `S` stored depths, cleared with the tile to
+//! [`crate::config::formats::DEPTH_EMPTY`] = `i32::MAX` (above every floor: a tile with an empty
+//! slot is never culled) and refreshed after every written sample ([`ZmaxRegisters::refresh`]:
+//! an `S`-input maximum of the pixel's depths — a write lowers one, so the register may fall).
+//! Each register therefore equals its pixel's true maximum at every moment, and a bounds tile's
+//! maximum is the largest register of its pixels (a `b²`-input maximum): the same value as a
+//! reduction over every stored sample ([`TileBuffer::max_depth`], which the tests compare it
+//! with). For a unit with a fixed bounds tile size the registers can be kept per bounds tile
+//! instead, refreshed from the same `b²·S` values. The comparison is [`hides`]: `floor ≥ max`,
+//! the depth test's tie rule (a sample is written only when strictly nearer, so a sample at
+//! exactly the stored depth loses).
 //!
 //! **Cost** (counted in [`Ops::zmax`], apart from every other stage): the floor, [`FLOOR_OPS`]
-//! per triangle; per kept bounds tile, one read-and-compare per sample of the tile (the model's
-//! max) and the final comparison.
+//! per triangle; per written sample the register's refresh (`S` depth reads); per kept bounds
+//! tile one read per pixel register of the tile and the final comparison.
 
-use crate::config::formats::{DEPTH_FAR, DEPTH_FRAC, DEPTH_NEAR};
+use crate::config::formats::{DEPTH_EMPTY, DEPTH_FAR, DEPTH_FRAC, DEPTH_NEAR};
 use crate::config::precision::Precision;
 use crate::config::unit::Unit;
 use crate::input::{Triangle, W, Z};
@@ -63,6 +70,28 @@ pub trait DepthCull: Copy + Default + core::fmt::Debug + 'static {
     const ENABLED: bool;
     /// The name in reports (`none`, `zmax`).
     const NAME: &'static str;
+    /// The Zmax registers of a `TW` × `TH` screen tile (module docs).
+    type Registers<const TW: usize, const TH: usize>: ZmaxRegisters<TW, TH>;
+}
+
+/// The Zmax registers of a `TW` × `TH` screen tile, kept by the render loop beside its
+/// [`TileBuffer`] (module docs).
+pub trait ZmaxRegisters<const TW: usize, const TH: usize> {
+    /// Every register at the clear value ([`crate::config::formats::DEPTH_EMPTY`]).
+    fn cleared() -> Self;
+    /// After a sample of pixel (`x`, `y`) of `fb` was written: the pixel's register becomes the
+    /// largest of its stored depths (`S` reads counted in `ops.zmax`).
+    fn refresh<const S: usize>(
+        &mut self,
+        fb: &TileBuffer<TW, TH, S>,
+        x: usize,
+        y: usize,
+        ops: &mut Ops,
+    );
+    /// Whether a triangle with depth floor `floor` is hidden in the bounds tile of tile-relative
+    /// pixels `cols.0..cols.1` × `rows.0..rows.1`: the tile's maximum from its pixels' registers
+    /// (one read each, counted), then [`hides`].
+    fn hides(&self, floor: i32, cols: (usize, usize), rows: (usize, usize), ops: &mut Ops) -> bool;
 }
 
 /// No Zmax culling: the renderer's default; the step is compiled out.
@@ -76,11 +105,89 @@ pub struct Zmax;
 impl DepthCull for NoZmax {
     const ENABLED: bool = false;
     const NAME: &'static str = "none";
+    type Registers<const TW: usize, const TH: usize> = NoRegisters;
 }
 
 impl DepthCull for Zmax {
     const ENABLED: bool = true;
     const NAME: &'static str = "zmax";
+    type Registers<const TW: usize, const TH: usize> = PixelMax<TW, TH>;
+}
+
+/// No registers (a renderer without Zmax): nothing stored, refreshed or culled.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct NoRegisters;
+
+impl<const TW: usize, const TH: usize> ZmaxRegisters<TW, TH> for NoRegisters {
+    #[inline(always)]
+    fn cleared() -> Self {
+        NoRegisters
+    }
+    #[inline(always)]
+    fn refresh<const S: usize>(
+        &mut self,
+        _: &TileBuffer<TW, TH, S>,
+        _: usize,
+        _: usize,
+        _: &mut Ops,
+    ) {
+    }
+    #[inline(always)]
+    fn hides(&self, _: i32, _: (usize, usize), _: (usize, usize), _: &mut Ops) -> bool {
+        false
+    }
+}
+
+/// One Zmax register per pixel of a `TW` × `TH` screen tile: the largest stored depth of the
+/// pixel's samples (module docs).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct PixelMax<const TW: usize, const TH: usize> {
+    max: [[i32; TW]; TH],
+}
+
+impl<const TW: usize, const TH: usize> PixelMax<TW, TH> {
+    /// The largest register over the pixels `cols.0..cols.1` × `rows.0..rows.1` (clipped to the
+    /// tile) and how many were read; `i32::MIN` with 0 reads for an empty range.
+    pub fn tile_max(&self, cols: (usize, usize), rows: (usize, usize)) -> (i32, u64) {
+        let pick = |r: (usize, usize), n: usize| r.0.min(n)..r.1.min(n);
+        let mut max = i32::MIN;
+        let mut reads = 0u64;
+        for row in self.max.get(pick(rows, TH)).unwrap_or(&[]) {
+            for &m in row.get(pick(cols, TW)).unwrap_or(&[]) {
+                max = max.max(m);
+                reads = reads.saturating_add(1);
+            }
+        }
+        (max, reads)
+    }
+}
+
+impl<const TW: usize, const TH: usize> ZmaxRegisters<TW, TH> for PixelMax<TW, TH> {
+    fn cleared() -> Self {
+        PixelMax {
+            max: [[DEPTH_EMPTY; TW]; TH],
+        }
+    }
+
+    fn refresh<const S: usize>(
+        &mut self,
+        fb: &TileBuffer<TW, TH, S>,
+        x: usize,
+        y: usize,
+        ops: &mut Ops,
+    ) {
+        let (max, reads) = fb.max_depth((x, x.saturating_add(1)), (y, y.saturating_add(1)));
+        if let Some(m) = self.max.get_mut(y).and_then(|r| r.get_mut(x)) {
+            *m = max;
+            ops.add_zmax(reads);
+        }
+    }
+
+    fn hides(&self, floor: i32, cols: (usize, usize), rows: (usize, usize), ops: &mut Ops) -> bool {
+        let (max, reads) = self.tile_max(cols, rows);
+        ops.add_zmax(reads);
+        hides(floor, max, ops)
+    }
 }
 
 /// Bits of one tile's stored maximum: the depth format, I8F24 (no rounding, so no widening).
@@ -138,25 +245,11 @@ pub fn hides(floor: i32, max: i32, ops: &mut Ops) -> bool {
     floor >= max
 }
 
-/// The Zmax test of one kept bounds tile of `fb`: tile-relative pixels `x0..x1` × `y0..y1`
-/// (the tile's maximum read with its reads counted, then [`hides`]).
-#[inline]
-pub(crate) fn hidden_in<const TW: usize, const TH: usize, const S: usize>(
-    floor: i32,
-    fb: &TileBuffer<TW, TH, S>,
-    cols: (usize, usize),
-    rows: (usize, usize),
-    ops: &mut Ops,
-) -> bool {
-    let (max, reads) = fb.max_depth(cols, rows);
-    ops.add_zmax(reads);
-    hides(floor, max, ops)
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::input::Vertex;
+    use crate::raster::tile_buffer::DepthTest;
 
     fn tri(w: [i32; 3], z: [i32; 3]) -> Triangle {
         let x = [0, 65536, 2 * 65536];
@@ -199,6 +292,47 @@ mod tests {
         let f = floor_of(&ends_wz(&t), &mut ops);
         // min z/w = 0.5 (vertex 0, and vertex 1): 2^23, less half an LSB of z over (w + ½).
         assert!(f < 1 << 23 && f > (1 << 23) - 256, "{f} {f:#x}");
+    }
+
+    /// Registers refreshed after each write equal the reduction over the stored samples for every
+    /// rectangle of pixels, including after a write that lowers a pixel's maximum; without the
+    /// refresh they would stay at the clear value.
+    #[test]
+    fn registers_equal_the_stored_maximum() {
+        use embedded_graphics_core::pixelcolor::Rgb888;
+        let mut fb = TileBuffer::<3, 2, 4>::new(Rgb888::new(0, 0, 0));
+        let mut regs = PixelMax::<3, 2>::cleared();
+        let mut ops = Ops::default();
+        let mut seed = 0x2545_f491_u32;
+        let mut next = move || {
+            seed = seed.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            seed >> 8
+        };
+        let mut written = 0u64;
+        for _ in 0..400 {
+            let (x, y, s) = (
+                next() as usize % 3,
+                next() as usize % 2,
+                next() as usize % 4,
+            );
+            let depth = i32::try_from(next() % 4096).unwrap_or(0) - 2048;
+            if fb.write(x, y, s, Rgb888::new(9, 9, 9), depth) == Some(DepthTest::Written) {
+                regs.refresh(&fb, x, y, &mut ops);
+                written += 1;
+            }
+            for (cols, rows) in [((0, 3), (0, 2)), ((x, x + 1), (y, y + 1)), ((1, 3), (1, 2))] {
+                let (want, _) = fb.max_depth(cols, rows);
+                let (got, reads) = regs.tile_max(cols, rows);
+                assert_eq!(
+                    got, want,
+                    "pixels {cols:?} x {rows:?} after writing ({x}, {y}, {s})"
+                );
+                assert_eq!(reads, ((cols.1 - cols.0) * (rows.1 - rows.0)) as u64);
+            }
+        }
+        assert!(written > 24, "the maxima fell: {written} writes");
+        assert_eq!(ops.zmax, 4 * written, "S reads per refresh");
+        assert!(regs.tile_max((0, 3), (0, 2)).0 < DEPTH_EMPTY);
     }
 
     #[test]

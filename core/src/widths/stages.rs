@@ -468,10 +468,10 @@ pub fn table(cfg: &Config) -> Table {
     ));
     t.push(r(
         "zmax",
-        "tile maximum (one register of `ZMAX_BITS` per bounds tile), compare `floor ≥ max`",
+        "Zmax register per pixel (`ZMAX_BITS`, max of its S depths); tile max, `floor ≥ max`",
         Mag::int((1 << 31) - 1),
         "i32",
-        "max of the tile's stored depths",
+        "exact; refreshed on each write",
         [None, None],
     ));
     t

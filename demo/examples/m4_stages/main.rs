@@ -1,7 +1,8 @@
 //! The per-stage cost of every bounds strategy of the bench on a bench row's own triangles
 //! (`uvt_demo::workload`): for each strategy and triangle class one line
 //! `stage NAME CLASS triangles=… visible=… tiles=… admits=… tested=… covered=… ops=… insn=…`
-//! (classes with no triangle left out).
+//! (classes with no triangle left out), then Zmax culling's own calls
+//! (`uvt_demo::zmax_cost`): `zmax floors=… checks=… refreshes=… bounds_tile=… spp=… insn=…`.
 //!
 //! On `thumbv7em-none-eabihf` it is a bare-metal Cortex-M4F program for QEMU's `mps2-an386`
 //! (as `m4_render`: SysTick under `-icount shift=0` counts 40 instructions per tick, checked by
@@ -17,6 +18,7 @@
 use uvt_core::bounds::registry::STRATEGIES;
 use uvt_core::{with_strategy, BoundsStrategy, Class, DefaultPrecision, Sample, SamplePattern};
 use uvt_demo::workload::{stages, FormatError, StageCost, Workload};
+use uvt_demo::zmax_cost::{zmax_cost, ZmaxCost};
 
 /// Most samples a workload's table may hold (block 8 × 8, 64 samples per pixel).
 const MAX_SAMPLES: usize = 4096;
@@ -37,12 +39,12 @@ fn table(w: &Workload<'_>) -> Result<heapless::Vec<Sample, MAX_SAMPLES>, FormatE
     Ok(v)
 }
 
-/// Run every measured strategy on `w`, handing each result to `out`.
+/// Run every measured strategy on `w`, handing each result to `out`, then Zmax culling's calls.
 fn run_all(
     w: &Workload<'_>,
     lap: &mut impl FnMut() -> u64,
     mut out: impl FnMut(&str, &str, &StageCost),
-) -> Result<(), FormatError> {
+) -> Result<ZmaxCost, FormatError> {
     let samples = table(w)?;
     let h = w.header();
     let pattern = SamplePattern::new_with::<DefaultPrecision>(h.block, h.spp, &samples)
@@ -56,7 +58,7 @@ fn run_all(
             }
         }
     }
-    Ok(())
+    zmax_cost::<DefaultPrecision>(w, lap)
 }
 
 /// Print one result line with `$out` (`println` on the host, `hprintln` on the target).
@@ -68,6 +70,24 @@ macro_rules! line {
             $name, $class, c.triangles, c.visible, c.tiles, c.admits, c.tested, c.covered,
             c.ops[0], c.ops[1], c.ops[2], c.ops[3], c.ops[4],
             c.insn[0], c.insn[1], c.insn[2], c.insn[3]
+        );
+    }};
+}
+
+/// Print the Zmax line with `$out`.
+macro_rules! zline {
+    ($out:ident, $bt:expr, $z:expr) => {{
+        let z: &uvt_demo::zmax_cost::ZmaxCost = $z;
+        $out!(
+            "zmax floors={} checks={} refreshes={} bounds_tile={} spp={} insn={},{},{}",
+            z.floors,
+            z.checks,
+            z.refreshes,
+            $bt,
+            uvt_demo::zmax_cost::S,
+            z.insn[0],
+            z.insn[1],
+            z.insn[2]
         );
     }};
 }
@@ -91,7 +111,9 @@ fn main() {
     let res = Workload::parse(&bytes).and_then(|w| {
         let h = w.header();
         println!("workload every={} spp={}", h.every, h.spp);
-        run_all(&w, &mut || 0, |n, k, c| line!(println, n, k, c))
+        let z = run_all(&w, &mut || 0, |n, k, c| line!(println, n, k, c))?;
+        zline!(println, h.bounds_tile, &z);
+        Ok(())
     });
     if let Err(e) = res {
         eprintln!("error {e}");

@@ -41,7 +41,9 @@ fn main() -> ! {
     let res = Workload::parse(WORKLOAD).and_then(|w| {
         let h = w.header();
         hprintln!("workload every={} spp={}", h.every, h.spp);
-        crate::run_all(&w, &mut lap, |n, k, c| line!(hprintln, n, k, c))
+        let z = crate::run_all(&w, &mut lap, |n, k, c| line!(hprintln, n, k, c))?;
+        zline!(hprintln, h.bounds_tile, &z);
+        Ok(())
     });
     match res {
         Ok(()) => debug::exit(debug::EXIT_SUCCESS),

@@ -17,6 +17,12 @@ pub const DEFAULT_PATH: &str = "host/report/m4_strategies.json";
 /// The committed file's text, built in: every command reads the same figures wherever it runs.
 const COMMITTED: &str = include_str!("../../report/m4_strategies.json");
 
+/// The occlusion rows' file (`bash demo/m4_report.sh --zmax`), relative to the repository root.
+pub const ZMAX_PATH: &str = "host/report/m4_zmax.json";
+
+/// [`ZMAX_PATH`]'s text, built in.
+const COMMITTED_ZMAX: &str = include_str!("../../report/m4_zmax.json");
+
 /// The committed figures ([`DEFAULT_PATH`], built in); the error says why they do not parse.
 pub fn committed() -> anyhow::Result<&'static M4Stages> {
     static PARSED: std::sync::OnceLock<Result<M4Stages, String>> = std::sync::OnceLock::new();
@@ -24,6 +30,15 @@ pub fn committed() -> anyhow::Result<&'static M4Stages> {
         .get_or_init(|| serde_json::from_str(COMMITTED).map_err(|e| e.to_string()))
         .as_ref()
         .map_err(|e| anyhow::anyhow!("{DEFAULT_PATH} (built in): {e}"))
+}
+
+/// The occlusion rows' committed figures ([`ZMAX_PATH`], built in).
+pub fn committed_zmax() -> anyhow::Result<&'static M4Stages> {
+    static PARSED: std::sync::OnceLock<Result<M4Stages, String>> = std::sync::OnceLock::new();
+    PARSED
+        .get_or_init(|| serde_json::from_str(COMMITTED_ZMAX).map_err(|e| e.to_string()))
+        .as_ref()
+        .map_err(|e| anyhow::anyhow!("{ZMAX_PATH} (built in): {e}"))
 }
 
 /// One strategy on one class of one row.
@@ -51,6 +66,42 @@ pub struct StageLine {
     pub insn: [u64; 4],
 }
 
+/// Zmax culling's own calls on one row (`demo/src/zmax_cost.rs`).
+#[derive(Clone, Copy, Debug, Deserialize)]
+pub struct ZmaxLine {
+    /// depth floors timed (one per visible triangle)
+    pub floors: u64,
+    /// tile checks timed
+    pub checks: u64,
+    /// register refreshes timed
+    pub refreshes: u64,
+    /// bounds tile of the checks
+    pub bounds_tile: u32,
+    /// samples per pixel of the refreshes
+    pub spp: u32,
+    /// instructions: floors, checks, refreshes
+    pub insn: [u64; 3],
+}
+
+/// Cortex-M4F instructions per call of Zmax culling's three calls.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ZmaxPerCall {
+    /// per visible triangle (the depth floor)
+    pub floor: f64,
+    /// per kept bounds tile (the tile's maximum from its registers and the comparison)
+    pub check: f64,
+    /// per written sample (the pixel's register refresh)
+    pub refresh: f64,
+}
+
+impl ZmaxPerCall {
+    /// Zmax's instructions in a frame with `visible` triangles, `checks` kept bounds tiles
+    /// checked and `written` samples stored.
+    pub fn total(&self, visible: u64, checks: u64, written: u64) -> f64 {
+        self.floor * visible as f64 + self.check * checks as f64 + self.refresh * written as f64
+    }
+}
+
 /// One bench row's lines.
 #[derive(Clone, Debug, Deserialize)]
 pub struct StageRow {
@@ -62,6 +113,9 @@ pub struct StageRow {
     pub every: u32,
     /// per strategy and class
     pub stages: Vec<StageLine>,
+    /// Zmax culling's calls (files written before they were measured have none)
+    #[serde(default)]
+    pub zmax: Option<ZmaxLine>,
 }
 
 /// The file.
@@ -112,7 +166,32 @@ impl M4Stages {
     }
 }
 
+impl M4Stages {
+    /// Zmax's per-call figures pooled over every row that has them; `None` if none has.
+    pub fn zmax_pooled(&self) -> Option<ZmaxPerCall> {
+        let lines: Vec<&ZmaxLine> = self.rows.iter().filter_map(|r| r.zmax.as_ref()).collect();
+        let sum = |f: fn(&ZmaxLine) -> u64| lines.iter().map(|l| f(l)).sum::<u64>();
+        let d = |a: u64, b: u64| if b == 0 { 0.0 } else { a as f64 / b as f64 };
+        (!lines.is_empty()).then(|| ZmaxPerCall {
+            floor: d(sum(|l| l.insn[0]), sum(|l| l.floors)),
+            check: d(sum(|l| l.insn[1]), sum(|l| l.checks)),
+            refresh: d(sum(|l| l.insn[2]), sum(|l| l.refreshes)),
+        })
+    }
+}
+
 impl StageRow {
+    /// Zmax's per-call figures of this row, if it has them.
+    pub fn zmax_per_call(&self) -> Option<ZmaxPerCall> {
+        let z = self.zmax?;
+        let d = |a: u64, b: u64| if b == 0 { 0.0 } else { a as f64 / b as f64 };
+        Some(ZmaxPerCall {
+            floor: d(z.insn[0], z.floors),
+            check: d(z.insn[1], z.checks),
+            refresh: d(z.insn[2], z.refreshes),
+        })
+    }
+
     /// Per-call figures of `strategy` on this row, pooled over its classes.
     pub fn per_call(&self, strategy: &str) -> Option<PerCall> {
         let mut s = StageSum::default();
@@ -174,5 +253,42 @@ impl PerCall {
             + self.tile * tiles as f64
             + self.admit * admits as f64
             + self.test * tested as f64
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::bench::strategy::strategies;
+
+    /// The occlusion rows' file holds every row `uvt bench-zmax` reads, each with every bench
+    /// strategy and Zmax's calls, every per-call figure measured (non-zero).
+    #[test]
+    fn occlusion_rows_have_every_figure_bench_zmax_reads() {
+        let z = committed_zmax().expect("m4_zmax.json parses");
+        for row in ["static", "motion", "defocus", "both"] {
+            let r = z
+                .row("occluded", row)
+                .unwrap_or_else(|| panic!("row occluded {row}"));
+            let zc = r
+                .zmax_per_call()
+                .unwrap_or_else(|| panic!("zmax line, occluded {row}"));
+            assert!(
+                zc.floor > 0.0 && zc.check > 0.0 && zc.refresh > 0.0,
+                "occluded {row}: {zc:?}"
+            );
+            let line = r.zmax.expect("zmax line");
+            assert_eq!((line.bounds_tile, line.spp), (1, 16), "occluded {row}");
+            for name in strategies() {
+                let pc = r
+                    .per_call(name)
+                    .unwrap_or_else(|| panic!("{name} on occluded {row}"));
+                assert!(
+                    pc.setup > 0.0 && pc.tile > 0.0 && pc.test > 0.0,
+                    "{name} {row}: {pc:?}"
+                );
+            }
+        }
+        assert!(z.zmax_pooled().is_some());
     }
 }

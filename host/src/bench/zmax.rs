@@ -2,7 +2,10 @@
 //! (`uvt_core::raster::zmax`) on the occlusion rows (the game street behind a near fence,
 //! [`Bench::Occluded`]) and, for contrast, the game rows without the fence: sample tests, tiles
 //! skipped, the whole operation count (setup, tiles, rows, predicates, sample tests and Zmax's
-//! own floors, reads and comparisons) and wall time, each pair checked for an identical image.
+//! own floors, reads and comparisons), the whole Cortex-M4F instructions (the same parts, each
+//! count times its instructions per call measured on the Cortex-M4F: the occlusion rows' own
+//! triangles in `host/report/m4_zmax.json`, the game rows' in `host/report/m4_strategies.json`,
+//! Zmax's calls from the occlusion rows) and wall time, each pair checked for an identical image.
 
 use anyhow::{bail, Result};
 use serde::Serialize;
@@ -12,6 +15,7 @@ use crate::frame::driver::RunOpts;
 use crate::scene::builtin::{bench_scene, Bench, Blur};
 use crate::scene::pattern::Pattern;
 
+use super::m4_stages::{committed, committed_zmax, PerCall, ZmaxPerCall};
 use super::strategy::{run_strategy_at, strategies, StratResult};
 
 /// The rows: the occluded street and the open street, static, motion, defocus and both.
@@ -77,8 +81,50 @@ pub fn whole_ops(r: &StratResult) -> u64 {
     s.ops_setup + s.ops_bounds + s.ops_rows + s.ops_predicate + s.ops_sample + s.ops_zmax
 }
 
+/// The per-call Cortex-M4F figures of `name` on row (`kind`, `row`) and Zmax's: the row's own
+/// where measured (the occlusion rows in `m4_zmax.json`, the game rows in `m4_strategies.json`),
+/// Zmax's pooled over the occlusion rows where the row has none.
+fn per_call(kind: Bench, row: Blur, name: &str) -> Result<(PerCall, ZmaxPerCall)> {
+    let (z, file) = (committed_zmax()?, committed()?);
+    let src = if kind == Bench::Occluded { z } else { file };
+    let Some(r) = src.row(kind.name(), &row.name()) else {
+        bail!(
+            "no Cortex-M4F figures for row {} {}",
+            kind.name(),
+            row.name()
+        );
+    };
+    let (Some(pc), Some(zc)) = (
+        r.per_call(name),
+        r.zmax_per_call().or_else(|| z.zmax_pooled()),
+    ) else {
+        bail!(
+            "no Cortex-M4F figures for {name} on {} {}",
+            kind.name(),
+            row.name()
+        );
+    };
+    Ok((pc, zc))
+}
+
+/// The whole Cortex-M4F instructions of run `r` (with or without Zmax).
+fn m4_whole(r: &StratResult, (pc, zc): &(PerCall, ZmaxPerCall), zmax: bool) -> f64 {
+    let s = &r.stats;
+    let own = if zmax {
+        let visible = s.by_class.iter().sum();
+        zc.total(
+            visible,
+            s.tiles_visited - s.tiles_skipped,
+            s.samples_written,
+        )
+    } else {
+        0.0
+    };
+    r.m4_of(pc) + own
+}
+
 /// Run every row at precision `P` (`quick`: the quarter size). Fails if an image differs with
-/// Zmax, or Zmax tests more samples than without it.
+/// Zmax, or Zmax tests more samples than without it, or a row lacks its Cortex-M4F figures.
 pub fn run_rows<P: Precision + Sync>(quick: bool) -> Result<Vec<ZmaxRow>> {
     let mut out = Vec::new();
     for (kind, row) in ROWS {
@@ -101,9 +147,12 @@ pub fn run_rows<P: Precision + Sync>(quick: bool) -> Result<Vec<ZmaxRow>> {
                 (Some(x), Some(y)) => Some(if y.0.ms < x.0.ms { y } else { x }),
                 _ => None,
             };
-            let (Some((off, a)), Some((on, b))) = (best(false), best(true)) else {
+            let (Some((mut off, a)), Some((mut on, b))) = (best(false), best(true)) else {
                 bail!("{name}: not a registry strategy");
             };
+            let pc = per_call(kind, row, name)?;
+            off.m4 = Some(m4_whole(&off, &pc, false));
+            on.m4 = Some(m4_whole(&on, &pc, true));
             if a != b {
                 let at = a.iter().zip(&b).position(|(x, y)| x != y);
                 bail!(
@@ -128,14 +177,15 @@ pub fn run_rows<P: Precision + Sync>(quick: bool) -> Result<Vec<ZmaxRow>> {
 }
 
 /// The Markdown table: per row and strategy, samples tested without / with Zmax and the saving,
-/// kept tiles skipped, whole ops without / with per covered sample of the run without Zmax
-/// (the same visible work; with Zmax fewer samples are covered because fewer are tested), their
-/// ratio, and wall ms (the faster of two frames each).
+/// kept tiles skipped, the ratio of whole ops with / without, whole Cortex-M4F instructions
+/// without / with per covered sample of the run without Zmax (the same visible work; with Zmax
+/// fewer samples are covered because fewer are tested) and their ratio, and wall ms (the faster
+/// of two frames each).
 pub fn table_md(rows: &[ZmaxRow]) -> String {
     let mut s = String::from(
-        "| row | strategy | tested | tested, Zmax | saved | tiles skipped | ops / covered | \
-         ops / covered, Zmax | ops ratio | ms | ms, Zmax | image |\n\
-         |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n",
+        "| row | strategy | tested | tested, Zmax | saved | tiles skipped | ops ratio | \
+         M4 / covered | M4 / covered, Zmax | M4 ratio | ms | ms, Zmax | image |\n\
+         |---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n",
     );
     for r in rows {
         for (i, p) in r.pairs.iter().enumerate() {
@@ -146,16 +196,18 @@ pub fn table_md(rows: &[ZmaxRow]) -> String {
             };
             let cov = p.off.stats.samples_covered.max(1) as f64;
             let (a, b) = (whole_ops(&p.off) as f64, whole_ops(&p.on) as f64);
+            let (ma, mb) = (p.off.m4.unwrap_or(0.0), p.on.m4.unwrap_or(0.0));
             s += &format!(
-                "| {label} | {} | {} | {} | {:.1}% | {:.1}% | {:.1} | {:.1} | {:.3} | {:.1} | {:.1} | same |\n",
+                "| {label} | {} | {} | {} | {:.1}% | {:.1}% | {:.3} | {:.0} | {:.0} | {:.3} | {:.1} | {:.1} | same |\n",
                 p.off.name,
                 p.off.stats.samples_tested,
                 p.on.stats.samples_tested,
                 100.0 * p.saved(),
                 100.0 * p.culled(),
-                a / cov,
-                b / cov,
                 b / a.max(1.0),
+                ma / cov,
+                mb / cov,
+                mb / ma.max(1.0),
                 p.off.ms,
                 p.on.ms,
             );

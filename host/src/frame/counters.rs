@@ -28,6 +28,8 @@ pub struct FrameStats {
     pub samples_tested: u64,
     /// samples covered
     pub samples_covered: u64,
+    /// covered samples that passed the depth test and were stored (`uvt_core::Stats::samples_written`)
+    pub samples_written: u64,
     /// samples the bounding-box scan tests: all samples of every footprint pixel
     pub footprint_samples: u64,
     /// samples inside the per-tile oracle boxes (counted only when the run has the oracle,
@@ -60,6 +62,7 @@ impl FrameStats {
             &mut self.samples_admitted,
             &mut self.samples_tested,
             &mut self.samples_covered,
+            &mut self.samples_written,
             &mut self.footprint_samples,
             &mut self.oracle_tested,
             &mut self.ops_setup,
@@ -79,6 +82,7 @@ impl FrameStats {
             o.samples_admitted,
             o.samples_tested,
             o.samples_covered,
+            o.samples_written,
             o.footprint_samples,
             o.oracle_tested,
             o.ops_setup,

@@ -177,21 +177,21 @@ pub fn run<P: FramePipeline>(p: &P, pattern: &Pattern, o: &RunOpts<'_>) -> Frame
 }
 
 /// The Zmax test of a kept bounds tile (`uvt_core::raster::zmax`, the renderer's decision and
-/// counts): the largest depth stored over every sample of the cell's pixels (band rows from
-/// `y0`, `w` pixels wide, `s` samples each) against the triangle's floor.
+/// counts): the largest per-pixel register over the cell's pixels (band rows from `y0`, `w`
+/// pixels wide) against the triangle's floor.
 fn zmax_hides(
     floor: f64,
-    depth: &[f64],
+    zmax: &[f64],
     cell: PixelRect,
-    (y0, w, s): (u16, usize, usize),
+    (y0, w): (u16, usize),
     ops: &mut Ops,
 ) -> bool {
     let mut max = f64::NEG_INFINITY;
     for py in cell.y0..cell.y1 {
         let row = (py - y0) as usize * w;
-        let slots = &depth[(row + cell.x0 as usize) * s..(row + cell.x1 as usize) * s];
-        max = slots.iter().fold(max, |m, &d| m.max(d));
-        ops.add_zmax(slots.len() as u64);
+        let regs = &zmax[row + cell.x0 as usize..row + cell.x1 as usize];
+        max = regs.iter().fold(max, |m, &d| m.max(d));
+        ops.add_zmax(regs.len() as u64);
     }
     ops.add_zmax(1);
     floor >= max
@@ -210,6 +210,9 @@ fn band<P: FramePipeline>(
     let y1 = (y0 + BAND).min(o.vp.1);
     let rows = (y1 - y0) as usize;
     let mut depth = vec![p.far(); w * rows * s];
+    // Zmax culling's per-pixel registers: the largest stored depth of each pixel's samples,
+    // refreshed after each write (`uvt_core::raster::zmax::PixelMax`).
+    let mut zmax = vec![p.far(); if o.zmax { w * rows } else { 0 }];
     let mut color = vec![o.clear; if o.image { w * rows * s } else { 0 }];
     let mut heat = vec![0u32; w * rows];
     let mut st = FrameStats::default();
@@ -277,7 +280,7 @@ fn band<P: FramePipeline>(
                 st.tiles_skipped += 1;
                 continue;
             };
-            if o.zmax && zmax_hides(floor, &depth, cell, (y0, w, s), &mut ops) {
+            if o.zmax && zmax_hides(floor, &zmax, cell, (y0, w), &mut ops) {
                 st.tiles_zculled += 1;
                 continue;
             }
@@ -314,8 +317,14 @@ fn band<P: FramePipeline>(
                             let slot = pix * s + si;
                             if d < depth[slot] {
                                 depth[slot] = d;
+                                st.samples_written += 1;
                                 if o.image {
                                     color[slot] = col;
+                                }
+                                if o.zmax {
+                                    let px = &depth[pix * s..pix * s + s];
+                                    zmax[pix] = px.iter().fold(f64::NEG_INFINITY, |m, &x| m.max(x));
+                                    ops.add_zmax(s as u64);
                                 }
                             }
                         }
