@@ -23,22 +23,27 @@ pub const ZMAX_PATH: &str = "host/report/m4_zmax.json";
 /// [`ZMAX_PATH`]'s text, built in.
 const COMMITTED_ZMAX: &str = include_str!("../../report/m4_zmax.json");
 
+/// `text` (the built-in copy of `path`) parsed once into `cell`; the error names the file.
+fn parse_once(
+    cell: &'static std::sync::OnceLock<Result<M4Stages, String>>,
+    text: &str,
+    path: &str,
+) -> anyhow::Result<&'static M4Stages> {
+    cell.get_or_init(|| serde_json::from_str(text).map_err(|e| e.to_string()))
+        .as_ref()
+        .map_err(|e| anyhow::anyhow!("{path} (built in): {e}"))
+}
+
 /// The committed figures ([`DEFAULT_PATH`], built in); the error says why they do not parse.
 pub fn committed() -> anyhow::Result<&'static M4Stages> {
     static PARSED: std::sync::OnceLock<Result<M4Stages, String>> = std::sync::OnceLock::new();
-    PARSED
-        .get_or_init(|| serde_json::from_str(COMMITTED).map_err(|e| e.to_string()))
-        .as_ref()
-        .map_err(|e| anyhow::anyhow!("{DEFAULT_PATH} (built in): {e}"))
+    parse_once(&PARSED, COMMITTED, DEFAULT_PATH)
 }
 
 /// The occlusion rows' committed figures ([`ZMAX_PATH`], built in).
 pub fn committed_zmax() -> anyhow::Result<&'static M4Stages> {
     static PARSED: std::sync::OnceLock<Result<M4Stages, String>> = std::sync::OnceLock::new();
-    PARSED
-        .get_or_init(|| serde_json::from_str(COMMITTED_ZMAX).map_err(|e| e.to_string()))
-        .as_ref()
-        .map_err(|e| anyhow::anyhow!("{ZMAX_PATH} (built in): {e}"))
+    parse_once(&PARSED, COMMITTED_ZMAX, ZMAX_PATH)
 }
 
 /// One strategy on one class of one row.
@@ -81,6 +86,18 @@ pub struct ZmaxLine {
     pub spp: u32,
     /// instructions: floors, checks, refreshes
     pub insn: [u64; 3],
+}
+
+impl ZmaxLine {
+    /// Instructions per call of each of the three calls.
+    pub fn per_call(&self) -> ZmaxPerCall {
+        let d = |a: u64, b: u64| if b == 0 { 0.0 } else { a as f64 / b as f64 };
+        ZmaxPerCall {
+            floor: d(self.insn[0], self.floors),
+            check: d(self.insn[1], self.checks),
+            refresh: d(self.insn[2], self.refreshes),
+        }
+    }
 }
 
 /// Cortex-M4F instructions per call of Zmax culling's three calls.
@@ -169,27 +186,25 @@ impl M4Stages {
 impl M4Stages {
     /// Zmax's per-call figures pooled over every row that has them; `None` if none has.
     pub fn zmax_pooled(&self) -> Option<ZmaxPerCall> {
-        let lines: Vec<&ZmaxLine> = self.rows.iter().filter_map(|r| r.zmax.as_ref()).collect();
-        let sum = |f: fn(&ZmaxLine) -> u64| lines.iter().map(|l| f(l)).sum::<u64>();
-        let d = |a: u64, b: u64| if b == 0 { 0.0 } else { a as f64 / b as f64 };
-        (!lines.is_empty()).then(|| ZmaxPerCall {
-            floor: d(sum(|l| l.insn[0]), sum(|l| l.floors)),
-            check: d(sum(|l| l.insn[1]), sum(|l| l.checks)),
-            refresh: d(sum(|l| l.insn[2]), sum(|l| l.refreshes)),
-        })
+        let mut lines = self.rows.iter().filter_map(|r| r.zmax);
+        let first = lines.next()?;
+        let sum = lines.fold(first, |mut a, l| {
+            a.floors += l.floors;
+            a.checks += l.checks;
+            a.refreshes += l.refreshes;
+            for (x, y) in a.insn.iter_mut().zip(l.insn) {
+                *x += y;
+            }
+            a
+        });
+        Some(sum.per_call())
     }
 }
 
 impl StageRow {
     /// Zmax's per-call figures of this row, if it has them.
     pub fn zmax_per_call(&self) -> Option<ZmaxPerCall> {
-        let z = self.zmax?;
-        let d = |a: u64, b: u64| if b == 0 { 0.0 } else { a as f64 / b as f64 };
-        Some(ZmaxPerCall {
-            floor: d(z.insn[0], z.floors),
-            check: d(z.insn[1], z.checks),
-            refresh: d(z.insn[2], z.refreshes),
-        })
+        self.zmax.map(|z| z.per_call())
     }
 
     /// Per-call figures of `strategy` on this row, pooled over its classes.

@@ -87,7 +87,8 @@ pub enum Cmd {
     },
     /// Every bounds strategy with and without Zmax culling on the occlusion rows (the game
     /// street behind a near fence) and the open game rows: sample tests, tiles skipped, whole
-    /// ops and wall time; fails if an image differs with Zmax
+    /// ops, whole Cortex-M4F instructions (Zmax's own included) and wall time; fails if an image
+    /// differs with Zmax
     BenchZmax {
         /// quarter resolution and tessellation
         #[arg(long)]
