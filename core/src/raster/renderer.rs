@@ -3,8 +3,9 @@
 //! [`crate::units::select`] picks for a (precision, unit).
 //!
 //! [`Raster`] sets every triangle up exactly once into a fixed-capacity `heapless::Vec` (no
-//! heap; memory is `N` pipeline entries plus one tile buffer), then walks the screen tile by
-//! tile; per screen tile, per triangle whose footprint meets it, the pipeline walks the bounds
+//! heap; memory is `N` pipeline entries plus one tile buffer, and with Zmax one register per pixel
+//! of the screen tile), then walks the screen tile by tile; per screen tile, per triangle whose
+//! footprint meets it, the pipeline walks the bounds
 //! tiles (aligned to the bounds-tile grid, clipped to footprint and screen tile) with its tile
 //! step — the general pipeline's (u, v, t) intervals, row by row with the strategy's row spans;
 //! the specialised units' own culls — and the one per-cell loop ([`shade_cell`]) runs the
