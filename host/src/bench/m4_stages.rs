@@ -46,6 +46,15 @@ pub fn committed_zmax() -> anyhow::Result<&'static M4Stages> {
     parse_once(&PARSED, COMMITTED_ZMAX, ZMAX_PATH)
 }
 
+/// `a / b`, 0 when `b` is 0.
+pub(super) fn per(a: u64, b: u64) -> f64 {
+    if b == 0 {
+        0.0
+    } else {
+        a as f64 / b as f64
+    }
+}
+
 /// One strategy on one class of one row.
 #[derive(Clone, Debug, Deserialize)]
 pub struct StageLine {
@@ -91,11 +100,10 @@ pub struct ZmaxLine {
 impl ZmaxLine {
     /// Instructions per call of each of the three calls.
     pub fn per_call(&self) -> ZmaxPerCall {
-        let d = |a: u64, b: u64| if b == 0 { 0.0 } else { a as f64 / b as f64 };
         ZmaxPerCall {
-            floor: d(self.insn[0], self.floors),
-            check: d(self.insn[1], self.checks),
-            refresh: d(self.insn[2], self.refreshes),
+            floor: per(self.insn[0], self.floors),
+            check: per(self.insn[1], self.checks),
+            refresh: per(self.insn[2], self.refreshes),
         }
     }
 }
@@ -238,12 +246,11 @@ impl StageSum {
         }
     }
     fn per_call(&self) -> PerCall {
-        let d = |a: u64, b: u64| if b == 0 { 0.0 } else { a as f64 / b as f64 };
         PerCall {
-            setup: d(self.insn[0], self.triangles),
-            tile: d(self.insn[1], self.tiles),
-            admit: d(self.insn[2], self.admits),
-            test: d(self.insn[3], self.tested),
+            setup: per(self.insn[0], self.triangles),
+            tile: per(self.insn[1], self.tiles),
+            admit: per(self.insn[2], self.admits),
+            test: per(self.insn[3], self.tested),
         }
     }
 }

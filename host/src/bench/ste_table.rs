@@ -31,8 +31,8 @@ use crate::oracle::search::Effort;
 use crate::scene::builtin::{bench_scene, Bench, Blur};
 use crate::scene::pattern::Pattern;
 
-use super::m4_stages::M4Stages;
-use super::strategy::{per, run_strategy_at, strategies, StratResult};
+use super::m4_stages::{per, M4Stages};
+use super::strategy::{run_strategy_at, strategies, StratResult};
 
 /// The two efforts of the axis-aligned limit (dense points per pixel, face-search proposals per
 /// face; each effort then ends with the line pushes of [`crate::oracle::limit::Method::Lines3`]);

@@ -13,6 +13,8 @@ use crate::frame::driver::{run, RunOpts};
 use crate::frame::pipelines::Fixed;
 use crate::scene::pattern::Pattern;
 
+use super::m4_stages::per;
+
 /// The strategies of `bench-ste`'s columns and of `uvt fit`'s search, in the registry's order:
 /// every strategy of [`STRATEGIES`] but the bounding-box scan (the bench's baseline column
 /// comes from every run's footprint counters; fit does not search it).
@@ -87,15 +89,6 @@ impl StratResult {
             s.ops_bounds + s.ops_rows + s.ops_predicate + s.ops_sample,
             s.samples_covered,
         )
-    }
-}
-
-/// `a / b`, 0 when `b` is 0.
-pub(super) fn per(a: u64, b: u64) -> f64 {
-    if b == 0 {
-        0.0
-    } else {
-        a as f64 / b as f64
     }
 }
 
