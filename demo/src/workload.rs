@@ -32,7 +32,7 @@
 
 use core::hint::black_box;
 
-use uvt_core::bounds::strategy::BoundsStrategy;
+use uvt_core::bounds::strategy::{Admit, BoundsStrategy, CellVisitor};
 use uvt_core::config::formats::{Lens, SubPixel, Time};
 use uvt_core::config::unit::Full;
 use uvt_core::units::select::{PipelineOf, Select};
@@ -351,6 +351,49 @@ pub struct TriCost {
     pub footprint: Option<PixelRect>,
 }
 
+/// One pass of [`stage_one`]'s walk over a triangle's cells: pass 0 the tile walk alone, pass 1
+/// with every sample of a kept tile put through the tile's [`Admit`], pass 2 with the sample
+/// test of every admitted sample; counts tiles, admits, tested and covered samples.
+struct Passes<'a, 'p, L: Pipeline> {
+    entry: &'a L::Entry,
+    pattern: &'a SamplePattern<'p>,
+    pass: usize,
+    n: [u64; 4],
+}
+
+impl<L: Pipeline> CellVisitor for Passes<'_, '_, L> {
+    fn cell<T: Admit>(&mut self, cell: PixelRect, tile: Option<T>, ops: &mut Ops) {
+        let [tiles, admits, tested, covered] = &mut self.n;
+        *tiles = tiles.wrapping_add(1);
+        let Some(tile) = tile else {
+            return;
+        };
+        if self.pass == 0 {
+            black_box(&tile);
+            return;
+        }
+        for py in cell.y0..cell.y1 {
+            for px in cell.x0..cell.x1 {
+                for s in self.pattern.pixel(px, py) {
+                    *admits = admits.wrapping_add(1);
+                    let ok = tile.admit(s, ops);
+                    if self.pass == 1 {
+                        black_box(ok);
+                        continue;
+                    }
+                    if !ok {
+                        continue;
+                    }
+                    *tested = tested.wrapping_add(1);
+                    let hit = L::test(self.entry, ScreenPos::of(px, py, s), s, ops);
+                    L::count(hit.is_some(), ops);
+                    *covered = covered.wrapping_add(u64::from(hit.is_some()));
+                }
+            }
+        }
+    }
+}
+
 /// Setup, then the three walks (module docs) of one triangle through pipeline `pipe`.
 pub fn stage_one<L: Pipeline>(
     pipe: &L,
@@ -378,7 +421,12 @@ pub fn stage_one<L: Pipeline>(
     let mut spent = [0i64; 3];
     for (pass, slot) in spent.iter_mut().enumerate() {
         let mut ops = Ops::default();
-        let (mut tiles, mut admits, mut tested, mut covered) = (0u64, 0u64, 0u64, 0u64);
+        let mut v = Passes::<L> {
+            entry: &e,
+            pattern,
+            pass,
+            n: [0; 4],
+        };
         let _ = lap();
         let mut y = fp.y0.saturating_sub(fp.y0.checked_rem(BAND).unwrap_or(0));
         while y < fp.y1 {
@@ -389,43 +437,12 @@ pub fn stage_one<L: Pipeline>(
                 y1: y.saturating_add(BAND).min(vp.height()),
             };
             let region = fp.intersect(&band);
-            pipe.walk(&e, region, bt, &mut ops, |cell, tile, ops| {
-                tiles = tiles.wrapping_add(1);
-                let Some(tile) = tile else {
-                    return;
-                };
-                if pass == 0 {
-                    black_box(&tile);
-                    return;
-                }
-                for py in cell.y0..cell.y1 {
-                    for px in cell.x0..cell.x1 {
-                        for s in pattern.pixel(px, py) {
-                            admits = admits.wrapping_add(1);
-                            let ok = L::admits(&tile, s, ops);
-                            if pass == 1 {
-                                black_box(ok);
-                                continue;
-                            }
-                            if !ok {
-                                continue;
-                            }
-                            tested = tested.wrapping_add(1);
-                            let hit = L::test(&e, ScreenPos::of(px, py, s), s, ops);
-                            L::count(hit.is_some(), ops);
-                            covered = covered.wrapping_add(u64::from(hit.is_some()));
-                        }
-                    }
-                }
-            });
+            pipe.walk(&e, region, bt, &mut ops, &mut v);
             y = y.saturating_add(BAND);
         }
         *slot = lap_i(lap);
         if pass == 2 {
-            c.tiles = tiles;
-            c.admits = admits;
-            c.tested = tested;
-            c.covered = covered;
+            [c.tiles, c.admits, c.tested, c.covered] = v.n;
             c.ops[1] = ops.bounds;
             c.ops[2] = ops.rows;
             c.ops[3] = ops.predicate;

@@ -42,7 +42,7 @@
 
 use crate::arith::interval::Interval;
 use crate::config::unit::Unit;
-use crate::input::PixelRect;
+use crate::input::{PixelRect, Sample};
 use crate::setup::Setup;
 use crate::stats::Ops;
 
@@ -99,6 +99,30 @@ impl TileBounds for UvtBox {
     fn predicate(&self, _: i32, _: i32, _: i32, _: &mut Ops) -> bool {
         true
     }
+}
+
+/// A kept bounds tile as the per-sample loop sees it: whether one sample is tested at all (its
+/// operations counted in `ops.predicate`). Every [`TileBounds`] admits by its box, then its
+/// predicate; the specialised units' tiles implement it for their own culls.
+pub trait Admit: Copy {
+    /// Whether sample `s` of the tile must be tested.
+    fn admit(&self, s: &Sample, ops: &mut Ops) -> bool;
+}
+
+impl<T: TileBounds> Admit for T {
+    #[inline(always)]
+    fn admit(&self, s: &Sample, ops: &mut Ops) -> bool {
+        self.admits(s.u().to_bits(), s.v().to_bits(), s.t().to_bits(), ops)
+    }
+}
+
+/// The receiver of a bounds-tile walk ([`walk_tiles`], [`BoundsStrategy::walk`]): each cell in
+/// raster order with its tile, `None` for a culled one. Generic in the tile type, so a strategy
+/// that picks another strategy per triangle (`auto`) hands its cells to a per-sample loop
+/// compiled for the picked strategy's own tile: the loop pays no dispatch per sample.
+pub trait CellVisitor {
+    /// One bounds tile `cell` of the walk and its tile step's result.
+    fn cell<T: Admit>(&mut self, cell: PixelRect, tile: Option<T>, ops: &mut Ops);
 }
 
 /// A per-tile bounds algorithm.
@@ -158,6 +182,23 @@ pub trait BoundsStrategy {
     ) -> Option<Self::Tile> {
         self.tile::<U>(setup, c, tile, ops)
     }
+    /// The renderer's walk of `region`'s bounds tiles on unit `U`, handing each cell to `v`.
+    /// Default: [`walk_tiles`] with this strategy; a strategy that delegates per triangle walks
+    /// with the delegate (`auto`), so every cell gets the delegate's own tile type.
+    #[inline(always)]
+    fn walk<U: Unit, V: CellVisitor>(
+        &self,
+        setup: &Setup,
+        c: &Self::Coeffs,
+        region: PixelRect,
+        bt: u16,
+        ops: &mut Ops,
+        v: &mut V,
+    ) where
+        Self: Sized,
+    {
+        walk_tiles::<Self, U, V>(self, setup, c, region, bt, ops, v);
+    }
 }
 
 /// The columns `[x0, x1)` of one row of bounds tiles that a strategy's row step keeps
@@ -205,16 +246,16 @@ impl RowSpan {
 /// The renderer's bounds-tile walk of `region` with strategy `b` on unit `U`: row by row
 /// ([`PixelRect::rows`]), the row's span ([`BoundsStrategy::row_span`]), then every cell of the
 /// row in order ([`PixelRect::cells`]: the same cells in the same raster order as
-/// `region.cells(bt)`), handing `f` each cell with its bounds, `None` for a cell outside the span
+/// `region.cells(bt)`), handing `v` each cell with its bounds, `None` for a cell outside the span
 /// or culled by [`BoundsStrategy::span_tile`].
-pub fn walk_tiles<B: BoundsStrategy, U: Unit>(
+pub fn walk_tiles<B: BoundsStrategy, U: Unit, V: CellVisitor>(
     b: &B,
     setup: &Setup,
     c: &B::Coeffs,
     region: PixelRect,
     bt: u16,
     ops: &mut Ops,
-    mut f: impl FnMut(PixelRect, Option<B::Tile>, &mut Ops),
+    v: &mut V,
 ) {
     for row in region.rows(bt) {
         let span = b.row_span(setup, c, row, bt, ops);
@@ -224,7 +265,7 @@ pub fn walk_tiles<B: BoundsStrategy, U: Unit>(
             } else {
                 None
             };
-            f(cell, t, ops);
+            v.cell(cell, t, ops);
         }
     }
 }

@@ -20,6 +20,7 @@ use embedded_graphics_core::pixelcolor::Rgb888;
 use embedded_graphics_core::prelude::{Pixel, Point};
 
 use crate::bounds::laine::Laine2011;
+use crate::bounds::strategy::{Admit, CellVisitor};
 use crate::config::formats::DEPTH_NEAR;
 use crate::config::precision::{DefaultPrecision, PlanarPrecision};
 use crate::config::unit::{Full, MotionOnly, StaticOnly, Unit};
@@ -183,39 +184,19 @@ impl<L: Pipeline, const N: usize, Z: DepthCull> Raster<L, N, Z> {
             if region.is_empty() {
                 continue;
             }
-            // A cell the tile step culls (or, on the general pipeline, outside its row's span)
-            // counts as visited and skipped.
-            pipe.walk(entry, region, bt, &mut ops, |cell, tile, ops| {
-                Stats::inc(&mut stats.tiles_visited);
-                let Some(tile) = tile else {
-                    Stats::inc(&mut stats.tiles_skipped);
-                    return;
-                };
-                if Z::ENABLED {
-                    // The cell lies inside the screen tile: the offsets are in [0, TW], [0, TH].
-                    let rel = |a: u16, b: u16| usize::from(a.saturating_sub(b));
-                    let cols = (rel(cell.x0, screen.x0), rel(cell.x1, screen.x0));
-                    let rows = (rel(cell.y0, screen.y0), rel(cell.y1, screen.y0));
-                    if zregs.hides(*floor, cols, rows, ops) {
-                        Stats::inc(&mut stats.tiles_zculled);
-                        return;
-                    }
-                }
-                let at = Cell {
-                    cell,
+            let mut shade = Shade::<L, Z, TW, TH, S> {
+                entry,
+                at: Cell {
                     screen,
                     color: *color,
-                };
-                shade_cell::<L, _, TW, TH, S>(
-                    entry,
-                    &tile,
-                    &at,
-                    pattern,
-                    (fb, &mut zregs),
-                    stats,
-                    ops,
-                );
-            });
+                    floor: *floor,
+                },
+                pattern,
+                fb: &mut *fb,
+                zregs: &mut zregs,
+                stats: &mut *stats,
+            };
+            pipe.walk(entry, region, bt, &mut ops, &mut shade);
         }
         stats.ops.add(&ops);
         Ok(())
@@ -277,34 +258,71 @@ fn refused<L: Pipeline>(index: usize, class: crate::config::class::Class) -> Err
     }
 }
 
-/// One bounds tile's place and the triangle's color.
+/// The screen tile and the triangle's color and depth floor.
 struct Cell {
-    cell: PixelRect,
     screen: PixelRect,
     color: Rgb888,
+    floor: i32,
 }
 
-/// The one per-cell sample loop of every pipeline: each sample of the bounds tile that the tile
-/// step admits is tested ([`Pipeline::test`], its operations counted by the test or
-/// [`Pipeline::count`]), counted per pixel, and on a hit depth-tested into the buffer; a written
-/// sample refreshes its pixel's Zmax register (`R`; nothing without Zmax).
+/// The per-cell work of one triangle in one screen tile, handed every bounds tile of the walk
+/// ([`Pipeline::walk`]): a cell the tile step culls (or, on the general pipeline, outside its
+/// row's span) counts as visited and skipped; with Zmax a kept cell whose registers say every
+/// stored sample is nearer than the floor is culled; else [`shade_cell`].
+struct Shade<'a, 'p, L: Pipeline, Z: DepthCull, const TW: usize, const TH: usize, const S: usize> {
+    entry: &'a L::Entry,
+    at: Cell,
+    pattern: &'a SamplePattern<'p>,
+    fb: &'a mut TileBuffer<TW, TH, S>,
+    zregs: &'a mut Z::Registers<TW, TH>,
+    stats: &'a mut Stats,
+}
+
+impl<L: Pipeline, Z: DepthCull, const TW: usize, const TH: usize, const S: usize> CellVisitor
+    for Shade<'_, '_, L, Z, TW, TH, S>
+{
+    #[inline(always)]
+    fn cell<T: Admit>(&mut self, cell: PixelRect, tile: Option<T>, ops: &mut Ops) {
+        Stats::inc(&mut self.stats.tiles_visited);
+        let Some(tile) = tile else {
+            Stats::inc(&mut self.stats.tiles_skipped);
+            return;
+        };
+        let screen = self.at.screen;
+        if Z::ENABLED {
+            // The cell lies inside the screen tile: the offsets are in [0, TW], [0, TH].
+            let rel = |a: u16, b: u16| usize::from(a.saturating_sub(b));
+            let cols = (rel(cell.x0, screen.x0), rel(cell.x1, screen.x0));
+            let rows = (rel(cell.y0, screen.y0), rel(cell.y1, screen.y0));
+            if self.zregs.hides(self.at.floor, cols, rows, ops) {
+                Stats::inc(&mut self.stats.tiles_zculled);
+                return;
+            }
+        }
+        shade_cell::<L, T, Z, TW, TH, S>(self, cell, &tile, ops);
+    }
+}
+
+/// The one per-cell sample loop of every pipeline: each sample of the bounds tile `cell` that
+/// the tile admits ([`Admit`], the walk's own tile type) is tested ([`Pipeline::test`], its
+/// operations counted by the test or [`Pipeline::count`]), counted per pixel, and on a hit
+/// depth-tested into the buffer; a written sample refreshes its pixel's Zmax register (nothing
+/// without Zmax).
 #[inline(always)]
 fn shade_cell<
     L: Pipeline,
-    R: ZmaxRegisters<TW, TH>,
+    T: Admit,
+    Z: DepthCull,
     const TW: usize,
     const TH: usize,
     const S: usize,
 >(
-    entry: &L::Entry,
-    tile: &L::Tile,
-    at: &Cell,
-    pattern: &SamplePattern<'_>,
-    (fb, zregs): (&mut TileBuffer<TW, TH, S>, &mut R),
-    stats: &mut Stats,
+    sh: &mut Shade<'_, '_, L, Z, TW, TH, S>,
+    cell: PixelRect,
+    tile: &T,
     ops: &mut Ops,
 ) {
-    let (cell, screen) = (at.cell, at.screen);
+    let screen = sh.at.screen;
     for py in cell.y0..cell.y1 {
         for px in cell.x0..cell.x1 {
             // The cell lies inside the screen tile, so both differences are in [0, TW), [0, TH).
@@ -313,26 +331,26 @@ fn shade_cell<
                 continue;
             };
             let (tx, ty) = (usize::from(tx), usize::from(ty));
-            for (si, s) in pattern.pixel(px, py).iter().enumerate() {
-                if !L::admits(tile, s, ops) {
+            for (si, s) in sh.pattern.pixel(px, py).iter().enumerate() {
+                if !tile.admit(s, ops) {
                     continue;
                 }
-                Stats::inc(&mut stats.samples_tested);
-                let hit = L::test(entry, ScreenPos::of(px, py, s), s, ops);
+                Stats::inc(&mut sh.stats.samples_tested);
+                let hit = L::test(sh.entry, ScreenPos::of(px, py, s), s, ops);
                 L::count(hit.is_some(), ops);
-                fb.count(tx, ty, hit.is_some());
+                sh.fb.count(tx, ty, hit.is_some());
                 let Some(h) = hit else {
                     continue;
                 };
-                Stats::inc(&mut stats.samples_covered);
+                Stats::inc(&mut sh.stats.samples_covered);
                 // In range (tx < TW, ty < TH, si < S = spp) and h.depth ≠ DEPTH_EMPTY.
-                match fb.write(tx, ty, si, at.color, h.depth) {
+                match sh.fb.write(tx, ty, si, sh.at.color, h.depth) {
                     Some(DepthTest::Written) => {
-                        Stats::inc(&mut stats.samples_written);
-                        fb.count_written(tx, ty);
-                        zregs.refresh(fb, tx, ty, ops);
+                        Stats::inc(&mut sh.stats.samples_written);
+                        sh.fb.count_written(tx, ty);
+                        sh.zregs.refresh(sh.fb, tx, ty, ops);
                     }
-                    Some(DepthTest::Occluded) => Stats::inc(&mut stats.samples_occluded),
+                    Some(DepthTest::Occluded) => Stats::inc(&mut sh.stats.samples_occluded),
                     None => {}
                 }
             }

@@ -5,7 +5,7 @@
 
 use core::marker::PhantomData;
 
-use crate::bounds::strategy::{walk_tiles, BoundsStrategy, TileBounds};
+use crate::bounds::strategy::{BoundsStrategy, CellVisitor};
 use crate::config::class::Class;
 use crate::config::precision::Precision;
 use crate::config::unit::Unit;
@@ -65,23 +65,18 @@ impl<B: BoundsStrategy, P: Precision, U: Unit> Pipeline for General<B, P, U> {
         self.bounds.tile::<U>(s, c, cell, ops)
     }
 
-    /// Row by row, each row first narrowed by the strategy's row span.
-    fn walk(
+    /// The strategy's walk ([`BoundsStrategy::walk`]): row by row, each row first narrowed by
+    /// the strategy's row span.
+    fn walk<V: CellVisitor>(
         &self,
         entry: &Self::Entry,
         region: PixelRect,
         bt: u16,
         ops: &mut Ops,
-        f: impl FnMut(PixelRect, Option<B::Tile>, &mut Ops),
+        v: &mut V,
     ) {
         let (s, c) = entry;
-        walk_tiles::<B, U>(&self.bounds, s, c, region, bt, ops, f);
-    }
-
-    /// The tile's (u, v, t) box, then the strategy's per-sample predicate.
-    #[inline(always)]
-    fn admits(tile: &B::Tile, s: &Sample, ops: &mut Ops) -> bool {
-        tile.admits(s.u().to_bits(), s.v().to_bits(), s.t().to_bits(), ops)
+        self.bounds.walk::<U, V>(s, c, region, bt, ops, v);
     }
 
     #[inline(always)]

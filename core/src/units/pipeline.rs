@@ -12,7 +12,7 @@
 //! of each say why); what differs is the work: tiles visited and skipped, samples tested, the
 //! operation counts and the program.
 
-use crate::bounds::strategy::BoundsStrategy;
+use crate::bounds::strategy::{Admit, BoundsStrategy, CellVisitor};
 use crate::config::class::Class;
 use crate::config::formats::DEPTH_NEAR;
 use crate::config::unit::Unit;
@@ -30,8 +30,9 @@ pub trait Pipeline: Sized {
     type Unit: Unit;
     /// One visible triangle's data.
     type Entry: Copy;
-    /// What the tile step hands the sample loop for a kept bounds tile.
-    type Tile: Copy;
+    /// What the tile step hands the sample loop for a kept bounds tile (whether a sample of it
+    /// is tested at all: [`Admit`], counted in `ops.predicate`).
+    type Tile: Admit;
     /// The renderer's name in reports: `Renderer` (general), `StaticRenderer`,
     /// `MotionRenderer` (the type aliases of [`crate::raster::renderer`]).
     const NAME: &'static str;
@@ -49,24 +50,23 @@ pub trait Pipeline: Sized {
     /// holds no covered sample (conservative: a sample the test covers is never culled).
     fn tile(&self, entry: &Self::Entry, cell: PixelRect, ops: &mut Ops) -> Option<Self::Tile>;
     /// Walk the bounds tiles (`bt` pixels, aligned to the `bt` grid) of `region`, a part of the
-    /// footprint, in raster order, handing `f` each cell with its tile step. Default: every
+    /// footprint, in raster order, handing `v` each cell with its tile step. Default: every
     /// cell of `region.cells(bt)` through [`Self::tile`]; the general pipeline walks row by row
-    /// with its strategy's row spans (`bounds::strategy::walk_tiles`).
-    fn walk(
+    /// with its strategy's row spans ([`BoundsStrategy::walk`]), whose tiles may be of another
+    /// type than [`Self::Tile`] (`auto` hands over the picked strategy's).
+    fn walk<V: CellVisitor>(
         &self,
         entry: &Self::Entry,
         region: PixelRect,
         bt: u16,
         ops: &mut Ops,
-        mut f: impl FnMut(PixelRect, Option<Self::Tile>, &mut Ops),
+        v: &mut V,
     ) {
         for cell in region.cells(bt) {
             let t = self.tile(entry, cell, ops);
-            f(cell, t, ops);
+            v.cell(cell, t, ops);
         }
     }
-    /// Whether a sample of a kept tile is tested at all (counted in `ops.predicate`).
-    fn admits(tile: &Self::Tile, s: &Sample, ops: &mut Ops) -> bool;
     /// The sample test of a sample at screen position `pos`: the depth on a hit.
     fn test(entry: &Self::Entry, pos: ScreenPos, s: &Sample, ops: &mut Ops) -> Option<Hit>;
     /// A lower bound of every depth [`Self::test`] outputs for this triangle (Zmax culling,

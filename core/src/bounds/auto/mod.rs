@@ -14,7 +14,9 @@
 //!
 //! **Cost.** The choice adds 3 operations to setup (the footprint's area: one multiply; one
 //! compare with the class's threshold; one select); per tile and per sample nothing beyond the
-//! picked strategy's own work (one branch on the variant).
+//! picked strategy's own work: the renderer walks a triangle's tiles with the picked strategy's
+//! own walk and tile type ([`BoundsStrategy::walk`]), so its per-tile and per-sample code is
+//! that strategy's, with one branch per walked region.
 #![warn(
     clippy::arithmetic_side_effects,
     clippy::indexing_slicing,
@@ -28,7 +30,9 @@ use crate::bounds::edge_time::{EdgeCoeffs, EdgeTile, EdgeTime};
 use crate::bounds::hull::tiles::HullTiles;
 use crate::bounds::hull::HullCull;
 use crate::bounds::laine::{Laine2011, LaineCoeffs};
-use crate::bounds::strategy::{BoundsStrategy, RowSpan, TileBounds, UvtBox};
+use crate::bounds::strategy::{
+    walk_tiles, BoundsStrategy, CellVisitor, RowSpan, TileBounds, UvtBox,
+};
 use crate::config::unit::Unit;
 use crate::input::PixelRect;
 use crate::setup::Setup;
@@ -129,6 +133,27 @@ impl BoundsStrategy for Auto {
             Pick::Laine => AutoCoeffs::Laine(Laine2011.prepare::<U>(setup, ops)),
             Pick::Hull => AutoCoeffs::Hull(HULL.prepare::<U>(setup, ops)),
             Pick::HullEdge => AutoCoeffs::HullEdge(HULL_EDGE.prepare::<U>(setup, ops)),
+        }
+    }
+    /// The picked strategy's own walk: every cell of the triangle gets that strategy's row
+    /// spans and tile type, so the renderer's per-sample loop is the picked strategy's loop
+    /// (one branch per walked region, none per tile or sample).
+    #[inline(always)]
+    fn walk<U: Unit, V: CellVisitor>(
+        &self,
+        setup: &Setup,
+        c: &AutoCoeffs,
+        region: PixelRect,
+        bt: u16,
+        ops: &mut Ops,
+        v: &mut V,
+    ) {
+        match c {
+            AutoCoeffs::Laine(c) => walk_tiles::<_, U, V>(&Laine2011, setup, c, region, bt, ops, v),
+            AutoCoeffs::Hull(c) => walk_tiles::<_, U, V>(&HULL, setup, c, region, bt, ops, v),
+            AutoCoeffs::HullEdge(c) => {
+                walk_tiles::<_, U, V>(&HULL_EDGE, setup, c, region, bt, ops, v)
+            }
         }
     }
     fn tile<U: Unit>(

@@ -56,7 +56,7 @@ pub mod setup;
 
 use core::marker::PhantomData;
 
-use crate::bounds::strategy::BoundsStrategy;
+use crate::bounds::strategy::{Admit, BoundsStrategy};
 use crate::config::class::Class;
 use crate::config::formats::DEPTH_NEAR;
 use crate::config::precision::Precision;
@@ -167,15 +167,6 @@ impl<B: BoundsStrategy, P: Precision> Pipeline for MotionPipeline<B, P> {
     }
 
     #[inline(always)]
-    fn admits(tile: &MotionTile, s: &Sample, _: &mut Ops) -> bool {
-        match *tile {
-            MotionTile::Static => true,
-            // slab_of < SLABS ≤ u8::BITS (asserted at SLABS): the shift is in range.
-            MotionTile::Slabs(mask) => (mask >> slab_of(s.t().to_bits())) & 1 != 0,
-        }
-    }
-
-    #[inline(always)]
     fn test(entry: &MotionEntry, pos: ScreenPos, s: &Sample, _: &mut Ops) -> Option<Hit> {
         match entry {
             MotionEntry::Motion(m) => motion_test::<P>(m, pos, s),
@@ -200,6 +191,19 @@ impl<B: BoundsStrategy, P: Precision> Pipeline for MotionPipeline<B, P> {
         ops.add_sample(SAMPLE_OPS);
         if covered {
             ops.add_sample(HIT_OPS);
+        }
+    }
+}
+
+/// A kept tile of the motion-only unit: a sample is tested when its time slab is in the tile's
+/// mask (every sample of a planar static triangle's tile).
+impl Admit for MotionTile {
+    #[inline(always)]
+    fn admit(&self, s: &Sample, _: &mut Ops) -> bool {
+        match *self {
+            MotionTile::Static => true,
+            // slab_of < SLABS ≤ u8::BITS (asserted at SLABS): the shift is in range.
+            MotionTile::Slabs(mask) => (mask >> slab_of(s.t().to_bits())) & 1 != 0,
         }
     }
 }

@@ -68,7 +68,7 @@ pub mod setup;
 
 use core::marker::PhantomData;
 
-use crate::bounds::strategy::BoundsStrategy;
+use crate::bounds::strategy::{Admit, BoundsStrategy};
 use crate::config::class::Class;
 use crate::config::unit::StaticOnly;
 use crate::input::{PixelRect, Sample, Triangle, Viewport};
@@ -124,13 +124,6 @@ impl<B: BoundsStrategy> Pipeline for StaticPipeline<B> {
         static_tile(entry, cell, ops).then_some(())
     }
 
-    /// Every sample of a kept tile is tested: a static in-focus triangle's coverage does not
-    /// depend on (u, v, t).
-    #[inline(always)]
-    fn admits(_: &(), _: &Sample, _: &mut Ops) -> bool {
-        true
-    }
-
     #[inline(always)]
     fn test(entry: &StaticSetup, pos: ScreenPos, _: &Sample, _: &mut Ops) -> Option<Hit> {
         static_test(entry, pos)
@@ -142,5 +135,14 @@ impl<B: BoundsStrategy> Pipeline for StaticPipeline<B> {
         if covered {
             ops.add_sample(HIT_OPS);
         }
+    }
+}
+
+/// A kept tile of the static-only unit: every sample of it is tested — a static in-focus
+/// triangle's coverage does not depend on (u, v, t).
+impl Admit for () {
+    #[inline(always)]
+    fn admit(&self, _: &Sample, _: &mut Ops) -> bool {
+        true
     }
 }
