@@ -16,11 +16,11 @@ use uvt_tests::*;
 
 /// Every class takes `heavy` from `from_px` pixels on.
 const fn all(heavy: Pick, from_px: u32) -> Auto {
-    let t = Tier { heavy, from_px };
-    Auto::with_rule([t; 4])
+    Auto::with_rule([Tier::from(heavy, from_px); 4])
 }
 
-/// The rules of the brute force: the registry's, each pick forced, and area splits.
+/// The rules of the brute force: the registry's, each pick forced, and area splits (two of
+/// them with all three picks).
 fn rules() -> [Auto; 6] {
     [
         Auto::new(),
@@ -29,21 +29,15 @@ fn rules() -> [Auto; 6] {
         all(Pick::HullEdge, 0),
         all(Pick::Hull, 30),
         Auto::with_rule([
+            Tier::from(Pick::Hull, 12),
             Tier {
-                heavy: Pick::Hull,
-                from_px: 12,
+                hull_from: 10,
+                edge_from: 40,
             },
+            Tier::from(Pick::Hull, 60),
             Tier {
-                heavy: Pick::HullEdge,
-                from_px: 40,
-            },
-            Tier {
-                heavy: Pick::Hull,
-                from_px: 60,
-            },
-            Tier {
-                heavy: Pick::HullEdge,
-                from_px: 20,
+                hull_from: 6,
+                edge_from: 20,
             },
         ]),
     ]
@@ -159,29 +153,35 @@ fn forced_pick_is_that_strategy() {
     );
 }
 
-/// The tier on its boundary: `from_px − 1` pixels keep Laine 2011, `from_px` take the heavy
-/// pick; `u32::MAX` never does; the registry's rule names a heavy pick only with a threshold.
+/// The tier on its boundaries: below `hull_from` Laine 2011, from it the hull, from `edge_from`
+/// hull+edge-t; `u32::MAX` turns a pick off; `edge_from ≤ hull_from` leaves the hull out.
 #[test]
 fn tier_threshold_boundary() {
     let t = Tier {
-        heavy: Pick::HullEdge,
-        from_px: 57,
+        hull_from: 23,
+        edge_from: 57,
     };
-    assert_eq!(t.pick(56), Pick::Laine);
+    assert_eq!(t.pick(0), Pick::Laine);
+    assert_eq!(t.pick(22), Pick::Laine);
+    assert_eq!(t.pick(23), Pick::Hull);
+    assert_eq!(t.pick(56), Pick::Hull);
     assert_eq!(t.pick(57), Pick::HullEdge);
     assert_eq!(t.pick(u32::MAX - 1), Pick::HullEdge);
-    let never = Tier {
-        heavy: Pick::Hull,
-        from_px: u32::MAX,
+    let edge = Tier::from(Pick::HullEdge, 57);
+    assert_eq!(
+        (edge.pick(56), edge.pick(57)),
+        (Pick::Laine, Pick::HullEdge)
+    );
+    let low_edge = Tier {
+        hull_from: 30,
+        edge_from: 10,
     };
-    assert_eq!(never.pick(1 << 22), Pick::Laine);
-    for (i, r) in RULE.iter().enumerate() {
-        assert_eq!(
-            r.heavy == Pick::Laine,
-            r.from_px == u32::MAX,
-            "class {i}: {r:?}"
-        );
-    }
+    assert_eq!(
+        (low_edge.pick(9), low_edge.pick(10), low_edge.pick(40)),
+        (Pick::Laine, Pick::HullEdge, Pick::HullEdge)
+    );
+    assert_eq!(Tier::LAINE.pick(u32::MAX - 1), Pick::Laine);
+    assert_eq!(Tier::from(Pick::Hull, u32::MAX), Tier::LAINE);
     assert_eq!(Auto::new().name(), "auto");
 }
 

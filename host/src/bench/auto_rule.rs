@@ -6,8 +6,9 @@
 //! [`Pick`], the host runs the stage workload (`uvt_demo::workload::stage_one`: the same
 //! counts the Cortex-M4F saw) and models the triangle's instructions as its counts times the
 //! pick's per-call instructions for the triangle's class (pooled over the rows). Per class, the
-//! rule is the tier (a heavy pick and a footprint area from which it is taken, Laine 2011
-//! below) with the least total over all rows; on a tie the larger area (more Laine 2011).
+//! rule is the tier (Laine 2011 below one footprint area, the hull from it, hull+edge-t from a
+//! second, larger or equal area) with the least total over all rows, every pair of areas that
+//! split the class's triangles tried; on a tie the larger areas (more Laine 2011, then more hull).
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -92,42 +93,44 @@ fn anyhow_of(e: uvt_demo::workload::FormatError) -> anyhow::Error {
     anyhow::anyhow!("{e}")
 }
 
-/// The best tier of one class's triangles.
+/// The best tier of one class's triangles (module docs): with the triangles sorted by area,
+/// Laine 2011 on the first `i`, the hull on the next up to `j`, hull+edge-t on the rest, for every
+/// `i ≤ j` at a change of area (or an end).
 fn best_tier(tris: &mut [TriModel]) -> ClassRule {
     tris.sort_by_key(|t| t.area);
+    let n = tris.len();
     let alone: [f64; 3] = [0, 1, 2].map(|k| tris.iter().map(|t| t.cost[k]).sum());
+    // prefix[k][i]: pick k's total over the first i triangles.
+    let prefix: [Vec<f64>; 3] = [0, 1, 2].map(|k| {
+        let mut p = Vec::with_capacity(n + 1);
+        p.push(0.0);
+        for t in tris.iter() {
+            p.push(p[p.len() - 1] + t.cost[k]);
+        }
+        p
+    });
+    // Where a threshold can fall (a threshold cannot split equal areas), largest first.
+    let cuts: Vec<usize> = (0..=n)
+        .rev()
+        .filter(|&i| i == 0 || i == n || tris[i].area != tris[i - 1].area)
+        .collect();
+    let area_at = |i: usize| if i == n { u32::MAX } else { tris[i].area };
     let mut best = ClassRule {
-        tier: Tier {
-            heavy: Pick::Laine,
-            from_px: u32::MAX,
-        },
-        triangles: tris.len(),
+        tier: Tier::LAINE,
+        triangles: n,
         with_rule: alone[0],
         alone,
     };
-    for (k, &heavy) in Pick::ALL.iter().enumerate().skip(1) {
-        // Threshold just above the first i triangles (sorted by area): Laine below, heavy from.
-        let mut below = 0.0;
-        let mut above: f64 = alone[k];
-        for i in 0..=tris.len() {
-            if i > 0 {
-                below += tris[i - 1].cost[0];
-                above -= tris[i - 1].cost[k];
-            }
-            // Only between different areas (a threshold cannot split equal areas).
-            if i > 0 && i < tris.len() && tris[i].area == tris[i - 1].area {
-                continue;
-            }
-            let total = below + above;
-            let from_px = if i == tris.len() {
-                u32::MAX
-            } else {
-                tris[i].area
-            };
-            // Strictly less: on a tie the earlier (larger-threshold for Laine, Laine first)
-            // candidate stays.
+    for &i in &cuts {
+        for &j in cuts.iter().filter(|&&j| j >= i) {
+            let total =
+                prefix[0][i] + (prefix[1][j] - prefix[1][i]) + (prefix[2][n] - prefix[2][j]);
+            // Strictly less: on a tie the earlier candidate (larger areas) stays.
             if total < best.with_rule - 1e-6 * best.with_rule.abs() {
-                best.tier = Tier { heavy, from_px };
+                best.tier = Tier {
+                    hull_from: if i == j { u32::MAX } else { area_at(i) },
+                    edge_from: area_at(j),
+                };
                 best.with_rule = total;
             }
         }
@@ -170,10 +173,26 @@ pub fn rule_source(rules: &[ClassRule; 4], from: &str) -> String {
     );
     let _ = writeln!(s, "//! |---|---|---|---|---|---|---|");
     for (c, r) in Class::ALL.iter().zip(rules) {
-        let rule = if r.tier.from_px == u32::MAX {
+        let from =
+            |p: Pick, px: u32| (px != u32::MAX).then(|| format!("{} from {px} px", p.name()));
+        let parts: Vec<String> = [
+            from(
+                Pick::Hull,
+                if r.tier.hull_from < r.tier.edge_from {
+                    r.tier.hull_from
+                } else {
+                    u32::MAX
+                },
+            ),
+            from(Pick::HullEdge, r.tier.edge_from),
+        ]
+        .into_iter()
+        .flatten()
+        .collect();
+        let rule = if parts.is_empty() {
             "laine2011".to_string()
         } else {
-            format!("{} from {} px", r.tier.heavy.name(), r.tier.from_px)
+            parts.join(", ")
         };
         let _ = writeln!(
             s,
@@ -186,22 +205,25 @@ pub fn rule_source(rules: &[ClassRule; 4], from: &str) -> String {
             r.alone[2] / 1e6
         );
     }
-    let _ = writeln!(s, "\nuse crate::bounds::auto::tier::{{Pick, Tier}};\n");
+    let _ = writeln!(s, "\nuse crate::bounds::auto::tier::Tier;\n");
     let _ = writeln!(
         s,
         "/// One tier per class ([`crate::config::class::Class::index`] order)."
     );
     let _ = writeln!(s, "pub const RULE: [Tier; 4] = [");
-    for r in rules {
-        let from = if r.tier.from_px == u32::MAX {
+    let px = |v: u32| {
+        if v == u32::MAX {
             "u32::MAX".to_string()
         } else {
-            r.tier.from_px.to_string()
-        };
+            v.to_string()
+        }
+    };
+    for r in rules {
         let _ = writeln!(
             s,
-            "    Tier {{\n        heavy: Pick::{:?},\n        from_px: {from},\n    }},",
-            r.tier.heavy
+            "    Tier {{\n        hull_from: {},\n        edge_from: {},\n    }},",
+            px(r.tier.hull_from),
+            px(r.tier.edge_from)
         );
     }
     s += "];\n";

@@ -1,7 +1,8 @@
 //! `auto`: a bounds strategy chosen per triangle ([`Auto`]). Setup already knows the triangle's
 //! class and its footprint; the rule ([`RULE`], one [`Tier`] per class) keeps Laine 2011 (the
-//! cheapest setup) below a footprint area and takes a heavier strategy with cheaper tiles,
-//! predicates and fewer sample tests ([`Pick`]) from that area on. The rule is derived from
+//! cheapest setup) below a footprint area and takes heavier strategies with cheaper tiles,
+//! predicates and fewer sample tests ([`Pick`]) from larger areas on: the hull from one area,
+//! hull+edge-t from another. The rule is derived from
 //! measured Cortex-M4F instructions per stage and per strategy on the bench rows' own triangles
 //! (`uvt auto-rule`, which writes [`rule`] from `host/report/m4_strategies.json`; its module
 //! docs give the totals). [`tier`] holds the rule's types.
@@ -12,8 +13,8 @@
 //! conservative (the proof at the top of its file). A sample the sample test covers is therefore
 //! never outside its tile's bounds, whatever the rule picks; the rule decides the cost only.
 //!
-//! **Cost.** The choice adds 3 operations to setup (the footprint's area: one multiply; one
-//! compare with the class's threshold; one select); per tile and per sample nothing beyond the
+//! **Cost.** The choice adds 4 operations to setup (the footprint's area: one multiply; two
+//! compares with the class's thresholds; one select); per tile and per sample nothing beyond the
 //! picked strategy's own work: the renderer walks a triangle's tiles with the picked strategy's
 //! own walk and tile type ([`BoundsStrategy::walk`]), so its per-tile and per-sample code is
 //! that strategy's, with one branch per walked region.
@@ -128,7 +129,7 @@ impl BoundsStrategy for Auto {
     }
     #[inline(always)]
     fn prepare<U: Unit>(&self, setup: &Setup, ops: &mut Ops) -> AutoCoeffs {
-        ops.add_setup(3);
+        ops.add_setup(4);
         match self.pick(setup) {
             Pick::Laine => AutoCoeffs::Laine(Laine2011.prepare::<U>(setup, ops)),
             Pick::Hull => AutoCoeffs::Hull(HULL.prepare::<U>(setup, ops)),

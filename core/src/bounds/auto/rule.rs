@@ -7,29 +7,29 @@
 //!
 //! | class | triangles | rule | with the rule | laine2011 | hull | hull+edge-t |
 //! |---|---|---|---|---|---|---|
-//! | static | 4665 | hull from 27 px | 383.6 | 512.0 | 451.7 | 453.0 |
-//! | motion | 9330 | hull from 69 px | 1423.2 | 1669.9 | 1640.9 | 1775.7 |
-//! | defocus | 9330 | hull from 80 px | 1054.9 | 1303.4 | 1424.9 | 1431.2 |
-//! | motion+defocus | 9330 | hull from 133 px | 2059.9 | 2312.6 | 2705.1 | 2887.4 |
+//! | static | 4665 | hull from 27 px | 366.2 | 483.9 | 434.8 | 437.7 |
+//! | motion | 9330 | hull from 76 px | 1342.5 | 1562.8 | 1563.9 | 1700.0 |
+//! | defocus | 9330 | hull from 90 px | 993.4 | 1217.6 | 1364.9 | 1374.3 |
+//! | motion+defocus | 9330 | hull from 133 px | 1942.0 | 2166.8 | 2592.1 | 2775.8 |
 
-use crate::bounds::auto::tier::{Pick, Tier};
+use crate::bounds::auto::tier::Tier;
 
 /// One tier per class ([`crate::config::class::Class::index`] order).
 pub const RULE: [Tier; 4] = [
     Tier {
-        heavy: Pick::Hull,
-        from_px: 27,
+        hull_from: 27,
+        edge_from: u32::MAX,
     },
     Tier {
-        heavy: Pick::Hull,
-        from_px: 69,
+        hull_from: 76,
+        edge_from: u32::MAX,
     },
     Tier {
-        heavy: Pick::Hull,
-        from_px: 80,
+        hull_from: 90,
+        edge_from: u32::MAX,
     },
     Tier {
-        heavy: Pick::Hull,
-        from_px: 133,
+        hull_from: 133,
+        edge_from: u32::MAX,
     },
 ];

@@ -24,21 +24,46 @@ impl Pick {
     }
 }
 
-/// The rule of one class: below `from_px` footprint pixels Laine 2011, from there on `heavy`
-/// (`from_px = u32::MAX`: always Laine 2011).
+/// The rule of one class, by footprint area (pixels): hull+edge-t from `edge_from` on, else the
+/// hull from `hull_from` on, else Laine 2011. `u32::MAX` turns a pick off (`edge_from =
+/// u32::MAX`: never hull+edge-t; both: always Laine 2011). Every pair of values is a rule
+/// (`edge_from ≤ hull_from` leaves the hull out).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Tier {
-    /// the strategy of large triangles
-    pub heavy: Pick,
-    /// the least footprint area (pixels) that gets `heavy`
-    pub from_px: u32,
+    /// the least footprint area that gets the hull
+    pub hull_from: u32,
+    /// the least footprint area that gets hull+edge-t
+    pub edge_from: u32,
 }
 
 impl Tier {
+    /// Laine 2011 at every area.
+    pub const LAINE: Tier = Tier {
+        hull_from: u32::MAX,
+        edge_from: u32::MAX,
+    };
+
+    /// `pick` from `from_px` pixels on, Laine 2011 below.
+    pub const fn from(pick: Pick, from_px: u32) -> Tier {
+        match pick {
+            Pick::Laine => Tier::LAINE,
+            Pick::Hull => Tier {
+                hull_from: from_px,
+                edge_from: u32::MAX,
+            },
+            Pick::HullEdge => Tier {
+                hull_from: u32::MAX,
+                edge_from: from_px,
+            },
+        }
+    }
+
     /// The pick for a footprint of `area` pixels.
     pub const fn pick(&self, area: u32) -> Pick {
-        if area >= self.from_px {
-            self.heavy
+        if area >= self.edge_from {
+            Pick::HullEdge
+        } else if area >= self.hull_from {
+            Pick::Hull
         } else {
             Pick::Laine
         }

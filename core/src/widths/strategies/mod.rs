@@ -82,9 +82,9 @@ fn auto_pick(inv: &mut Inventory) {
     );
     inv.op(
         tri,
-        "tier compare `area ≥ from_px`",
+        "tier compares `area ≥ edge_from`, `area ≥ hull_from`",
         OpKind::Cmp { bits: area },
-        1,
+        2,
         Classes::ALL,
     );
 }
