@@ -8,7 +8,7 @@
 //! tier's threshold on its boundary.
 
 use proptest::prelude::*;
-use uvt_core::bounds::auto::{Auto, Pick, Tier, RULE};
+use uvt_core::bounds::auto::{Auto, Pick, Tier, PICK_OPS, RULE};
 use uvt_core::bounds::registry::{hull, hull_edge};
 use uvt_core::{Bounded, BoundsStrategy, Exact, Laine2011, Prim, SamplePattern, Viewport};
 use uvt_tests::kinds::{make, params, Kind, ALL_KINDS, NP};
@@ -101,7 +101,7 @@ fn auto_conservative_seeded_random() {
 }
 
 /// With a pick forced, `auto` renders with exactly the counters and ops of that strategy (its
-/// setup ops plus the choice's 3): tiles visited and skipped, samples tested and covered,
+/// setup ops plus the choice's `PICK_OPS`): tiles visited and skipped, samples tested and covered,
 /// bounds, row and predicate ops — on every kind, tile sizes 1 and 4.
 #[test]
 fn forced_pick_is_that_strategy() {
@@ -137,7 +137,7 @@ fn forced_pick_is_that_strategy() {
             for (i, (a, s)) in pairs.iter().enumerate() {
                 let visible: u64 = s.by_class.iter().sum();
                 let mut want = *s;
-                want.ops.setup += 3 * visible;
+                want.ops.setup += PICK_OPS * visible;
                 assert_eq!(
                     *a, want,
                     "auto forced to {:?} differs from it: kind {:?}, case {case}, tile {bt}, rerun with UVT_SEED={seed}",

@@ -96,6 +96,9 @@ impl TileBounds for AutoTile {
     }
 }
 
+/// The choice's setup operations per triangle (module docs, **Cost**).
+pub const PICK_OPS: u64 = 4;
+
 const HULL: HullCull<Laine2011> = hull();
 const HULL_EDGE: HullCull<EdgeTime<Laine2011>> = hull_edge();
 
@@ -129,7 +132,7 @@ impl BoundsStrategy for Auto {
     }
     #[inline(always)]
     fn prepare<U: Unit>(&self, setup: &Setup, ops: &mut Ops) -> AutoCoeffs {
-        ops.add_setup(4);
+        ops.add_setup(PICK_OPS);
         match self.pick(setup) {
             Pick::Laine => AutoCoeffs::Laine(Laine2011.prepare::<U>(setup, ops)),
             Pick::Hull => AutoCoeffs::Hull(HULL.prepare::<U>(setup, ops)),
