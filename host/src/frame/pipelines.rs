@@ -1,7 +1,7 @@
 //! The two pipelines the frame driver runs: the fixed-point core ([`Fixed`], any bounds strategy
 //! and precision) and the independent f64 reference ([`Reference`]).
 
-use uvt_core::bounds::strategy::{BoundsStrategy, RowSpan, TileBounds};
+use uvt_core::bounds::strategy::{Admit, BoundsStrategy, RowSpan, TileBounds};
 use uvt_core::config::unit::Full;
 use uvt_core::{Ops, Outcome, PixelRect, Triangle, Viewport};
 
@@ -83,8 +83,8 @@ where
         self.strat.span_tile::<Full>(&s.0, &s.1, span, cell, ops)
     }
     fn inside(&self, b: &Self::Bounds, idx: usize, ops: &mut Ops) -> bool {
-        let q = &self.pattern.quant[idx];
-        b.admits(q.u().to_bits(), q.v().to_bits(), q.t().to_bits(), ops)
+        // The renderer's admission of a sample by its tile (box, then predicate).
+        b.admit(&self.pattern.quant[idx], ops)
     }
     fn uvt(&self, idx: usize) -> [f64; 3] {
         let q = &self.pattern.quant[idx];
