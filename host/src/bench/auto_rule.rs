@@ -5,10 +5,15 @@
 //! ([`super::m4_stages`]: the quick bench rows' own triangles, every `every`-th) and every
 //! [`Pick`], the host runs the stage workload (`uvt_demo::workload::stage_one`: the same
 //! counts the Cortex-M4F saw) and models the triangle's instructions as its counts times the
-//! pick's per-call instructions for the triangle's class (pooled over the rows). Per class, the
-//! rule is the tier (Laine 2011 below one footprint area, the hull from it, hull+edge-t from a
-//! second, larger or equal area) with the least total over all rows, every pair of areas that
-//! split the class's triangles tried; on a tie the larger areas (more Laine 2011, then more hull).
+//! pick's per-call instructions for the triangle's class (pooled over the rows); it also counts
+//! the samples each pick tests and the samples `best` tests. Per class, the rule is the tier
+//! (Laine 2011 below one footprint area, the hull from it, hull+edge-t from a second, larger or
+//! equal area) with the least total over all rows **among the tiers that keep, on every row, the
+//! class's sample-test efficiency at least [`STE_FLOOR`] of `best`'s** (tested samples ≤ `best`'s
+//! ÷ [`STE_FLOOR`]; covered samples are the same for every strategy). A row on which no tier
+//! reaches the floor is not held to it (the rule's source names it); if no tier holds every
+//! other row at once, the least total is taken. Every pair of areas that split the class's
+//! triangles is tried; on a tie the larger areas (more Laine 2011, then more hull).
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -23,16 +28,24 @@ use super::m4_stages::{M4Stages, PerCall};
 use super::workload::bench_workload;
 use crate::scene::builtin::{Bench, Blur};
 
-/// One triangle: its class, footprint area and modelled instructions per pick.
+/// The least share of `best`'s sample-test efficiency the rule keeps on every row of a class where
+/// some tier reaches it (module docs).
+pub const STE_FLOOR: f64 = 0.9;
+
+/// One triangle: its class, row (index in the stage file), footprint area, modelled
+/// instructions and tested samples per pick, and the samples `best` tests.
 #[derive(Clone, Copy, Debug)]
 struct TriModel {
     class: usize,
+    row: usize,
     area: u32,
     cost: [f64; 3],
+    tested: [f64; 3],
+    best_tested: f64,
 }
 
 /// The chosen tier of one class with the totals that chose it.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub struct ClassRule {
     /// the tier
     pub tier: Tier,
@@ -42,10 +55,26 @@ pub struct ClassRule {
     pub with_rule: f64,
     /// each pick alone ([`Pick::ALL`] order)
     pub alone: [f64; 3],
+    /// the class's triangles per row, with the rule
+    pub rows: Vec<RowFit>,
+}
+
+/// A class's triangles on one row of the stage file, with the rule.
+#[derive(Clone, Debug)]
+pub struct RowFit {
+    /// scene and row (`game motion`)
+    pub row: String,
+    /// modelled instructions with the rule ÷ with Laine 2011 alone
+    pub cost_vs_laine: f64,
+    /// sample-test efficiency with the rule ÷ `best`'s
+    pub ste_vs_best: f64,
+    /// whether the rule keeps [`STE_FLOOR`] of `best`'s efficiency on the row
+    pub held: bool,
 }
 
 /// Per-triangle models of one workload.
 fn models(
+    row: usize,
     w: &Workload<'_>,
     per: &BTreeMap<(String, String), PerCall>,
 ) -> anyhow::Result<Vec<TriModel>> {
@@ -63,8 +92,11 @@ fn models(
         .iter()
         .map(|t| TriModel {
             class: t.class().index(),
+            row,
             area: 0,
             cost: [0.0; 3],
+            tested: [0.0; 3],
+            best_tested: 0.0,
         })
         .collect();
     for (k, pick) in Pick::ALL.iter().enumerate() {
@@ -78,6 +110,7 @@ fn models(
                     .ok_or_else(|| anyhow::anyhow!("no figures for {} on class {class}", pick.name()))?;
                 let c = &t.cost;
                 m.cost[k] = pc.total(c.triangles, c.tiles, c.admits, c.tested);
+                m.tested[k] = c.tested as f64;
                 if let Some(fp) = t.footprint {
                     m.area = u32::from(fp.x1 - fp.x0) * u32::from(fp.y1 - fp.y0);
                 }
@@ -86,6 +119,13 @@ fn models(
         });
         done.ok_or_else(|| anyhow::anyhow!("{} is not a registry strategy", pick.name()))??;
     }
+    let best = uvt_core::bounds::registry::best();
+    let pipe = <PipelineOf<_, P, Full> as uvt_core::Pipeline>::new(best);
+    for (m, tri) in out.iter_mut().zip(&tris) {
+        m.best_tested = stage_one(&pipe, tri, h.vp, bt, &pattern, &mut || 0)
+            .cost
+            .tested as f64;
+    }
     Ok(out)
 }
 
@@ -93,66 +133,161 @@ fn anyhow_of(e: uvt_demo::workload::FormatError) -> anyhow::Error {
     anyhow::anyhow!("{e}")
 }
 
+/// Prefix sums over `tris` (in order) of `f`, restricted to the triangles of `row` when given.
+fn prefix(tris: &[TriModel], row: Option<usize>, f: impl Fn(&TriModel) -> f64) -> Vec<f64> {
+    let mut p = Vec::with_capacity(tris.len() + 1);
+    p.push(0.0);
+    for t in tris {
+        let x = if row.map_or(true, |r| r == t.row) {
+            f(t)
+        } else {
+            0.0
+        };
+        p.push(p[p.len() - 1] + x);
+    }
+    p
+}
+
 /// The best tier of one class's triangles (module docs): with the triangles sorted by area,
 /// Laine 2011 on the first `i`, the hull on the next up to `j`, hull+edge-t on the rest, for every
-/// `i ≤ j` at a change of area (or an end).
+/// `i ≤ j` at a change of area (or an end). Of the tiers that cost no more on any row than Laine
+/// 2011 alone (or than the least-total tier, where that is dearer), the one that holds the most
+/// rows to [`STE_FLOOR`], then the least total.
 fn best_tier(tris: &mut [TriModel]) -> ClassRule {
     tris.sort_by_key(|t| t.area);
     let n = tris.len();
     let alone: [f64; 3] = [0, 1, 2].map(|k| tris.iter().map(|t| t.cost[k]).sum());
-    // prefix[k][i]: pick k's total over the first i triangles.
-    let prefix: [Vec<f64>; 3] = [0, 1, 2].map(|k| {
-        let mut p = Vec::with_capacity(n + 1);
-        p.push(0.0);
-        for t in tris.iter() {
-            p.push(p[p.len() - 1] + t.cost[k]);
-        }
-        p
-    });
+    let mut rows: Vec<usize> = tris.iter().map(|t| t.row).collect();
+    rows.sort_unstable();
+    rows.dedup();
+    // Prefix sums per pick k over the first i triangles: instructions (all rows, and per row)
+    // and tested samples per row (rows of the class in stage-file order).
+    let cost: [Vec<f64>; 3] = [0, 1, 2].map(|k| prefix(tris, None, |t| t.cost[k]));
+    let per_row = |f: fn(&TriModel, usize) -> f64| -> Vec<[Vec<f64>; 3]> {
+        rows.iter()
+            .map(|&r| [0, 1, 2].map(|k| prefix(tris, Some(r), |t| f(t, k))))
+            .collect()
+    };
+    let row_cost = per_row(|t, k| t.cost[k]);
+    let tested = per_row(|t, k| t.tested[k]);
+    // Per row: Laine 2011's instructions, and the most tested samples that keep STE_FLOOR of
+    // best's efficiency.
+    let laine: Vec<f64> = row_cost.iter().map(|p| p[0][n]).collect();
+    let allowed: Vec<f64> = rows
+        .iter()
+        .map(|&r| {
+            let best: f64 = tris
+                .iter()
+                .filter(|t| t.row == r)
+                .map(|t| t.best_tested)
+                .sum();
+            best / STE_FLOOR
+        })
+        .collect();
     // Where a threshold can fall (a threshold cannot split equal areas), largest first.
     let cuts: Vec<usize> = (0..=n)
         .rev()
         .filter(|&i| i == 0 || i == n || tris[i].area != tris[i - 1].area)
         .collect();
     let area_at = |i: usize| if i == n { u32::MAX } else { tris[i].area };
-    let mut best = ClassRule {
-        tier: Tier::LAINE,
-        triangles: n,
-        with_rule: alone[0],
-        alone,
+    let split =
+        |p: &[Vec<f64>; 3], i: usize, j: usize| p[0][i] + (p[1][j] - p[1][i]) + (p[2][n] - p[2][j]);
+    let pairs = || {
+        cuts.iter()
+            .flat_map(|&i| cuts.iter().filter(move |&&j| j >= i).map(move |&j| (i, j)))
     };
-    for &i in &cuts {
-        for &j in cuts.iter().filter(|&&j| j >= i) {
-            let total =
-                prefix[0][i] + (prefix[1][j] - prefix[1][i]) + (prefix[2][n] - prefix[2][j]);
-            // Strictly less: on a tie the earlier candidate (larger areas) stays.
-            if total < best.with_rule - 1e-6 * best.with_rule.abs() {
-                best.tier = Tier {
-                    hull_from: if i == j { u32::MAX } else { area_at(i) },
-                    edge_from: area_at(j),
-                };
-                best.with_rule = total;
+    // The tier that best meets `goal` (higher is better; on a tie the earlier candidate, with
+    // larger areas, stays) among those `allow` lets through; (n, n) is Laine 2011 alone.
+    let search = |allow: &dyn Fn(usize, usize) -> bool,
+                  goal: &dyn Fn(usize, usize) -> (usize, f64)| {
+        let mut best = (n, n, goal(n, n));
+        for (i, j) in pairs().filter(|&(i, j)| allow(i, j)) {
+            let (held, total) = goal(i, j);
+            let (bh, bt) = best.2;
+            // More rows held, or as many and strictly less total.
+            if held > bh || (held == bh && total < bt - 1e-6 * bt.abs()) {
+                best = (i, j, (held, total));
             }
         }
+        best
+    };
+    // The least total alone, then per row a cap: Laine 2011's instructions there, or the least
+    // total's where that is dearer.
+    let (i0, j0, _) = search(&|_, _| true, &|i, j| (0, split(&cost, i, j)));
+    let cap: Vec<f64> = (0..rows.len())
+        .map(|r| laine[r].max(split(&row_cost[r], i0, j0)) * (1.0 + 1e-9))
+        .collect();
+    let (i, j, (_, total)) = search(
+        &|i, j| (0..rows.len()).all(|r| split(&row_cost[r], i, j) <= cap[r]),
+        &|i, j| {
+            let held = (0..rows.len())
+                .filter(|&r| split(&tested[r], i, j) <= allowed[r])
+                .count();
+            (held, split(&cost, i, j))
+        },
+    );
+    let fits = rows
+        .iter()
+        .enumerate()
+        .map(|(r, &row)| {
+            let t = split(&tested[r], i, j);
+            RowFit {
+                // best_tier names a row by its stage-file index (`derive` names it).
+                row: row.to_string(),
+                cost_vs_laine: if laine[r] > 0.0 {
+                    split(&row_cost[r], i, j) / laine[r]
+                } else {
+                    1.0
+                },
+                ste_vs_best: if t > 0.0 {
+                    allowed[r] * STE_FLOOR / t
+                } else {
+                    1.0
+                },
+                held: t <= allowed[r],
+            }
+        })
+        .collect();
+    ClassRule {
+        tier: Tier {
+            hull_from: if i == j { u32::MAX } else { area_at(i) },
+            edge_from: area_at(j),
+        },
+        triangles: n,
+        with_rule: total,
+        alone,
+        rows: fits,
     }
-    best
 }
 
 /// Derive the rule from the stage file `m4` (module docs).
 pub fn derive(m4: &M4Stages) -> anyhow::Result<[ClassRule; 4]> {
     let per = m4.per_class();
     let mut by_class: [Vec<TriModel>; 4] = Default::default();
-    for r in &m4.rows {
+    for (k, r) in m4.rows.iter().enumerate() {
         let kind = Bench::from_name(&r.scene)?;
         let row = Blur::from_name(&r.row)?;
         eprintln!("auto-rule: {} {}", r.scene, r.row);
         let bytes = bench_workload(kind, row, true, r.every)?;
         let w = Workload::parse(&bytes).map_err(anyhow_of)?;
-        for m in models(&w, &per)? {
+        for m in models(k, &w, &per)? {
             by_class[m.class].push(m);
         }
     }
-    Ok(by_class.map(|mut v| best_tier(&mut v)))
+    let names: Vec<String> = m4
+        .rows
+        .iter()
+        .map(|r| format!("{} {}", r.scene, r.row))
+        .collect();
+    Ok(by_class.map(|mut v| {
+        let mut rule = best_tier(&mut v);
+        for f in &mut rule.rows {
+            if let Some(name) = f.row.parse::<usize>().ok().and_then(|k| names.get(k)) {
+                f.row = name.clone();
+            }
+        }
+        rule
+    }))
 }
 
 /// The source of `core/src/bounds/auto/rule.rs` for `rules`, derived from the file at `from`.
@@ -204,6 +339,26 @@ pub fn rule_source(rules: &[ClassRule; 4], from: &str) -> String {
             r.alone[1] / 1e6,
             r.alone[2] / 1e6
         );
+    }
+    let _ = writeln!(
+        s,
+        "//!\n//! Per class and row, with the rule: modelled instructions ÷ Laine 2011's, and sample-test\n\
+         //! efficiency ÷ `best`'s (held: at least {:.0}% of `best`'s).\n//!\n\
+         //! | class | row | instructions ÷ Laine 2011 | STE ÷ best | floor |\n//! |---|---|---|---|---|",
+        STE_FLOOR * 100.0
+    );
+    for (c, r) in Class::ALL.iter().zip(rules) {
+        for f in &r.rows {
+            let floor = if f.held { "held" } else { "not held" };
+            let _ = writeln!(
+                s,
+                "//! | {} | {} | {:.3} | {:.3} | {floor} |",
+                c.name(),
+                f.row,
+                f.cost_vs_laine,
+                f.ste_vs_best
+            );
+        }
     }
     let _ = writeln!(s, "\nuse crate::bounds::auto::tier::Tier;\n");
     let _ = writeln!(
