@@ -384,3 +384,93 @@ pub fn rule_source(rules: &[ClassRule; 4], from: &str) -> String {
     s += "];\n";
     s
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A triangle of row `row` at `area` px: instructions and tested samples per pick, and the
+    /// samples `best` tests.
+    fn tri(row: usize, area: u32, cost: [f64; 3], tested: [f64; 3], best: f64) -> TriModel {
+        TriModel {
+            class: 1,
+            row,
+            area,
+            cost,
+            tested,
+            best_tested: best,
+        }
+    }
+
+    /// Row 0: the least total takes the hull from 20 px (57 instructions) but tests 260 samples,
+    /// over best's 150 ÷ 0.9; hull+edge-t everywhere tests 150 and costs 59, under Laine 2011's 60.
+    fn row0() -> Vec<TriModel> {
+        vec![
+            tri(0, 10, [10.0, 11.0, 11.0], [100.0, 80.0, 50.0], 50.0),
+            tri(0, 20, [20.0, 19.0, 19.0], [100.0, 80.0, 50.0], 50.0),
+            tri(0, 30, [30.0, 28.0, 29.0], [100.0, 80.0, 50.0], 50.0),
+        ]
+    }
+
+    #[test]
+    fn the_floor_takes_a_dearer_tier_that_keeps_best_s_efficiency() {
+        let mut t = row0();
+        let r = best_tier(&mut t);
+        assert_eq!(
+            r.tier,
+            Tier {
+                hull_from: u32::MAX,
+                edge_from: 10
+            },
+            "{r:?}"
+        );
+        assert_eq!(r.with_rule, 59.0);
+        assert!(
+            r.rows[0].held && (r.rows[0].ste_vs_best - 1.0).abs() < 1e-12,
+            "{r:?}"
+        );
+        assert!(
+            (r.rows[0].cost_vs_laine - 59.0 / 60.0).abs() < 1e-12,
+            "{r:?}"
+        );
+    }
+
+    #[test]
+    fn without_a_floor_within_reach_the_least_total_stays() {
+        // hull+edge-t dearer: everywhere 61 > Laine 2011's 60, so no tier holds the floor.
+        let mut t = row0();
+        for x in &mut t {
+            x.cost[2] += 1.0;
+        }
+        let r = best_tier(&mut t);
+        assert_eq!(
+            r.tier,
+            Tier {
+                hull_from: 20,
+                edge_from: u32::MAX
+            },
+            "{r:?}"
+        );
+        assert_eq!(r.with_rule, 57.0);
+        assert!(!r.rows[0].held, "{r:?}");
+    }
+
+    #[test]
+    fn holding_one_row_never_makes_another_dearer_than_laine() {
+        // Row 1's large triangle costs twice Laine 2011's with hull+edge-t: every tier that
+        // holds row 0 puts it there, so row 0 stays unheld and the least total is taken.
+        let mut t = row0();
+        t.push(tri(1, 40, [10.0, 10.0, 20.0], [10.0, 10.0, 10.0], 10.0));
+        let r = best_tier(&mut t);
+        assert_eq!(
+            r.tier,
+            Tier {
+                hull_from: 20,
+                edge_from: u32::MAX
+            },
+            "{r:?}"
+        );
+        assert!(!r.rows[0].held && r.rows[1].held, "{r:?}");
+        assert!(r.rows[1].cost_vs_laine <= 1.0, "{r:?}");
+    }
+}
