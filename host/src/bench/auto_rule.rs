@@ -402,6 +402,12 @@ mod tests {
         }
     }
 
+    /// Row 0's least-total tier: the hull from 20 px.
+    const LEAST_TOTAL: Tier = Tier {
+        hull_from: 20,
+        edge_from: u32::MAX,
+    };
+
     /// Row 0: the least total takes the hull from 20 px (57 instructions) but tests 260 samples,
     /// over best's 150 ÷ 0.9; hull+edge-t everywhere tests 150 and costs 59, under Laine 2011's 60.
     fn row0() -> Vec<TriModel> {
@@ -443,14 +449,7 @@ mod tests {
             x.cost[2] += 1.0;
         }
         let r = best_tier(&mut t);
-        assert_eq!(
-            r.tier,
-            Tier {
-                hull_from: 20,
-                edge_from: u32::MAX
-            },
-            "{r:?}"
-        );
+        assert_eq!(r.tier, LEAST_TOTAL, "{r:?}");
         assert_eq!(r.with_rule, 57.0);
         assert!(!r.rows[0].held, "{r:?}");
     }
@@ -462,14 +461,7 @@ mod tests {
         let mut t = row0();
         t.push(tri(1, 40, [10.0, 10.0, 20.0], [10.0, 10.0, 10.0], 10.0));
         let r = best_tier(&mut t);
-        assert_eq!(
-            r.tier,
-            Tier {
-                hull_from: 20,
-                edge_from: u32::MAX
-            },
-            "{r:?}"
-        );
+        assert_eq!(r.tier, LEAST_TOTAL, "{r:?}");
         assert!(!r.rows[0].held && r.rows[1].held, "{r:?}");
         assert!(r.rows[1].cost_vs_laine <= 1.0, "{r:?}");
     }
