@@ -5,6 +5,7 @@
 
 use embedded_graphics_core::pixelcolor::RgbColor;
 use uvt_core::{Laine2011, Prim, Renderer, Rgb888};
+use uvt_host::bench::ste_table::Timing;
 use uvt_host::frame::compare::compare;
 use uvt_host::frame::driver::{run, RunOpts};
 use uvt_host::frame::pipelines::Fixed;
@@ -200,8 +201,14 @@ fn driver_matches() {
 #[test]
 fn bench_rows_fixed_and_f64_ste_within_two_percent() {
     use builtin::{Bench, Blur};
-    let mut rows =
-        uvt_host::bench::ste_table::run_table(true, &[Bench::Game], &Blur::ALL, false, None);
+    let mut rows = uvt_host::bench::ste_table::run_table(
+        true,
+        Timing::ONCE,
+        &[Bench::Game],
+        &Blur::ALL,
+        false,
+        None,
+    );
     let dense: &[Blur] = if uvt_tests::extensive() {
         &Blur::ALL
     } else {
@@ -209,6 +216,7 @@ fn bench_rows_fixed_and_f64_ste_within_two_percent() {
     };
     rows.extend(uvt_host::bench::ste_table::run_table(
         true,
+        Timing::ONCE,
         &[Bench::Dense],
         dense,
         false,
@@ -256,6 +264,7 @@ fn bench_rows_fixed_and_f64_ste_within_two_percent() {
 fn axis_aligned_limit_converged_and_below_axis_aligned_strategies() {
     let rows = uvt_host::bench::ste_table::run_table(
         true,
+        Timing::ONCE,
         &[builtin::Bench::Game],
         &[builtin::Blur::Both2],
         false,
@@ -308,6 +317,7 @@ fn bench_rows_every_strategy_conservative_at_the_bounded_precision() {
     let rows = uvt_host::bench::ste_table::run_table_at(
         "bounded-16-16-16-20",
         true,
+        Timing::ONCE,
         scenes,
         &[builtin::Blur::Static, builtin::Blur::Both2],
         false,

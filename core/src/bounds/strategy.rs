@@ -107,12 +107,21 @@ impl TileBounds for UvtBox {
 pub trait Admit: Copy {
     /// Whether sample `s` of the tile must be tested.
     fn admit(&self, s: &Sample, ops: &mut Ops) -> bool;
+    /// A (u, v, t) box holding every sample the tile admits (what a report or an oracle may
+    /// take as the tile's bounds): a [`TileBounds`]' own box; default, for a tile that keeps no
+    /// box, the whole domain. Not part of the per-sample work.
+    fn enclosing_box(&self) -> UvtBox {
+        UvtBox::FULL
+    }
 }
 
 impl<T: TileBounds> Admit for T {
     #[inline(always)]
     fn admit(&self, s: &Sample, ops: &mut Ops) -> bool {
         self.admits(s.u().to_bits(), s.v().to_bits(), s.t().to_bits(), ops)
+    }
+    fn enclosing_box(&self) -> UvtBox {
+        *self.uvt_box()
     }
 }
 

@@ -29,8 +29,10 @@ use super::workload::bench_workload;
 use crate::scene::builtin::{Bench, Blur};
 
 /// The least share of `best`'s sample-test efficiency the rule keeps on every row of a class where
-/// some tier reaches it (module docs).
-pub const STE_FLOOR: f64 = 0.9;
+/// some tier reaches it (module docs). 92%, above the 90% the bench holds `auto` to: the model
+/// counts every `every`-th triangle of a row, so a rule that met 90% in the model exactly (game
+/// motion, 0.900) measured 89.7% on the whole row.
+pub const STE_FLOOR: f64 = 0.92;
 
 /// One triangle: its class, row (index in the stage file), footprint area, modelled
 /// instructions and tested samples per pick, and the samples `best` tests.
@@ -409,7 +411,7 @@ mod tests {
     };
 
     /// Row 0: the least total takes the hull from 20 px (57 instructions) but tests 260 samples,
-    /// over best's 150 ÷ 0.9; hull+edge-t everywhere tests 150 and costs 59, under Laine 2011's 60.
+    /// over best's 150 ÷ STE_FLOOR; hull+edge-t everywhere tests 150 and costs 59, under Laine 2011's 60.
     fn row0() -> Vec<TriModel> {
         vec![
             tri(0, 10, [10.0, 11.0, 11.0], [100.0, 80.0, 50.0], 50.0),

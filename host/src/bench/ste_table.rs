@@ -111,10 +111,12 @@ pub struct BenchRow {
     pub bbox: f64,
     /// every strategy of [`strategies`] at bounds tile 1, in its order
     pub strategies: Vec<StratResult>,
+    /// frames timed per strategy and for the reference, the fastest kept ([`timing`])
+    pub rounds: usize,
     /// STE of the f64 reference (Laine 2011 in f64)
     pub f64: f64,
-    /// wall ms of the f64 reference's frame (same frame driver, no oracle; the fastest of
-    /// [`timing_runs`] frames)
+    /// wall ms of the f64 reference's frame (same frame driver, no oracle; the fastest of as
+    /// many frames as the row's strategies got, [`timing`])
     pub f64_ms: f64,
     /// the axis-aligned limit at bounds tile 1 (all zero when not requested)
     pub limit: Limit,
@@ -131,18 +133,20 @@ impl BenchRow {
     }
 }
 
-/// Run the benchmark table at the default precision; `sweep` adds the bounds-tile sweep 1, 2, 4,
-/// 8; `effort` (low and high: dense points per pixel, face-search proposals per face) adds the
-/// axis-aligned limit.
+/// Run the benchmark table at the default precision, the frames timed by `timing` (`bench-ste`:
+/// [`timing`]; [`Timing::ONCE`] where only the counts matter); `sweep` adds the bounds-tile sweep
+/// 1, 2, 4, 8; `effort` (low and high: dense points per pixel, face-search proposals per face)
+/// adds the axis-aligned limit.
 pub fn run_table(
     quick: bool,
+    timing: Timing,
     scenes: &[Bench],
     rows: &[Blur],
     sweep: bool,
     effort: Option<[Effort; 2]>,
 ) -> Vec<BenchRow> {
     let stages = stage_file().ok().flatten();
-    rows_at::<uvt_core::DefaultPrecision>(quick, scenes, rows, sweep, effort, stages)
+    rows_at::<uvt_core::DefaultPrecision>(quick, timing, scenes, rows, sweep, effort, stages)
 }
 
 /// The committed Cortex-M4F stage costs ([`super::m4_stages::committed`]).
@@ -155,13 +159,14 @@ pub fn stage_file() -> anyhow::Result<Option<&'static M4Stages>> {
 pub fn run_table_at(
     precision: &str,
     quick: bool,
+    timing: Timing,
     scenes: &[Bench],
     rows: &[Blur],
     sweep: bool,
     effort: Option<[Effort; 2]>,
 ) -> anyhow::Result<Vec<BenchRow>> {
     let cfg = names::precision("--precision", precision)?;
-    run_table_of(cfg, quick, scenes, rows, sweep, effort)
+    run_table_of(cfg, quick, timing, scenes, rows, sweep, effort)
 }
 
 /// [`run_table`] with the core at configuration `cfg` (one of the registry's; `with_config!`
@@ -169,25 +174,57 @@ pub fn run_table_at(
 pub fn run_table_of(
     cfg: Config,
     quick: bool,
+    timing: Timing,
     scenes: &[Bench],
     rows: &[Blur],
     sweep: bool,
     effort: Option<[Effort; 2]>,
 ) -> anyhow::Result<Vec<BenchRow>> {
     let stages = stage_file()?;
-    with_config!(cfg, P => rows_at::<P>(quick, scenes, rows, sweep, effort, stages))
+    with_config!(cfg, P => rows_at::<P>(quick, timing, scenes, rows, sweep, effort, stages))
         .ok_or_else(|| anyhow::anyhow!("configuration {cfg} is not in the registry"))
 }
 
-/// Frames timed per strategy (at bounds tile 1) and for the reference, the fastest kept: 5 at the
-/// quick size, whose frames take tens of milliseconds (with 3, one row's fastest core frame came
-/// out 1.06× the reference's where 10 frames each gave 0.85×), 2 at full size (up to ~25 s per
-/// frame): one frame alone is at the mercy of the scheduler.
-pub fn timing_runs(quick: bool) -> usize {
+/// Frames timed per strategy (at bounds tile 1) and for the reference, the fastest kept: one
+/// frame alone is at the mercy of the scheduler (single frames of one strategy vary by ±15–30%
+/// on the 2-core machine). At least 5 rounds at the quick size, whose frames take tens of
+/// milliseconds (with 3, one row's fastest core frame came out 1.06× the reference's where 10
+/// frames each gave 0.85×), 2 at full size (up to ~45 s per frame); then more rounds, up to
+/// [`Timing::max_rounds`], while the row's timed frames have taken less than
+/// [`Timing::budget_s`] (the short rows get the most rounds).
+#[derive(Clone, Copy, Debug)]
+pub struct Timing {
+    /// rounds always taken
+    pub min_rounds: usize,
+    /// more rounds while the row's timed frames so far took less than this (seconds)
+    pub budget_s: f64,
+    /// at most this many rounds
+    pub max_rounds: usize,
+}
+
+impl Timing {
+    /// One frame per strategy (the tile sweep's runs; tests that read the counts only).
+    pub const ONCE: Timing = Timing {
+        min_rounds: 1,
+        budget_s: 0.0,
+        max_rounds: 1,
+    };
+}
+
+/// The frames `bench-ste` times per row ([`Timing`]) at the quick or the full size.
+pub fn timing(quick: bool) -> Timing {
     if quick {
-        5
+        Timing {
+            min_rounds: 5,
+            budget_s: 6.0,
+            max_rounds: 40,
+        }
     } else {
-        2
+        Timing {
+            min_rounds: 2,
+            budget_s: 30.0,
+            max_rounds: 10,
+        }
     }
 }
 
@@ -195,6 +232,7 @@ pub fn timing_runs(quick: bool) -> usize {
 /// Cortex-M4F cost of each tile-1 run at that configuration.
 fn rows_at<P: Precision + Sync>(
     quick: bool,
+    timing: Timing,
     scenes: &[Bench],
     rows: &[Blur],
     sweep: bool,
@@ -227,7 +265,6 @@ fn rows_at<P: Precision + Sync>(
             let o = RunOpts::for_scene(&s, &colors);
             // Wall times of the tile-1 runs (the cost table's) and of the reference: the fastest
             // of `runs` frames each (the counts are the same every time).
-            let runs = timing_runs(quick);
             // One untimed warm-up frame per row (Laine 2011) before anything
             // is timed: otherwise the first timed frame of a new scene pays the allocator's heap
             // growth (page faults over tens of MiB at full size) and whichever pipeline runs
@@ -243,22 +280,29 @@ fn rows_at<P: Precision + Sync>(
                 },
             );
             // The frames are taken in rounds, every strategy once per round, so that a machine
-            // slowing down or speeding up during a row does not favour the strategies run first.
-            let at = |tile: u8, runs: usize| -> Vec<StratResult> {
+            // slowing down or speeding up during a row does not favour the strategies run first;
+            // `timed` rounds at least, more while the row's frames took less than `budget_s`.
+            // Returns the strategies (fastest frame each) and the rounds taken.
+            let at = |tile: u8, timed: Timing| -> (Vec<StratResult>, usize) {
                 let o = RunOpts { tile, ..o.clone() };
                 let frame = |n: &str| run_strategy_at::<P>(n, vp, &core_p, &pattern_p, &o);
+                let start = std::time::Instant::now();
                 let mut out: Vec<StratResult> =
                     strategies().filter_map(|n| frame(n).map(|r| r.0)).collect();
-                for _ in 1..runs {
+                let mut rounds = 1;
+                while rounds < timed.max_rounds
+                    && (rounds < timed.min_rounds || start.elapsed().as_secs_f64() < timed.budget_s)
+                {
                     for best in &mut out {
                         if let Some((again, _)) = frame(best.name) {
                             best.ms = best.ms.min(again.ms);
                         }
                     }
+                    rounds += 1;
                 }
-                out
+                (out, rounds)
             };
-            let mut strategies = at(1, runs);
+            let (mut strategies, rounds) = at(1, timing);
             // The whole cost: this run's counts times the row's instructions per call.
             let stage_row = stages.and_then(|m| m.row(kind.name(), &row.name()));
             for x in &mut strategies {
@@ -268,7 +312,7 @@ fn rows_at<P: Precision + Sync>(
             }
             let tile_sweep = if sweep {
                 let mut v = vec![strategies.clone()];
-                v.extend([2u8, 4, 8].iter().map(|&t| at(t, 1)));
+                v.extend([2u8, 4, 8].iter().map(|&t| at(t, Timing::ONCE).0));
                 v
             } else {
                 Vec::new()
@@ -279,7 +323,7 @@ fn rows_at<P: Precision + Sync>(
                 pattern: &pattern,
             };
             let r = run(&reference, &pattern, &o);
-            let f64_ms = (1..runs)
+            let f64_ms = (1..rounds)
                 .map(|_| run(&reference, &pattern, &o).time)
                 .fold(r.time, Duration::min)
                 .as_secs_f64()
@@ -300,6 +344,7 @@ fn rows_at<P: Precision + Sync>(
                 avg_area_px: per(st.samples_covered, visible * s.spp as u64),
                 bbox: st.ste_bbox(),
                 strategies,
+                rounds,
                 f64: r.stats.ste(),
                 f64_ms,
                 limit,
@@ -391,10 +436,20 @@ pub fn table_md(rows: &[BenchRow]) -> String {
         );
     }
     s += &format!(
-        "\nCost per strategy (bounds tile 1×1, core {}): setup ops per triangle / ops per tile / row-span ops per tile / predicate ops per tested sample / all tile + row + predicate + sample-test ops per covered sample / core wall ms (\"per tile\": per bounds tile of the footprints, including the tiles a row span skips; the row-span ops of a row are spread over its tiles; core wall ms with no oracle, after one untimed warm-up frame per row, the fastest of {} frames at the quick size, {} at full size, taken in rounds of every strategy once); Laine f64 ms = the f64 reference's frame, timed alike\n\n| Scene |",
+        "\nCost per strategy (bounds tile 1×1, core {}): setup ops per triangle / ops per tile / row-span ops per tile / predicate ops per tested sample / all tile + row + predicate + sample-test ops per covered sample / core wall ms (\"per tile\": per bounds tile of the footprints, including the tiles a row span skips; the row-span ops of a row are spread over its tiles; core wall ms with no oracle, after one untimed warm-up frame per row, the fastest of the frames taken in rounds of every strategy once: at least {} rounds at the quick size, {} at full size, then more while the row's frames took less than {} s / {} s, at most {} / {} rounds; this run: {} rounds); Laine f64 ms = the f64 reference's frame, timed alike\n\n| Scene |",
         rows.first().map_or("-", |r| r.precision.as_str()),
-        timing_runs(true),
-        timing_runs(false)
+        timing(true).min_rounds,
+        timing(false).min_rounds,
+        timing(true).budget_s,
+        timing(false).budget_s,
+        timing(true).max_rounds,
+        timing(false).max_rounds,
+        {
+            let (lo, hi) = rows.iter().fold((usize::MAX, 0), |(lo, hi), r| {
+                (lo.min(r.rounds), hi.max(r.rounds))
+            });
+            if lo == hi { lo.to_string() } else { format!("{lo}–{hi}") }
+        }
     );
     for n in strategies() {
         s += &format!(" {n} |");

@@ -32,7 +32,7 @@ pub struct StratResult {
     /// counters
     pub stats: FrameStats,
     /// wall ms of the frame (no oracle); in `bench-ste`'s tile-1 runs the fastest of
-    /// [`timing_runs`](super::ste_table::timing_runs) frames
+    /// the frames [`timing`](super::ste_table::timing) takes
     pub ms: f64,
     /// the frame's whole modelled Cortex-M4F instructions, setup included (this run's counts
     /// times the row's measured instructions per call, [`super::m4_stages`]); `None` where no

@@ -20,7 +20,6 @@ use std::time::{Duration, Instant};
 
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
-use uvt_core::bounds::strategy::RowSpan;
 use uvt_core::{Cull, Ops, PixelRect};
 
 use crate::reference;
@@ -29,7 +28,7 @@ use crate::scene::pattern::Pattern;
 use crate::scene::tri::SceneTri;
 
 use super::counters::{Frame, FrameStats};
-use super::pipeline::{FramePipeline, SetupOut};
+use super::pipeline::{FramePipeline, FrameTile, SetupOut, TileSink};
 
 /// Options of a frame run.
 #[derive(Clone)]
@@ -93,6 +92,8 @@ pub fn run<P: FramePipeline>(p: &P, pattern: &Pattern, o: &RunOpts<'_>) -> Frame
     // its triangles (deterministic, the same values; their ops are counted here, once). Keeping
     // them cost ~1 KB per triangle for the core (> 800 MiB on the dense scenes at full size),
     // written once and read back once per frame, most of it fresh pages the kernel had to zero.
+    // The bounds strategy's coefficients are built in the bands only ([`FramePipeline::walk`]),
+    // their ops counted in the first band of the footprint.
     let setups: Vec<(SetupOut<PixelRect>, Ops)> = (0..n)
         .into_par_iter()
         .map(|i| {
@@ -209,13 +210,24 @@ fn band<P: FramePipeline>(
     let y0 = b * BAND;
     let y1 = (y0 + BAND).min(o.vp.1);
     let rows = (y1 - y0) as usize;
-    let mut depth = vec![p.far(); w * rows * s];
-    // Zmax culling's per-pixel registers: the largest stored depth of each pixel's samples,
-    // refreshed after each write (`uvt_core::raster::zmax::PixelMax`).
-    let mut zmax = vec![p.far(); if o.zmax { w * rows } else { 0 }];
-    let mut color = vec![o.clear; if o.image { w * rows * s } else { 0 }];
-    let mut heat = vec![0u32; w * rows];
-    let mut st = FrameStats::default();
+    let mut buf = BandBuffers {
+        y0,
+        w,
+        spp: s,
+        depth: vec![p.far(); w * rows * s],
+        // Zmax culling's per-pixel registers: the largest stored depth of each pixel's samples,
+        // refreshed after each write (`uvt_core::raster::zmax::PixelMax`).
+        zmax: vec![p.far(); if o.zmax { w * rows } else { 0 }],
+        color: vec![o.clear; if o.image { w * rows * s } else { 0 }],
+        heat: vec![0u32; w * rows],
+        st: FrameStats::default(),
+        tested_samples: Vec::new(),
+        dense: if o.oracle.is_some() {
+            oracle_points()
+        } else {
+            Vec::new()
+        },
+    };
     let mut ops = Ops::default();
     let screen = PixelRect {
         x0: 0,
@@ -223,142 +235,57 @@ fn band<P: FramePipeline>(
         x1: o.vp.0,
         y1,
     };
-    let bt = o.tile as u16;
-    // Only with the oracle: the tested samples of the current cell (for its in-band box count).
-    let oracle = o.oracle.is_some();
-    let mut tested_samples: Vec<usize> = Vec::new();
-    let dense = if o.oracle.is_some() {
-        oracle_points()
-    } else {
-        Vec::new()
-    };
     for &i in list {
         let SetupOut::Visible(fp, _) = &setups[i as usize].0 else {
             continue;
         };
         let region = fp.intersect(&screen);
-        if region.is_empty() {
+        // The footprint's first band: the strategy's coefficients are counted here, once.
+        let first = fp.y0 >= y0;
+        if region.is_empty() && !first {
             continue;
         }
         // The setup again (the first pass counted its ops); the same outcome, so visible.
         let SetupOut::Visible(setup, _) = p.setup(i as usize, &mut Ops::default()) else {
             continue;
         };
-        let setup = &setup;
-        let col = o.colors[i as usize];
         // The floor again, its ops counted in the first pass.
         let floor = if o.zmax {
-            p.depth_floor(setup, &mut Ops::default())
+            p.depth_floor(&setup, &mut Ops::default())
         } else {
             f64::NEG_INFINITY
         };
-        // Row → span → tiles (`uvt_core::walk_tiles`): the same cells in the same order as
-        // `region.cells(bt)`; a cell outside its row's span counts as visited and skipped.
-        // A row starts where a cell's y0 changes; its span is computed once, at its first cell.
-        let mut row_span: Option<RowSpan> = None;
-        for cell in region.cells(bt) {
-            let span = match row_span {
-                Some(sp) if sp.cols().y0 == cell.y0 => sp,
-                _ => {
-                    let row = PixelRect {
-                        x0: region.x0,
-                        x1: region.x1,
-                        ..cell
-                    };
-                    let sp = p.row(setup, row, bt, &mut ops);
-                    row_span = Some(sp);
-                    sp
-                }
-            };
-            st.tiles_visited += 1;
-            let bounds = if span.admits(&cell) {
-                p.bounds(setup, &span, cell, &mut ops)
-            } else {
-                None
-            };
-            let Some(bounds) = bounds else {
-                st.tiles_skipped += 1;
-                continue;
-            };
-            if o.zmax && zmax_hides(floor, &zmax, cell, (y0, w), &mut ops) {
-                st.tiles_zculled += 1;
-                continue;
-            }
-            st.samples_admitted +=
-                (cell.x1 - cell.x0) as u64 * (cell.y1 - cell.y0) as u64 * s as u64;
-            tested_samples.clear();
-            let mut lo = [f64::MAX; 3];
-            let mut hi = [f64::MIN; 3];
-            for py in cell.y0..cell.y1 {
-                for px in cell.x0..cell.x1 {
-                    let pix = (py - y0) as usize * w + px as usize;
-                    // The pixel's samples are consecutive in the table (`Pattern::index`).
-                    let base = pat.index(px, py, 0);
-                    for si in 0..s {
-                        let idx = base + si;
-                        if !p.inside(&bounds, idx, &mut ops) {
-                            continue;
-                        }
-                        st.samples_tested += 1;
-                        heat[pix] += 1;
-                        if oracle {
-                            tested_samples.push(idx);
-                        }
-                        let hit = p.test(setup, px, py, idx, &mut ops);
-                        if let Some(d) = hit {
-                            st.samples_covered += 1;
-                            if oracle {
-                                let uvt = p.uvt(idx);
-                                for k in 0..3 {
-                                    lo[k] = lo[k].min(uvt[k]);
-                                    hi[k] = hi[k].max(uvt[k]);
-                                }
-                            }
-                            let slot = pix * s + si;
-                            if d < depth[slot] {
-                                depth[slot] = d;
-                                st.samples_written += 1;
-                                if o.image {
-                                    color[slot] = col;
-                                }
-                                if o.zmax {
-                                    let px = &depth[pix * s..pix * s + s];
-                                    zmax[pix] = px.iter().fold(f64::NEG_INFINITY, |m, &x| m.max(x));
-                                    ops.add_zmax(s as u64);
-                                }
-                            }
-                        }
-                    }
-                }
-            }
-            // Oracle: the box also grows around densely sampled covered points of the tile
-            // (exact geometry, f64 ray test), so it approaches the covered region's true box.
-            if let (Some(tris), true) = (o.oracle, lo[0] <= hi[0]) {
-                let r = p.ranges(&bounds);
-                let tri = &tris[i as usize];
-                for d in &dense {
-                    let x = cell.x0 as f64 + d[0] * (cell.x1 - cell.x0) as f64;
-                    let y = cell.y0 as f64 + d[1] * (cell.y1 - cell.y0) as f64;
-                    let uvt = [0, 1, 2].map(|k| r[k].0 + d[k + 2] * (r[k].1 - r[k].0));
-                    if reference::sample::sample_test(tri, o.vp, x, y, uvt[0], uvt[1], uvt[2])
-                        .is_some()
-                    {
-                        for k in 0..3 {
-                            lo[k] = lo[k].min(uvt[k]);
-                            hi[k] = hi[k].max(uvt[k]);
-                        }
-                    }
-                }
-            }
-            st.oracle_tested += tested_samples
-                .iter()
-                .filter(|&&idx| {
-                    let uvt = p.uvt(idx);
-                    (0..3).all(|k| lo[k] <= uvt[k] && uvt[k] <= hi[k])
-                })
-                .count() as u64;
+        let mut shade = Shade {
+            p,
+            pat,
+            o,
+            setup: &setup,
+            tri: i as usize,
+            floor,
+            buf: &mut buf,
+        };
+        // Row → span → tiles (`uvt_core::walk_tiles`, the pipeline's own walk): the same cells
+        // in the same order as `region.cells(o.tile)`; a cell outside its row's span counts as
+        // visited and skipped.
+        let mut prep = Ops::default();
+        p.walk(
+            &setup,
+            region,
+            o.tile as u16,
+            &mut prep,
+            &mut ops,
+            &mut shade,
+        );
+        if first {
+            ops.add(&prep);
         }
     }
+    let BandBuffers {
+        color,
+        heat,
+        mut st,
+        ..
+    } = buf;
     st.add_ops(&ops);
     let image = if o.image {
         (0..w * rows)
@@ -376,4 +303,126 @@ fn band<P: FramePipeline>(
         Vec::new()
     };
     (st, image, heat)
+}
+
+/// One band's buffers and counters.
+struct BandBuffers {
+    /// the band's first row and the viewport's width
+    y0: u16,
+    w: usize,
+    spp: usize,
+    depth: Vec<f64>,
+    zmax: Vec<f64>,
+    color: Vec<[u8; 3]>,
+    heat: Vec<u32>,
+    st: FrameStats,
+    /// Only with the oracle: the tested samples of the current cell (for its in-band box count).
+    tested_samples: Vec<usize>,
+    /// Only with the oracle: its dense points.
+    dense: Vec<[f64; 5]>,
+}
+
+/// The sink of one triangle's walk in one band: each kept cell's samples are put through the
+/// tile, tested, depth-tested and stored (and, with the oracle, boxed).
+struct Shade<'a, 'o, P: FramePipeline> {
+    p: &'a P,
+    pat: &'a Pattern,
+    o: &'a RunOpts<'o>,
+    setup: &'a P::Setup,
+    tri: usize,
+    floor: f64,
+    buf: &'a mut BandBuffers,
+}
+
+impl<P: FramePipeline> TileSink<P::Sample> for Shade<'_, '_, P> {
+    #[inline(always)]
+    fn cell<T: FrameTile<P::Sample>>(&mut self, cell: PixelRect, tile: Option<T>, ops: &mut Ops) {
+        let (p, o, buf) = (self.p, self.o, &mut *self.buf);
+        let (y0, w, s) = (buf.y0, buf.w, buf.spp);
+        buf.st.tiles_visited += 1;
+        let Some(bounds) = tile else {
+            buf.st.tiles_skipped += 1;
+            return;
+        };
+        if o.zmax && zmax_hides(self.floor, &buf.zmax, cell, (y0, w), ops) {
+            buf.st.tiles_zculled += 1;
+            return;
+        }
+        let st = &mut buf.st;
+        st.samples_admitted += (cell.x1 - cell.x0) as u64 * (cell.y1 - cell.y0) as u64 * s as u64;
+        let oracle = o.oracle.is_some();
+        buf.tested_samples.clear();
+        let mut lo = [f64::MAX; 3];
+        let mut hi = [f64::MIN; 3];
+        for py in cell.y0..cell.y1 {
+            for px in cell.x0..cell.x1 {
+                let pix = (py - y0) as usize * w + px as usize;
+                // The pixel's samples are consecutive in the table (`Pattern::index`).
+                let base = self.pat.index(px, py, 0);
+                for si in 0..s {
+                    let idx = base + si;
+                    if !bounds.inside(p.sample(idx), ops) {
+                        continue;
+                    }
+                    st.samples_tested += 1;
+                    buf.heat[pix] += 1;
+                    if oracle {
+                        buf.tested_samples.push(idx);
+                    }
+                    let Some(d) = p.test(self.setup, px, py, idx, ops) else {
+                        continue;
+                    };
+                    st.samples_covered += 1;
+                    if oracle {
+                        let uvt = p.uvt(idx);
+                        for k in 0..3 {
+                            lo[k] = lo[k].min(uvt[k]);
+                            hi[k] = hi[k].max(uvt[k]);
+                        }
+                    }
+                    let slot = pix * s + si;
+                    if d < buf.depth[slot] {
+                        buf.depth[slot] = d;
+                        st.samples_written += 1;
+                        if o.image {
+                            buf.color[slot] = o.colors[self.tri];
+                        }
+                        if o.zmax {
+                            let px = &buf.depth[pix * s..pix * s + s];
+                            buf.zmax[pix] = px.iter().fold(f64::NEG_INFINITY, |m, &x| m.max(x));
+                            ops.add_zmax(s as u64);
+                        }
+                    }
+                }
+            }
+        }
+        // Oracle: the box also grows around densely sampled covered points of the tile
+        // (exact geometry, f64 ray test), so it approaches the covered region's true box.
+        if let (Some(tris), true) = (o.oracle, lo[0] <= hi[0]) {
+            let r = bounds.ranges();
+            let tri = &tris[self.tri];
+            for d in &buf.dense {
+                let x = cell.x0 as f64 + d[0] * (cell.x1 - cell.x0) as f64;
+                let y = cell.y0 as f64 + d[1] * (cell.y1 - cell.y0) as f64;
+                let uvt = [0, 1, 2].map(|k| r[k].0 + d[k + 2] * (r[k].1 - r[k].0));
+                if reference::sample::sample_test(tri, o.vp, x, y, uvt[0], uvt[1], uvt[2]).is_some()
+                {
+                    for k in 0..3 {
+                        lo[k] = lo[k].min(uvt[k]);
+                        hi[k] = hi[k].max(uvt[k]);
+                    }
+                }
+            }
+        }
+        if oracle {
+            st.oracle_tested += buf
+                .tested_samples
+                .iter()
+                .filter(|&&idx| {
+                    let uvt = p.uvt(idx);
+                    (0..3).all(|k| lo[k] <= uvt[k] && uvt[k] <= hi[k])
+                })
+                .count() as u64;
+        }
+    }
 }

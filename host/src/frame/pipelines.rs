@@ -1,15 +1,15 @@
 //! The two pipelines the frame driver runs: the fixed-point core ([`Fixed`], any bounds strategy
 //! and precision) and the independent f64 reference ([`Reference`]).
 
-use uvt_core::bounds::strategy::{Admit, BoundsStrategy, RowSpan, TileBounds};
+use uvt_core::bounds::strategy::{Admit, BoundsStrategy, CellVisitor};
 use uvt_core::config::unit::Full;
-use uvt_core::{Ops, Outcome, PixelRect, Triangle, Viewport};
+use uvt_core::{Ops, Outcome, PixelRect, Sample, Triangle, Viewport};
 
 use crate::reference;
 use crate::scene::pattern::Pattern;
 use crate::scene::tri::SceneTri;
 
-use super::pipeline::{FramePipeline, SetupOut};
+use super::pipeline::{FramePipeline, FrameTile, SetupOut, TileSink};
 
 /// The fixed-point core with bounds strategy `B` at precision `P`.
 pub struct Fixed<'a, B, P = uvt_core::DefaultPrecision> {
@@ -51,40 +51,36 @@ impl<'a, B, P> Fixed<'a, B, P> {
     }
 }
 
-impl<B: BoundsStrategy + Sync, P: uvt_core::Precision + Sync> FramePipeline for Fixed<'_, B, P>
-where
-    B::Coeffs: Send + Sync,
-{
-    type Setup = (uvt_core::Setup, B::Coeffs);
-    type Bounds = B::Tile;
+impl<B: BoundsStrategy + Sync, P: uvt_core::Precision + Sync> FramePipeline for Fixed<'_, B, P> {
+    type Setup = uvt_core::Setup;
+    type Sample = Sample;
     fn setup(&self, i: usize, ops: &mut Ops) -> SetupOut<Self::Setup> {
         match uvt_core::setup::<P, Full>(&self.tris[i], self.vp, ops) {
-            Outcome::Visible(s) => {
-                let c = self.strat.prepare::<Full>(&s, ops);
-                SetupOut::Visible((s, c), s.class())
-            }
+            Outcome::Visible(s) => SetupOut::Visible(s, s.class()),
             Outcome::Culled(c) => SetupOut::Culled(c),
             Outcome::Refused(_) => unreachable!("the full unit accepts every class"),
         }
     }
     fn footprint(&self, s: &Self::Setup) -> PixelRect {
-        s.0.footprint()
+        s.footprint()
     }
-    fn row(&self, s: &Self::Setup, row: PixelRect, bt: u16, ops: &mut Ops) -> RowSpan {
-        self.strat.row_span(&s.0, &s.1, row, bt, ops)
-    }
-    fn bounds(
+    fn walk<V: TileSink<Sample>>(
         &self,
         s: &Self::Setup,
-        span: &RowSpan,
-        cell: PixelRect,
+        region: PixelRect,
+        bt: u16,
+        prep: &mut Ops,
         ops: &mut Ops,
-    ) -> Option<Self::Bounds> {
-        self.strat.span_tile::<Full>(&s.0, &s.1, span, cell, ops)
+        v: &mut V,
+    ) {
+        let c = self.strat.prepare::<Full>(s, prep);
+        // The renderer's walk: the strategy's own (`auto` walks with the strategy it picked,
+        // so the sink's per-sample loop is compiled for that strategy's tile).
+        self.strat
+            .walk::<Full, _>(s, &c, region, bt, ops, &mut CoreCells(v));
     }
-    fn inside(&self, b: &Self::Bounds, idx: usize, ops: &mut Ops) -> bool {
-        // The renderer's admission of a sample by its tile (box, then predicate).
-        b.admit(&self.pattern.quant[idx], ops)
+    fn sample(&self, idx: usize) -> &Sample {
+        &self.pattern.quant[idx]
     }
     fn uvt(&self, idx: usize) -> [f64; 3] {
         let q = &self.pattern.quant[idx];
@@ -94,23 +90,40 @@ where
         let q = &self.pattern.quant[idx];
         // The renderer's dispatch: P's test chosen at compile time (the same hit as
         // `uvt_core::sample_test` on a setup of precision P).
-        uvt_core::sample::test::<P, uvt_core::Full>(
-            &s.0,
-            uvt_core::ScreenPos::of(px, py, q),
-            q,
-            ops,
-        )
-        .map(|h| h.depth as f64)
+        uvt_core::sample::test::<P, uvt_core::Full>(s, uvt_core::ScreenPos::of(px, py, q), q, ops)
+            .map(|h| h.depth as f64)
     }
     fn far(&self) -> f64 {
         i32::MAX as f64
     }
     fn depth_floor(&self, s: &Self::Setup, ops: &mut Ops) -> f64 {
-        uvt_core::raster::zmax::depth_floor::<P, Full>(&s.0, ops) as f64
+        uvt_core::raster::zmax::depth_floor::<P, Full>(s, ops) as f64
     }
-    fn ranges(&self, b: &Self::Bounds) -> [(f64, f64); 3] {
+}
+
+/// The core's tiles handed to a frame sink.
+struct CoreCells<'v, V>(&'v mut V);
+
+impl<V: TileSink<Sample>> CellVisitor for CoreCells<'_, V> {
+    #[inline(always)]
+    fn cell<T: Admit>(&mut self, cell: PixelRect, tile: Option<T>, ops: &mut Ops) {
+        self.0.cell(cell, tile.map(CoreTile), ops);
+    }
+}
+
+/// A core tile as a frame tile.
+#[derive(Clone, Copy)]
+struct CoreTile<T>(T);
+
+impl<T: Admit> FrameTile<Sample> for CoreTile<T> {
+    #[inline(always)]
+    fn inside(&self, s: &Sample, ops: &mut Ops) -> bool {
+        // The renderer's admission of a sample by its tile (box, then predicate).
+        self.0.admit(s, ops)
+    }
+    fn ranges(&self) -> [(f64, f64); 3] {
         let r = |i: uvt_core::Interval| (i.lo() as f64 / 65536.0, i.hi() as f64 / 65536.0);
-        let b = b.uvt_box();
+        let b = self.0.enclosing_box();
         [r(b.u), r(b.v), r(b.t)]
     }
 }
@@ -127,7 +140,7 @@ pub struct Reference<'a> {
 
 impl FramePipeline for Reference<'_> {
     type Setup = reference::setup::RefSetup;
-    type Bounds = reference::bounds::RefBox;
+    type Sample = [f64; 5];
     fn setup(&self, i: usize, _: &mut Ops) -> SetupOut<Self::Setup> {
         match reference::setup::setup(&self.tris[i], self.vp) {
             Ok(s) => SetupOut::Visible(s, s.class),
@@ -137,18 +150,22 @@ impl FramePipeline for Reference<'_> {
     fn footprint(&self, s: &Self::Setup) -> PixelRect {
         s.footprint
     }
-    fn bounds(
+    /// Every cell of the region in raster order (no row spans), with Laine's f64 bounds.
+    fn walk<V: TileSink<[f64; 5]>>(
         &self,
         s: &Self::Setup,
-        _: &RowSpan,
-        cell: PixelRect,
+        region: PixelRect,
+        bt: u16,
         _: &mut Ops,
-    ) -> Option<Self::Bounds> {
-        reference::bounds::tile(s, cell)
+        ops: &mut Ops,
+        v: &mut V,
+    ) {
+        for cell in region.cells(bt) {
+            v.cell(cell, reference::bounds::tile(s, cell), ops);
+        }
     }
-    fn inside(&self, b: &Self::Bounds, idx: usize, _: &mut Ops) -> bool {
-        let e = &self.pattern.exact[idx];
-        b.contains(e[2], e[3], e[4])
+    fn sample(&self, idx: usize) -> &[f64; 5] {
+        &self.pattern.exact[idx]
     }
     fn uvt(&self, idx: usize) -> [f64; 3] {
         let e = &self.pattern.exact[idx];
@@ -169,7 +186,13 @@ impl FramePipeline for Reference<'_> {
     fn far(&self) -> f64 {
         f64::INFINITY
     }
-    fn ranges(&self, b: &Self::Bounds) -> [(f64, f64); 3] {
-        [b.u, b.v, b.t]
+}
+
+impl FrameTile<[f64; 5]> for reference::bounds::RefBox {
+    fn inside(&self, e: &[f64; 5], _: &mut Ops) -> bool {
+        self.contains(e[2], e[3], e[4])
+    }
+    fn ranges(&self) -> [(f64, f64); 3] {
+        [self.u, self.v, self.t]
     }
 }

@@ -6,7 +6,7 @@
 //! measured Cortex-M4F instructions per stage and per strategy on the bench rows' own triangles
 //! (`uvt auto-rule`, which writes [`rule`] from `host/report/m4_strategies.json`; its module
 //! docs give the totals): per class the least total among the tiers that keep the most bench
-//! rows at 90% of `best`'s sample-test efficiency without costing more than Laine 2011 on any
+//! rows at 92% of `best`'s sample-test efficiency without costing more than Laine 2011 on any
 //! row. [`tier`] holds the rule's types.
 //!
 //! **Why it is conservative.** For each triangle `auto` is exactly one of the registry's

@@ -186,6 +186,7 @@ fn run(cli: Cli) -> Result<()> {
             let rows = uvt_host::bench::ste_table::run_table_of(
                 cfg,
                 quick,
+                uvt_host::bench::ste_table::timing(quick),
                 &kinds,
                 &rows_sel,
                 tile_sweep,
