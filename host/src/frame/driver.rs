@@ -3,8 +3,10 @@
 //! parallel over bands of 8 rows (rayon), and measures it.
 //!
 //! Per triangle and band: bounds tiles aligned to the bounds-tile grid, clipped to footprint ∩
-//! band (identical cells to the core renderer's, since 1, 2, 4, 8 divide 8); samples inside the
-//! tile's intervals are tested; covered ones are depth-tested (strictly nearer wins, triangles in
+//! band (identical cells to the core renderer's, since 1, 2, 4, 8 divide 8), walked by the
+//! pipeline's own walk (the core's: `BoundsStrategy::prepare`, then `BoundsStrategy::walk`, so
+//! `auto`'s cells reach a per-sample loop compiled for the strategy it picked, as in the
+//! renderer); samples inside the tile's intervals are tested; covered ones are depth-tested (strictly nearer wins, triangles in
 //! submission order) and resolved with round-half-up like `TileBuffer::resolve`.
 //! Also counted: the bounding-box scan's tests (every sample of the footprint) and the oracle's —
 //! per bounds tile, the samples inside the tightest axis-aligned (u, v, t) box around the samples
