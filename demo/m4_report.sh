@@ -26,8 +26,10 @@
 # default configuration or planar-16-16-16-20), e.g. `--units /tmp/m4_units_planar.json
 # planar-16-16-16-20`; without PREC the output is the default configuration's, as before.
 # `m4_report.sh --strategies [OUT.json]` measures every bounds strategy of the bench on the bench
-# rows' own triangles (quick size; `uvt m4-workload`: every 2nd triangle of a game row, every
-# 16th of a dense row, the whole sample table, bounds tile 1): m4_stages built once per row with
+# rows' own triangles at both sizes (`uvt m4-workload`: every 2nd triangle of a quick game row,
+# every 16th of a quick dense row, every 26th and 256th at the full size, which has 13 and 16
+# times the triangles: about as many per row at either size; the whole sample table, bounds
+# tile 1): m4_stages built once per row with
 # the row linked in (UVT_M4_WORKLOAD), run on the Cortex-M4F under QEMU, and the same program on
 # the host, whose counts must equal the Cortex-M's line for line. Writes per row, strategy and
 # triangle class the counts (triangles, visible, tiles, admits, tested, covered, core ops) and the
@@ -42,7 +44,8 @@ json_items() { local n=$#; local i=0; for r in "$@"; do i=$((i + 1)); if [[ $i -
 publish() { mv "$1" "$2"; cat "$2"; exit 0; }
 sec() { printf '%d' "0x$(readelf -S -W "$1" | awk -v s="$2" '{for (i = 1; i <= NF; i++) if ($i == s) print $(i + 4)}')"; }
 # `m4_report.sh --zmax [OUT.json]` does the same on the occlusion rows (`uvt bench-zmax`: the game
-# street behind a near fence, static, motion, defocus, both; every 2nd triangle) and adds per row
+# street behind a near fence, static, motion, defocus, both; at both sizes, every 2nd triangle of
+# a quick row and every 26th of a full one) and adds per row
 # Zmax culling's own instructions (`uvt_demo::zmax_cost`: the depth floor per visible triangle,
 # the tile check per kept bounds tile, the register refresh per written sample at 16 spp) — the
 # "zmax" line of m4_stages, which `--strategies` records too. Writes OUT.json (default
@@ -50,10 +53,13 @@ sec() { printf '%d' "0x$(readelf -S -W "$1" | awk -v s="$2" '{for (i = 1; i <= N
 if [[ "${1:-}" == "--strategies" || "${1:-}" == "--zmax" ]]; then
   if [[ "$1" == "--zmax" ]]; then
     json=${2:-host/report/m4_zmax.json}
-    plan=("occluded static motion defocus both")
+    plan=("quick occluded static motion defocus both" "full occluded static motion defocus both")
   else
     json=${2:-host/report/m4_strategies.json}
-    plan=("game static motion motion2 defocus defocus2 both both2" "dense static motion motion2 defocus defocus2 both both2")
+    plan=()
+    for size in quick full; do
+      plan+=("$size game static motion motion2 defocus defocus2 both both2" "$size dense static motion motion2 defocus defocus2 both both2")
+    done
   fi
   elf=$tdir/thumbv7em-none-eabihf/release/examples/m4_stages
   cargo build -q --release -p uvt-host --bin uvt
@@ -62,13 +68,21 @@ if [[ "${1:-}" == "--strategies" || "${1:-}" == "--zmax" ]]; then
   trap 'rm -rf "$work"' EXIT
   rows=()
   for line in "${plan[@]}"; do
-    read -r scene row_names <<<"$line"
+    read -r size scene row_names <<<"$line"
+    # Every N-th triangle: the full size has 13 (game, occluded) and 16 (dense) times the
+    # quick size's triangles, so about as many per row are measured at either size.
     every=2
     [[ $scene == dense ]] && every=16
+    quick=(--quick)
+    if [[ $size == full ]]; then
+      every=$((every * 13))
+      [[ $scene == dense ]] && every=256
+      quick=()
+    fi
     for row in $row_names; do
-      echo "m4_report $1: $scene $row (every $every)" >&2
-      w=$work/$scene-$row.bin
-      "$tdir/release/uvt" m4-workload --scene "$scene" --row "$row" --quick --every "$every" --out "$w" >/dev/null
+      echo "m4_report $1: $scene $row, $size size (every $every)" >&2
+      w=$work/$size-$scene-$row.bin
+      "$tdir/release/uvt" m4-workload --scene "$scene" --row "$row" "${quick[@]}" --every "$every" --out "$w" >/dev/null
       host=$("$tdir/release/examples/m4_stages" "$w")
       UVT_M4_WORKLOAD=$w cargo build -q --release -p uvt-demo --example m4_stages --target thumbv7em-none-eabihf
       m4=$(timeout 1200 qemu-system-arm -machine mps2-an386 -cpu cortex-m4 -nographic -monitor none \
@@ -95,12 +109,12 @@ if [[ "${1:-}" == "--strategies" || "${1:-}" == "--zmax" ]]; then
           out = out (i > 2 ? ", " : "") "\"" kv[1] "\": " v }
         print out "}" }')
       [[ -n "$zline" ]] || { echo "m4_stages: no zmax line ($scene $row)" >&2; exit 1; }
-      rows+=("{\"scene\": \"$scene\", \"row\": \"$row\", \"every\": $every, \"stages\": [$lines], \"zmax\": $zline}")
+      rows+=("{\"scene\": \"$scene\", \"row\": \"$row\", \"size\": \"$size\", \"every\": $every, \"stages\": [$lines], \"zmax\": $zline}")
     done
   done
   {
     echo "{"
-    echo "  \"target\": \"Cortex-M4F (thumbv7em-none-eabihf, QEMU mps2-an386, -icount shift=0): m4_stages on each quick bench row's own triangles (every 'every'-th), default configuration, bounds tile 1; per strategy and triangle class: counts, core ops [setup, bounds, rows, predicate, sample] and instructions [setup, tile walk, predicate, sample test]; zmax: Zmax culling's calls [depth floor per visible triangle, tile check, register refresh at spp 16] and their instructions (SysTick laps, 40 instructions per tick)\","
+    echo "  \"target\": \"Cortex-M4F (thumbv7em-none-eabihf, QEMU mps2-an386, -icount shift=0): m4_stages on each bench row's own triangles at its size (every 'every'-th), default configuration, bounds tile 1; per strategy and triangle class: counts, core ops [setup, bounds, rows, predicate, sample] and instructions [setup, tile walk, predicate, sample test]; zmax: Zmax culling's calls [depth floor per visible triangle, tile check, register refresh at spp 16] and their instructions (SysTick laps, 40 instructions per tick)\","
     echo "  \"rows\": ["
     json_items "${rows[@]}"
     echo "  ]"

@@ -204,3 +204,89 @@ fn committed_rule_is_derived_from_the_committed_stage_costs() {
         assert_eq!(*r, d.tier);
     }
 }
+
+/// A set-up triangle (exact precision, every class) on a 200 × 200 viewport, and its
+/// footprint's area.
+fn set_up(t: &uvt_core::Triangle) -> (uvt_core::Setup, u32) {
+    let vp = Viewport::new(200, 200).unwrap();
+    match uvt_core::setup::setup::<Exact, uvt_core::Full>(t, vp, &mut Default::default()) {
+        uvt_core::setup::Outcome::Visible(s) => {
+            let f = s.footprint();
+            let fp = u32::from(f.x1 - f.x0) * u32::from(f.y1 - f.y0);
+            (s, fp)
+        }
+        o => panic!("not visible: {o:?}\n{}", dump(t)),
+    }
+}
+
+/// A 2 px right triangle at the viewport's centre (w = 1), moving `dx` in x over the shutter,
+/// with CoC `coc` (clip units: 0.2 spreads it ±20 px on the 200 px viewport); `x0` moves it.
+fn small(x0: f64, coc: f64, dx: f64) -> uvt_core::Triangle {
+    let at = |d: f64| {
+        [
+            [x0 + d, 0.0, 0.5, 1.0, coc],
+            [x0 + d + 0.02, 0.0, 0.5, 1.0, coc],
+            [x0 + d, 0.02, 0.5, 1.0, coc],
+        ]
+    };
+    tri(at(0.0), at(dx))
+}
+
+/// `Auto::area` ranks a triangle by its own extent: the footprint's area without defocus
+/// (static, motion: travel included), a few pixels for a 2 px triangle with a ±20 px CoC whose
+/// footprint is over 40 × 40, its travel's box (not the CoC's) when it also moves, the footprint
+/// side where the viewport clamps the footprint, and the footprint's area where a side is
+/// unbounded (the triangle crosses the camera plane).
+#[test]
+fn area_is_the_own_extent_without_the_coc() {
+    let (s, fp) = set_up(&small(0.0, 0.0, 0.0));
+    assert_eq!((Auto::area(&s), s.class()), (fp, uvt_core::Class::Static));
+    let (s, fp) = set_up(&small(0.0, 0.0, 0.3));
+    assert!(fp > 30 * 3, "travel footprint {fp}");
+    assert_eq!((Auto::area(&s), s.class()), (fp, uvt_core::Class::Motion));
+    let (s, fp) = set_up(&small(0.0, 0.2, 0.0));
+    let a = Auto::area(&s);
+    assert_eq!(s.class(), uvt_core::Class::Defocus);
+    assert!(
+        fp >= 40 * 40 && (1..=16).contains(&a),
+        "area {a}, footprint {fp}"
+    );
+    let (moving, travel) = set_up(&small(0.0, 0.0, 0.3));
+    let (s, fp) = set_up(&small(0.0, 0.2, 0.3));
+    let a = Auto::area(&s);
+    assert_eq!(moving.class(), uvt_core::Class::Motion);
+    assert!(
+        fp > 2 * travel && a.abs_diff(travel) <= travel / 4,
+        "area {a}, footprint {fp}, travel box {travel}"
+    );
+    // At the left edge (x0 = −1: column 0) the footprint is clamped to the viewport; the own
+    // side (about 3 px) is less, never more than the footprint's.
+    let (s, fp) = set_up(&small(-1.0, 0.2, 0.0));
+    let a = Auto::area(&s);
+    let f = s.footprint();
+    assert!(
+        f.x0 == 0 && a <= fp && (1..=16).contains(&a),
+        "area {a}, footprint {f:?}"
+    );
+    // A vertex behind the camera: the crossing sides are unbounded, so the footprint is taken.
+    let behind = tri(
+        [
+            [0.0, 0.0, 0.5, 1.0, 0.2],
+            [0.02, 0.0, 0.5, 1.0, 0.2],
+            [0.0, 0.02, 0.5, -0.5, 0.2],
+        ],
+        [
+            [0.0, 0.0, 0.5, 1.0, 0.2],
+            [0.02, 0.0, 0.5, 1.0, 0.2],
+            [0.0, 0.02, 0.5, -0.5, 0.2],
+        ],
+    );
+    let (s, fp) = set_up(&behind);
+    let open = s.axes().map(|b| b.lo.is_none() || b.hi.is_none());
+    println!(
+        "axes unbounded: {open:?}, area {}, footprint {fp}",
+        Auto::area(&s)
+    );
+    assert!(open.iter().all(|&o| o), "axes {:?}", s.axes());
+    assert_eq!(Auto::area(&s), fp);
+}

@@ -2,13 +2,15 @@
 //! from measured costs, and write it as `core/src/bounds/auto/rule.rs`.
 //!
 //! For every triangle of every row of the Cortex-M4F stage file
-//! ([`super::m4_stages`]: the quick bench rows' own triangles, every `every`-th) and every
-//! [`Pick`], the host runs the stage workload (`uvt_demo::workload::stage_one`: the same
-//! counts the Cortex-M4F saw) and models the triangle's instructions as its counts times the
-//! pick's per-call instructions for the triangle's class (pooled over the rows); it also counts
-//! the samples each pick tests and the samples `best` tests. Per class, the rule is the tier
-//! (Laine 2011 below one footprint area, the hull from it, hull+edge-t from a second, larger or
-//! equal area) with the least total over all rows **among the tiers that keep, on every row, the
+//! ([`super::m4_stages`]: the bench rows' own triangles at both sizes, every `every`-th: about
+//! as many triangles per row at either size) and every [`Pick`], the host runs the stage
+//! workload (`uvt_demo::workload::stage_one`: the same counts the Cortex-M4F saw) and models the
+//! triangle's instructions as its counts times the pick's per-call instructions for the
+//! triangle's class at the row's size (pooled over that size's rows: a tile or a sample costs
+//! differently at the two sizes); it also counts the samples each pick tests and the samples
+//! `best` tests. Per class, the rule is the tier
+//! (Laine 2011 below one area of the triangle's own extent, `Auto::area`, the hull from it,
+//! hull+edge-t from a second, larger or equal area) with the least total over all rows **among the tiers that keep, on every row, the
 //! class's sample-test efficiency at least [`STE_FLOOR`] of `best`'s** (tested samples ≤ `best`'s
 //! ÷ [`STE_FLOOR`]; covered samples are the same for every strategy). A row on which no tier
 //! reaches the floor is not held to it (the rule's source names it); if no tier holds every
@@ -18,13 +20,15 @@
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
 
-use uvt_core::bounds::auto::{Pick, Tier};
+use uvt_core::bounds::auto::{Auto, Pick, Tier};
 use uvt_core::config::class::Class;
+use uvt_core::setup::{setup, Outcome};
+use uvt_core::stats::Ops;
 use uvt_core::units::select::PipelineOf;
 use uvt_core::{with_strategy, DefaultPrecision, Full, Sample, SamplePattern};
 use uvt_demo::workload::{stage_one, Workload};
 
-use super::m4_stages::{M4Stages, PerCall};
+use super::m4_stages::{M4Stages, PerCall, Size};
 use super::workload::bench_workload;
 use crate::scene::builtin::{Bench, Blur};
 
@@ -34,7 +38,7 @@ use crate::scene::builtin::{Bench, Blur};
 /// motion, 0.900) measured 89.7% on the whole row.
 pub const STE_FLOOR: f64 = 0.92;
 
-/// One triangle: its class, row (index in the stage file), footprint area, modelled
+/// One triangle: its class, row (index in the stage file), area (`Auto::area`), modelled
 /// instructions and tested samples per pick, and the samples `best` tests.
 #[derive(Clone, Copy, Debug)]
 struct TriModel {
@@ -113,13 +117,16 @@ fn models(
                 let c = &t.cost;
                 m.cost[k] = pc.total(c.triangles, c.tiles, c.admits, c.tested);
                 m.tested[k] = c.tested as f64;
-                if let Some(fp) = t.footprint {
-                    m.area = u32::from(fp.x1 - fp.x0) * u32::from(fp.y1 - fp.y0);
-                }
             }
             Ok::<(), anyhow::Error>(())
         });
         done.ok_or_else(|| anyhow::anyhow!("{} is not a registry strategy", pick.name()))??;
+    }
+    // The area the rule ranks by: the core's own (`Auto::area`).
+    for (m, tri) in out.iter_mut().zip(&tris) {
+        if let Outcome::Visible(s) = setup::<P, Full>(tri, h.vp, &mut Ops::default()) {
+            m.area = Auto::area(&s);
+        }
     }
     let best = uvt_core::bounds::registry::best();
     let pipe = <PipelineOf<_, P, Full> as uvt_core::Pipeline>::new(best);
@@ -264,13 +271,14 @@ fn best_tier(tris: &mut [TriModel]) -> ClassRule {
 
 /// Derive the rule from the stage file `m4` (module docs).
 pub fn derive(m4: &M4Stages) -> anyhow::Result<[ClassRule; 4]> {
-    let per = m4.per_class();
+    let per = [Size::Quick, Size::Full].map(|z| m4.per_class(z));
     let mut by_class: [Vec<TriModel>; 4] = Default::default();
     for (k, r) in m4.rows.iter().enumerate() {
         let kind = Bench::from_name(&r.scene)?;
         let row = Blur::from_name(&r.row)?;
-        eprintln!("auto-rule: {} {}", r.scene, r.row);
-        let bytes = bench_workload(kind, row, true, r.every)?;
+        eprintln!("auto-rule: {} {} ({})", r.scene, r.row, r.size.name());
+        let per = &per[usize::from(!r.size.is_quick())];
+        let bytes = bench_workload(kind, row, r.size.is_quick(), r.every)?;
         let w = Workload::parse(&bytes).map_err(anyhow_of)?;
         for m in models(k, &w, &per)? {
             by_class[m.class].push(m);
@@ -279,7 +287,7 @@ pub fn derive(m4: &M4Stages) -> anyhow::Result<[ClassRule; 4]> {
     let names: Vec<String> = m4
         .rows
         .iter()
-        .map(|r| format!("{} {}", r.scene, r.row))
+        .map(|r| format!("{} {} ({})", r.scene, r.row, r.size.name()))
         .collect();
     Ok(by_class.map(|mut v| {
         let mut rule = best_tier(&mut v);
@@ -300,8 +308,8 @@ pub fn rule_source(rules: &[ClassRule; 4], from: &str) -> String {
         "//! The rule of the `auto` bounds strategy (`mod.rs`), per triangle class. Generated by\n\
          //! `uvt auto-rule` from\n\
          //! `{from}`\n\
-         //! (Cortex-M4F instructions per stage and strategy on the quick bench rows' own\n\
-         //! triangles); do not edit. Modelled instructions over those triangles, per class\n\
+         //! (Cortex-M4F instructions per stage and strategy on the bench rows' own triangles at\n\
+         //! both sizes); do not edit. Modelled instructions over those triangles, per class\n\
          //! (millions): with the rule, and with Laine 2011, hull, hull+edge-t alone.\n//!"
     );
     let _ = writeln!(

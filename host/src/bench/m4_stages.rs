@@ -1,5 +1,5 @@
 //! The Cortex-M4F instructions per stage of every bounds strategy on the bench rows' own
-//! triangles, as `bash demo/m4_report.sh --strategies` writes them
+//! triangles at both bench sizes ([`Size`]), as `bash demo/m4_report.sh --strategies` writes them
 //! (`host/report/m4_strategies.json`; the harness is `demo/examples/m4_stages`), and the
 //! per-call figures read from them: instructions per setup (per submitted triangle), per
 //! visited bounds tile (row spans and tile bounds), per sample put through the box and
@@ -127,6 +127,40 @@ impl ZmaxPerCall {
     }
 }
 
+/// The bench size a row was measured at. The instructions per call depend on it (a triangle's
+/// tiles, row spans and samples per tile change with the resolution, and so do `auto`'s picks),
+/// so a row's figures are read at the size of the run that uses them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Size {
+    /// the quick size (`--quick`: a quarter of the resolution and tessellation)
+    Quick,
+    /// the full size
+    Full,
+}
+
+impl Size {
+    /// The size of a run with `quick` set or not.
+    pub fn of(quick: bool) -> Size {
+        if quick {
+            Size::Quick
+        } else {
+            Size::Full
+        }
+    }
+    /// Whether it is the quick size.
+    pub fn is_quick(self) -> bool {
+        self == Size::Quick
+    }
+    /// `quick` or `full`, as in the file.
+    pub fn name(self) -> &'static str {
+        match self {
+            Size::Quick => "quick",
+            Size::Full => "full",
+        }
+    }
+}
+
 /// One bench row's lines.
 #[derive(Clone, Debug, Deserialize)]
 pub struct StageRow {
@@ -134,7 +168,9 @@ pub struct StageRow {
     pub scene: String,
     /// row name (`Blur::name`)
     pub row: String,
-    /// every `every`-th triangle of the quick row
+    /// the bench size of the row's triangles
+    pub size: Size,
+    /// every `every`-th triangle of the row at that size
     pub every: u32,
     /// per strategy and class
     pub stages: Vec<StageLine>,
@@ -160,15 +196,22 @@ impl M4Stages {
         serde_json::from_str(&text).with_context(|| format!("parsing {}", path.display()))
     }
 
-    /// The lines of row (`scene`, `row`).
-    pub fn row(&self, scene: &str, row: &str) -> Option<&StageRow> {
-        self.rows.iter().find(|r| r.scene == scene && r.row == row)
+    /// The lines of row (`scene`, `row`) measured at `size`.
+    pub fn row(&self, scene: &str, row: &str, size: Size) -> Option<&StageRow> {
+        self.rows
+            .iter()
+            .find(|r| r.scene == scene && r.row == row && r.size == size)
     }
 
-    /// Per-call figures of every (strategy, class) pooled over every row.
-    pub fn per_class(&self) -> BTreeMap<(String, String), PerCall> {
+    /// Per-call figures of every (strategy, class) pooled over the rows measured at `size`.
+    pub fn per_class(&self, size: Size) -> BTreeMap<(String, String), PerCall> {
         let mut m: BTreeMap<(String, String), StageSum> = BTreeMap::new();
-        for l in self.rows.iter().flat_map(|r| &r.stages) {
+        for l in self
+            .rows
+            .iter()
+            .filter(|r| r.size == size)
+            .flat_map(|r| &r.stages)
+        {
             m.entry((l.strategy.clone(), l.class.clone()))
                 .or_default()
                 .add(l);
@@ -178,11 +221,17 @@ impl M4Stages {
 }
 
 impl M4Stages {
-    /// Per-call figures of `strategy` pooled over every row and class (for a scene that is not
-    /// a bench row).
+    /// Per-call figures of `strategy` pooled over every class of the quick rows (for a scene
+    /// that is not a bench row: `uvt fit`'s search and `uvt converge`, whose scenes are of the
+    /// quick rows' kind of size).
     pub fn pooled(&self, strategy: &str) -> Option<PerCall> {
         let mut s = StageSum::default();
-        for l in self.rows.iter().flat_map(|r| &r.stages) {
+        for l in self
+            .rows
+            .iter()
+            .filter(|r| r.size.is_quick())
+            .flat_map(|r| &r.stages)
+        {
             if l.strategy == strategy {
                 s.add(l);
             }
@@ -283,15 +332,18 @@ mod tests {
     use super::*;
     use crate::bench::strategy::strategies;
 
-    /// The occlusion rows' file holds every row `uvt bench-zmax` reads, each with every bench
-    /// strategy and Zmax's calls, every per-call figure measured (non-zero).
+    /// The occlusion rows' file holds every row `uvt bench-zmax` reads at both sizes, each with
+    /// every bench strategy and Zmax's calls, every per-call figure measured (non-zero).
     #[test]
     fn occlusion_rows_have_every_figure_bench_zmax_reads() {
         let z = committed_zmax().expect("m4_zmax.json parses");
-        for row in ["static", "motion", "defocus", "both"] {
+        for (row, size) in ["static", "motion", "defocus", "both"]
+            .into_iter()
+            .flat_map(|r| [(r, Size::Quick), (r, Size::Full)])
+        {
             let r = z
-                .row("occluded", row)
-                .unwrap_or_else(|| panic!("row occluded {row}"));
+                .row("occluded", row, size)
+                .unwrap_or_else(|| panic!("row occluded {row} ({})", size.name()));
             let zc = r
                 .zmax_per_call()
                 .unwrap_or_else(|| panic!("zmax line, occluded {row}"));
@@ -312,5 +364,31 @@ mod tests {
             }
         }
         assert!(z.zmax_pooled().is_some());
+    }
+
+    /// The strategies' file holds every bench row at both sizes with every bench strategy, so
+    /// `uvt bench-ste` reads each row's own figures at the size it runs.
+    #[test]
+    fn every_bench_row_is_measured_at_both_sizes() {
+        use crate::scene::builtin::{Bench, Blur};
+        let f = committed().expect("m4_strategies.json parses");
+        for kind in [Bench::Game, Bench::Dense] {
+            for row in Blur::ALL {
+                for size in [Size::Quick, Size::Full] {
+                    let r = f.row(kind.name(), &row.name(), size).unwrap_or_else(|| {
+                        panic!("{} {} ({})", kind.name(), row.name(), size.name())
+                    });
+                    for name in strategies() {
+                        assert!(
+                            r.per_call(name).is_some_and(|pc| pc.setup > 0.0),
+                            "{name} on {} {} ({})",
+                            kind.name(),
+                            row.name(),
+                            size.name()
+                        );
+                    }
+                }
+            }
+        }
     }
 }

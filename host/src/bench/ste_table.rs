@@ -31,7 +31,7 @@ use crate::oracle::search::Effort;
 use crate::scene::builtin::{bench_scene, Bench, Blur};
 use crate::scene::pattern::Pattern;
 
-use super::m4_stages::{per, M4Stages};
+use super::m4_stages::{per, M4Stages, Size};
 use super::strategy::{run_strategy_at, strategies, StratResult};
 
 /// The two efforts of the axis-aligned limit (dense points per pixel, face-search proposals per
@@ -306,7 +306,7 @@ fn rows_at<P: Precision + Sync>(
             };
             let (mut strategies, rounds) = at(1, timing);
             // The whole cost: this run's counts times the row's instructions per call.
-            let stage_row = stages.and_then(|m| m.row(kind.name(), &row.name()));
+            let stage_row = stages.and_then(|m| m.row(kind.name(), &row.name(), Size::of(quick)));
             for x in &mut strategies {
                 x.m4 = stage_row
                     .and_then(|r| r.per_call(x.name))
@@ -567,7 +567,7 @@ pub fn whole_cost_md(rows: &[BenchRow]) -> String {
     let laine = Laine2011.name();
     let auto = uvt_core::bounds::auto::Auto::new().name();
     let mut s = String::from(
-        "\nWhole cost per strategy (bounds tile 1×1): Cortex-M4F instructions per covered sample, setup included (this run's counts of triangles, tiles, samples through the box and predicate and sample tests, times the instructions per call measured on the quick row's own triangles by `bash demo/m4_report.sh --strategies`, host/report/m4_strategies.json) / core wall ms; cheapest = the fixed strategy (every one but auto) with the fewest instructions; ρ = Spearman rank correlation over the row's strategies of whole instructions and wall ms (\"ops ρ\": of the cost table's ops per covered sample without setup, and wall ms)\n\n| Scene |"
+        "\nWhole cost per strategy (bounds tile 1×1): Cortex-M4F instructions per covered sample, setup included (this run's counts of triangles, tiles, samples through the box and predicate and sample tests, times the instructions per call measured on the row's own triangles at this size by `bash demo/m4_report.sh --strategies`, host/report/m4_strategies.json) / core wall ms; cheapest = the fixed strategy (every one but auto) with the fewest instructions; ρ = Spearman rank correlation over the row's strategies of whole instructions and wall ms (\"ops ρ\": of the cost table's ops per covered sample without setup, and wall ms)\n\n| Scene |"
     );
     for n in strategies() {
         s += &format!(" {n} |");

@@ -15,7 +15,7 @@ use crate::frame::driver::RunOpts;
 use crate::scene::builtin::{bench_scene, Bench, Blur};
 use crate::scene::pattern::Pattern;
 
-use super::m4_stages::{committed, committed_zmax, PerCall, ZmaxPerCall};
+use super::m4_stages::{committed, committed_zmax, PerCall, Size, ZmaxPerCall};
 use super::strategy::{run_strategy_at, strategies, StratResult};
 
 /// The rows: the occluded street and the open street, static, motion, defocus and both.
@@ -81,17 +81,18 @@ pub fn whole_ops(r: &StratResult) -> u64 {
     s.ops_setup + s.ops_bounds + s.ops_rows + s.ops_predicate + s.ops_sample + s.ops_zmax
 }
 
-/// The per-call Cortex-M4F figures of `name` on row (`kind`, `row`) and Zmax's: the row's own
-/// where measured (the occlusion rows in `m4_zmax.json`, the game rows in `m4_strategies.json`),
+/// The per-call Cortex-M4F figures of `name` on row (`kind`, `row`) at `size` and Zmax's: the
+/// row's own at that size where measured (the occlusion rows in `m4_zmax.json`, the game rows in `m4_strategies.json`),
 /// Zmax's pooled over the occlusion rows where the row has none.
-fn per_call(kind: Bench, row: Blur, name: &str) -> Result<(PerCall, ZmaxPerCall)> {
+fn per_call(kind: Bench, row: Blur, size: Size, name: &str) -> Result<(PerCall, ZmaxPerCall)> {
     let (z, file) = (committed_zmax()?, committed()?);
     let src = if kind == Bench::Occluded { z } else { file };
-    let Some(r) = src.row(kind.name(), &row.name()) else {
+    let Some(r) = src.row(kind.name(), &row.name(), size) else {
         bail!(
-            "no Cortex-M4F figures for row {} {}",
+            "no Cortex-M4F figures for row {} {} at the {} size",
             kind.name(),
-            row.name()
+            row.name(),
+            size.name()
         );
     };
     let (Some(pc), Some(zc)) = (
@@ -150,7 +151,7 @@ pub fn run_rows<P: Precision + Sync>(quick: bool) -> Result<Vec<ZmaxRow>> {
             let (Some((mut off, a)), Some((mut on, b))) = (best(false), best(true)) else {
                 bail!("{name}: not a registry strategy");
             };
-            let pc = per_call(kind, row, name)?;
+            let pc = per_call(kind, row, Size::of(quick), name)?;
             off.m4 = Some(m4_whole(&off, &pc, false));
             on.m4 = Some(m4_whole(&on, &pc, true));
             if a != b {

@@ -1,13 +1,28 @@
 //! `auto`: a bounds strategy chosen per triangle ([`Auto`]). Setup already knows the triangle's
-//! class and its footprint; the rule ([`RULE`], one [`Tier`] per class) keeps Laine 2011 (the
-//! cheapest setup) below a footprint area and takes heavier strategies with cheaper tiles,
-//! predicates and fewer sample tests ([`Pick`]) from larger areas on: the hull from one area,
-//! hull+edge-t from another. The rule is derived from
-//! measured Cortex-M4F instructions per stage and per strategy on the bench rows' own triangles
-//! (`uvt auto-rule`, which writes [`rule`] from `host/report/m4_strategies.json`; its module
-//! docs give the totals): per class the least total among the tiers that keep the most bench
-//! rows at 92% of `best`'s sample-test efficiency without costing more than Laine 2011 on any
-//! row. [`tier`] holds the rule's types.
+//! class, its footprint and its boxes at the two lens corners; the rule ([`RULE`], one [`Tier`]
+//! per class) keeps Laine 2011 (the cheapest setup) below an area of the triangle's own extent
+//! ([`Auto::area`]) and takes heavier strategies with cheaper tiles, predicates and fewer sample
+//! tests ([`Pick`]) from larger areas on: the hull from one area, hull+edge-t from another.
+//!
+//! **Why the own extent, not the footprint.** Per axis [`Auto::area`] takes the least of the
+//! footprint's side and the sides of the boxes at the two lens corners: the box at one lens
+//! corner holds the triangle at both shutter ends shifted by its CoC, so its side is the
+//! triangle's own extent and its screen travel, without the CoC's spread (with no defocus both
+//! boxes are the footprint, so static and motion triangles are ranked by their footprint). What
+//! the hull culls of a defocused triangle is, to first order, its own box minus itself: the
+//! hull of the triangle grown by the square lens, `T ⊕ S`, has area `A(T) + 2c·(w + h) + 4c²`
+//! against the box's `(w + 2c)·(h + 2c)`, a difference of `w·h − A(T)` whatever the CoC `c`;
+//! the CoC only adds tiles the hull's faces must be tested on. A tiny triangle with a large CoC
+//! (a dense scene out of focus, more so at a higher resolution, where the CoC spans more
+//! pixels) has a large footprint and nothing for the hull to cull: by its footprint the rule
+//! took the hull there and paid for it (measured: 1.126× Laine 2011's instructions on the full
+//! dense defocus ×2 row), by its own extent it does not.
+//!
+//! The rule is derived from measured Cortex-M4F instructions per stage and per strategy on the
+//! bench rows' own triangles at both sizes (`uvt auto-rule`, which writes [`rule`] from
+//! `host/report/m4_strategies.json`; its module docs give the totals): per class the least total
+//! among the tiers that keep the most bench rows at 92% of `best`'s sample-test efficiency
+//! without costing more than Laine 2011 on any row. [`tier`] holds the rule's types.
 //!
 //! **Why it is conservative.** For each triangle `auto` is exactly one of the registry's
 //! strategies — its coefficients, row spans, tile bounds and predicate are that strategy's,
@@ -15,8 +30,9 @@
 //! conservative (the proof at the top of its file). A sample the sample test covers is therefore
 //! never outside its tile's bounds, whatever the rule picks; the rule decides the cost only.
 //!
-//! **Cost.** The choice adds 4 operations to setup (the footprint's area: one multiply; two
-//! compares with the class's thresholds; one select); per tile and per sample nothing beyond the
+//! **Cost.** The choice adds [`PICK_OPS`] operations to setup (per axis and lens corner two
+//! floors, a subtract and an add; per axis two minima; the area's multiply; two compares with
+//! the class's thresholds; one select); per tile and per sample nothing beyond the
 //! picked strategy's own work: the renderer walks a triangle's tiles with the picked strategy's
 //! own walk and tile type ([`BoundsStrategy::walk`]), so its per-tile and per-sample code is
 //! that strategy's, with one branch per walked region.
@@ -38,6 +54,7 @@ use crate::bounds::strategy::{
 };
 use crate::config::unit::Unit;
 use crate::input::PixelRect;
+use crate::setup::boxes::floor_px;
 use crate::setup::Setup;
 use crate::stats::Ops;
 
@@ -98,8 +115,9 @@ impl TileBounds for AutoTile {
     }
 }
 
-/// The choice's setup operations per triangle (module docs, **Cost**).
-pub const PICK_OPS: u64 = 4;
+/// The choice's setup operations per triangle (module docs, **Cost**): 2 axes × (2 corners × 4
+/// + 2) + 4.
+pub const PICK_OPS: u64 = 24;
 
 const HULL: HullCull<Laine2011> = hull();
 const HULL_EDGE: HullCull<EdgeTime<Laine2011>> = hull_edge();
@@ -114,15 +132,43 @@ impl Auto {
     pub const fn with_rule(rule: [Tier; 4]) -> Auto {
         Auto { rule }
     }
-    /// What the rule picks for a set-up triangle (its class's tier at its footprint's area).
+    /// What the rule picks for a set-up triangle (its class's tier at [`Auto::area`]).
     pub fn pick(&self, setup: &Setup) -> Pick {
-        let fp = setup.footprint;
-        // Footprint sides ≤ 2048 (viewport): the area ≤ 2^22.
-        let area = u32::from(fp.x1.saturating_sub(fp.x0))
-            .saturating_mul(u32::from(fp.y1.saturating_sub(fp.y0)));
         self.rule
             .get(setup.class.index())
-            .map_or(Pick::Laine, |t| t.pick(area))
+            .map_or(Pick::Laine, |t| t.pick(Auto::area(setup)))
+    }
+    /// The area the rule ranks a triangle by, in pixels: per axis the least of the footprint's
+    /// side and the sides of the boxes at the two lens corners (module docs), multiplied. A
+    /// box's side is counted as the footprint counts it (`floor(hi) − floor(lo) + 1` pixels);
+    /// an axis with a side unbounded (a camera-plane crossing) takes the footprint's side.
+    /// The footprint's sides are ≤ 2048 (the viewport), so the area is ≤ 2^22.
+    pub fn area(setup: &Setup) -> u32 {
+        let fp = setup.footprint;
+        let bnd = setup.prec.bnd();
+        let sides = [fp.x1.saturating_sub(fp.x0), fp.y1.saturating_sub(fp.y0)];
+        let [w, h] = [0, 1].map(|k| {
+            let full = sides.get(k).copied().unwrap_or(0);
+            let own = setup.axes.get(k).and_then(|b| match (b.lo, b.hi) {
+                // Raw coordinates |X| < 2^57 (formats.rs): floors, difference and + 1 exact.
+                (Some(lo), Some(hi)) => lo
+                    .iter()
+                    .zip(&hi)
+                    .map(|(l, h)| {
+                        floor_px(*h, bnd)
+                            .saturating_sub(floor_px(*l, bnd))
+                            .saturating_add(1)
+                    })
+                    .min(),
+                _ => None,
+            });
+            // ≤ the footprint's side ≤ 2048: the conversion is exact; a side < 1 cannot occur
+            // (hi ≥ lo at each corner) and is taken as 0.
+            own.map_or(full, |o| {
+                u16::try_from(o.clamp(0, i64::from(full))).unwrap_or(full)
+            })
+        });
+        u32::from(w).saturating_mul(u32::from(h))
     }
 }
 
