@@ -280,7 +280,7 @@ pub fn derive(m4: &M4Stages) -> anyhow::Result<[ClassRule; 4]> {
         let per = &per[usize::from(!r.size.is_quick())];
         let bytes = bench_workload(kind, row, r.size.is_quick(), r.every)?;
         let w = Workload::parse(&bytes).map_err(anyhow_of)?;
-        for m in models(k, &w, &per)? {
+        for m in models(k, &w, per)? {
             by_class[m.class].push(m);
         }
     }

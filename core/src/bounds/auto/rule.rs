@@ -7,10 +7,10 @@
 //!
 //! | class | triangles | rule | with the rule | laine2011 | hull | hull+edge-t |
 //! |---|---|---|---|---|---|---|
-//! | static | 9337 | hull from 22 px | 806.5 | 1087.1 | 942.9 | 949.3 |
-//! | motion | 18674 | hull from 64 px, hull+edge-t from 279 px | 4252.0 | 4773.6 | 4330.6 | 4885.9 |
+//! | static | 9337 | hull from 22 px | 806.6 | 1087.1 | 942.9 | 949.3 |
+//! | motion | 18674 | hull from 64 px, hull+edge-t from 279 px | 4252.1 | 4773.7 | 4330.7 | 4885.9 |
 //! | defocus | 18674 | hull from 64 px | 2649.6 | 3101.2 | 3392.4 | 3429.8 |
-//! | motion+defocus | 18674 | hull from 150 px | 7542.0 | 8319.9 | 8571.8 | 9690.5 |
+//! | motion+defocus | 18674 | hull from 150 px | 7542.1 | 8320.0 | 8571.8 | 9690.6 |
 //!
 //! Per class and row, with the rule: modelled instructions ÷ Laine 2011's, and sample-test
 //! efficiency ÷ `best`'s (held: at least 92% of `best`'s).

@@ -61,7 +61,9 @@ pub fn inventory(name: &str, cfg: &Config) -> Option<Inventory> {
     Some(inv)
 }
 
-/// `Auto::pick`: the footprint's area and the tier compare, per triangle, every class.
+/// `Auto::pick`: the own extent's area (`Auto::area`) and the tier compare, per triangle, every
+/// class. The lens-corner box ends are counted at their 64-bit container (floored to pixels,
+/// they are not clamped to the viewport); the least side is then ≤ the footprint's.
 fn auto_pick(inv: &mut Inventory) {
     let side = ext().bits();
     let area = side.saturating_mul(2);
@@ -75,7 +77,21 @@ fn auto_pick(inv: &mut Inventory) {
     );
     inv.op(
         tri,
-        "footprint area",
+        "own sides `⌊hi⌋ − ⌊lo⌋ + 1`, 2 axes × 2 lens corners",
+        OpKind::Add { bits: 64 },
+        2 * 2 * 2,
+        Classes::ALL,
+    );
+    inv.op(
+        tri,
+        "least side per axis (2 corners, footprint)",
+        OpKind::Cmp { bits: 64 },
+        2 * 2,
+        Classes::ALL,
+    );
+    inv.op(
+        tri,
+        "own extent's area",
         OpKind::Mul { a: side, b: side },
         1,
         Classes::ALL,
