@@ -24,15 +24,15 @@ impl Pick {
     }
 }
 
-/// The rule of one class, by footprint area (pixels): hull+edge-t from `edge_from` on, else the
+/// The rule of one class, by the area `Auto::area` ranks a triangle by (its own extent, pixels): hull+edge-t from `edge_from` on, else the
 /// hull from `hull_from` on, else Laine 2011. `u32::MAX` turns a pick off (`edge_from =
 /// u32::MAX`: never hull+edge-t; both: always Laine 2011). Every pair of values is a rule
 /// (`edge_from ≤ hull_from` leaves the hull out).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Tier {
-    /// the least footprint area that gets the hull
+    /// the least area that gets the hull
     pub hull_from: u32,
-    /// the least footprint area that gets hull+edge-t
+    /// the least area that gets hull+edge-t
     pub edge_from: u32,
 }
 
