@@ -75,7 +75,7 @@ if [[ "${1:-}" == "--strategies" || "${1:-}" == "--zmax" ]]; then
     [[ $scene == dense ]] && every=16
     quick=(--quick)
     if [[ $size == full ]]; then
-      every=$((every * 13))
+      every=26
       [[ $scene == dense ]] && every=256
       quick=()
     fi

@@ -8,9 +8,9 @@
 //! triangle's instructions as its counts times the pick's per-call instructions for the
 //! triangle's class at the row's size (pooled over that size's rows: a tile or a sample costs
 //! differently at the two sizes); it also counts the samples each pick tests and the samples
-//! `best` tests. Per class, the rule is the tier
-//! (Laine 2011 below one area of the triangle's own extent, `Auto::area`, the hull from it,
-//! hull+edge-t from a second, larger or equal area) with the least total over all rows **among the tiers that keep, on every row, the
+//! `best` tests. Per class, the rule is the tier (Laine 2011 below one area of the triangle's
+//! own extent, `Auto::area`, the hull from it, hull+edge-t from a second, larger or equal area)
+//! with the least total over all rows **among the tiers that keep, on every row, the
 //! class's sample-test efficiency at least [`STE_FLOOR`] of `best`'s** (tested samples ≤ `best`'s
 //! ÷ [`STE_FLOOR`]; covered samples are the same for every strategy). A row on which no tier
 //! reaches the floor is not held to it (the rule's source names it); if no tier holds every
