@@ -202,22 +202,6 @@ impl M4Stages {
             .iter()
             .find(|r| r.scene == scene && r.row == row && r.size == size)
     }
-
-    /// Per-call figures of every (strategy, class) pooled over the rows measured at `size`.
-    pub fn per_class(&self, size: Size) -> BTreeMap<(String, String), PerCall> {
-        let mut m: BTreeMap<(String, String), StageSum> = BTreeMap::new();
-        for l in self
-            .rows
-            .iter()
-            .filter(|r| r.size == size)
-            .flat_map(|r| &r.stages)
-        {
-            m.entry((l.strategy.clone(), l.class.clone()))
-                .or_default()
-                .add(l);
-        }
-        m.into_iter().map(|(k, s)| (k, s.per_call())).collect()
-    }
 }
 
 impl M4Stages {
@@ -262,6 +246,17 @@ impl StageRow {
     /// Zmax's per-call figures of this row, if it has them.
     pub fn zmax_per_call(&self) -> Option<ZmaxPerCall> {
         self.zmax.map(|z| z.per_call())
+    }
+
+    /// Per-call figures of every (strategy, class) on this row.
+    pub fn per_class(&self) -> BTreeMap<(String, String), PerCall> {
+        let mut m: BTreeMap<(String, String), StageSum> = BTreeMap::new();
+        for l in &self.stages {
+            m.entry((l.strategy.clone(), l.class.clone()))
+                .or_default()
+                .add(l);
+        }
+        m.into_iter().map(|(k, s)| (k, s.per_call())).collect()
     }
 
     /// Per-call figures of `strategy` on this row, pooled over its classes.
