@@ -205,7 +205,10 @@ fn best_tier(tris: &mut [TriModel]) -> ClassRule {
         .iter()
         .map(|p| p.iter().map(|v| v[n]).fold(f64::INFINITY, f64::min))
         .collect();
-    let cap: Vec<f64> = cheapest.iter().map(|&c| COST_CAP * c * (1.0 + 1e-9)).collect();
+    let cap: Vec<f64> = cheapest
+        .iter()
+        .map(|&c| COST_CAP * c * (1.0 + 1e-9))
+        .collect();
     let allowed: Vec<f64> = rows
         .iter()
         .map(|&r| {
@@ -494,5 +497,32 @@ mod tests {
         assert_eq!(r.tier, LEAST_TOTAL, "{r:?}");
         assert!(!r.rows[0].held && r.rows[1].held, "{r:?}");
         assert!(r.rows[1].cost_vs_laine <= 1.0, "{r:?}");
+    }
+
+    #[test]
+    fn the_cost_cap_comes_before_the_floor() {
+        // The hull costs half Laine 2011's; hull+edge-t alone holds the floor (50 tested, best's
+        // 50) but costs 1.2× the hull's, over COST_CAP: the hull everywhere, the floor not held.
+        let mut t: Vec<TriModel> = (1..=3)
+            .map(|k| tri(0, 10 * k, [100.0, 50.0, 60.0], [100.0, 80.0, 50.0], 50.0))
+            .collect();
+        let r = best_tier(&mut t);
+        assert_eq!(
+            r.tier,
+            Tier {
+                hull_from: 10,
+                edge_from: u32::MAX
+            },
+            "{r:?}"
+        );
+        assert!(r.rows[0].within && !r.rows[0].held, "{r:?}");
+        assert!((r.rows[0].cost_vs_cheapest - 1.0).abs() < 1e-12, "{r:?}");
+        // Within the cap (hull+edge-t at 1.02× the hull's), the floor takes hull+edge-t.
+        for x in &mut t {
+            x.cost[2] = 51.0;
+        }
+        let r = best_tier(&mut t);
+        assert_eq!(r.tier.edge_from, 10, "{r:?}");
+        assert!(r.rows[0].within && r.rows[0].held, "{r:?}");
     }
 }
