@@ -19,10 +19,11 @@
 //! dense defocus ×2 row), by its own extent it does not.
 //!
 //! The rule is derived from measured Cortex-M4F instructions per stage and per strategy on the
-//! bench rows' own triangles at both sizes (`uvt auto-rule`, which writes [`rule`] from
-//! `host/report/m4_strategies.json`; its module docs give the totals): per class the least total
-//! among the tiers that keep the most bench rows at 92% of `best`'s sample-test efficiency
-//! without costing more than Laine 2011 on any row. [`tier`] holds the rule's types.
+//! bench rows' own triangles at both sizes, each row priced with its own figures (`uvt
+//! auto-rule`, which writes [`rule`] from `host/report/m4_strategies.json`; its module docs
+//! give the totals): per class the tier that keeps the most rows within 1.03× the row's
+//! cheapest candidate, then the most at 92% of `best`'s sample-test efficiency, then the most
+//! at most Laine 2011's, then the least total. [`tier`] holds the rule's types.
 //!
 //! **Why it is conservative.** For each triangle `auto` is exactly one of the registry's
 //! strategies — its coefficients, row spans, tile bounds and predicate are that strategy's,
