@@ -409,7 +409,7 @@ mod tests {
                     for (stage, insn, ops) in stages {
                         assert!(
                             insn >= ops,
-                            "{} {} ({}) {} {}: {stage} {insn} instructions < {ops} ops",
+                            "{} {} ({}) {} {}: {stage} {insn} ({insn:#x}) instructions < {ops} ({ops:#x}) ops",
                             r.scene,
                             r.row,
                             r.size.name(),
