@@ -27,6 +27,13 @@
 //! holding them to it would take the hull off the game defocus rows' large triangles. The
 //! rule's source names every row with its cost ratios, and whether it is within the cap and
 //! holds the floor.
+//!
+//! Beside each row it gives what no rule can beat, with hindsight over every fixed strategy
+//! ([`super::hindsight`], on the same models): every triangle on its cheapest, ÷ Laine 2011's
+//! alone — where that is 1.000, no per-triangle choice of these strategies is below Laine 2011
+//! on the row — and the most sample-test efficiency ÷ `best`'s any per-triangle choice reaches
+//! within [`GOAL_CAP`] × the row's cheapest fixed strategy alone — where that is under 0.90, the
+//! bench's efficiency goal and its cost goal cannot both hold on the row.
 
 use std::collections::BTreeMap;
 use std::fmt::Write as _;
@@ -36,10 +43,12 @@ use uvt_core::config::class::Class;
 use uvt_core::setup::{setup, Outcome};
 use uvt_core::stats::Ops;
 use uvt_core::units::select::PipelineOf;
-use uvt_core::{with_strategy, DefaultPrecision, Full, Sample, SamplePattern};
+use uvt_core::{with_strategy, BoundsStrategy, DefaultPrecision, Full, Sample, SamplePattern};
 use uvt_demo::workload::{stage_one, Workload};
 
+use super::hindsight::{least_cost, least_tested_within, Choice};
 use super::m4_stages::{M4Stages, PerCall};
+use super::strategy::fixed;
 use super::workload::bench_workload;
 use crate::scene::builtin::{Bench, Blur};
 
@@ -54,15 +63,21 @@ pub const STE_FLOOR: f64 = 0.92;
 /// of a row with the row's average per-call figures, and `auto` adds its own pick to each setup.
 pub const COST_CAP: f64 = 1.03;
 
+/// The bench's goal for `auto`'s whole instructions on every row: at most 1.05 × the cheapest
+/// fixed strategy's; the hindsight bounds are taken at it (module docs).
+pub const GOAL_CAP: f64 = 1.05;
+
 /// One triangle: its class, row (index in the stage file), area (`Auto::area`), modelled
-/// instructions and tested samples per pick, and the samples `best` tests.
-#[derive(Clone, Copy, Debug)]
+/// instructions and tested samples per pick and per fixed strategy
+/// ([`super::strategy::fixed`] order), and the samples `best` tests.
+#[derive(Clone, Debug)]
 struct TriModel {
     class: usize,
     row: usize,
     area: u32,
     cost: [f64; 3],
     tested: [f64; 3],
+    fixed: Vec<Choice>,
     best_tested: f64,
 }
 
@@ -96,6 +111,13 @@ pub struct RowFit {
     pub ste_vs_best: f64,
     /// whether the rule keeps [`STE_FLOOR`] of `best`'s efficiency on the row
     pub held: bool,
+    /// with hindsight, every triangle on its cheapest fixed strategy: modelled instructions ÷
+    /// Laine 2011's alone (no per-triangle choice costs less)
+    pub least_vs_laine: f64,
+    /// with hindsight, the most sample-test efficiency ÷ `best`'s of any per-triangle choice of
+    /// fixed strategies within [`GOAL_CAP`] × the row's cheapest fixed strategy alone (an upper
+    /// bound: [`least_tested_within`]; `None` if a triangle had no figures)
+    pub most_ste_vs_best: Option<f64>,
 }
 
 /// Per-triangle models of one workload.
@@ -122,38 +144,50 @@ fn models(
             area: 0,
             cost: [0.0; 3],
             tested: [0.0; 3],
+            fixed: Vec::new(),
             best_tested: 0.0,
         })
         .collect();
-    for (k, pick) in Pick::ALL.iter().enumerate() {
-        let done = with_strategy!(pick.name(), s => {
+    let best_name = uvt_core::bounds::registry::best().name();
+    for name in fixed() {
+        let done = with_strategy!(name, s => {
             let pipe = <PipelineOf<_, P, Full> as uvt_core::Pipeline>::new(s);
             for (m, tri) in out.iter_mut().zip(&tris) {
                 let t = stage_one(&pipe, tri, h.vp, bt, &pattern, &mut || 0);
                 let class = Class::ALL[m.class].name().to_string();
                 let pc = per
-                    .get(&(pick.name().to_string(), class.clone()))
-                    .ok_or_else(|| anyhow::anyhow!("no figures for {} on class {class}", pick.name()))?;
+                    .get(&(name.to_string(), class.clone()))
+                    .ok_or_else(|| anyhow::anyhow!("no figures for {name} on class {class}"))?;
                 let c = &t.cost;
-                m.cost[k] = pc.total(c.triangles, c.tiles, c.admits, c.tested);
-                m.tested[k] = c.tested as f64;
+                m.fixed.push(Choice {
+                    cost: pc.total(c.triangles, c.tiles, c.admits, c.tested),
+                    tested: c.tested as f64,
+                });
             }
             Ok::<(), anyhow::Error>(())
         });
-        done.ok_or_else(|| anyhow::anyhow!("{} is not a registry strategy", pick.name()))??;
+        done.ok_or_else(|| anyhow::anyhow!("{name} is not a registry strategy"))??;
+    }
+    let at = |n: &str| {
+        fixed()
+            .position(|f| f == n)
+            .ok_or_else(|| anyhow::anyhow!("{n} is not a fixed strategy"))
+    };
+    let picks = Pick::ALL.map(|p| at(p.name()));
+    let best_at = at(best_name)?;
+    for m in &mut out {
+        for (k, p) in picks.iter().enumerate() {
+            let x = m.fixed[*p.as_ref().map_err(|e| anyhow::anyhow!("{e}"))?];
+            m.cost[k] = x.cost;
+            m.tested[k] = x.tested;
+        }
+        m.best_tested = m.fixed[best_at].tested;
     }
     // The area the rule ranks by: the core's own (`Auto::area`).
     for (m, tri) in out.iter_mut().zip(&tris) {
         if let Outcome::Visible(s) = setup::<P, Full>(tri, h.vp, &mut Ops::default()) {
             m.area = Auto::area(&s);
         }
-    }
-    let best = uvt_core::bounds::registry::best();
-    let pipe = <PipelineOf<_, P, Full> as uvt_core::Pipeline>::new(best);
-    for (m, tri) in out.iter_mut().zip(&tris) {
-        m.best_tested = stage_one(&pipe, tri, h.vp, bt, &pattern, &mut || 0)
-            .cost
-            .tested as f64;
     }
     Ok(out)
 }
@@ -259,6 +293,23 @@ fn best_tier(tris: &mut [TriModel]) -> ClassRule {
         .iter()
         .enumerate()
         .map(|(r, &row)| {
+            // Hindsight (module docs): the row's triangles with every fixed strategy.
+            let choices: Vec<Vec<Choice>> = tris
+                .iter()
+                .filter(|t| t.row == row)
+                .map(|t| t.fixed.clone())
+                .collect();
+            let alone = (0..choices.first().map_or(0, Vec::len))
+                .map(|k| {
+                    choices
+                        .iter()
+                        .filter_map(|c| c.get(k))
+                        .map(|x| x.cost)
+                        .sum()
+                })
+                .fold(f64::INFINITY, f64::min);
+            let fewest = least_tested_within(&choices, GOAL_CAP * alone * (1.0 + 1e-9));
+            let best = allowed[r] * STE_FLOOR;
             let t = split(&tested[r], i, j);
             let c = split(&row_cost[r], i, j);
             let ratio = |d: f64| if d > 0.0 { c / d } else { 1.0 };
@@ -274,6 +325,12 @@ fn best_tier(tris: &mut [TriModel]) -> ClassRule {
                     1.0
                 },
                 held: held(r, i, j),
+                least_vs_laine: if laine[r] > 0.0 {
+                    least_cost(&choices) / laine[r]
+                } else {
+                    1.0
+                },
+                most_ste_vs_best: fewest.map(|f| if f > 0.0 { best / f } else { 1.0 }),
             }
         })
         .collect();
@@ -373,9 +430,13 @@ pub fn rule_source(rules: &[ClassRule; 4], from: &str) -> String {
         s,
         "//!\n//! Per class and row, with the rule: modelled instructions ÷ Laine 2011's alone and ÷ the\n\
          //! row's cheapest pick's alone (cap: {COST_CAP} × the cheapest's),\n\
-         //! and sample-test efficiency ÷ `best`'s (floor: at least {:.0}% of `best`'s).\n//!\n\
-         //! | class | row | instructions ÷ Laine 2011 | ÷ cheapest pick | cap | STE ÷ best | floor |\n\
-         //! |---|---|---|---|---|---|---|",
+         //! and sample-test efficiency ÷ `best`'s (floor: at least {:.0}% of `best`'s). Beside them\n\
+         //! what no rule can beat, with hindsight over every fixed strategy (`host/src/bench/\n\
+         //! hindsight.rs`): every triangle on its cheapest, ÷ Laine 2011's alone (\"least ÷\n\
+         //! Laine\"), and the most STE ÷ `best`'s of any choice within {GOAL_CAP} × the row's\n\
+         //! cheapest fixed strategy alone, the bench's goal (\"most STE ÷ best\", an upper bound).\n//!\n\
+         //! | class | row | instructions ÷ Laine 2011 | ÷ cheapest pick | cap | STE ÷ best | floor | least ÷ Laine | most STE ÷ best |\n\
+         //! |---|---|---|---|---|---|---|---|---|",
         STE_FLOOR * 100.0
     );
     for (c, r) in Class::ALL.iter().zip(rules) {
@@ -384,12 +445,15 @@ pub fn rule_source(rules: &[ClassRule; 4], from: &str) -> String {
             let cap = if f.within { "within" } else { "over" };
             let _ = writeln!(
                 s,
-                "//! | {} | {} | {:.3} | {:.3} | {cap} | {:.3} | {floor} |",
+                "//! | {} | {} | {:.3} | {:.3} | {cap} | {:.3} | {floor} | {:.3} | {} |",
                 c.name(),
                 f.row,
                 f.cost_vs_laine,
                 f.cost_vs_cheapest,
-                f.ste_vs_best
+                f.ste_vs_best,
+                f.least_vs_laine,
+                f.most_ste_vs_best
+                    .map_or("-".to_string(), |v| format!("{v:.3}"))
             );
         }
     }
@@ -431,6 +495,13 @@ mod tests {
             area,
             cost,
             tested,
+            // The fixed strategies: the three picks stand in for them.
+            fixed: (0..3)
+                .map(|k| Choice {
+                    cost: cost[k],
+                    tested: tested[k],
+                })
+                .collect(),
             best_tested: best,
         }
     }
@@ -471,6 +542,37 @@ mod tests {
         assert!(
             (r.rows[0].cost_vs_laine - 59.0 / 60.0).abs() < 1e-12,
             "{r:?}"
+        );
+    }
+
+    #[test]
+    fn hindsight_gives_the_cheapest_mix_and_the_most_efficiency_within_the_goal() {
+        // Every triangle on its cheapest: 10 + 19 + 28 = 57 of Laine 2011's 60. Within 1.05 ×
+        // the cheapest fixed strategy alone (the hull, 58: 60.9), hull+edge-t everywhere (59,
+        // testing best's 150) is reachable.
+        let mut t = row0();
+        let r = best_tier(&mut t);
+        assert!(
+            (r.rows[0].least_vs_laine - 57.0 / 60.0).abs() < 1e-12,
+            "{r:?}"
+        );
+        assert!(
+            (r.rows[0].most_ste_vs_best.unwrap() - 1.0).abs() < 1e-12,
+            "{r:?}"
+        );
+        // hull+edge-t dearer by 2 per triangle (65): the hull everywhere (58, 240 tests), then
+        // the steps to hull+edge-t at the best rate (15 samples per instruction, on two
+        // triangles) for the 2.9 instructions left: 240 − 2.9 × 15 = 196.5 tested (the budget's
+        // 1e-9 slack aside).
+        for x in &mut t {
+            x.cost[2] += 2.0;
+            x.fixed[2].cost += 2.0;
+        }
+        let r = best_tier(&mut t);
+        let want = 150.0 / (240.0 - 2.9 * 15.0);
+        assert!(
+            (r.rows[0].most_ste_vs_best.unwrap() - want).abs() < 1e-6,
+            "{r:?} want {want}"
         );
     }
 

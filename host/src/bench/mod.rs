@@ -4,10 +4,11 @@
 //! benchmark scenes and writes the table. `ste_table` uses `strategy`, never the other way round
 //! (nor this `mod.rs`). [`workload`] writes a row's own work for the Cortex-M strategy
 //! harness, [`m4_stages`] reads what it measured, and [`auto_rule`] derives the rule of the
-//! `auto` strategy from it. [`zmax`] (`uvt bench-zmax`) runs every strategy with and without
+//! `auto` strategy from it, measured against [`hindsight`]'s bounds. [`zmax`] (`uvt bench-zmax`) runs every strategy with and without
 //! Zmax culling on the occlusion rows.
 
 pub mod auto_rule;
+pub mod hindsight;
 pub mod m4_stages;
 pub mod ste_table;
 pub mod strategy;

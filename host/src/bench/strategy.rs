@@ -4,6 +4,7 @@
 //! and wall time.
 
 use serde::Serialize;
+use uvt_core::bounds::auto::Auto;
 use uvt_core::bounds::registry::STRATEGIES;
 use uvt_core::bounds::strategy::BoundsStrategy;
 use uvt_core::{with_strategy, BboxScan, Precision, Triangle, Viewport};
@@ -20,6 +21,12 @@ use super::m4_stages::per;
 /// comes from every run's footprint counters; fit does not search it).
 pub fn strategies() -> impl Iterator<Item = &'static str> + Clone {
     STRATEGIES.into_iter().filter(|n| *n != BboxScan.name())
+}
+
+/// The fixed strategies: every one of [`strategies`] but `auto`, the per-triangle choice among
+/// them (the bench's "cheapest fixed" and `uvt auto-rule`'s hindsight bounds range over these).
+pub fn fixed() -> impl Iterator<Item = &'static str> + Clone {
+    strategies().filter(|n| *n != Auto::new().name())
 }
 
 /// One strategy's result on one row.
