@@ -586,7 +586,7 @@ pub fn whole_cost_md(rows: &[BenchRow]) -> String {
         let cheapest = r
             .strategies
             .iter()
-            .filter(|x| x.name != auto)
+            .filter(|x| super::strategy::fixed().any(|f| f == x.name))
             .min_by(|a, b| {
                 a.m4.unwrap_or(f64::MAX)
                     .total_cmp(&b.m4.unwrap_or(f64::MAX))
