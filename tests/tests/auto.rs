@@ -8,7 +8,7 @@
 //! tier's threshold on its boundary.
 
 use proptest::prelude::*;
-use uvt_core::bounds::auto::{Auto, Pick, Tier, PICK_OPS, RULE};
+use uvt_core::bounds::auto::{Auto, Pick, Tier, CHECK_OPS, PICK_OPS, RULE};
 use uvt_core::bounds::registry::{hull, hull_edge};
 use uvt_core::{Bounded, BoundsStrategy, Exact, Laine2011, Prim, SamplePattern, Viewport};
 use uvt_tests::kinds::{make, params, Kind, ALL_KINDS, NP};
@@ -101,7 +101,8 @@ fn auto_conservative_seeded_random() {
 }
 
 /// With a pick forced, `auto` renders with exactly the counters and ops of that strategy (its
-/// setup ops plus the choice's `PICK_OPS`): tiles visited and skipped, samples tested and covered,
+/// setup ops plus the choice's: `CHECK_OPS` where the footprint check decides — Laine 2011 at
+/// every area — and `PICK_OPS` more where it does not): tiles visited and skipped, samples tested and covered,
 /// bounds, row and predicate ops — on every kind, tile sizes 1 and 4.
 #[test]
 fn forced_pick_is_that_strategy() {
@@ -137,7 +138,12 @@ fn forced_pick_is_that_strategy() {
             for (i, (a, s)) in pairs.iter().enumerate() {
                 let visible: u64 = s.by_class.iter().sum();
                 let mut want = *s;
-                want.ops.setup += PICK_OPS * visible;
+                let choice = if i == 0 {
+                    CHECK_OPS
+                } else {
+                    CHECK_OPS + PICK_OPS
+                };
+                want.ops.setup += choice * visible;
                 assert_eq!(
                     *a, want,
                     "auto forced to {:?} differs from it: kind {:?}, case {case}, tile {bt}, rerun with UVT_SEED={seed}",
@@ -203,6 +209,58 @@ fn committed_rule_is_derived_from_the_committed_stage_costs() {
     for (r, d) in RULE.iter().zip(&rules) {
         assert_eq!(*r, d.tier);
     }
+}
+
+/// The footprint check (`Auto::pick` answers Laine 2011 before the own extent when the
+/// footprint is below both of the tier's areas) never changes a pick: on every kind (seeded,
+/// `UVT_SEED`), at tiers whose areas sit at, just above and just below the triangle's own area
+/// and its footprint's, the pick is the tier's at `Auto::area`, and the area is at most the
+/// footprint's.
+#[test]
+fn the_footprint_check_never_changes_the_pick() {
+    let seed = seed();
+    let mut rng = Rng(seed ^ 0xf007);
+    let mut early = 0u32;
+    for case in 0..cases(400, 20_000) {
+        let k = (case % 8) as usize;
+        let mut p = [0.0; NP];
+        p.iter_mut().for_each(|x| *x = rng.range(-1.0, 1.0));
+        let t = make(ALL_KINDS[k], &p);
+        let vp = Viewport::new(200, 200).unwrap();
+        let uvt_core::setup::Outcome::Visible(s) =
+            uvt_core::setup::setup::<Exact, uvt_core::Full>(&t, vp, &mut Default::default())
+        else {
+            continue;
+        };
+        let f = s.footprint();
+        let fp = u32::from(f.x1 - f.x0) * u32::from(f.y1 - f.y0);
+        let a = Auto::area(&s);
+        assert!(
+            a <= fp,
+            "kind {:?} case {case}: area {a} ({a:#x}) over the footprint's {fp} ({fp:#x}), rerun with UVT_SEED={seed}",
+            ALL_KINDS[k]
+        );
+        let at = [a, fp]
+            .into_iter()
+            .flat_map(|v| [v.saturating_sub(1), v, v + 1]);
+        for h in at.clone().chain([0, u32::MAX]) {
+            for e in at.clone().chain([0, u32::MAX]) {
+                let tier = Tier {
+                    hull_from: h,
+                    edge_from: e,
+                };
+                let got = Auto::with_rule([tier; 4]).pick(&s);
+                let want = tier.pick(a);
+                assert_eq!(
+                    got, want,
+                    "kind {:?} case {case}: tier {tier:?}, area {a}, footprint {fp}, rerun with UVT_SEED={seed}",
+                    ALL_KINDS[k]
+                );
+                early += u32::from(fp < h.min(e));
+            }
+        }
+    }
+    assert!(early > 0, "the footprint check never decided");
 }
 
 /// A set-up triangle (exact precision, every class) on a 200 × 200 viewport, and its

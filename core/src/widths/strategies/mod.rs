@@ -61,9 +61,11 @@ pub fn inventory(name: &str, cfg: &Config) -> Option<Inventory> {
     Some(inv)
 }
 
-/// `Auto::pick`: the own extent's area (`Auto::area`) and the tier compare, per triangle, every
-/// class. The lens-corner box ends are counted at their 64-bit container (floored to pixels,
-/// they are not clamped to the viewport); the least side is then ≤ the footprint's.
+/// `Auto::pick`: the footprint check (its area against the least of the tier's two areas), then
+/// the own extent's area (`Auto::area`) and the tier compare, per triangle, every class (the
+/// unit builds the whole path; the check only spares its time). The lens-corner box ends are
+/// counted at their 64-bit container (floored to pixels, they are not clamped to the viewport);
+/// the least side is then ≤ the footprint's.
 fn auto_pick(inv: &mut Inventory) {
     let side = ext().bits();
     let area = side.saturating_mul(2);
@@ -73,6 +75,27 @@ fn auto_pick(inv: &mut Inventory) {
         "footprint sides `x1 − x0`, `y1 − y0`",
         OpKind::Add { bits: side },
         2,
+        Classes::ALL,
+    );
+    inv.op(
+        tri,
+        "footprint's area (the check)",
+        OpKind::Mul { a: side, b: side },
+        1,
+        Classes::ALL,
+    );
+    inv.op(
+        tri,
+        "least of the tier's areas `min(hull_from, edge_from)`",
+        OpKind::Cmp { bits: 32 },
+        1,
+        Classes::ALL,
+    );
+    inv.op(
+        tri,
+        "footprint check `area < min(…)`",
+        OpKind::Cmp { bits: 32 },
+        1,
         Classes::ALL,
     );
     inv.op(
