@@ -8,7 +8,7 @@
 //! tier's threshold on its boundary.
 
 use proptest::prelude::*;
-use uvt_core::bounds::auto::{Auto, Pick, Tier, CHECK_OPS, PICK_OPS, RULE};
+use uvt_core::bounds::auto::{Auto, Pick, Tier, CHECK_OPS, PICK_OPS, RULE, TRAVEL_OPS};
 use uvt_core::bounds::registry::{hull, hull_edge};
 use uvt_core::{Bounded, BoundsStrategy, Exact, Laine2011, Prim, SamplePattern, Viewport};
 use uvt_tests::kinds::{make, params, Kind, ALL_KINDS, NP};
@@ -20,8 +20,8 @@ const fn all(heavy: Pick, from_px: u32) -> Auto {
 }
 
 /// The rules of the brute force: the registry's, each pick forced, and area splits (two of
-/// them with all three picks).
-fn rules() -> [Auto; 6] {
+/// them with all three picks, one with travel limits).
+fn rules() -> [Auto; 7] {
     [
         Auto::new(),
         all(Pick::Laine, u32::MAX),
@@ -33,13 +33,20 @@ fn rules() -> [Auto; 6] {
             Tier {
                 hull_from: 10,
                 edge_from: 40,
+                edge_travel: u32::MAX,
             },
             Tier::from(Pick::Hull, 60),
             Tier {
                 hull_from: 6,
                 edge_from: 20,
+                edge_travel: u32::MAX,
             },
         ]),
+        Auto::with_rule([1, 2, 3, 4].map(|k| Tier {
+            hull_from: 4 * k,
+            edge_from: 10 * k,
+            edge_travel: k,
+        })),
     ]
 }
 
@@ -166,6 +173,7 @@ fn tier_threshold_boundary() {
     let t = Tier {
         hull_from: 23,
         edge_from: 57,
+        edge_travel: u32::MAX,
     };
     assert_eq!(t.pick(0), Pick::Laine);
     assert_eq!(t.pick(22), Pick::Laine);
@@ -181,6 +189,7 @@ fn tier_threshold_boundary() {
     let low_edge = Tier {
         hull_from: 30,
         edge_from: 10,
+        edge_travel: u32::MAX,
     };
     assert_eq!(
         (low_edge.pick(9), low_edge.pick(10), low_edge.pick(40)),
@@ -189,6 +198,104 @@ fn tier_threshold_boundary() {
     assert_eq!(Tier::LAINE.pick(u32::MAX - 1), Pick::Laine);
     assert_eq!(Tier::from(Pick::Hull, u32::MAX), Tier::LAINE);
     assert_eq!(Auto::new().name(), "auto");
+    // The travel limit: hull+edge-t while area ≤ edge_travel × start, the hull past it; below
+    // edge_from it changes nothing; no limit reads no start box.
+    let lim = Tier {
+        hull_from: 23,
+        edge_from: 57,
+        edge_travel: 3,
+    };
+    assert!(lim.reads_travel() && !t.reads_travel());
+    assert_eq!(lim.pick_travel(60, 20), Pick::HullEdge);
+    assert_eq!(lim.pick_travel(61, 20), Pick::Hull);
+    assert_eq!(lim.pick_travel(57, 19), Pick::HullEdge);
+    assert_eq!(lim.pick_travel(58, 19), Pick::Hull);
+    assert_eq!(lim.pick_travel(56, 1), Pick::Hull);
+    assert_eq!(lim.pick_travel(22, 0), Pick::Laine);
+    assert_eq!(lim.pick_travel(u32::MAX - 1, u32::MAX), Pick::HullEdge);
+    assert_eq!(t.pick_travel(u32::MAX - 1, 0), Pick::HullEdge);
+    let none = Tier {
+        edge_travel: 0,
+        ..lim
+    };
+    assert_eq!(none.pick_travel(u32::MAX - 1, u32::MAX), Pick::Hull);
+}
+
+/// The travel limit (`Tier::edge_travel`): on every kind (seeded, `UVT_SEED`) the pick is the
+/// tier's at `Auto::area` and `Auto::start_area`; the start box's area is at most the own
+/// extent's (the start vertices are among the vertices the own extent holds) and below it on
+/// moving triangles; and the choice's setup ops are `CHECK_OPS + PICK_OPS`, plus the start
+/// boxes' own and `TRAVEL_OPS` when the area picks hull+edge-t.
+#[test]
+fn the_travel_limit_reads_the_start_box() {
+    let seed = seed();
+    let mut rng = Rng(seed ^ 0x7a4e);
+    let (mut smaller, mut limited, mut kept) = (0u32, 0u32, 0u32);
+    for case in 0..cases(400, 20_000) {
+        let k = (case % 8) as usize;
+        let mut p = [0.0; NP];
+        p.iter_mut().for_each(|x| *x = rng.range(-1.0, 1.0));
+        let t = make(ALL_KINDS[k], &p);
+        let vp = Viewport::new(200, 200).unwrap();
+        let uvt_core::setup::Outcome::Visible(s) =
+            uvt_core::setup::setup::<Exact, uvt_core::Full>(&t, vp, &mut Default::default())
+        else {
+            continue;
+        };
+        let a = Auto::area(&s);
+        let mut start_ops = uvt_core::Ops::default();
+        let st = Auto::start_area(&s, &mut start_ops);
+        assert!(
+            st <= a,
+            "kind {:?} case {case}: start area {st} ({st:#x}) over the own extent's {a} ({a:#x}), rerun with UVT_SEED={seed}\n{}",
+            ALL_KINDS[k],
+            dump(&t)
+        );
+        smaller += u32::from(st < a && s.class().motion());
+        for travel in [0, 1, 2, 4, 16, u32::MAX] {
+            for edge_from in [0, a, a.saturating_add(1)] {
+                let tier = Tier {
+                    hull_from: 0,
+                    edge_from,
+                    edge_travel: travel,
+                };
+                let auto = Auto::with_rule([tier; 4]);
+                let want = tier.pick_travel(a, st);
+                assert_eq!(
+                    auto.pick(&s),
+                    want,
+                    "kind {:?} case {case}: tier {tier:?}, area {a}, start {st}, rerun with UVT_SEED={seed}",
+                    ALL_KINDS[k]
+                );
+                let mut got = uvt_core::Ops::default();
+                let _ = auto.prepare::<uvt_core::Full>(&s, &mut got);
+                let mut base = uvt_core::Ops::default();
+                match want {
+                    Pick::Laine => drop(Laine2011.prepare::<uvt_core::Full>(&s, &mut base)),
+                    Pick::Hull => drop(hull().prepare::<uvt_core::Full>(&s, &mut base)),
+                    Pick::HullEdge => drop(hull_edge().prepare::<uvt_core::Full>(&s, &mut base)),
+                }
+                let mut choice = CHECK_OPS + PICK_OPS;
+                if tier.reads_travel() && tier.pick(a) == Pick::HullEdge {
+                    choice += start_ops.setup + TRAVEL_OPS;
+                }
+                assert_eq!(
+                    got.setup,
+                    base.setup + choice,
+                    "kind {:?} case {case}: tier {tier:?}: setup ops {} against {} + {choice}, rerun with UVT_SEED={seed}",
+                    ALL_KINDS[k],
+                    got.setup,
+                    base.setup
+                );
+                limited += u32::from(tier.pick(a) == Pick::HullEdge && want == Pick::Hull);
+                kept += u32::from(tier.reads_travel() && want == Pick::HullEdge);
+            }
+        }
+    }
+    assert!(
+        smaller > 0 && limited > 0 && kept > 0,
+        "a case never occurred: start below the area {smaller}, limited {limited}, kept {kept}"
+    );
 }
 
 /// The committed rule is what `uvt auto-rule` derives from the committed stage file: deriving
@@ -248,6 +355,7 @@ fn the_footprint_check_never_changes_the_pick() {
                 let tier = Tier {
                     hull_from: h,
                     edge_from: e,
+                    edge_travel: u32::MAX,
                 };
                 let got = Auto::with_rule([tier; 4]).pick(&s);
                 let want = tier.pick(a);

@@ -220,7 +220,9 @@ fn ratio_below(a: i32, w: i32, b: (i32, i32)) -> bool {
     i64::from(a) * i64::from(b.1) < i64::from(b.0) * i64::from(w)
 }
 
-/// [`axis_boxes`] over `N` w offsets per vertex (`M = 6·N` corner points).
+/// [`axis_boxes`] over `N` w offsets per vertex (`M = 6·N` corner points: both shutter ends),
+/// or of the shutter-open vertices alone (`M = 3·N`: the box at the shutter's start,
+/// [`start_boxes`]).
 ///
 /// **One division per box side.** The projection `(a + w)·E·2^bnd/(2w) = (a/w + 1)·E·2^bnd/2`
 /// is non-decreasing in the ratio `a/w` (w > 0), and so are its floor and ceiling. Hence the
@@ -249,7 +251,9 @@ pub(crate) fn corner_boxes<const N: usize, const M: usize>(
     let mut left = [(0i32, 0i32); M];
     let mut right = [(0i32, 0i32); M];
     let mut i = 0;
-    for ends in tri.v.iter() {
+    // The shutter ends the corner set holds: both (M = 6·N) or the open one (M = 3·N).
+    let n_ends = M / (3 * N);
+    for ends in tri.v.iter().take(n_ends) {
         for p in ends.iter() {
             let (a, cs) = axis_coord32(p, axis);
             for &dw in dws.iter() {
@@ -271,7 +275,7 @@ pub(crate) fn corner_boxes<const N: usize, const M: usize>(
     // the largest (a + ε_x)/w.
     let mut lo: [Option<(i32, i32)>; 2] = [None; 2];
     let mut hi: [Option<(i32, i32)>; 2] = [None; 2];
-    for ends in tri.v.iter() {
+    for ends in tri.v.iter().take(n_ends) {
         for p in ends.iter() {
             let (a, cs) = axis_coord32(p, axis);
             for &dw in dws.iter() {
@@ -314,6 +318,19 @@ pub(crate) fn exact_boxes(
     ops: &mut Ops,
 ) -> AxisBoxes {
     corner_boxes::<1, 6>(tri, axis, extent, bnd, 0, [0], ops)
+}
+
+/// The lens-corner boxes of one axis of the triangle at the shutter's start (its open vertices
+/// alone, without ε: the three-point instantiation of [`corner_boxes`]); `auto`'s travel check
+/// ranks by them, nothing is bounded by them.
+pub(crate) fn start_boxes(
+    tri: &Triangle,
+    axis: usize,
+    extent: i64,
+    bnd: u32,
+    ops: &mut Ops,
+) -> AxisBoxes {
+    corner_boxes::<1, 3>(tri, axis, extent, bnd, 0, [0], ops)
 }
 
 /// Footprint columns (or rows) `[p0, p1)` of one axis from its boxes, clamped to `[0, E]`.

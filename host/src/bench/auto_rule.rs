@@ -67,14 +67,19 @@ pub const COST_CAP: f64 = 1.03;
 /// fixed strategy's; the hindsight bounds are taken at it (module docs).
 pub const GOAL_CAP: f64 = 1.05;
 
-/// One triangle: its class, row (index in the stage file), area (`Auto::area`), modelled
-/// instructions and tested samples per pick and per fixed strategy
-/// ([`super::strategy::fixed`] order), and the samples `best` tests.
+/// The limits tried for a tier's `edge_travel` (own extent ÷ own box at the shutter's start
+/// that keeps hull+edge-t), no limit first: on a tie the rule reads no start box.
+pub const TRAVEL_LIMITS: [u32; 10] = [u32::MAX, 1, 2, 3, 4, 5, 6, 8, 12, 16];
+
+/// One triangle: its class, row (index in the stage file), area (`Auto::area`) and area at
+/// the shutter's start (`Auto::start_area`), modelled instructions and tested samples per pick
+/// and per fixed strategy ([`super::strategy::fixed`] order), and the samples `best` tests.
 #[derive(Clone, Debug)]
 struct TriModel {
     class: usize,
     row: usize,
     area: u32,
+    start: u32,
     cost: [f64; 3],
     tested: [f64; 3],
     fixed: Vec<Choice>,
@@ -142,6 +147,7 @@ fn models(
             class: t.class().index(),
             row,
             area: 0,
+            start: 0,
             cost: [0.0; 3],
             tested: [0.0; 3],
             fixed: Vec::new(),
@@ -187,6 +193,7 @@ fn models(
     for (m, tri) in out.iter_mut().zip(&tris) {
         if let Outcome::Visible(s) = setup::<P, Full>(tri, h.vp, &mut Ops::default()) {
             m.area = Auto::area(&s);
+            m.start = Auto::start_area(&s, &mut Ops::default());
         }
     }
     Ok(out)
@@ -197,12 +204,12 @@ fn anyhow_of(e: uvt_demo::workload::FormatError) -> anyhow::Error {
 }
 
 /// Prefix sums over `tris` (in order) of `f`, restricted to the triangles of `row` when given.
-fn prefix(tris: &[TriModel], row: Option<usize>, f: impl Fn(&TriModel) -> f64) -> Vec<f64> {
+fn prefix(tris: &[TriModel], row: Option<usize>, f: impl Fn(usize, &TriModel) -> f64) -> Vec<f64> {
     let mut p = Vec::with_capacity(tris.len() + 1);
     p.push(0.0);
-    for t in tris {
+    for (i, t) in tris.iter().enumerate() {
         let x = if row.map_or(true, |r| r == t.row) {
-            f(t)
+            f(i, t)
         } else {
             0.0
         };
@@ -211,33 +218,91 @@ fn prefix(tris: &[TriModel], row: Option<usize>, f: impl Fn(&TriModel) -> f64) -
     p
 }
 
-/// The best tier of one class's triangles (module docs): with the triangles sorted by area,
-/// Laine 2011 on the first `i`, the hull on the next up to `j`, hull+edge-t on the rest, for every
+/// A tier's ranking (module docs): rows within the cost cap, held to the floor, at most Laine
+/// 2011's; then the total, negated (more is better throughout).
+type Goal = ([usize; 3], f64);
+
+/// Whether goal `c` ranks above `g` (the total by more than a relative 1e-6).
+fn beats(c: &Goal, g: &Goal) -> bool {
+    c.0 > g.0 || (c.0 == g.0 && c.1 > g.1 + 1e-6 * g.1.abs())
+}
+
+/// The best tier of one class's triangles over every limit of [`TRAVEL_LIMITS`] (module docs):
+/// [`best_tier_at`] at each, the first of the best kept.
+fn best_tier(tris: &mut [TriModel]) -> ClassRule {
+    let alone: [f64; 3] = [0, 1, 2].map(|k| tris.iter().map(|t| t.cost[k]).sum());
+    let mut best: Option<(ClassRule, Goal)> = None;
+    for k in TRAVEL_LIMITS {
+        let c = best_tier_at(tris, k);
+        if best.as_ref().map_or(true, |b| beats(&c.1, &b.1)) {
+            best = Some(c);
+        }
+    }
+    let (mut r, _) = best.unwrap_or_else(|| best_tier_at(tris, u32::MAX));
+    r.alone = alone;
+    r
+}
+
+/// The best tier of one class's triangles at `edge_travel` (module docs): with the triangles
+/// sorted by area, Laine 2011 on the first `i`, the hull on the next up to `j`, hull+edge-t
+/// (the hull where the travel limit turns it off, `Tier::pick_travel`) on the rest, for every
 /// `i ≤ j` at a change of area (or an end); the most rows within the cost cap, then held to
 /// [`STE_FLOOR`], then at most Laine 2011's, then the least total.
-fn best_tier(tris: &mut [TriModel]) -> ClassRule {
+fn best_tier_at(tris: &mut [TriModel], edge_travel: u32) -> (ClassRule, Goal) {
     tris.sort_by_key(|t| t.area);
+    let limited = Tier {
+        hull_from: u32::MAX,
+        edge_from: 0,
+        edge_travel,
+    };
+    // The upper pick per triangle: hull+edge-t, or the hull past the travel limit.
+    let upper: Vec<usize> = tris
+        .iter()
+        .map(|t| match limited.pick_travel(t.area, t.start) {
+            Pick::HullEdge => 2,
+            _ => 1,
+        })
+        .collect();
+    let cost_of = |t: &TriModel, u: usize, k: usize| if k == 2 { t.cost[u] } else { t.cost[k] };
+    let tested_of =
+        |t: &TriModel, u: usize, k: usize| if k == 2 { t.tested[u] } else { t.tested[k] };
     let n = tris.len();
-    let alone: [f64; 3] = [0, 1, 2].map(|k| tris.iter().map(|t| t.cost[k]).sum());
+    let alone: [f64; 3] = [0, 1, 2].map(|k| {
+        tris.iter()
+            .zip(&upper)
+            .map(|(t, &u)| cost_of(t, u, k))
+            .sum()
+    });
     let mut rows: Vec<usize> = tris.iter().map(|t| t.row).collect();
     rows.sort_unstable();
     rows.dedup();
     // Prefix sums per pick k over the first i triangles: instructions (all rows, and per row)
     // and tested samples per row (rows of the class in stage-file order).
-    let cost: [Vec<f64>; 3] = [0, 1, 2].map(|k| prefix(tris, None, |t| t.cost[k]));
-    let per_row = |f: fn(&TriModel, usize) -> f64| -> Vec<[Vec<f64>; 3]> {
+    let cost: [Vec<f64>; 3] = [0, 1, 2].map(|k| prefix(tris, None, |i, t| cost_of(t, upper[i], k)));
+    let per_row = |f: &dyn Fn(&TriModel, usize, usize) -> f64| -> Vec<[Vec<f64>; 3]> {
         rows.iter()
-            .map(|&r| [0, 1, 2].map(|k| prefix(tris, Some(r), |t| f(t, k))))
+            .map(|&r| [0, 1, 2].map(|k| prefix(tris, Some(r), |i, t| f(t, upper[i], k))))
             .collect()
     };
-    let row_cost = per_row(|t, k| t.cost[k]);
-    let tested = per_row(|t, k| t.tested[k]);
-    // Per row: Laine 2011's instructions, the cheapest pick's alone, the cap (COST_CAP × the
-    // cheapest's), and the most tested samples that keep STE_FLOOR of best's efficiency.
+    let row_cost = per_row(&cost_of);
+    let tested = per_row(&tested_of);
+    // Per row: Laine 2011's instructions, the cheapest pick's alone (each pick on every
+    // triangle, the travel limit aside), the cap (COST_CAP × the cheapest's), and the most
+    // tested samples that keep STE_FLOOR of best's efficiency.
     let laine: Vec<f64> = row_cost.iter().map(|p| p[0][n]).collect();
-    let cheapest: Vec<f64> = row_cost
+    let cheapest: Vec<f64> = rows
         .iter()
-        .map(|p| p.iter().map(|v| v[n]).fold(f64::INFINITY, f64::min))
+        .map(|&r| {
+            [0, 1, 2]
+                .map(|k| {
+                    tris.iter()
+                        .filter(|t| t.row == r)
+                        .map(|t| t.cost[k])
+                        .sum::<f64>()
+                })
+                .into_iter()
+                .fold(f64::INFINITY, f64::min)
+        })
         .collect();
     let cap: Vec<f64> = cheapest
         .iter()
@@ -267,7 +332,7 @@ fn best_tier(tris: &mut [TriModel]) -> ClassRule {
     let below = |r: usize, i: usize, j: usize| split(&row_cost[r], i, j) <= laine[r] * (1.0 + 1e-9);
     // Rows within the cap, held to the floor, at most Laine 2011's; then the total (negated:
     // more is better throughout).
-    let goal = |i: usize, j: usize| {
+    let goal = |i: usize, j: usize| -> Goal {
         let count = |f: &dyn Fn(usize) -> bool| (0..rows.len()).filter(|&r| f(r)).count();
         (
             [
@@ -284,7 +349,7 @@ fn best_tier(tris: &mut [TriModel]) -> ClassRule {
     for &a in &cuts {
         for &b in cuts.iter().filter(|&&b| b >= a) {
             let c = goal(a, b);
-            if c.0 > g.0 || (c.0 == g.0 && c.1 > g.1 + 1e-6 * g.1.abs()) {
+            if beats(&c, &g) {
                 (i, j, g) = (a, b, c);
             }
         }
@@ -334,16 +399,26 @@ fn best_tier(tris: &mut [TriModel]) -> ClassRule {
             }
         })
         .collect();
-    ClassRule {
-        tier: Tier {
-            hull_from: if i == j { u32::MAX } else { area_at(i) },
-            edge_from: area_at(j),
+    let edge_from = area_at(j);
+    (
+        ClassRule {
+            tier: Tier {
+                hull_from: if i == j { u32::MAX } else { area_at(i) },
+                edge_from,
+                // A limit without hull+edge-t picks nothing: none.
+                edge_travel: if edge_from == u32::MAX {
+                    u32::MAX
+                } else {
+                    edge_travel
+                },
+            },
+            triangles: n,
+            with_rule: -g.1,
+            alone,
+            rows: fits,
         },
-        triangles: n,
-        with_rule: -g.1,
-        alone,
-        rows: fits,
-    }
+        g,
+    )
 }
 
 /// Derive the rule from the stage file `m4` (module docs).
@@ -405,7 +480,13 @@ pub fn rule_source(rules: &[ClassRule; 4], from: &str) -> String {
                     u32::MAX
                 },
             ),
-            from(Pick::HullEdge, r.tier.edge_from),
+            from(Pick::HullEdge, r.tier.edge_from).map(|e| {
+                if r.tier.reads_travel() {
+                    format!("{e} (own extent ≤ {}× its start box)", r.tier.edge_travel)
+                } else {
+                    e
+                }
+            }),
         ]
         .into_iter()
         .flatten()
@@ -473,9 +554,10 @@ pub fn rule_source(rules: &[ClassRule; 4], from: &str) -> String {
     for r in rules {
         let _ = writeln!(
             s,
-            "    Tier {{\n        hull_from: {},\n        edge_from: {},\n    }},",
+            "    Tier {{\n        hull_from: {},\n        edge_from: {},\n        edge_travel: {},\n    }},",
             px(r.tier.hull_from),
-            px(r.tier.edge_from)
+            px(r.tier.edge_from),
+            px(r.tier.edge_travel)
         );
     }
     s += "];\n";
@@ -493,6 +575,7 @@ mod tests {
             class: 1,
             row,
             area,
+            start: 0,
             cost,
             tested,
             // The fixed strategies: the three picks stand in for them.
@@ -510,6 +593,7 @@ mod tests {
     const LEAST_TOTAL: Tier = Tier {
         hull_from: 20,
         edge_from: u32::MAX,
+        edge_travel: u32::MAX,
     };
 
     /// Row 0: the least total takes the hull from 20 px (57 instructions) but tests 260 samples,
@@ -530,7 +614,8 @@ mod tests {
             r.tier,
             Tier {
                 hull_from: u32::MAX,
-                edge_from: 10
+                edge_from: 10,
+                edge_travel: u32::MAX,
             },
             "{r:?}"
         );
@@ -613,7 +698,8 @@ mod tests {
             r.tier,
             Tier {
                 hull_from: 10,
-                edge_from: u32::MAX
+                edge_from: u32::MAX,
+                edge_travel: u32::MAX,
             },
             "{r:?}"
         );

@@ -61,7 +61,7 @@ use crate::bounds::strategy::{
 };
 use crate::config::unit::Unit;
 use crate::input::PixelRect;
-use crate::setup::boxes::floor_px;
+use crate::setup::boxes::{floor_px, start_boxes, AxisBoxes};
 use crate::setup::Setup;
 use crate::stats::Ops;
 
@@ -130,6 +130,12 @@ pub const CHECK_OPS: u64 = 5;
 /// (module docs, **Cost**): 2 axes × (2 corners × 4 + 2) + 4.
 pub const PICK_OPS: u64 = 24;
 
+/// The travel check's setup operations per triangle, beside the start boxes' own (module docs,
+/// **Cost**; counted only when the tier reads the travel and the area picks hull+edge-t): the
+/// start box's area as the own extent's (2 axes × (2 corners × 4 + 2) + 1), the limit's
+/// multiply and the compare.
+pub const TRAVEL_OPS: u64 = 23;
+
 const HULL: HullCull<Laine2011> = hull();
 const HULL_EDGE: HullCull<EdgeTime<Laine2011>> = hull_edge();
 
@@ -164,7 +170,26 @@ impl Auto {
             return Pick::Laine;
         }
         ops.add_setup(PICK_OPS);
-        t.pick(Auto::area(setup))
+        let area = Auto::area(setup);
+        if t.reads_travel() && t.pick(area) == Pick::HullEdge {
+            let start = Auto::start_area(setup, ops);
+            ops.add_setup(TRAVEL_OPS);
+            return t.pick_travel(area, start);
+        }
+        t.pick(area)
+    }
+    /// The area of the triangle's own box at the shutter's start, in pixels: [`Auto::area`]'s
+    /// measure (per axis the least of the footprint's side and the lens corners' box sides) of
+    /// the boxes of the shutter-open vertices alone, without ε (a rank, not a bound). With the
+    /// own extent it tells how far the triangle travels for its size (module docs, **Travel**).
+    /// Counts the start boxes' operations (three points per axis, four projections).
+    pub fn start_area(setup: &Setup, ops: &mut Ops) -> u32 {
+        let (vp, bnd) = (setup.viewport, setup.prec.bnd());
+        let axes = [
+            start_boxes(&setup.tri, 0, i64::from(vp.w), bnd, ops),
+            start_boxes(&setup.tri, 1, i64::from(vp.h), bnd, ops),
+        ];
+        own_area(setup.footprint, &axes, bnd)
     }
     /// The area the rule ranks a triangle by, in pixels: per axis the least of the footprint's
     /// side and the sides of the boxes at the two lens corners (module docs), multiplied. A
@@ -172,32 +197,39 @@ impl Auto {
     /// an axis with a side unbounded (a camera-plane crossing) takes the footprint's side.
     /// The footprint's sides are ≤ 2048 (the viewport), so the area is ≤ 2^22.
     pub fn area(setup: &Setup) -> u32 {
-        let fp = setup.footprint;
-        let bnd = setup.prec.bnd();
-        let sides = [fp.x1.saturating_sub(fp.x0), fp.y1.saturating_sub(fp.y0)];
-        let [w, h] = [0, 1].map(|k| {
-            let full = sides.get(k).copied().unwrap_or(0);
-            let own = setup.axes.get(k).and_then(|b| match (b.lo, b.hi) {
-                // Raw coordinates |X| < 2^57 (formats.rs): floors, difference and + 1 exact.
-                (Some(lo), Some(hi)) => lo
-                    .iter()
-                    .zip(&hi)
-                    .map(|(l, h)| {
-                        floor_px(*h, bnd)
-                            .saturating_sub(floor_px(*l, bnd))
-                            .saturating_add(1)
-                    })
-                    .min(),
-                _ => None,
-            });
-            // ≤ the footprint's side ≤ 2048: the conversion is exact; a side < 1 cannot occur
-            // (hi ≥ lo at each corner) and is taken as 0.
-            own.map_or(full, |o| {
-                u16::try_from(o.clamp(0, i64::from(full))).unwrap_or(full)
-            })
-        });
-        u32::from(w).saturating_mul(u32::from(h))
+        own_area(setup.footprint, &setup.axes, setup.prec.bnd())
     }
+}
+
+/// Per axis the least of the footprint's side and the sides of `axes`' boxes at the two lens
+/// corners, multiplied ([`Auto::area`]). A box's side is counted as the footprint counts it
+/// (`floor(hi) − floor(lo) + 1` pixels); an axis with a side unbounded (a camera-plane
+/// crossing) takes the footprint's side. The footprint's sides are ≤ 2048 (the viewport), so
+/// the area is ≤ 2^22.
+fn own_area(fp: PixelRect, axes: &[AxisBoxes; 2], bnd: u32) -> u32 {
+    let sides = [fp.x1.saturating_sub(fp.x0), fp.y1.saturating_sub(fp.y0)];
+    let [w, h] = [0, 1].map(|k| {
+        let full = sides.get(k).copied().unwrap_or(0);
+        let own = axes.get(k).and_then(|b| match (b.lo, b.hi) {
+            // Raw coordinates |X| < 2^57 (formats.rs): floors, difference and + 1 exact.
+            (Some(lo), Some(hi)) => lo
+                .iter()
+                .zip(&hi)
+                .map(|(l, h)| {
+                    floor_px(*h, bnd)
+                        .saturating_sub(floor_px(*l, bnd))
+                        .saturating_add(1)
+                })
+                .min(),
+            _ => None,
+        });
+        // ≤ the footprint's side ≤ 2048: the conversion is exact; a side < 1 cannot occur
+        // (hi ≥ lo at each corner) and is taken as 0.
+        own.map_or(full, |o| {
+            u16::try_from(o.clamp(0, i64::from(full))).unwrap_or(full)
+        })
+    });
+    u32::from(w).saturating_mul(u32::from(h))
 }
 
 impl BoundsStrategy for Auto {

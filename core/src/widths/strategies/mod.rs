@@ -52,6 +52,7 @@ pub fn inventory(name: &str, cfg: &Config) -> Option<Inventory> {
         }
         "auto" => {
             auto_pick(i);
+            auto_travel(i, cfg);
             hull::push(i, cfg);
             edge_time::push(i, cfg);
             laine::push(i, cfg);
@@ -125,5 +126,109 @@ fn auto_pick(inv: &mut Inventory) {
         OpKind::Cmp { bits: area },
         2,
         Classes::ALL,
+    );
+}
+
+/// `Auto::start_area` and the travel limit (`Tier::pick_travel`), per moving triangle whose
+/// area picks hull+edge-t under a tier with a limit: the lens-corner boxes of the three
+/// shutter-open vertices (`setup::boxes::start_boxes`, setup's box path on three points
+/// without ε: corner points, the camera-plane test per side, the ratio compares by
+/// cross-multiplication, one projection per box end), their area as the own extent's, and the
+/// limit's multiply and compare. The rule's tiers without a limit never run it; the unit builds
+/// it for the moving classes.
+// Counts are products of small constants (axes 2, lens corners 2, box ends 2, points 3).
+#[allow(clippy::arithmetic_side_effects)]
+fn auto_travel(inv: &mut Inventory, cfg: &Config) {
+    let t = crate::widths::stages::table(cfg);
+    let num = laine::row_bits(&t, "setup", "projection numerator");
+    let quot = laine::row_bits(&t, "setup", "box coordinate");
+    let side = ext().bits();
+    let (tri, m) = (Stage::Triangle, Classes::MOTION);
+    inv.op(
+        tri,
+        "start box: corner points `a ± |c|`, `a + u·c` (2 axes × 3 points × 2)",
+        OpKind::Add { bits: 32 },
+        2 * 3 * 2 * 2,
+        m,
+    );
+    inv.op(
+        tri,
+        "start box: camera-plane test products (2 axes × 2 sides × (2 per point + 2))",
+        OpKind::Mul { a: 32, b: 32 },
+        2 * 2 * (2 * 3 + 2),
+        m,
+    );
+    inv.op(
+        tri,
+        "start box: camera-plane test compares and sum (2 axes × 2 sides × 4)",
+        OpKind::Cmp { bits: 64 },
+        2 * 2 * 4,
+        m,
+    );
+    inv.op(
+        tri,
+        "start box: ratio products `a·w′`, `a′·w` (2 axes × 2 lens corners × 2 ends × 3 points × 2)",
+        OpKind::Mul { a: 32, b: 32 },
+        2 * 2 * 2 * 3 * 2,
+        m,
+    );
+    inv.op(
+        tri,
+        "start box: ratio compares (2 axes × 2 lens corners × 2 ends × 3 points)",
+        OpKind::Cmp { bits: 64 },
+        2 * 2 * 2 * 3,
+        m,
+    );
+    inv.op(
+        tri,
+        "start box: projection numerator `(a + w)·E·2^BND` (2 axes × 2 lens corners × 2 ends)",
+        OpKind::Mul { a: 33, b: side },
+        2 * 2 * 2,
+        m,
+    );
+    inv.op(
+        tri,
+        "start box: box end `num / 2w`",
+        OpKind::Div {
+            den: 31,
+            quot: quot.max(num.saturating_sub(31)),
+        },
+        2 * 2 * 2,
+        m,
+    );
+    inv.op(
+        tri,
+        "start sides `⌊hi⌋ − ⌊lo⌋ + 1`, 2 axes × 2 lens corners",
+        OpKind::Add { bits: 64 },
+        2 * 2 * 2,
+        m,
+    );
+    inv.op(
+        tri,
+        "least start side per axis (2 corners, footprint)",
+        OpKind::Cmp { bits: 64 },
+        2 * 2,
+        m,
+    );
+    inv.op(
+        tri,
+        "start box's area",
+        OpKind::Mul { a: side, b: side },
+        1,
+        m,
+    );
+    inv.op(
+        tri,
+        "travel limit `edge_travel × start`",
+        OpKind::Mul { a: 32, b: side * 2 },
+        1,
+        m,
+    );
+    inv.op(
+        tri,
+        "travel compare `area > edge_travel × start`",
+        OpKind::Cmp { bits: 32 },
+        1,
+        m,
     );
 }
