@@ -10,8 +10,11 @@
 //! figures pooled over a class's rows put game motion ×2 at full size at 0.87× Laine 2011's,
 //! the row's own at 0.97×); it also counts the samples each pick tests and the samples `best`
 //! tests. Per class, the rule is a tier (Laine 2011 below one area of the triangle's own
-//! extent, `Auto::area`, the hull from it, hull+edge-t from a second, larger or equal area),
-//! chosen among every pair of areas that split the class's triangles by, in turn:
+//! extent, `Auto::area`, the hull from it, hull+edge-t from a second, larger or equal area,
+//! with a travel limit of [`TRAVEL_LIMITS`] or none: hull+edge-t only for triangles whose own
+//! extent is at most that many times their own box at the shutter's start, `Auto::start_area`,
+//! the hull for the others), chosen among every pair of areas that split the class's triangles
+//! and every limit by, in turn:
 //!
 //! 1. the most rows **within the cost cap**: modelled instructions at most [`COST_CAP`] × the
 //!    row's cheapest pick's alone;
@@ -19,7 +22,8 @@
 //!    `best`'s (tested samples ≤ `best`'s ÷ [`STE_FLOOR`]; covered samples are the same for every
 //!    strategy);
 //! 3. the most rows at most Laine 2011's alone;
-//! 4. the least total over all rows; on a tie the larger areas (more Laine 2011, then more hull).
+//! 4. the least total over all rows; on a tie the larger areas (more Laine 2011, then more hull)
+//!    and no travel limit (no start box to compute).
 //!
 //! Cost comes first (the bench holds `auto` to 1.05× the cheapest fixed strategy on every row),
 //! then the efficiency the bench asks on the game rows, then Laine 2011: on the dense defocus

@@ -2,7 +2,8 @@
 //! class, its footprint and its boxes at the two lens corners; the rule ([`RULE`], one [`Tier`]
 //! per class) keeps Laine 2011 (the cheapest setup) below an area of the triangle's own extent
 //! ([`Auto::area`]) and takes heavier strategies with cheaper tiles, predicates and fewer sample
-//! tests ([`Pick`]) from larger areas on: the hull from one area, hull+edge-t from another.
+//! tests ([`Pick`]) from larger areas on: the hull from one area, hull+edge-t from another,
+//! optionally only for triangles that travel little for their size (**Travel**).
 //!
 //! **Why the own extent, not the footprint.** Per axis [`Auto::area`] takes the least of the
 //! footprint's side and the sides of the boxes at the two lens corners: the box at one lens
@@ -18,12 +19,25 @@
 //! took the hull there and paid for it (measured: 1.126× Laine 2011's instructions on the full
 //! dense defocus ×2 row), by its own extent it does not.
 //!
+//! **Travel.** A tier may keep hull+edge-t for the triangles whose own extent is at most
+//! `edge_travel` times their own box at the shutter's start ([`Auto::start_area`]: the same
+//! measure of the lens-corner boxes of the three shutter-open vertices; the other triangles of
+//! that area get the hull). The ratio says how far the triangle travels for its size. What
+//! edge-t adds to the hull is a t bound along the triangle's most oblique edge; on the game
+//! motion rows it bought the sample-test efficiency on triangles that sweep a region a few times
+//! their own size and cost more than it saved on those that sweep far past it (measured by the
+//! rule's model: with the limit the motion tier keeps 92% of `best`'s efficiency on three of the
+//! four game motion rows within 1.03× the row's cheapest candidate; without it on none). The
+//! start box takes four projections per axis, so it is computed only when the area already picks
+//! hull+edge-t under a tier with a limit.
+//!
 //! The rule is derived from measured Cortex-M4F instructions per stage and per strategy on the
 //! bench rows' own triangles at both sizes, each row priced with its own figures (`uvt
 //! auto-rule`, which writes [`rule`] from `host/report/m4_strategies.json`; its module docs
 //! give the totals): per class the tier that keeps the most rows within 1.03× the row's
 //! cheapest candidate, then the most at 92% of `best`'s sample-test efficiency, then the most
-//! at most Laine 2011's, then the least total. [`tier`] holds the rule's types.
+//! at most Laine 2011's, then the least total, over both areas and the travel limit (no limit
+//! on a tie). [`tier`] holds the rule's types.
 //!
 //! **Why it is conservative.** For each triangle `auto` is exactly one of the registry's
 //! strategies — its coefficients, row spans, tile bounds and predicate are that strategy's,
@@ -39,7 +53,9 @@
 //! 16th triangle, `auto` forced to Laine 2011), the check cut `auto`'s setup over Laine 2011's
 //! from 226 to 38 instructions per triangle. Otherwise it adds [`PICK_OPS`] (per axis and lens
 //! corner two floors, a subtract and an add; per axis two minima; the area's multiply; two
-//! compares with the class's thresholds; one select). Per tile and per sample nothing beyond
+//! compares with the class's thresholds; one select), and where the area picks hull+edge-t
+//! under a tier with a travel limit the start boxes' operations (counted by setup's box code)
+//! and [`TRAVEL_OPS`]. Per tile and per sample nothing beyond
 //! the picked strategy's own work: the renderer walks a triangle's tiles with the picked strategy's
 //! own walk and tile type ([`BoundsStrategy::walk`]), so its per-tile and per-sample code is
 //! that strategy's, with one branch per walked region.

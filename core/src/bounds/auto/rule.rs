@@ -7,10 +7,10 @@
 //!
 //! | class | triangles | rule | with the rule | laine2011 | hull | hull+edge-t |
 //! |---|---|---|---|---|---|---|
-//! | static | 9337 | hull from 22 px | 820.8 | 1089.4 | 944.2 | 950.6 |
-//! | motion | 18674 | hull from 74 px, hull+edge-t from 168 px (own extent ≤ 4× its start box) | 4087.8 | 4750.5 | 4312.2 | 4864.7 |
-//! | defocus | 18674 | hull from 124 px | 2649.0 | 3101.6 | 3391.4 | 3428.7 |
-//! | motion+defocus | 18674 | hull from 135 px | 7575.8 | 8328.2 | 8579.2 | 9696.9 |
+//! | static | 9337 | hull from 22 px | 820.5 | 1089.0 | 943.9 | 950.3 |
+//! | motion | 18674 | hull from 74 px, hull+edge-t from 168 px (own extent ≤ 4× its start box) | 4087.8 | 4750.4 | 4312.1 | 4864.6 |
+//! | defocus | 18674 | hull from 124 px | 2648.5 | 3101.0 | 3390.8 | 3428.1 |
+//! | motion+defocus | 18674 | hull from 135 px | 7575.7 | 8328.1 | 8579.1 | 9696.8 |
 //!
 //! Per class and row, with the rule: modelled instructions ÷ Laine 2011's alone and ÷ the
 //! row's cheapest pick's alone (cap: 1.03 × the cheapest's),
