@@ -221,6 +221,26 @@ fn tier_threshold_boundary() {
     assert_eq!(none.pick_travel(u32::MAX - 1, u32::MAX), Pick::Hull);
 }
 
+/// Seeded triangles of every kind (cycled; `rng` from `seed`, 400 cases, 20 000 extensive)
+/// that are visible on a 200 × 200 viewport at the exact precision: (case, kind index,
+/// triangle, setup).
+fn seeded_setups(
+    seed: u64,
+) -> impl Iterator<Item = (usize, usize, uvt_core::Triangle, uvt_core::Setup)> {
+    let mut rng = Rng(seed);
+    let vp = Viewport::new(200, 200).unwrap();
+    (0..cases(400, 20_000) as usize).filter_map(move |case| {
+        let k = case % 8;
+        let mut p = [0.0; NP];
+        p.iter_mut().for_each(|x| *x = rng.range(-1.0, 1.0));
+        let t = make(ALL_KINDS[k], &p);
+        match uvt_core::setup::setup::<Exact, uvt_core::Full>(&t, vp, &mut Default::default()) {
+            uvt_core::setup::Outcome::Visible(s) => Some((case, k, t, s)),
+            _ => None,
+        }
+    })
+}
+
 /// The travel limit (`Tier::edge_travel`): on every kind (seeded, `UVT_SEED`) the pick is the
 /// tier's at `Auto::area` and `Auto::start_area`; the start box's area is at most the own
 /// extent's (the start vertices are among the vertices the own extent holds) and below it on
@@ -229,19 +249,8 @@ fn tier_threshold_boundary() {
 #[test]
 fn the_travel_limit_reads_the_start_box() {
     let seed = seed();
-    let mut rng = Rng(seed ^ 0x7a4e);
     let (mut smaller, mut limited, mut kept) = (0u32, 0u32, 0u32);
-    for case in 0..cases(400, 20_000) {
-        let k = (case % 8) as usize;
-        let mut p = [0.0; NP];
-        p.iter_mut().for_each(|x| *x = rng.range(-1.0, 1.0));
-        let t = make(ALL_KINDS[k], &p);
-        let vp = Viewport::new(200, 200).unwrap();
-        let uvt_core::setup::Outcome::Visible(s) =
-            uvt_core::setup::setup::<Exact, uvt_core::Full>(&t, vp, &mut Default::default())
-        else {
-            continue;
-        };
+    for (case, k, t, s) in seeded_setups(seed ^ 0x7a4e) {
         let a = Auto::area(&s);
         let mut start_ops = uvt_core::Ops::default();
         let st = Auto::start_area(&s, &mut start_ops);
@@ -326,19 +335,8 @@ fn committed_rule_is_derived_from_the_committed_stage_costs() {
 #[test]
 fn the_footprint_check_never_changes_the_pick() {
     let seed = seed();
-    let mut rng = Rng(seed ^ 0xf007);
     let mut early = 0u32;
-    for case in 0..cases(400, 20_000) {
-        let k = (case % 8) as usize;
-        let mut p = [0.0; NP];
-        p.iter_mut().for_each(|x| *x = rng.range(-1.0, 1.0));
-        let t = make(ALL_KINDS[k], &p);
-        let vp = Viewport::new(200, 200).unwrap();
-        let uvt_core::setup::Outcome::Visible(s) =
-            uvt_core::setup::setup::<Exact, uvt_core::Full>(&t, vp, &mut Default::default())
-        else {
-            continue;
-        };
+    for (case, k, _, s) in seeded_setups(seed ^ 0xf007) {
         let f = s.footprint();
         let fp = u32::from(f.x1 - f.x0) * u32::from(f.y1 - f.y0);
         let a = Auto::area(&s);
