@@ -231,18 +231,47 @@ fn beats(c: &Goal, g: &Goal) -> bool {
     c.0 > g.0 || (c.0 == g.0 && c.1 > g.1 + 1e-6 * g.1.abs())
 }
 
+/// Per row of a class (stage-file index), with hindsight over every fixed strategy (module
+/// docs; the same at every tier, so computed once): every triangle on its cheapest, and the
+/// fewest samples tested within [`GOAL_CAP`] × the row's cheapest fixed strategy alone.
+type RowHindsight = BTreeMap<usize, (f64, Option<f64>)>;
+
+/// [`RowHindsight`] of `tris`.
+fn hindsight(tris: &[TriModel]) -> RowHindsight {
+    let mut rows: BTreeMap<usize, Vec<Vec<Choice>>> = BTreeMap::new();
+    for t in tris {
+        rows.entry(t.row).or_default().push(t.fixed.clone());
+    }
+    rows.into_iter()
+        .map(|(row, choices)| {
+            let alone = (0..choices.first().map_or(0, Vec::len))
+                .map(|k| {
+                    choices
+                        .iter()
+                        .filter_map(|c| c.get(k))
+                        .map(|x| x.cost)
+                        .sum()
+                })
+                .fold(f64::INFINITY, f64::min);
+            let fewest = least_tested_within(&choices, GOAL_CAP * alone * (1.0 + 1e-9));
+            (row, (least_cost(&choices), fewest))
+        })
+        .collect()
+}
+
 /// The best tier of one class's triangles over every limit of [`TRAVEL_LIMITS`] (module docs):
 /// [`best_tier_at`] at each, the first of the best kept.
 fn best_tier(tris: &mut [TriModel]) -> ClassRule {
     let alone: [f64; 3] = [0, 1, 2].map(|k| tris.iter().map(|t| t.cost[k]).sum());
+    let hind = hindsight(tris);
     let mut best: Option<(ClassRule, Goal)> = None;
     for k in TRAVEL_LIMITS {
-        let c = best_tier_at(tris, k);
+        let c = best_tier_at(tris, k, &hind);
         if best.as_ref().map_or(true, |b| beats(&c.1, &b.1)) {
             best = Some(c);
         }
     }
-    let (mut r, _) = best.unwrap_or_else(|| best_tier_at(tris, u32::MAX));
+    let (mut r, _) = best.unwrap_or_else(|| best_tier_at(tris, u32::MAX, &hind));
     r.alone = alone;
     r
 }
@@ -252,7 +281,7 @@ fn best_tier(tris: &mut [TriModel]) -> ClassRule {
 /// (the hull where the travel limit turns it off, `Tier::pick_travel`) on the rest, for every
 /// `i ≤ j` at a change of area (or an end); the most rows within the cost cap, then held to
 /// [`STE_FLOOR`], then at most Laine 2011's, then the least total.
-fn best_tier_at(tris: &mut [TriModel], edge_travel: u32) -> (ClassRule, Goal) {
+fn best_tier_at(tris: &mut [TriModel], edge_travel: u32, hind: &RowHindsight) -> (ClassRule, Goal) {
     tris.sort_by_key(|t| t.area);
     let limited = Tier {
         hull_from: u32::MAX,
@@ -362,22 +391,7 @@ fn best_tier_at(tris: &mut [TriModel], edge_travel: u32) -> (ClassRule, Goal) {
         .iter()
         .enumerate()
         .map(|(r, &row)| {
-            // Hindsight (module docs): the row's triangles with every fixed strategy.
-            let choices: Vec<Vec<Choice>> = tris
-                .iter()
-                .filter(|t| t.row == row)
-                .map(|t| t.fixed.clone())
-                .collect();
-            let alone = (0..choices.first().map_or(0, Vec::len))
-                .map(|k| {
-                    choices
-                        .iter()
-                        .filter_map(|c| c.get(k))
-                        .map(|x| x.cost)
-                        .sum()
-                })
-                .fold(f64::INFINITY, f64::min);
-            let fewest = least_tested_within(&choices, GOAL_CAP * alone * (1.0 + 1e-9));
+            let (least, fewest) = hind.get(&row).copied().unwrap_or((0.0, None));
             let best = allowed[r] * STE_FLOOR;
             let t = split(&tested[r], i, j);
             let c = split(&row_cost[r], i, j);
@@ -395,7 +409,7 @@ fn best_tier_at(tris: &mut [TriModel], edge_travel: u32) -> (ClassRule, Goal) {
                 },
                 held: held(r, i, j),
                 least_vs_laine: if laine[r] > 0.0 {
-                    least_cost(&choices) / laine[r]
+                    least / laine[r]
                 } else {
                     1.0
                 },
