@@ -14,8 +14,10 @@
 //! 3. [`sample`] — the sample test: the exact test, the bounded (hardware-width) test of a
 //!    [`Bounded`] precision and the planar static test of a [`Planar`] precision, behind one
 //!    dispatch.
-//! 4. [`raster`] — the tile framebuffer, resolve, the render loop and its optional Zmax culling
-//!    ([`Zmax`], Akenine-Möller et al. 2007 §3.4); [`units`] — the
+//! 4. [`raster`] — the one render loop ([`Engine`]: any region of the screen into any sample
+//!    store, watched by an [`Observer`]), the tile framebuffer, resolve, the no-heap
+//!    [`Renderer`] and the optional Zmax culling ([`Zmax`], Akenine-Möller et al. 2007 §3.4);
+//!    [`units`] — the
 //!    static-only unit's own setup, 2D tile cull and sample test at a [`Planar`] precision, and
 //!    the motion-only unit's own setup, time-slab tile cull and sample test at a bounded
 //!    precision.
@@ -66,9 +68,12 @@ pub use config::unit::{DefocusOnly, Full, MotionOnly, StaticOnly, Unit};
 pub use embedded_graphics_core::pixelcolor::Rgb888;
 pub use error::{Error, Field, SampleField};
 pub use input::{PixelRect, Prim, Sample, SamplePattern, Triangle, Vertex, Viewport};
+pub use raster::engine::{Drawn, Engine};
+pub use raster::observe::{Fate, Observer, Seen, Unobserved};
 pub use raster::renderer::{MotionRenderer, Raster, RenderError, Renderer, StaticRenderer};
-pub use raster::tile_buffer::{resolve_colors, DepthTest, PixelStats, TileBuffer};
-pub use raster::zmax::{DepthCull, NoZmax, Zmax};
+pub use raster::store::{resolve_colors, DepthTest, PixelStats, RegionBuffer, SampleStore};
+pub use raster::tile_buffer::TileBuffer;
+pub use raster::zmax::{DepthCull, NoZmax, RegionMax, Zmax};
 pub use sample::bounded::BoundedEval;
 pub use sample::exact::ExactEval;
 pub use sample::planar::PlanarEval;

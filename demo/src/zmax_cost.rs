@@ -19,7 +19,7 @@
 use core::hint::black_box;
 
 use uvt_core::config::unit::Full;
-use uvt_core::raster::zmax::{PixelMax, ZmaxRegisters};
+use uvt_core::raster::zmax::{Cleared, PixelMax, ZmaxRegisters};
 use uvt_core::units::select::{PipelineOf, Select};
 use uvt_core::{Laine2011, Ops, Outcome, Pipeline, Precision, Rgb888, TileBuffer};
 

@@ -14,8 +14,8 @@ use uvt_core::bounds::registry::{hull_edge, hull_lens, STRATEGIES};
 use uvt_core::bounds::strategy::BoundsStrategy;
 
 use crate::bench::strategy::{run_strategy_image, StratResult};
-use crate::frame::driver::{run, RunOpts};
-use crate::frame::pipelines::Reference;
+use crate::frame::opts::RunOpts;
+use crate::frame::reference::run_reference;
 use crate::scene::file::Scene;
 use crate::scene::pattern::Pattern;
 
@@ -70,12 +70,8 @@ pub fn sweep(scene: &Scene, repeats: usize) -> Result<Vec<Point>> {
     let mut reference = vec![[0.0f64; 3]; w * h];
     for k in 0..REF_FRAMES {
         let pat = Pattern::new(scene.pattern, 64, scene.seed ^ (0x05ee_df64 + k));
-        let f = run(
-            &Reference {
-                vp: scene.viewport,
-                tris: &scene.tris,
-                pattern: &pat,
-            },
+        let f = run_reference(
+            &scene.tris,
             &pat,
             &RunOpts {
                 spp: 64,
@@ -99,8 +95,7 @@ pub fn sweep(scene: &Scene, repeats: usize) -> Result<Vec<Point>> {
         for name in strategies() {
             let mut runs: Vec<(StratResult, Vec<[u8; 3]>)> = Vec::new();
             for _ in 0..repeats.max(1) {
-                let (r, img) = run_strategy_image(name, vp, &core, &pat, &o)
-                    .ok_or_else(|| anyhow!("unknown strategy {name}"))?;
+                let (r, img) = run_strategy_image(name, vp, &core, &pat, &o)?;
                 runs.push((r, img));
             }
             runs.sort_by(|a, b| a.0.ms.total_cmp(&b.0.ms));

@@ -1,14 +1,15 @@
-//! The f64 reference and the host driver: the reference's own bounds are conservative against its
-//! brute-force coverage; the core agrees with the reference on every sample farther than the
-//! documented quantization distance from an edge; the host's frame driver gives exactly the
-//! core renderer's image and counters.
+//! The f64 reference and the core's frames: the reference's own bounds are conservative against
+//! its brute-force coverage; the core agrees with the reference on every sample farther than the
+//! documented quantization distance from an edge; the core's loop over 8-row bands on threads
+//! (the host's frame) gives exactly the image and counters of the same loop over 8×8 screen
+//! tiles (the no-heap renderer's).
 
 use embedded_graphics_core::pixelcolor::RgbColor;
-use uvt_core::{Laine2011, Prim, Renderer, Rgb888};
+use uvt_core::{DefaultPrecision, Laine2011, NoZmax, Prim, Renderer, Rgb888};
 use uvt_host::bench::ste_table::Timing;
+use uvt_host::bench::strategy::run_frame;
 use uvt_host::frame::compare::compare;
-use uvt_host::frame::driver::{run, RunOpts};
-use uvt_host::frame::pipelines::Fixed;
+use uvt_host::frame::opts::RunOpts;
 use uvt_host::reference;
 use uvt_host::scene::builtin;
 use uvt_host::scene::file::Scene;
@@ -112,19 +113,21 @@ fn core_agrees_with_reference_beyond_quantization_distance() {
     println!("default+random: {d:?}");
 }
 
-/// The host's banded parallel driver reproduces `uvt_core::Renderer` exactly (image and counters).
-/// (The no-heap renderer keeps 4096 setups inline, so this runs on a thread with a large stack.)
+/// The core's loop over 8-row bands on threads (`uvt_host::frame::core_frame`) reproduces the same
+/// loop over 8×8 screen tiles (`uvt_core::Renderer`) exactly: image and every counter, at every
+/// bounds-tile size. (The no-heap renderer keeps 4096 setups inline, so this runs on a thread
+/// with a large stack.)
 #[test]
-fn host_driver_matches_core_renderer() {
+fn bands_match_screen_tiles() {
     std::thread::Builder::new()
         .stack_size(256 << 20)
-        .spawn(driver_matches)
+        .spawn(bands_match)
         .unwrap()
         .join()
         .unwrap();
 }
 
-fn driver_matches() {
+fn bands_match() {
     let s = builtin::default_scene();
     let core = s.core_tris().unwrap();
     let vp = s.core_viewport();
@@ -137,7 +140,7 @@ fn driver_matches() {
             image: true,
             ..RunOpts::for_scene(&s, &colors)
         };
-        let f = run(&Fixed::new(Laine2011, vp, &core, &pat), &pat, &o);
+        let f = run_frame::<_, DefaultPrecision, NoZmax>(Laine2011, vp, &core, &pat, &o).unwrap();
         let prims: Vec<Prim> = core
             .iter()
             .zip(&colors)
@@ -186,8 +189,25 @@ fn driver_matches() {
             "tile {tile}"
         );
         assert_eq!(
-            (cs.ops.setup, cs.ops.bounds, cs.ops.sample),
-            (fs.ops_setup, fs.ops_bounds, fs.ops_sample),
+            (cs.tiles_zculled, cs.samples_written),
+            (fs.tiles_zculled, fs.samples_written),
+            "tile {tile}"
+        );
+        assert_eq!(
+            (
+                cs.ops.setup,
+                cs.ops.bounds,
+                cs.ops.sample,
+                cs.ops.predicate,
+                cs.ops.zmax
+            ),
+            (
+                fs.ops_setup,
+                fs.ops_bounds,
+                fs.ops_sample,
+                fs.ops_predicate,
+                fs.ops_zmax
+            ),
             "tile {tile}"
         );
     }
@@ -208,20 +228,24 @@ fn bench_rows_fixed_and_f64_ste_within_two_percent() {
         &Blur::ALL,
         false,
         None,
-    );
+    )
+    .unwrap();
     let dense: &[Blur] = if uvt_tests::extensive() {
         &Blur::ALL
     } else {
         &[Blur::Static]
     };
-    rows.extend(uvt_host::bench::ste_table::run_table(
-        true,
-        Timing::ONCE,
-        &[Bench::Dense],
-        dense,
-        false,
-        None,
-    ));
+    rows.extend(
+        uvt_host::bench::ste_table::run_table(
+            true,
+            Timing::ONCE,
+            &[Bench::Dense],
+            dense,
+            false,
+            None,
+        )
+        .unwrap(),
+    );
     assert_eq!(rows.len(), 7 + dense.len());
     for r in &rows {
         let laine = r.strat("laine2011").expect("laine2011 column");
@@ -269,7 +293,8 @@ fn axis_aligned_limit_converged_and_below_axis_aligned_strategies() {
         &[builtin::Blur::Both2],
         false,
         Some(uvt_host::bench::ste_table::ORACLE_EFFORT),
-    );
+    )
+    .unwrap();
     let r = &rows[0];
     let l = &r.limit;
     let laine = r.strat("laine2011").expect("laine2011");
@@ -335,7 +360,7 @@ fn bench_rows_every_strategy_conservative_at_the_bounded_precision() {
             tile: 1,
             ..RunOpts::for_scene(&s, &colors)
         };
-        let bbox = uvt_host::bench::strategy::run_strategy_at::<BoundedPrecision>(
+        let bbox = uvt_host::bench::strategy::run_strategy_at::<BoundedPrecision, NoZmax>(
             "bbox",
             s.core_viewport(),
             &core,

@@ -16,7 +16,8 @@ fn sweep_is_conservative_and_converges_to_the_default() {
         rows: vec![Blur::Both],
         tiles: vec![1, 2, 4, 8],
         shrink: 4,
-    });
+    })
+    .unwrap();
     assert_eq!(rows.len(), configs.len() * 4);
     for r in &rows {
         assert_eq!(r.violations, 0, "{r:?}");
@@ -62,7 +63,7 @@ fn stress_scenes_hold() {
     let scenes = stress_scenes(&dir).unwrap();
     assert_eq!(scenes.len(), 13, "the stress suite lists 13 cases");
     for s in &scenes {
-        let r = stress_row(s);
+        let r = stress_row(s).unwrap();
         assert_eq!(r.violations, 0, "{}: {r:?}", s.name);
         assert_eq!(r.beyond_bound, 0, "{}: {r:?}", s.name);
         assert_eq!(r.lost, 0, "{}: covered but not written: {r:?}", s.name);

@@ -2,8 +2,8 @@
 //! depth for triangles of every kind at every precision and pipeline; rendering with and without
 //! Zmax gives bit-identical colors, depths and written counts on seeded occluding scenes (every
 //! unit, precision and bounds-tile size), on every stress and example scene and on the bench's
-//! occlusion rows, while Zmax does skip tiles; the core renderer and the host's frame driver
-//! skip the same tiles. Seed: `UVT_SEED`; more cases with `UVT_EXTENSIVE=1`.
+//! occlusion rows, while Zmax does skip tiles; the core's loop over screen tiles (the no-heap
+//! renderer) and over 8-row bands (the host's frame) skip the same tiles. Seed: `UVT_SEED`; more cases with `UVT_EXTENSIVE=1`.
 
 use uvt_core::config::formats::DEPTH_NEAR;
 use uvt_core::{
@@ -11,8 +11,7 @@ use uvt_core::{
     Ops, Pipeline, PipelineOf, PlanarPrecision, Precision, Prim, Raster, Rgb888, SamplePattern,
     ScreenPos, Select, StaticOnly, Stats, TileBuffer, Triangle, Unit, Viewport, Zmax,
 };
-use uvt_host::frame::driver::{run, RunOpts};
-use uvt_host::frame::pipelines::Fixed;
+use uvt_host::frame::opts::RunOpts;
 use uvt_host::scene::file::Scene;
 use uvt_host::scene::pattern::Pattern;
 use uvt_tests::kinds::{make, ALL_KINDS, NP};
@@ -348,8 +347,8 @@ fn seeded_scenes_render_identically_with_zmax() {
     }
 }
 
-/// The host's frame driver with and without Zmax on `scene` at precision `P` with `strategy`:
-/// the same image, never more tests; returns (tested without, tested with, tiles skipped).
+/// The core's frame with and without Zmax on `scene` at precision `P` with `strategy`: the same
+/// image, never more tests; returns (tested without, tested with, tiles skipped).
 fn driver_pair<P: Precision + Sync>(scene: &Scene, strategy: &str) -> (u64, u64, u64) {
     let (tris, pattern) = scene.inputs_at::<P>().expect("scene on the grid");
     let colors = scene.colors();
@@ -357,22 +356,14 @@ fn driver_pair<P: Precision + Sync>(scene: &Scene, strategy: &str) -> (u64, u64,
         image: true,
         ..RunOpts::for_scene(scene, &colors)
     };
-    let go = |zmax: bool| {
-        let o = RunOpts {
-            zmax,
-            ..base.clone()
-        };
-        uvt_host::bench::strategy::run_strategy_at::<P>(
-            strategy,
-            scene.core_viewport(),
-            &tris,
-            &pattern,
-            &o,
-        )
-        .expect("a registry strategy")
-    };
-    let (a, ia) = go(false);
-    let (b, ib) = go(true);
+    let vp = scene.core_viewport();
+    let (a, ia) = uvt_host::bench::strategy::run_strategy_at::<P, NoZmax>(
+        strategy, vp, &tris, &pattern, &base,
+    )
+    .expect("a registry strategy");
+    let (b, ib) =
+        uvt_host::bench::strategy::run_strategy_at::<P, Zmax>(strategy, vp, &tris, &pattern, &base)
+            .expect("a registry strategy");
     let diff = ia.iter().zip(&ib).position(|(x, y)| x != y);
     assert!(
         ia.len() == ib.len() && diff.is_none(),
@@ -434,11 +425,12 @@ fn occlusion_rows_render_identically_and_cull() {
     }
 }
 
-/// The core renderer and the host's frame driver make the same Zmax decisions: on a stress
-/// scene with overlap, the same samples tested and written, tiles skipped and Zmax operations
-/// (floors, register refreshes, tile checks) with Zmax.
+/// The core's loop over 8×8 screen tiles (the no-heap renderer) and over 8-row bands (the
+/// host's frame) make the same Zmax decisions: on a stress scene with overlap, the same samples
+/// tested and written, tiles skipped and Zmax operations (floors, register refreshes, tile
+/// checks) with Zmax.
 #[test]
-fn core_renderer_and_frame_driver_skip_the_same_tiles() {
+fn screen_tiles_and_bands_skip_the_same_tiles() {
     let mut rng = Rng(seed() ^ 0x2a);
     let vp = Viewport::new(40, 24).expect("vp");
     let prims = prims::<DefaultPrecision>(&mut rng, 20);
@@ -461,9 +453,11 @@ fn core_renderer_and_frame_driver_skip_the_same_tiles() {
         image: false,
         label: "zmax",
         oracle: None,
-        zmax: true,
     };
-    let f = run(&Fixed::new(Laine2011, vp, &tris, &pattern), &pattern, &o);
+    let f = uvt_host::bench::strategy::run_frame::<_, DefaultPrecision, Zmax>(
+        Laine2011, vp, &tris, &pattern, &o,
+    )
+    .expect("frame");
     let core = (
         r.stats.samples_tested,
         r.stats.samples_written,

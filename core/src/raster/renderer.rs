@@ -1,36 +1,29 @@
-//! Stage 4 — the render loop: one [`Raster`] over any unit's pipeline, and the
-//! [`Renderer`] a user instantiates — the raster of the pipeline
-//! [`crate::units::select`] picks for a (precision, unit).
+//! Stage 4 — the no-heap renderer: [`Raster`], the render loop ([`crate::raster::engine`]) with
+//! a fixed-capacity list of triangles and a screen walk in tiles, and the [`Renderer`] a user
+//! instantiates — the raster of the pipeline [`crate::units::select`] picks for a (precision,
+//! unit).
 //!
-//! [`Raster`] sets every triangle up exactly once into a fixed-capacity `heapless::Vec` (no
-//! heap; memory is `N` pipeline entries plus one tile buffer, and with Zmax one register per pixel
-//! of the screen tile), then walks the screen tile by tile; per screen tile, per triangle whose
-//! footprint meets it, the pipeline walks the bounds
-//! tiles (aligned to the bounds-tile grid, clipped to footprint and screen tile) with its tile
-//! step — the general pipeline's (u, v, t) intervals, row by row with the strategy's row spans;
-//! the specialised units' own culls — and the one per-cell loop ([`shade_cell`]) runs the
-//! pipeline's sample test on the samples the tile admits, depth-tests the hits into the
-//! [`TileBuffer`] and counts in [`Stats`] (`samples_covered = samples_written +
-//! samples_occluded`). Resolve averages the S samples per channel with round-half-up.
-
-use core::marker::PhantomData;
+//! [`Raster`] sets every triangle up exactly once ([`Engine::setup`]) into a fixed-capacity
+//! `heapless::Vec` (no heap; memory is `N` entries plus one tile buffer, and with Zmax one
+//! register per pixel of the screen tile), then walks the screen tile by tile, each screen tile
+//! one region of [`Engine::render_region`] into a [`TileBuffer`]. Resolve averages the S
+//! samples per channel with round-half-up.
 
 use embedded_graphics_core::draw_target::DrawTarget;
 use embedded_graphics_core::pixelcolor::Rgb888;
 use embedded_graphics_core::prelude::{Pixel, Point};
 
 use crate::bounds::laine::Laine2011;
-use crate::bounds::strategy::{Admit, CellVisitor};
-use crate::config::formats::DEPTH_NEAR;
 use crate::config::precision::{DefaultPrecision, PlanarPrecision};
 use crate::config::unit::{Full, MotionOnly, StaticOnly, Unit};
 use crate::error::Error;
 use crate::input::{PixelRect, Prim, SamplePattern, Viewport};
-use crate::raster::tile_buffer::{tile_size, DepthTest, PixelStats, TileBuffer};
-use crate::raster::zmax::{DepthCull, NoZmax, ZmaxRegisters};
-use crate::sample::pos::ScreenPos;
-use crate::setup::{Cull, Outcome};
-use crate::stats::{Ops, Stats};
+use crate::raster::engine::{refused, Drawn, Engine};
+use crate::raster::observe::Unobserved;
+use crate::raster::store::PixelStats;
+use crate::raster::tile_buffer::{tile_size, TileBuffer};
+use crate::raster::zmax::{Cleared, DepthCull, NoZmax};
+use crate::stats::Stats;
 use crate::units::pipeline::Pipeline;
 use crate::units::select::PipelineOf;
 
@@ -55,17 +48,14 @@ pub type StaticRenderer<const N: usize> = Renderer<Laine2011, N, PlanarPrecision
 pub type MotionRenderer<const N: usize, P = DefaultPrecision> =
     Renderer<Laine2011, N, P, MotionOnly>;
 
-/// The render loop over pipeline `L`, holding at most `N` visible triangles (module docs), with
+/// The render loop of pipeline `L` holding at most `N` visible triangles (module docs), with
 /// Zmax culling `Z` ([`crate::raster::zmax`]; [`NoZmax`] compiles it out). [`Renderer`] names it
 /// by precision and unit; a pipeline can also be named directly (e.g. the general pipeline on a
 /// unit that has its own, to compare the two).
 pub struct Raster<L: Pipeline, const N: usize, Z: DepthCull = NoZmax> {
-    pipe: L,
-    vp: Viewport,
-    /// per visible triangle: its entry, color and depth floor ([`Pipeline::depth_floor`] with
-    /// Zmax, else `DEPTH_NEAR`)
-    entries: heapless::Vec<(L::Entry, Rgb888, i32), N>,
-    cull: PhantomData<Z>,
+    engine: Engine<L, Z>,
+    /// the visible triangles, in order
+    entries: heapless::Vec<Drawn<L::Entry>, N>,
     /// counters accumulated over setup and every rendered tile
     pub stats: Stats,
 }
@@ -87,10 +77,8 @@ impl<L: Pipeline, const N: usize, Z: DepthCull> Raster<L, N, Z> {
     /// place: the caller's frame then holds the only copy of the entries.
     pub fn empty(bounds: L::Bounds, vp: Viewport) -> Self {
         Raster {
-            pipe: L::new(bounds),
-            vp,
+            engine: Engine::new(bounds, vp),
             entries: heapless::Vec::new(),
-            cull: PhantomData,
             stats: Stats::default(),
         }
     }
@@ -108,40 +96,20 @@ impl<L: Pipeline, const N: usize, Z: DepthCull> Raster<L, N, Z> {
                 return Err(refused::<L>(index, class));
             }
         }
-        let vp = self.vp;
         let Raster {
-            pipe,
+            engine,
             entries,
             stats,
-            ..
         } = self;
         for (index, p) in prims.iter().enumerate() {
-            Stats::inc(&mut stats.triangles);
-            // Every class is accepted (checked above): `Err` cannot occur; were it to, the
+            // Every class is accepted (checked above): a refusal cannot occur; were it to, the
             // primitive is refused, never rendered.
-            let pushed = match pipe.setup(&p.tri, vp, &mut stats.ops) {
-                Outcome::Refused(class) => Err(refused::<L>(index, class)),
-                Outcome::Culled(Cull::Outside) => {
-                    Stats::inc(&mut stats.culled_outside);
-                    Ok(())
-                }
-                Outcome::Culled(Cull::Degenerate) => {
-                    Stats::inc(&mut stats.culled_degenerate);
-                    Ok(())
-                }
-                Outcome::Visible(e) => {
-                    if let Some(c) = stats.by_class.get_mut(L::class(&e).index()) {
-                        Stats::inc(c);
-                    }
-                    let floor = if Z::ENABLED {
-                        L::depth_floor(&e, &mut stats.ops)
-                    } else {
-                        DEPTH_NEAR
-                    };
-                    entries
-                        .push((e, p.color, floor))
-                        .map_err(|_| Error::TooManyTriangles { capacity: N })
-                }
+            let pushed = match engine.setup(index, p, stats) {
+                Ok(None) => Ok(()),
+                Ok(Some(d)) => entries
+                    .push(d)
+                    .map_err(|_| Error::TooManyTriangles { capacity: N }),
+                Err(e) => Err(e),
             };
             if let Err(e) = pushed {
                 entries.clear();
@@ -154,7 +122,7 @@ impl<L: Pipeline, const N: usize, Z: DepthCull> Raster<L, N, Z> {
     /// The visible triangles' pipeline entries (the general pipeline's: setup and the
     /// strategy's coefficients), in order.
     pub fn entries(&self) -> impl Iterator<Item = &L::Entry> {
-        self.entries.iter().map(|(e, _, _)| e)
+        self.entries.iter().map(Drawn::entry)
     }
 
     /// Render the screen tile whose top-left pixel is (`x0`, `y0`) into `fb` (cleared first).
@@ -167,39 +135,26 @@ impl<L: Pipeline, const N: usize, Z: DepthCull> Raster<L, N, Z> {
         clear: Rgb888,
         fb: &mut TileBuffer<TW, TH, S>,
     ) -> Result<(), Error> {
-        let screen = tile_screen::<TW, TH, S>(pattern, bounds_tile, x0, y0, &self.vp)?;
+        let screen =
+            tile_screen::<TW, TH, S>(pattern, bounds_tile, x0, y0, &self.engine.viewport())?;
         fb.clear_fill(clear);
-        let bt = u16::from(bounds_tile);
+        // The Zmax registers of this screen tile (zero-sized without Zmax).
+        let mut zregs = <Z::Registers<TW, TH> as Cleared>::cleared();
         let Raster {
-            pipe,
+            engine,
             entries,
             stats,
-            ..
         } = self;
-        let mut ops = Ops::default();
-        // The Zmax registers of this screen tile (zero-sized without Zmax).
-        let mut zregs = <Z::Registers<TW, TH> as ZmaxRegisters<TW, TH>>::cleared();
-        for (entry, color, floor) in entries.iter() {
-            let region = L::footprint(entry).intersect(&screen);
-            if region.is_empty() {
-                continue;
-            }
-            let mut shade = Shade::<L, Z, TW, TH, S> {
-                entry,
-                at: Cell {
-                    screen,
-                    color: *color,
-                    floor: *floor,
-                },
-                pattern,
-                fb: &mut *fb,
-                zregs: &mut zregs,
-                stats: &mut *stats,
-            };
-            pipe.walk(entry, region, bt, &mut ops, &mut shade);
-        }
-        stats.ops.add(&ops);
-        Ok(())
+        engine.render_region(
+            entries.iter(),
+            screen,
+            pattern,
+            bounds_tile,
+            fb,
+            &mut zregs,
+            stats,
+            &mut Unobserved,
+        )
     }
 
     /// Render the whole viewport tile by tile, handing every resolved pixel with its counters to
@@ -212,7 +167,7 @@ impl<L: Pipeline, const N: usize, Z: DepthCull> Raster<L, N, Z> {
         out: impl FnMut(u16, u16, Rgb888, PixelStats),
     ) -> Result<(), Error> {
         let mut fb = TileBuffer::<TW, TH, S>::new_fill(clear);
-        let vp = self.vp;
+        let vp = self.engine.viewport();
         walk_screen(
             vp,
             &mut fb,
@@ -245,115 +200,6 @@ impl<L: Pipeline, const N: usize, Z: DepthCull> Raster<L, N, Z> {
         match draw_err {
             Some(e) => Err(RenderError::Draw(e)),
             None => Ok(()),
-        }
-    }
-}
-
-/// The refusal of primitive `index` of `class` by pipeline `L`'s unit.
-fn refused<L: Pipeline>(index: usize, class: crate::config::class::Class) -> Error {
-    Error::ClassNotInUnit {
-        index,
-        class,
-        unit: <L::Unit as Unit>::NAME,
-    }
-}
-
-/// The screen tile and the triangle's color and depth floor.
-struct Cell {
-    screen: PixelRect,
-    color: Rgb888,
-    floor: i32,
-}
-
-/// The per-cell work of one triangle in one screen tile, handed every bounds tile of the walk
-/// ([`Pipeline::walk`]): a cell the tile step culls (or, on the general pipeline, outside its
-/// row's span) counts as visited and skipped; with Zmax a kept cell whose registers say every
-/// stored sample is nearer than the floor is culled; else [`shade_cell`].
-struct Shade<'a, 'p, L: Pipeline, Z: DepthCull, const TW: usize, const TH: usize, const S: usize> {
-    entry: &'a L::Entry,
-    at: Cell,
-    pattern: &'a SamplePattern<'p>,
-    fb: &'a mut TileBuffer<TW, TH, S>,
-    zregs: &'a mut Z::Registers<TW, TH>,
-    stats: &'a mut Stats,
-}
-
-impl<L: Pipeline, Z: DepthCull, const TW: usize, const TH: usize, const S: usize> CellVisitor
-    for Shade<'_, '_, L, Z, TW, TH, S>
-{
-    #[inline(always)]
-    fn cell<T: Admit>(&mut self, cell: PixelRect, tile: Option<T>, ops: &mut Ops) {
-        Stats::inc(&mut self.stats.tiles_visited);
-        let Some(tile) = tile else {
-            Stats::inc(&mut self.stats.tiles_skipped);
-            return;
-        };
-        let screen = self.at.screen;
-        if Z::ENABLED {
-            // The cell lies inside the screen tile: the offsets are in [0, TW], [0, TH].
-            let rel = |a: u16, b: u16| usize::from(a.saturating_sub(b));
-            let cols = (rel(cell.x0, screen.x0), rel(cell.x1, screen.x0));
-            let rows = (rel(cell.y0, screen.y0), rel(cell.y1, screen.y0));
-            if self.zregs.hides(self.at.floor, cols, rows, ops) {
-                Stats::inc(&mut self.stats.tiles_zculled);
-                return;
-            }
-        }
-        shade_cell::<L, T, Z, TW, TH, S>(self, cell, &tile, ops);
-    }
-}
-
-/// The one per-cell sample loop of every pipeline: each sample of the bounds tile `cell` that
-/// the tile admits ([`Admit`], the walk's own tile type) is tested ([`Pipeline::test`], its
-/// operations counted by the test or [`Pipeline::count`]), counted per pixel, and on a hit
-/// depth-tested into the buffer; a written sample refreshes its pixel's Zmax register (nothing
-/// without Zmax).
-#[inline(always)]
-fn shade_cell<
-    L: Pipeline,
-    T: Admit,
-    Z: DepthCull,
-    const TW: usize,
-    const TH: usize,
-    const S: usize,
->(
-    sh: &mut Shade<'_, '_, L, Z, TW, TH, S>,
-    cell: PixelRect,
-    tile: &T,
-    ops: &mut Ops,
-) {
-    let screen = sh.at.screen;
-    for py in cell.y0..cell.y1 {
-        for px in cell.x0..cell.x1 {
-            // The cell lies inside the screen tile, so both differences are in [0, TW), [0, TH).
-            let (Some(tx), Some(ty)) = (px.checked_sub(screen.x0), py.checked_sub(screen.y0))
-            else {
-                continue;
-            };
-            let (tx, ty) = (usize::from(tx), usize::from(ty));
-            for (si, s) in sh.pattern.pixel(px, py).iter().enumerate() {
-                if !tile.admit(s, ops) {
-                    continue;
-                }
-                Stats::inc(&mut sh.stats.samples_tested);
-                let hit = L::test(sh.entry, ScreenPos::of(px, py, s), s, ops);
-                L::count(hit.is_some(), ops);
-                sh.fb.count(tx, ty, hit.is_some());
-                let Some(h) = hit else {
-                    continue;
-                };
-                Stats::inc(&mut sh.stats.samples_covered);
-                // In range (tx < TW, ty < TH, si < S = spp) and h.depth ≠ DEPTH_EMPTY.
-                match sh.fb.write(tx, ty, si, sh.at.color, h.depth) {
-                    Some(DepthTest::Written) => {
-                        Stats::inc(&mut sh.stats.samples_written);
-                        sh.fb.count_written(tx, ty);
-                        sh.zregs.refresh(sh.fb, tx, ty, ops);
-                    }
-                    Some(DepthTest::Occluded) => Stats::inc(&mut sh.stats.samples_occluded),
-                    None => {}
-                }
-            }
         }
     }
 }

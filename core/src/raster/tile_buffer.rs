@@ -1,30 +1,12 @@
-//! The tiny tile framebuffer: `TW×TH` pixels × `S` samples of color and depth, the depth test
-//! (strictly less wins) and resolve (round half up).
+//! The tiny tile framebuffer: `TW×TH` pixels × `S` samples of color and depth (a
+//! [`SampleStore`] with the one depth test, [`depth_test`]: strictly less wins) and resolve
+//! (round half up).
 
 use embedded_graphics_core::pixelcolor::{Rgb888, RgbColor};
 
 use crate::config::formats::{DEPTH_EMPTY, MAX_VIEWPORT};
 use crate::input::MAX_PATTERN;
-
-/// Per-pixel counters of the last rendered tile.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct PixelStats {
-    /// sample tests run for this pixel (all triangles)
-    pub tested: u32,
-    /// of which covered
-    pub covered: u32,
-    /// of the covered, written (the others were occluded by an earlier triangle's sample)
-    pub written: u32,
-}
-
-/// Outcome of the depth test of one covered sample.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum DepthTest {
-    /// the slot was empty or held a larger depth: color and depth written
-    Written,
-    /// the slot held a depth ≤ this one, written by an earlier sample: nothing changed
-    Occluded,
-}
+use crate::raster::store::{depth_test, resolve_colors, DepthTest, PixelStats, SampleStore};
 
 /// Color and depth of `TW×TH` pixels with `S` samples each.
 ///
@@ -103,23 +85,19 @@ impl<const TW: usize, const TH: usize, const S: usize> TileBuffer<TW, TH, S> {
         color: Rgb888,
         depth: i32,
     ) -> Option<DepthTest> {
-        if depth == DEPTH_EMPTY {
-            return None;
-        }
         let d = self.depth.get_mut(y)?.get_mut(x)?.get_mut(s)?;
-        if depth >= *d {
-            return Some(DepthTest::Occluded);
+        let r = depth_test(d, depth);
+        if r == Some(DepthTest::Written) {
+            if let Some(c) = self
+                .color
+                .get_mut(y)
+                .and_then(|r| r.get_mut(x))
+                .and_then(|p| p.get_mut(s))
+            {
+                *c = color;
+            }
         }
-        *d = depth;
-        if let Some(c) = self
-            .color
-            .get_mut(y)
-            .and_then(|r| r.get_mut(x))
-            .and_then(|p| p.get_mut(s))
-        {
-            *c = color;
-        }
-        Some(DepthTest::Written)
+        r
     }
 
     /// Stored depth of one sample (raw I8F24), if in range.
@@ -189,8 +167,7 @@ impl<const TW: usize, const TH: usize, const S: usize> TileBuffer<TW, TH, S> {
         }
     }
 
-    /// Count one sample test of pixel (x, y) in its counters (the static-only unit's renderer,
-    /// `static_unit.rs`); nothing for out-of-range indices.
+    /// Count one sample test of pixel (x, y) in its counters; nothing for out-of-range indices.
     pub(crate) fn count(&mut self, x: usize, y: usize, covered: bool) {
         if let Some(ps) = self.stats.get_mut(y).and_then(|r| r.get_mut(x)) {
             ps.tested = ps.tested.saturating_add(1);
@@ -214,6 +191,36 @@ impl<const TW: usize, const TH: usize, const S: usize> TileBuffer<TW, TH, S> {
     }
 }
 
+impl<const TW: usize, const TH: usize, const S: usize> SampleStore for TileBuffer<TW, TH, S> {
+    #[inline(always)]
+    fn size(&self) -> (usize, usize, usize) {
+        (TW, TH, S)
+    }
+    #[inline(always)]
+    fn write(
+        &mut self,
+        x: usize,
+        y: usize,
+        s: usize,
+        color: Rgb888,
+        depth: i32,
+    ) -> Option<DepthTest> {
+        TileBuffer::write(self, x, y, s, color, depth)
+    }
+    #[inline(always)]
+    fn count(&mut self, x: usize, y: usize, covered: bool) {
+        TileBuffer::count(self, x, y, covered);
+    }
+    #[inline(always)]
+    fn count_written(&mut self, x: usize, y: usize) {
+        TileBuffer::count_written(self, x, y);
+    }
+    #[inline(always)]
+    fn max_depth(&self, cols: (usize, usize), rows: (usize, usize)) -> (i32, u64) {
+        TileBuffer::max_depth(self, cols, rows)
+    }
+}
+
 /// `(TW, TH)` as `u16`: both are 1..=2048 (asserted at compile time by [`TileBuffer::new`],
 /// the only way to obtain the buffer a tile walk uses), so the conversion is exact.
 pub(crate) fn tile_size<const TW: usize, const TH: usize>() -> (u16, u16) {
@@ -221,22 +228,4 @@ pub(crate) fn tile_size<const TW: usize, const TH: usize>() -> (u16, u16) {
         u16::try_from(TW).unwrap_or(MAX_VIEWPORT),
         u16::try_from(TH).unwrap_or(MAX_VIEWPORT),
     )
-}
-
-/// Resolve one pixel's sample colors: per channel `(Σ + S/2) / S` with S = `colors.len()`
-/// (round half up; S ≤ 64 keeps Σ + S/2 < 2^15, exact for any S < 2^24). Black for S = 0.
-pub fn resolve_colors(colors: &[Rgb888]) -> Rgb888 {
-    let n = u32::try_from(colors.len()).unwrap_or(u32::MAX);
-    let mut sum = [0u32; 3];
-    for c in colors {
-        for (s, ch) in sum.iter_mut().zip([c.r(), c.g(), c.b()]) {
-            *s = s.saturating_add(u32::from(ch));
-        }
-    }
-    // checked_div: None only for S = 0 (black); the quotient is ≤ 255 for S < 2^24.
-    let avg = sum.map(|v| {
-        let q = v.saturating_add(n / 2).checked_div(n).unwrap_or(0);
-        u8::try_from(q).unwrap_or(u8::MAX)
-    });
-    Rgb888::new(avg[0], avg[1], avg[2])
 }

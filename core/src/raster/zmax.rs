@@ -4,9 +4,9 @@
 //! would fail the depth test. Only the work changes: image, depth buffer and written samples are
 //! bit-identical with and without it (`tests/tests/zmax.rs`).
 //!
-//! The renderer takes it as a type parameter ([`DepthCull`]: [`NoZmax`], the default, compiles
-//! it out; [`Zmax`] runs it). The host's frame driver runs the same decision with the same
-//! functions ([`depth_floor`], [`hides`]).
+//! The render loop takes it as a type parameter ([`DepthCull`]: [`NoZmax`], the default,
+//! compiles it out; [`Zmax`] runs it), so every renderer — a screen tile on the Cortex-M, a band
+//! of the screen on the host — makes the one decision ([`depth_floor`], [`hides`]).
 //!
 //! **The triangle's depth floor** ([`depth_floor`], once per triangle at setup). For a covered
 //! sample every datapath computes its depth as `⌊2^24·Σ e_k·z_k / Σ e_k·w_k⌋`, clamped to
@@ -45,7 +45,7 @@
 //! an `S`-input maximum of the pixel's depths — a write lowers one, so the register may fall).
 //! Each register therefore equals its pixel's true maximum at every moment, and a bounds tile's
 //! maximum is the largest register of its pixels (a `b²`-input maximum): the same value as a
-//! reduction over every stored sample ([`TileBuffer::max_depth`], which the tests compare it
+//! reduction over every stored sample ([`crate::raster::tile_buffer::TileBuffer::max_depth`], which the tests compare it
 //! with). For a unit with a fixed bounds tile size the registers can be kept per bounds tile
 //! instead, refreshed from the same `b²·S` values. The comparison is [`hides`]: `floor ≥ max`,
 //! the depth test's tie rule (a sample is written only when strictly nearer, so a sample at
@@ -59,39 +59,52 @@ use crate::config::formats::{DEPTH_EMPTY, DEPTH_FAR, DEPTH_FRAC, DEPTH_NEAR};
 use crate::config::precision::Precision;
 use crate::config::unit::Unit;
 use crate::input::{Triangle, W, Z};
-use crate::raster::tile_buffer::TileBuffer;
+use crate::raster::store::SampleStore;
 use crate::sample::takes_planar;
 use crate::setup::Setup;
 use crate::stats::Ops;
 
-/// Whether a renderer runs Zmax culling (a type parameter of [`crate::Raster`]).
-pub trait DepthCull: Copy + Default + core::fmt::Debug + 'static {
+/// Whether a renderer runs Zmax culling (a type parameter of [`crate::Raster`] and
+/// [`crate::raster::engine::Engine`]).
+pub trait DepthCull: Copy + Default + core::fmt::Debug + Send + Sync + 'static {
     /// Zmax culling runs.
     const ENABLED: bool;
     /// The name in reports (`none`, `zmax`).
     const NAME: &'static str;
     /// The Zmax registers of a `TW` × `TH` screen tile (module docs).
-    type Registers<const TW: usize, const TH: usize>: ZmaxRegisters<TW, TH>;
+    type Registers<const TW: usize, const TH: usize>: ZmaxRegisters + Cleared;
+    /// The Zmax registers of a region of any size, over a caller-owned slice.
+    type RegionRegisters<'a>: ZmaxRegisters + Send;
+    /// The cleared registers of a region `width` pixels wide over `max`, one value per pixel
+    /// ([`RegionMax::new`]; without Zmax nothing is kept and `max` may be empty).
+    fn region_registers(
+        width: u16,
+        max: &mut [i32],
+    ) -> Result<Self::RegionRegisters<'_>, crate::error::Error>;
 }
 
-/// The Zmax registers of a `TW` × `TH` screen tile, kept by the render loop beside its
-/// [`TileBuffer`] (module docs).
-pub trait ZmaxRegisters<const TW: usize, const TH: usize> {
-    /// Every register at the clear value ([`crate::config::formats::DEPTH_EMPTY`]).
-    fn cleared() -> Self;
+/// The Zmax registers the render loop keeps beside its [`SampleStore`] (module docs): one per
+/// pixel of the store, or none ([`NoRegisters`]).
+pub trait ZmaxRegisters {
+    /// Whether these are registers at all: must equal the renderer's [`DepthCull::ENABLED`]
+    /// (the loop checks at compile time).
+    const KEEPS: bool;
     /// After a sample of pixel (`x`, `y`) of `fb` was written: the pixel's register becomes the
     /// largest of its stored depths (`S` reads counted in `ops.zmax`).
-    fn refresh<const S: usize>(
-        &mut self,
-        fb: &TileBuffer<TW, TH, S>,
-        x: usize,
-        y: usize,
-        ops: &mut Ops,
-    );
-    /// Whether a triangle with depth floor `floor` is hidden in the bounds tile of tile-relative
-    /// pixels `cols.0..cols.1` × `rows.0..rows.1`: the tile's maximum from its pixels' registers
-    /// (one read each, counted), then [`hides`].
+    fn refresh<B: SampleStore>(&mut self, fb: &B, x: usize, y: usize, ops: &mut Ops);
+    /// Whether a triangle with depth floor `floor` is hidden in the bounds tile of
+    /// store-relative pixels `cols.0..cols.1` × `rows.0..rows.1`: the tile's maximum from its
+    /// pixels' registers (one read each, counted), then [`hides`].
     fn hides(&self, floor: i32, cols: (usize, usize), rows: (usize, usize), ops: &mut Ops) -> bool;
+    /// Whether there is a register for every pixel of a `width` × `height` store (a bounds tile
+    /// beyond the registers would read no register and be culled: the loop refuses them).
+    fn covers(&self, width: usize, height: usize) -> bool;
+}
+
+/// Registers that start at the clear value ([`crate::config::formats::DEPTH_EMPTY`]).
+pub trait Cleared {
+    /// Every register cleared.
+    fn cleared() -> Self;
 }
 
 /// No Zmax culling: the renderer's default; the step is compiled out.
@@ -106,35 +119,44 @@ impl DepthCull for NoZmax {
     const ENABLED: bool = false;
     const NAME: &'static str = "none";
     type Registers<const TW: usize, const TH: usize> = NoRegisters;
+    type RegionRegisters<'a> = NoRegisters;
+    fn region_registers(_: u16, _: &mut [i32]) -> Result<NoRegisters, crate::error::Error> {
+        Ok(NoRegisters)
+    }
 }
 
 impl DepthCull for Zmax {
     const ENABLED: bool = true;
     const NAME: &'static str = "zmax";
     type Registers<const TW: usize, const TH: usize> = PixelMax<TW, TH>;
+    type RegionRegisters<'a> = RegionMax<'a>;
+    fn region_registers(width: u16, max: &mut [i32]) -> Result<RegionMax<'_>, crate::error::Error> {
+        RegionMax::new(width, max)
+    }
 }
 
 /// No registers (a renderer without Zmax): nothing stored, refreshed or culled.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct NoRegisters;
 
-impl<const TW: usize, const TH: usize> ZmaxRegisters<TW, TH> for NoRegisters {
+impl Cleared for NoRegisters {
     #[inline(always)]
     fn cleared() -> Self {
         NoRegisters
     }
+}
+
+impl ZmaxRegisters for NoRegisters {
+    const KEEPS: bool = false;
     #[inline(always)]
-    fn refresh<const S: usize>(
-        &mut self,
-        _: &TileBuffer<TW, TH, S>,
-        _: usize,
-        _: usize,
-        _: &mut Ops,
-    ) {
-    }
+    fn refresh<B: SampleStore>(&mut self, _: &B, _: usize, _: usize, _: &mut Ops) {}
     #[inline(always)]
     fn hides(&self, _: i32, _: (usize, usize), _: (usize, usize), _: &mut Ops) -> bool {
         false
+    }
+    #[inline(always)]
+    fn covers(&self, _: usize, _: usize) -> bool {
+        true
     }
 }
 
@@ -162,20 +184,18 @@ impl<const TW: usize, const TH: usize> PixelMax<TW, TH> {
     }
 }
 
-impl<const TW: usize, const TH: usize> ZmaxRegisters<TW, TH> for PixelMax<TW, TH> {
+impl<const TW: usize, const TH: usize> Cleared for PixelMax<TW, TH> {
     fn cleared() -> Self {
         PixelMax {
             max: [[DEPTH_EMPTY; TW]; TH],
         }
     }
+}
 
-    fn refresh<const S: usize>(
-        &mut self,
-        fb: &TileBuffer<TW, TH, S>,
-        x: usize,
-        y: usize,
-        ops: &mut Ops,
-    ) {
+impl<const TW: usize, const TH: usize> ZmaxRegisters for PixelMax<TW, TH> {
+    const KEEPS: bool = true;
+
+    fn refresh<B: SampleStore>(&mut self, fb: &B, x: usize, y: usize, ops: &mut Ops) {
         let (max, reads) = fb.max_depth((x, x.saturating_add(1)), (y, y.saturating_add(1)));
         if let Some(m) = self.max.get_mut(y).and_then(|r| r.get_mut(x)) {
             *m = max;
@@ -187,6 +207,86 @@ impl<const TW: usize, const TH: usize> ZmaxRegisters<TW, TH> for PixelMax<TW, TH
         let (max, reads) = self.tile_max(cols, rows);
         ops.add_zmax(reads);
         hides(floor, max, ops)
+    }
+
+    #[inline(always)]
+    fn covers(&self, width: usize, height: usize) -> bool {
+        width <= TW && height <= TH
+    }
+}
+
+/// One Zmax register per pixel of a [`crate::raster::store::RegionBuffer`]'s rectangle, over a
+/// caller-owned slice (row-major, `width` pixels a row): [`PixelMax`] of any size.
+#[derive(Debug)]
+pub struct RegionMax<'a> {
+    max: &'a mut [i32],
+    width: usize,
+}
+
+impl<'a> RegionMax<'a> {
+    /// Registers of a rectangle `width` pixels wide, one per value of `max` (a whole number of
+    /// rows, at least one), cleared. [`crate::error::Error::PatternShape`] (naming the length) when
+    /// `width` is 0, `max` is empty or `width` does not divide its length.
+    pub fn new(width: u16, max: &'a mut [i32]) -> Result<RegionMax<'a>, crate::error::Error> {
+        let w = usize::from(width);
+        if w == 0 || max.is_empty() || max.len().checked_rem(w) != Some(0) {
+            return Err(crate::error::Error::PatternShape {
+                block: width,
+                spp: 0,
+                len: max.len(),
+            });
+        }
+        max.fill(DEPTH_EMPTY);
+        Ok(RegionMax { max, width: w })
+    }
+
+    /// The largest register over the pixels `cols.0..cols.1` × `rows.0..rows.1` (clipped) and
+    /// how many were read; `i32::MIN` with 0 reads for an empty range.
+    pub fn tile_max(&self, cols: (usize, usize), rows: (usize, usize)) -> (i32, u64) {
+        let height = self.max.len().checked_div(self.width).unwrap_or(0);
+        let c0 = cols.0.min(self.width);
+        let c1 = cols.1.min(self.width).max(c0);
+        let (mut max, mut reads) = (i32::MIN, 0u64);
+        for y in rows.0.min(height)..rows.1.min(height) {
+            // y < height, c ≤ width: y·width + c ≤ len (checked regardless).
+            let at = |c: usize| y.checked_mul(self.width)?.checked_add(c);
+            let (Some(a), Some(b)) = (at(c0), at(c1)) else {
+                continue;
+            };
+            let regs = self.max.get(a..b).unwrap_or(&[]);
+            for &m in regs {
+                max = max.max(m);
+            }
+            reads = reads.saturating_add(u64::try_from(regs.len()).unwrap_or(u64::MAX));
+        }
+        (max, reads)
+    }
+}
+
+impl ZmaxRegisters for RegionMax<'_> {
+    const KEEPS: bool = true;
+
+    fn refresh<B: SampleStore>(&mut self, fb: &B, x: usize, y: usize, ops: &mut Ops) {
+        if x >= self.width {
+            return;
+        }
+        let (max, reads) = fb.max_depth((x, x.saturating_add(1)), (y, y.saturating_add(1)));
+        let at = y.checked_mul(self.width).and_then(|r| r.checked_add(x));
+        if let Some(m) = at.and_then(|i| self.max.get_mut(i)) {
+            *m = max;
+            ops.add_zmax(reads);
+        }
+    }
+
+    fn hides(&self, floor: i32, cols: (usize, usize), rows: (usize, usize), ops: &mut Ops) -> bool {
+        let (max, reads) = self.tile_max(cols, rows);
+        ops.add_zmax(reads);
+        hides(floor, max, ops)
+    }
+
+    fn covers(&self, width: usize, height: usize) -> bool {
+        let rows = self.max.len().checked_div(self.width).unwrap_or(0);
+        width <= self.width && height <= rows
     }
 }
 
@@ -249,7 +349,8 @@ pub fn hides(floor: i32, max: i32, ops: &mut Ops) -> bool {
 mod tests {
     use super::*;
     use crate::input::Vertex;
-    use crate::raster::tile_buffer::DepthTest;
+    use crate::raster::store::DepthTest;
+    use crate::raster::tile_buffer::TileBuffer;
 
     fn tri(w: [i32; 3], z: [i32; 3]) -> Triangle {
         let x = [0, 65536, 2 * 65536];

@@ -20,12 +20,12 @@ use serde::Serialize;
 use uvt_core::bounds::registry::best;
 use uvt_core::bounds::strategy::BoundsStrategy;
 use uvt_core::config::registry::Config;
-use uvt_core::{with_config, Laine2011, Precision, Triangle};
+use uvt_core::{with_config, Laine2011, NoZmax, Precision, Triangle};
 
 use crate::config::names;
 
-use crate::frame::driver::{run, RunOpts};
-use crate::frame::pipelines::Reference;
+use crate::frame::opts::RunOpts;
+use crate::frame::reference::run_reference;
 use crate::oracle::limit::{axis_aligned_limit, Limit, Method};
 use crate::oracle::search::Effort;
 use crate::scene::builtin::{bench_scene, Bench, Blur};
@@ -144,7 +144,7 @@ pub fn run_table(
     rows: &[Blur],
     sweep: bool,
     effort: Option<[Effort; 2]>,
-) -> Vec<BenchRow> {
+) -> anyhow::Result<Vec<BenchRow>> {
     let stages = stage_file().ok().flatten();
     rows_at::<uvt_core::DefaultPrecision>(quick, timing, scenes, rows, sweep, effort, stages)
 }
@@ -182,7 +182,7 @@ pub fn run_table_of(
 ) -> anyhow::Result<Vec<BenchRow>> {
     let stages = stage_file()?;
     with_config!(cfg, P => rows_at::<P>(quick, timing, scenes, rows, sweep, effort, stages))
-        .ok_or_else(|| anyhow::anyhow!("configuration {cfg} is not in the registry"))
+        .ok_or_else(|| anyhow::anyhow!("configuration {cfg} is not in the registry"))?
 }
 
 /// Frames timed per strategy (at bounds tile 1) and for the reference, the fastest kept: one
@@ -240,7 +240,7 @@ fn rows_at<P: Precision + Sync>(
     sweep: bool,
     effort: Option<[Effort; 2]>,
     stages: Option<&M4Stages>,
-) -> Vec<BenchRow> {
+) -> anyhow::Result<Vec<BenchRow>> {
     let stages = stages.filter(|_| Config::of::<P>().same(&uvt_core::config::registry::DEFAULT));
     let mut out = Vec::new();
     let total = scenes.len() * rows.len();
@@ -271,7 +271,7 @@ fn rows_at<P: Precision + Sync>(
             // is timed: otherwise the first timed frame of a new scene pays the allocator's heap
             // growth (page faults over tens of MiB at full size) and whichever pipeline runs
             // first is penalised.
-            let _ = run_strategy_at::<P>(
+            run_strategy_at::<P, NoZmax>(
                 Laine2011.name(),
                 vp,
                 &core_p,
@@ -280,31 +280,31 @@ fn rows_at<P: Precision + Sync>(
                     tile: 1,
                     ..o.clone()
                 },
-            );
+            )?;
             // The frames are taken in rounds, every strategy once per round, so that a machine
             // slowing down or speeding up during a row does not favour the strategies run first;
             // `timed` rounds at least, more while the row's frames took less than `budget_s`.
             // Returns the strategies (fastest frame each) and the rounds taken.
-            let at = |tile: u8, timed: Timing| -> (Vec<StratResult>, usize) {
+            let at = |tile: u8, timed: Timing| -> anyhow::Result<(Vec<StratResult>, usize)> {
                 let o = RunOpts { tile, ..o.clone() };
-                let frame = |n: &str| run_strategy_at::<P>(n, vp, &core_p, &pattern_p, &o);
+                let frame = |n: &str| run_strategy_at::<P, NoZmax>(n, vp, &core_p, &pattern_p, &o);
                 let start = std::time::Instant::now();
-                let mut out: Vec<StratResult> =
-                    strategies().filter_map(|n| frame(n).map(|r| r.0)).collect();
+                let mut out: Vec<StratResult> = strategies()
+                    .map(|n| frame(n).map(|r| r.0))
+                    .collect::<anyhow::Result<_>>()?;
                 let mut rounds = 1;
                 while rounds < timed.max_rounds
                     && (rounds < timed.min_rounds || start.elapsed().as_secs_f64() < timed.budget_s)
                 {
                     for best in &mut out {
-                        if let Some((again, _)) = frame(best.name) {
-                            best.ms = best.ms.min(again.ms);
-                        }
+                        let (again, _) = frame(best.name)?;
+                        best.ms = best.ms.min(again.ms);
                     }
                     rounds += 1;
                 }
-                (out, rounds)
+                Ok((out, rounds))
             };
-            let (mut strategies, rounds) = at(1, timing);
+            let (mut strategies, rounds) = at(1, timing)?;
             // The whole cost: this run's counts times the row's instructions per call.
             let stage_row = stages.and_then(|m| m.row(kind.name(), &row.name(), Size::of(quick)));
             for x in &mut strategies {
@@ -314,19 +314,16 @@ fn rows_at<P: Precision + Sync>(
             }
             let tile_sweep = if sweep {
                 let mut v = vec![strategies.clone()];
-                v.extend([2u8, 4, 8].iter().map(|&t| at(t, Timing::ONCE).0));
+                for t in [2u8, 4, 8] {
+                    v.push(at(t, Timing::ONCE)?.0);
+                }
                 v
             } else {
                 Vec::new()
             };
-            let reference = Reference {
-                vp: s.viewport,
-                tris: &s.tris,
-                pattern: &pattern,
-            };
-            let r = run(&reference, &pattern, &o);
+            let r = run_reference(&s.tris, &pattern, &o);
             let f64_ms = (1..rounds)
-                .map(|_| run(&reference, &pattern, &o).time)
+                .map(|_| run_reference(&s.tris, &pattern, &o).time)
                 .fold(r.time, Duration::min)
                 .as_secs_f64()
                 * 1e3;
@@ -355,7 +352,7 @@ fn rows_at<P: Precision + Sync>(
             });
         }
     }
-    out
+    Ok(out)
 }
 
 fn name_of(r: &BenchRow) -> String {

@@ -3,15 +3,19 @@
 //! converge`, `uvt fit`'s search and `uvt render --bounds`), at any precision, with its counters
 //! and wall time.
 
+use anyhow::{anyhow, Result};
 use serde::Serialize;
 use uvt_core::bounds::auto::Auto;
 use uvt_core::bounds::registry::STRATEGIES;
 use uvt_core::bounds::strategy::BoundsStrategy;
-use uvt_core::{with_strategy, BboxScan, Precision, Triangle, Viewport};
+use uvt_core::{
+    with_strategy, BboxScan, DepthCull, Engine, Full, General, NoZmax, Precision, SamplePattern,
+    Triangle, Viewport,
+};
 
+use crate::frame::core_frame::run_core;
 use crate::frame::counters::{Frame, FrameStats};
-use crate::frame::driver::{run, RunOpts};
-use crate::frame::pipelines::Fixed;
+use crate::frame::opts::RunOpts;
 use crate::scene::pattern::Pattern;
 
 use super::m4_stages::per;
@@ -99,14 +103,15 @@ impl StratResult {
     }
 }
 
-/// Run strategy `name` (one of [`STRATEGIES`]) over a frame; `None` for any other name.
+/// Run strategy `name` (one of [`STRATEGIES`]) over a frame at the default precision, without
+/// Zmax: its counters and wall time.
 pub fn run_strategy(
     name: &str,
     vp: Viewport,
     tris: &[Triangle],
     pattern: &Pattern,
     o: &RunOpts<'_>,
-) -> Option<StratResult> {
+) -> Result<StratResult> {
     run_strategy_image(name, vp, tris, pattern, o).map(|r| r.0)
 }
 
@@ -117,34 +122,41 @@ pub fn run_strategy_image(
     tris: &[Triangle],
     pattern: &Pattern,
     o: &RunOpts<'_>,
-) -> Option<(StratResult, Vec<[u8; 3]>)> {
-    run_strategy_at::<uvt_core::DefaultPrecision>(name, vp, tris, pattern, o)
+) -> Result<(StratResult, Vec<[u8; 3]>)> {
+    run_strategy_at::<uvt_core::DefaultPrecision, NoZmax>(name, vp, tris, pattern, o)
 }
 
-/// [`run_strategy_image`] at precision `P` (`tris` and `pattern` on `P`'s grids).
-pub fn run_strategy_at<P: Precision + Sync>(
+/// [`run_strategy_image`] at precision `P` (`tris` and `pattern` on `P`'s grids) with Zmax
+/// culling `Z`; an error names a strategy outside the registry.
+pub fn run_strategy_at<P: Precision + Sync, Z: DepthCull>(
     name: &str,
     vp: Viewport,
     tris: &[Triangle],
     pattern: &Pattern,
     o: &RunOpts<'_>,
-) -> Option<(StratResult, Vec<[u8; 3]>)> {
-    with_strategy!(name, s => run_one::<_, P>(s, vp, tris, pattern, o))
+) -> Result<(StratResult, Vec<[u8; 3]>)> {
+    with_strategy!(name, s => run_one::<_, P, Z>(s, vp, tris, pattern, o)).ok_or_else(|| {
+        anyhow!(
+            "unknown bounds strategy {name:?} (one of {})",
+            STRATEGIES.join(", ")
+        )
+    })?
 }
 
-/// One frame of strategy `s` at precision `P`: its counters, wall time and image.
-pub fn run_one<B: BoundsStrategy + Sync, P: Precision + Sync>(
+/// One frame of strategy `s` at precision `P` with Zmax culling `Z`: its counters, wall time
+/// and image.
+pub fn run_one<B: BoundsStrategy + Sync, P: Precision + Sync, Z: DepthCull>(
     s: B,
     vp: Viewport,
     tris: &[Triangle],
     pattern: &Pattern,
     o: &RunOpts<'_>,
-) -> (StratResult, Vec<[u8; 3]>)
+) -> Result<(StratResult, Vec<[u8; 3]>)>
 where
     B::Coeffs: Send + Sync,
 {
     let name = s.name();
-    let f = run_frame::<B, P>(s, vp, tris, pattern, o);
+    let f = run_frame::<B, P, Z>(s, vp, tris, pattern, o)?;
     let r = StratResult {
         name,
         tile: o.tile,
@@ -152,28 +164,24 @@ where
         ms: f.time.as_secs_f64() * 1e3,
         m4: None,
     };
-    (r, f.image)
+    Ok((r, f.image))
 }
 
-/// The frame driver's whole frame of the core with strategy `s` at precision `P`: the one
-/// instance per strategy and precision that the bench, fit's search, converge and `uvt render`
-/// share.
-pub fn run_frame<B: BoundsStrategy + Sync, P: Precision + Sync>(
+/// The core's frame ([`run_core`]: the core's own loop in bands) of the full unit's general
+/// pipeline with strategy `s` at precision `P` and Zmax culling `Z`: the one instance per
+/// strategy and precision that the bench, fit's search, converge and `uvt render` share.
+pub fn run_frame<B: BoundsStrategy + Sync, P: Precision + Sync, Z: DepthCull>(
     s: B,
     vp: Viewport,
     tris: &[Triangle],
     pattern: &Pattern,
     o: &RunOpts<'_>,
-) -> Frame
+) -> Result<Frame>
 where
     B::Coeffs: Send + Sync,
 {
-    let fixed = Fixed::<_, P> {
-        prec: std::marker::PhantomData,
-        strat: s,
-        vp,
-        tris,
-        pattern,
-    };
-    run(&fixed, pattern, o)
+    let engine = Engine::<General<B, P, Full>, Z>::new(s, vp);
+    let table = SamplePattern::new_with::<P>(pattern.block, pattern.spp, &pattern.quant)
+        .map_err(|e| anyhow!("sample table: {e}"))?;
+    run_core(&engine, tris, &table, o).map_err(|e| anyhow!("{e}"))
 }

@@ -9,9 +9,9 @@
 
 use anyhow::{bail, Result};
 use serde::Serialize;
-use uvt_core::Precision;
+use uvt_core::{NoZmax, Precision, Zmax};
 
-use crate::frame::driver::RunOpts;
+use crate::frame::opts::RunOpts;
 use crate::scene::builtin::{bench_scene, Bench, Blur};
 use crate::scene::pattern::Pattern;
 
@@ -134,23 +134,24 @@ pub fn run_rows<P: Precision + Sync>(quick: bool) -> Result<Vec<ZmaxRow>> {
         let colors = s.colors();
         let mut pairs = Vec::new();
         for name in strategies() {
-            let go = |zmax: bool| {
-                let o = RunOpts {
-                    image: true,
-                    zmax,
-                    ..RunOpts::for_scene(&s, &colors)
-                };
-                run_strategy_at::<P>(name, s.core_viewport(), &tris, &pattern, &o)
+            let o = RunOpts {
+                image: true,
+                ..RunOpts::for_scene(&s, &colors)
             };
+            let vp = s.core_viewport();
             // Each side twice, the faster frame kept (the first warms the caches); the
             // counters and the image of both are the same (deterministic).
-            let best = |zmax: bool| match (go(zmax), go(zmax)) {
-                (Some(x), Some(y)) => Some(if y.0.ms < x.0.ms { y } else { x }),
-                _ => None,
+            let faster = |x: (StratResult, Vec<[u8; 3]>), y: (StratResult, Vec<[u8; 3]>)| {
+                if y.0.ms < x.0.ms {
+                    y
+                } else {
+                    x
+                }
             };
-            let (Some((mut off, a)), Some((mut on, b))) = (best(false), best(true)) else {
-                bail!("{name}: not a registry strategy");
-            };
+            let go = || run_strategy_at::<P, NoZmax>(name, vp, &tris, &pattern, &o);
+            let (mut off, a) = faster(go()?, go()?);
+            let go = || run_strategy_at::<P, Zmax>(name, vp, &tris, &pattern, &o);
+            let (mut on, b) = faster(go()?, go()?);
             let pc = per_call(kind, row, Size::of(quick), name)?;
             off.m4 = Some(m4_whole(&off, &pc, false));
             on.m4 = Some(m4_whole(&on, &pc, true));

@@ -1,36 +1,32 @@
 //! The confirming half of `uvt fit` ([`super::select`] has the selection, [`super::search`] the
 //! strategy and tile-size search): the confirmation render — a brute-force pass over every
 //! footprint sample (conservativeness of the chosen strategy and tile size, decisions against the
-//! f64 reference, `compare.rs`'s rigorous per-sample check) and the chosen unit's
-//! `uvt_core::Renderer<B, N, P, U>` against the full unit's, sample by sample.
+//! f64 reference, `compare.rs`'s rigorous per-sample check), the chosen unit's frame against the
+//! full unit's, sample by sample, and its no-heap `uvt_core::Renderer<B, N, P, U>` (8×8 screen
+//! tiles, its Cortex-M program's) against its frame in bands.
 
-use embedded_graphics_core::pixelcolor::RgbColor;
 use rayon::prelude::*;
 use serde::Serialize;
 use uvt_core::bounds::strategy::{BoundsStrategy, TileBounds};
 use uvt_core::config::registry::Config;
 use uvt_core::{
-    with_config, with_strategy, DefocusOnly, Full, General, MotionOnly, Ops, Outcome, Pipeline,
-    PipelineOf, PixelRect, Precision, Prim, Raster, Rgb888, SamplePattern, ScreenPos, Select,
-    Setup, StaticOnly, Triangle, Unit,
+    with_config, with_strategy, DefocusOnly, Engine, Full, General, MotionOnly, NoZmax, Ops,
+    Outcome, Pipeline, PipelineOf, PixelRect, Precision, Prim, Raster, Rgb888, SamplePattern,
+    ScreenPos, Select, Setup, StaticOnly, Triangle, Unit,
 };
 
 use crate::config::dq::Statement;
 use crate::frame::compare::{
     check_sample_eps, check_sample_within, eps_of, footprint_union, Rounding,
 };
-use crate::frame::driver::{run, RunOpts};
-use crate::frame::pipelines::Fixed;
+use crate::frame::core_frame::run_core;
+use crate::frame::opts::RunOpts;
 use crate::reference;
 use crate::scene::file::Scene;
 use crate::scene::pattern::Pattern;
 
 use super::search::inputs;
 use super::select::Tolerance;
-
-/// Visible setups the confirmation renderer holds (`Renderer<_, CAPACITY>`, on a thread with a
-/// large stack); a scene with more is reported as not confirmed.
-pub const CAPACITY: usize = 4096;
 
 /// What the confirmation measured.
 #[derive(Clone, Debug, Default, Serialize)]
@@ -69,9 +65,10 @@ pub struct Confirm {
     pub identical_to_full: Option<bool>,
     /// why the renderer comparison could not run (e.g. a refused class, too many setups)
     pub renderer_error: Option<String>,
-    /// the chosen unit's image equals the host frame driver's (`crate::frame::driver`) for the same
-    /// configuration, strategy and tile size
-    pub matches_host_driver: Option<bool>,
+    /// the chosen unit's no-heap renderer (`uvt_core::Raster`, 8×8 screen tiles: its Cortex-M
+    /// program's loop) gives the full unit's band render (`crate::frame::core_frame`) at every
+    /// sample, the same image and counts (the same loop over other regions)
+    pub matches_tile_renderer: Option<bool>,
     /// samples tested and covered by the chosen unit's renderer
     pub unit_tested_covered: [u64; 2],
     /// the unit's specialised renderer at this configuration (`uvt_core::StaticRenderer` for
@@ -106,7 +103,7 @@ impl Confirm {
             && self.beyond_tolerance == 0
             && self.beyond_tolerance_clip == 0
             && self.identical_to_full == Some(true)
-            && self.matches_host_driver == Some(true)
+            && self.matches_tile_renderer == Some(true)
             && self
                 .specialised
                 .as_ref()
@@ -143,12 +140,17 @@ fn confirm_at<P: Precision + Sync, B>(
 where
     B: BoundsStrategy + Sync + Send + Copy + 'static,
     B::Coeffs: Send + Sync,
+    (P, Full): Select<B>,
+    (P, DefocusOnly): Select<B>,
     (P, StaticOnly): Select<B>,
     (P, MotionOnly): Select<B>,
+    PipelineOf<B, P, StaticOnly>: Sync,
+    PipelineOf<B, P, MotionOnly>: Sync,
+    <PipelineOf<B, P, StaticOnly> as Pipeline>::Entry: Send + Sync,
+    <PipelineOf<B, P, MotionOnly> as Pipeline>::Entry: Send + Sync,
 {
     let (core, pat) = inputs::<P>(scene)?;
     let mut c = brute_force::<P, B>(scene, &core, &pat, strat, tile, tol, statements);
-    // The host driver's image for the same choice.
     let colors = scene.colors();
     let o = RunOpts {
         tile,
@@ -156,37 +158,40 @@ where
         image: true,
         ..RunOpts::for_scene(scene, &colors)
     };
-    let host = run(
-        &Fixed::<_, P>::new_at(strat, scene.core_viewport(), &core, &pat),
-        &pat,
-        &o,
-    );
-    let prims: Vec<Prim> = core
-        .iter()
-        .zip(&colors)
-        .map(|(t, k)| Prim {
-            tri: *t,
-            color: Rgb888::new(k[0], k[1], k[2]),
-        })
-        .collect();
+    let table = SamplePattern::new_with::<P>(pat.block, pat.spp, &pat.quant)
+        .map_err(|e| anyhow::anyhow!("sample table: {e}"))?;
     let vp = scene.core_viewport();
-    let unit = unit.to_string();
-    // The no-heap renderer keeps CAPACITY setups inline: run on a thread with a large stack.
-    let run = move || -> Result<(Frame, Frame, Option<Specialised>), String> {
-        let full = render::<P, B, Full>(strat, vp, &prims, &pat, tile)?;
-        let mine = match unit.as_str() {
-            "full" => render::<P, B, Full>(strat, vp, &prims, &pat, tile),
-            "motion-only" => render::<P, B, MotionOnly>(strat, vp, &prims, &pat, tile),
-            "defocus-only" => render::<P, B, DefocusOnly>(strat, vp, &prims, &pat, tile),
-            "static-only" => render::<P, B, StaticOnly>(strat, vp, &prims, &pat, tile),
-            u => Err(format!("unknown unit {u}")),
-        }?;
-        let spec = match unit.as_str() {
-            "static-only" => specialised::<P, B, StaticOnly>(strat, vp, &prims, &pat, tile),
-            "motion-only" => specialised::<P, B, MotionOnly>(strat, vp, &prims, &pat, tile),
-            _ => None,
-        };
-        let spec = spec.map(|(renderer, got)| match got {
+    let band = |f: &dyn Fn() -> Result<crate::frame::counters::Frame, uvt_core::Error>| {
+        f().map(Frame::of).map_err(|e| e.to_string())
+    };
+    let full = band(&|| frame::<General<B, P, Full>>(strat, vp, &core, &table, &o));
+    let mine = match unit {
+        "full" => band(&|| frame::<General<B, P, Full>>(strat, vp, &core, &table, &o)),
+        "motion-only" => band(&|| frame::<General<B, P, MotionOnly>>(strat, vp, &core, &table, &o)),
+        "defocus-only" => {
+            band(&|| frame::<General<B, P, DefocusOnly>>(strat, vp, &core, &table, &o))
+        }
+        "static-only" => band(&|| frame::<General<B, P, StaticOnly>>(strat, vp, &core, &table, &o)),
+        u => Err(format!("unknown unit {u}")),
+    };
+    let spec = match unit {
+        "static-only" => specialised::<P, B, StaticOnly>(strat, vp, &core, &table, &o),
+        "motion-only" => specialised::<P, B, MotionOnly>(strat, vp, &core, &table, &o),
+        _ => None,
+    };
+    let (full, mine) = match (full, mine) {
+        (Ok(full), Ok(mine)) => (full, mine),
+        (Err(e), _) | (_, Err(e)) => {
+            c.renderer_error = Some(e);
+            return Ok(c);
+        }
+    };
+    c.identical_to_full = Some(full == mine);
+    c.unit_tested_covered = [mine.tested, mine.covered];
+    // The unit's own renderer: the specialised pipeline where it has one, else `mine`.
+    let mut own = Ok(mine);
+    c.specialised = spec.map(|(renderer, got)| {
+        let x = match &got {
             Ok(f) => Specialised {
                 renderer,
                 identical_to_full: Some(f.samples == full.samples && f.image == full.image),
@@ -196,35 +201,39 @@ where
             Err(e) => Specialised {
                 renderer,
                 identical_to_full: None,
-                error: Some(e),
+                error: Some(e.clone()),
                 tested_covered: [0, 0],
             },
-        });
-        Ok((full, mine, spec))
-    };
-    let joined = std::thread::Builder::new()
-        .stack_size(1 << 30)
-        .spawn(run)
-        .map_err(|e| anyhow::anyhow!("cannot start the renderer thread: {e}"))?
-        .join()
-        .map_err(|_| anyhow::anyhow!("the renderer thread panicked"))?;
-    match joined {
-        Ok((full, mine, spec)) => {
-            c.specialised = spec;
-            c.identical_to_full = Some(full == mine);
-            c.unit_tested_covered = [mine.tested, mine.covered];
-            let img: Vec<[u8; 3]> = mine.image.iter().map(|p| [p.r(), p.g(), p.b()]).collect();
-            c.matches_host_driver = Some(img == host.image);
+        };
+        own = got;
+        x
+    });
+    let prims: Vec<Prim> = core
+        .iter()
+        .zip(&colors)
+        .map(|(t, k)| Prim {
+            tri: *t,
+            color: Rgb888::new(k[0], k[1], k[2]),
+        })
+        .collect();
+    let unit = unit.to_string();
+    let tiles = on_big_stack(move || match unit.as_str() {
+        "motion-only" => tile_render::<PipelineOf<B, P, MotionOnly>>(strat, vp, &prims, &pat, tile),
+        "defocus-only" => {
+            tile_render::<PipelineOf<B, P, DefocusOnly>>(strat, vp, &prims, &pat, tile)
         }
-        Err(e) => c.renderer_error = Some(e),
-    }
+        "static-only" => tile_render::<PipelineOf<B, P, StaticOnly>>(strat, vp, &prims, &pat, tile),
+        _ => tile_render::<PipelineOf<B, P, Full>>(strat, vp, &prims, &pat, tile),
+    })?;
+    c.matches_tile_renderer = Some(matches!((&tiles, &own), (Ok(a), Ok(b)) if a == b));
     Ok(c)
 }
 
 /// Background of the confirmation renders (as `uvt render`).
 const CLEAR: [u8; 3] = [24, 24, 32];
 
-/// One render of the core renderer: every sample's colour, the resolved image, the counters.
+/// What the confirmation compares of a render: every sample's colour, the resolved image, the
+/// counters.
 #[derive(PartialEq)]
 struct Frame {
     samples: Vec<Rgb888>,
@@ -233,11 +242,77 @@ struct Frame {
     covered: u64,
 }
 
-/// Render with pipeline `L` (`Raster<L, CAPACITY>`), one pass per sample index (the tile
-/// buffer's sample count is a compile-time constant; each pass holds sample `si` of every
-/// pixel, and depth tests never mix samples, so the passes together are the frame), 8×8 screen
-/// tiles.
-fn render_with<L: Pipeline>(
+impl Frame {
+    /// The comparison's view of a frame of the core.
+    fn of(f: crate::frame::counters::Frame) -> Frame {
+        Frame {
+            samples: f.samples,
+            image: f
+                .image
+                .iter()
+                .map(|p| Rgb888::new(p[0], p[1], p[2]))
+                .collect(),
+            tested: f.stats.samples_tested,
+            covered: f.stats.samples_covered,
+        }
+    }
+}
+
+/// The core's frame ([`run_core`], in bands) of pipeline `L` with bounds strategy `strat`.
+fn frame<L: Pipeline + Sync>(
+    strat: L::Bounds,
+    vp: uvt_core::Viewport,
+    core: &[Triangle],
+    table: &SamplePattern<'_>,
+    o: &RunOpts<'_>,
+) -> Result<crate::frame::counters::Frame, uvt_core::Error>
+where
+    L::Entry: Send + Sync,
+{
+    run_core(&Engine::<L, NoZmax>::new(strat, vp), core, table, o)
+}
+
+/// The renderer a user instantiates for unit `U` at precision `P`, `Renderer<B, N, P, U>`, when
+/// it runs the unit's own pipeline (`uvt_core::units::select`): its name and frame; `None`
+/// where it runs the general pipeline.
+fn specialised<P: Precision, B: BoundsStrategy, U: Unit>(
+    strat: B,
+    vp: uvt_core::Viewport,
+    core: &[Triangle],
+    table: &SamplePattern<'_>,
+    o: &RunOpts<'_>,
+) -> Option<(&'static str, Result<Frame, String>)>
+where
+    (P, U): Select<B>,
+    PipelineOf<B, P, U>: Sync,
+    <PipelineOf<B, P, U> as Pipeline>::Entry: Send + Sync,
+{
+    let name = <PipelineOf<B, P, U> as Pipeline>::NAME;
+    (name != <General<B, P, U> as Pipeline>::NAME).then(|| {
+        let f = frame::<PipelineOf<B, P, U>>(strat, vp, core, table, o);
+        (name, f.map(Frame::of).map_err(|e| e.to_string()))
+    })
+}
+
+/// Visible setups the screen-tile renderer holds (`Raster<_, CAPACITY>`, on a thread with a
+/// large stack); a scene with more is reported as not confirmed.
+pub const CAPACITY: usize = 4096;
+
+/// Run `f` on a thread with a stack large enough for `Raster<_, CAPACITY>`.
+fn on_big_stack<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> anyhow::Result<T> {
+    std::thread::Builder::new()
+        .stack_size(1 << 30)
+        .spawn(f)
+        .map_err(|e| anyhow::anyhow!("cannot start the renderer thread: {e}"))?
+        .join()
+        .map_err(|_| anyhow::anyhow!("the renderer thread panicked"))
+}
+
+/// The unit's no-heap renderer (`Raster<L, CAPACITY>`, the loop of its Cortex-M program: 8×8
+/// screen tiles) over the whole frame, one pass per sample index (the tile buffer's sample
+/// count is a compile-time constant; each pass holds sample `si` of every pixel, and depth
+/// tests never mix samples, so the passes together are the frame).
+fn tile_render<L: Pipeline>(
     strat: L::Bounds,
     vp: uvt_core::Viewport,
     prims: &[Prim],
@@ -245,60 +320,6 @@ fn render_with<L: Pipeline>(
     tile: u8,
 ) -> Result<Frame, String> {
     let mut r = Raster::<L, CAPACITY>::new(strat, vp, prims).map_err(|e| e.to_string())?;
-    render_passes(vp, pat, |sp, out| {
-        r.render_with::<8, 8, 1>(sp, tile, clear_color(), out)
-    })
-}
-
-/// [`render_with`] the general pipeline on unit `U` (bounds strategy `B`; the unit's missing
-/// effects compiled out).
-fn render<P: Precision, B: BoundsStrategy, U: Unit>(
-    strat: B,
-    vp: uvt_core::Viewport,
-    prims: &[Prim],
-    pat: &Pattern,
-    tile: u8,
-) -> Result<Frame, String> {
-    render_with::<General<B, P, U>>(strat, vp, prims, pat, tile)
-}
-
-/// The renderer a user instantiates for unit `U` at precision `P`, `Renderer<B, CAPACITY, P,
-/// U>`, when it runs the unit's own pipeline (`uvt_core::units::select`): its name and frame;
-/// `None` where it runs the general pipeline.
-fn specialised<P: Precision, B: BoundsStrategy, U: Unit>(
-    strat: B,
-    vp: uvt_core::Viewport,
-    prims: &[Prim],
-    pat: &Pattern,
-    tile: u8,
-) -> Option<(&'static str, Result<Frame, String>)>
-where
-    (P, U): Select<B>,
-{
-    let name = <PipelineOf<B, P, U> as Pipeline>::NAME;
-    (name != <General<B, P, U> as Pipeline>::NAME).then(|| {
-        (
-            name,
-            render_with::<PipelineOf<B, P, U>>(strat, vp, prims, pat, tile),
-        )
-    })
-}
-
-/// [`CLEAR`] as a colour.
-fn clear_color() -> Rgb888 {
-    Rgb888::new(CLEAR[0], CLEAR[1], CLEAR[2])
-}
-
-/// One pass per sample index through `pass(pattern, out)` (a renderer's `render_with` with a
-/// one-sample pattern), collected into a [`Frame`].
-fn render_passes(
-    vp: uvt_core::Viewport,
-    pat: &Pattern,
-    mut pass: impl FnMut(
-        &SamplePattern<'_>,
-        &mut dyn FnMut(u16, u16, Rgb888, uvt_core::PixelStats),
-    ) -> Result<(), uvt_core::Error>,
-) -> Result<Frame, String> {
     let (w, h) = (usize::from(vp.width()), usize::from(vp.height()));
     let spp = usize::from(pat.spp);
     let n = usize::from(pat.block);
@@ -308,7 +329,7 @@ fn render_passes(
     for si in 0..spp {
         let table: Vec<_> = (0..n * n).map(|p| pat.quant[p * spp + si]).collect();
         let sp = SamplePattern::new(pat.block, 1, &table).map_err(|e| e.to_string())?;
-        pass(&sp, &mut |x, y, c, ps| {
+        r.render_with::<8, 8, 1>(&sp, tile, clear, |x, y, c, ps| {
             samples[(usize::from(y) * w + usize::from(x)) * spp + si] = c;
             tested += u64::from(ps.tested);
             covered += u64::from(ps.covered);

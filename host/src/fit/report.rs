@@ -329,8 +329,8 @@ pub fn fit_md(f: &Fit) -> String {
         yes(c.identical_to_full == Some(true))
     );
     s += &format!(
-        "| image identical to the host frame driver's | | {} |\n",
-        yes(c.matches_host_driver == Some(true))
+        "| every sample, the image and the counts of the unit's no-heap renderer (8×8 screen tiles, its Cortex-M program's loop) identical to its frame in 8-row bands | | {} |\n",
+        yes(c.matches_tile_renderer == Some(true))
     );
     if let Some(x) = &c.specialised {
         s += &format!(

@@ -17,10 +17,10 @@
 
 use serde::Serialize;
 use uvt_core::config::registry::Config;
-use uvt_core::{with_config, Precision, Triangle};
+use uvt_core::{with_config, NoZmax, Precision, Triangle};
 
 use crate::bench::strategy::{run_strategy_at, strategies};
-use crate::frame::driver::RunOpts;
+use crate::frame::opts::RunOpts;
 use crate::scene::file::Scene;
 use crate::scene::pattern::Pattern;
 
@@ -75,8 +75,8 @@ fn search_at<P: Precision + Sync>(scene: &Scene, width: f64) -> anyhow::Result<V
                 tile,
                 ..RunOpts::for_scene(scene, &colors)
             };
-            let (r, _) = run_strategy_at::<P>(name, scene.core_viewport(), &core, &pat, &o)
-                .ok_or_else(|| anyhow::anyhow!("unknown strategy {name}"))?;
+            let (r, _) =
+                run_strategy_at::<P, NoZmax>(name, scene.core_viewport(), &core, &pat, &o)?;
             let s = &r.stats;
             let per_test = s.ops_sample as f64 / s.samples_tested.max(1) as f64;
             let ops_cost = (s.ops_setup + s.ops_bounds + s.ops_predicate) as f64

@@ -1,9 +1,9 @@
-//! What the frame driver measures: the counters of one frame ([`FrameStats`]) and the rendered
+//! What a frame run measures: the counters of one frame ([`FrameStats`]) and the rendered
 //! frame ([`Frame`]: counters, image, heat map, wall time).
 
 use std::time::Duration;
 
-use uvt_core::Ops;
+use uvt_core::{Ops, Rgb888, Stats};
 
 /// Counters of one frame.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize)]
@@ -20,7 +20,7 @@ pub struct FrameStats {
     pub tiles_visited: u64,
     /// of which empty
     pub tiles_skipped: u64,
-    /// kept bounds tiles Zmax culling skipped (0 without it, [`RunOpts::zmax`](super::driver::RunOpts::zmax))
+    /// kept bounds tiles Zmax culling skipped (0 without it, [`RunOpts::zmax`](super::opts::RunOpts::zmax))
     pub tiles_zculled: u64,
     /// samples of the kept bounds tiles (each put through the tile's box and predicate)
     pub samples_admitted: u64,
@@ -33,7 +33,7 @@ pub struct FrameStats {
     /// samples the bounding-box scan tests: all samples of every footprint pixel
     pub footprint_samples: u64,
     /// samples inside the per-tile oracle boxes (counted only when the run has the oracle,
-    /// [`RunOpts::oracle`](super::driver::RunOpts::oracle); 0 otherwise, so that runs without it do
+    /// [`RunOpts::oracle`](super::opts::RunOpts::oracle); 0 otherwise, so that runs without it do
     /// not pay its bookkeeping)
     pub oracle_tested: u64,
     /// operation counts (fixed pipeline only)
@@ -99,6 +99,25 @@ impl FrameStats {
             *x += y;
         }
     }
+    /// The core's counters of a frame or part of it ([`uvt_core::Stats`]); the host's own
+    /// (`samples_admitted`, `footprint_samples`, `oracle_tested`) are 0.
+    pub fn from_core(s: &Stats) -> FrameStats {
+        let mut f = FrameStats {
+            triangles: s.triangles,
+            culled_outside: s.culled_outside,
+            culled_degenerate: s.culled_degenerate,
+            by_class: s.by_class,
+            tiles_visited: s.tiles_visited,
+            tiles_skipped: s.tiles_skipped,
+            tiles_zculled: s.tiles_zculled,
+            samples_tested: s.samples_tested,
+            samples_covered: s.samples_covered,
+            samples_written: s.samples_written,
+            ..Default::default()
+        };
+        f.add_ops(&s.ops);
+        f
+    }
     pub(super) fn add_ops(&mut self, o: &Ops) {
         self.ops_setup += o.setup;
         self.ops_bounds += o.bounds;
@@ -135,6 +154,9 @@ pub struct Frame {
     pub stats: FrameStats,
     /// resolved RGB per pixel, row-major (empty if not requested)
     pub image: Vec<[u8; 3]>,
+    /// every sample's colour, row-major by pixel, then by sample (the core's frames with the
+    /// image kept; empty otherwise)
+    pub samples: Vec<Rgb888>,
     /// sample tests per pixel, row-major
     pub heat: Vec<u32>,
     /// wall time

@@ -1,17 +1,18 @@
-//! The frame engine: runs a pipeline (the fixed-point core or the f64 reference) over a whole
-//! frame and measures it, and compares the two sample by sample. Its files from the bottom up,
-//! each using only files listed before it (and nothing of this `mod.rs`):
+//! Frames: the core's render loop over a whole frame on the host, the f64 reference's own, and
+//! the comparison of the two sample by sample. Its files from the bottom up, each using only
+//! files listed before it (and nothing of this `mod.rs`):
 //!
-//! - [`pipeline`]: the interface a pipeline implements ([`pipeline::FramePipeline`]); it uses
-//!   nothing of the crate, which lets the scene's memory budget size the driver's per-triangle
-//!   entry ([`crate::scene::budget`]);
-//! - [`pipelines`]: the core and the reference as pipelines;
+//! - [`opts`]: what a frame run is asked ([`opts::RunOpts`]);
 //! - [`counters`]: the counters of a frame and the rendered frame;
-//! - [`driver`]: the frame driver ([`driver::run`]);
+//! - [`oracle`]: the in-band oracle box of `uvt render`'s report, an observer of the core's loop;
+//! - [`core_frame`]: the core's frame — the core's own loop ([`uvt_core::Engine`]) in bands on
+//!   threads, every triangle set up once ([`core_frame::run_core`]);
+//! - [`reference`]: the f64 reference's frame, its own loop ([`reference::run_reference`]);
 //! - [`compare`]: the core's coverage against the reference's, with the quantization bound.
 
 pub mod compare;
+pub mod core_frame;
 pub mod counters;
-pub mod driver;
-pub mod pipeline;
-pub mod pipelines;
+pub mod opts;
+pub mod oracle;
+pub mod reference;

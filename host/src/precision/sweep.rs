@@ -5,11 +5,12 @@
 use std::time::Duration;
 
 use uvt_core::config::registry::{CONFIGS, DEFAULT};
-use uvt_core::{with_config, Laine2011, Precision, Triangle};
+use uvt_core::{with_config, Laine2011, NoZmax, Precision, Triangle};
 
+use crate::bench::strategy::run_frame;
 use crate::config::planar_static;
-use crate::frame::driver::{run, RunOpts};
-use crate::frame::pipelines::{Fixed, Reference};
+use crate::frame::opts::RunOpts;
+use crate::frame::reference::run_reference;
 use crate::scene::builtin::{bench_scene, Bench, Blur};
 use crate::scene::file::Scene;
 use crate::scene::pattern::Pattern;
@@ -55,7 +56,7 @@ fn shrink(mut s: Scene, f: u16) -> Scene {
 }
 
 /// Run the sweep.
-pub fn sweep(sw: &Sweep) -> Vec<PrecRow> {
+pub fn sweep(sw: &Sweep) -> anyhow::Result<Vec<PrecRow>> {
     let mut rows: Vec<PrecRow> = Vec::new();
     let chosen: Vec<_> = CONFIGS
         .iter()
@@ -83,7 +84,7 @@ pub fn sweep(sw: &Sweep) -> Vec<PrecRow> {
                     row.label()
                 );
                 let s = shrink(bench_scene(kind, row, true), sw.shrink);
-                with_config!(e.config, P => one::<P>(&s, &mut accs));
+                with_config!(e.config, P => one::<P>(&s, &mut accs)).transpose()?;
             }
         }
         for a in accs.iter_mut() {
@@ -91,11 +92,11 @@ pub fn sweep(sw: &Sweep) -> Vec<PrecRow> {
         }
         rows.extend(accs);
     }
-    rows
+    Ok(rows)
 }
 
 /// One scene at precision `P` for every tile size of `accs` (each row's `tile`).
-fn one<P: Precision + Sync>(s: &Scene, accs: &mut [PrecRow]) {
+fn one<P: Precision + Sync>(s: &Scene, accs: &mut [PrecRow]) -> anyhow::Result<()> {
     let base = Pattern::new(s.pattern, s.spp, s.seed);
     let pat = base.with_tuv(P::TUV_FRAC);
     let core: Vec<Triangle> = s
@@ -133,28 +134,13 @@ fn one<P: Precision + Sync>(s: &Scene, accs: &mut [PrecRow]) {
             tile: acc.tile,
             ..RunOpts::for_scene(s, &colors)
         };
-        let fixed = Fixed::<_, P> {
-            prec: std::marker::PhantomData,
-            strat: Laine2011,
-            vp,
-            tris: &core,
-            pattern: &pat,
-        };
         // Time both in the same run, alternating, three times each; keep the medians.
         let mut tf: Vec<Duration> = Vec::new();
         let mut tr: Vec<Duration> = Vec::new();
         let mut last = None;
         for _ in 0..3 {
-            let f = run(&fixed, &pat, &o);
-            let r = run(
-                &Reference {
-                    vp: s.viewport,
-                    tris: &s.tris,
-                    pattern: &base,
-                },
-                &pat,
-                &o,
-            );
+            let f = run_frame::<_, P, NoZmax>(Laine2011, vp, &core, &pat, &o)?;
+            let r = run_reference(&s.tris, &base, &o);
             tf.push(f.time);
             tr.push(r.time);
             last = Some((f, r));
@@ -180,20 +166,21 @@ fn one<P: Precision + Sync>(s: &Scene, accs: &mut [PrecRow]) {
         acc.counts[3] += r.stats.samples_covered;
     }
     errors::<P>(s, &core, &pat, accs, 1.0);
+    Ok(())
 }
 
 /// One stress case at the default precision: STE, decisions against f64, conservativeness.
-pub fn stress_row(scene: &Scene) -> PrecRow {
+pub fn stress_row(scene: &Scene) -> anyhow::Result<PrecRow> {
     let mut acc = [PrecRow {
         config: DEFAULT.to_string(),
         tile: scene.tile,
         ..Default::default()
     }];
-    one::<uvt_core::DefaultPrecision>(scene, &mut acc);
+    one::<uvt_core::DefaultPrecision>(scene, &mut acc)?;
     let [mut row] = acc;
     finish(&mut row);
     row.lost = lost_samples(scene).1;
-    row
+    Ok(row)
 }
 
 /// Load every scene of a stress folder (sorted by name).

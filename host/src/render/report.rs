@@ -5,7 +5,7 @@
 use serde_json::json;
 
 use crate::frame::counters::{Frame, FrameStats};
-use crate::frame::driver::ORACLE_POINTS;
+use crate::frame::oracle::ORACLE_POINTS;
 use crate::scene::file::Scene;
 
 use super::opts::{bounds_label, per, Decisions, RenderOpts, Rendered};

@@ -6,12 +6,12 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{anyhow, Context, Result};
 use uvt_core::config::registry::DEFAULT;
-use uvt_core::{with_config, with_strategy, BboxScan, Precision};
+use uvt_core::{with_config, with_strategy, BboxScan, NoZmax, Precision};
 
 use crate::bench::strategy::run_frame;
 use crate::frame::compare::compare;
-use crate::frame::driver::{run, RunOpts};
-use crate::frame::pipelines::Reference;
+use crate::frame::opts::RunOpts;
+use crate::frame::reference::run_reference;
 use crate::precision::measure::decisions;
 use crate::scene::file::Scene;
 use crate::scene::pattern::Pattern;
@@ -54,21 +54,14 @@ fn pipelines<P: Precision + Sync>(scene: &Scene, o: &RenderOpts) -> Result<Rende
         oracle: Some(&scene.tris),
         ..opts("uvt fixed")
     };
-    let fixed =
-        with_strategy!(o.bounds, s => run_frame::<_, P>(s, vp, &core, &pattern, &fixed_opts))
-            .ok_or_else(|| anyhow!("unknown bounds strategy {:?}", o.bounds))?;
+    let fixed = with_strategy!(o.bounds, s => {
+        run_frame::<_, P, NoZmax>(s, vp, &core, &pattern, &fixed_opts)
+    })
+    .ok_or_else(|| anyhow!("unknown bounds strategy {:?}", o.bounds))??;
     say(2, "f64 reference");
-    let f64 = run(
-        &Reference {
-            vp: scene.viewport,
-            tris: &scene.tris,
-            pattern: &exact,
-        },
-        &pattern,
-        &opts("uvt f64"),
-    );
+    let f64 = run_reference(&scene.tris, &exact, &opts("uvt f64"));
     say(3, "core with the bounding-box scan");
-    let bbox = run_frame::<_, P>(BboxScan, vp, &core, &pattern, &opts("bbox scan"));
+    let bbox = run_frame::<_, P, NoZmax>(BboxScan, vp, &core, &pattern, &opts("bbox scan"))?;
     say(4, "comparing core and reference sample by sample");
     let coverage = if default {
         Decisions::from_diff(&compare(&scene.tris, &core, vp, &pattern))

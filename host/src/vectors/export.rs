@@ -11,9 +11,11 @@ use serde_json::json;
 use uvt_core::bounds::laine::LaineCoeffs;
 use uvt_core::config::registry::Config;
 use uvt_core::config::unit::Full;
+use uvt_core::raster::zmax::NoRegisters;
 use uvt_core::{
-    with_config, Lens, PixelRect, Precision, Rgb888, Sample, Setup, SubPixel, TileBuffer, Time,
-    Triangle, UvtBox, Viewport,
+    with_config, Engine, Fate, General, Laine2011, Lens, NoZmax, Observer, PixelRect, Precision,
+    Prim, Rgb888, Sample, SamplePattern, Seen, Setup, Stats, SubPixel, TileBuffer, Time, Triangle,
+    UvtBox, Viewport,
 };
 
 use crate::scene::builtin::random_tri;
@@ -365,16 +367,28 @@ fn frame_at<P: Precision>(scene: &Scene, scene_json: &str, cfg: Config) -> Resul
         };
         trace += &(rec.to_string() + "\n");
     }
-    let bt = scene.tile as u16;
     let colors: Vec<Rgb888> = scene
         .tris
         .iter()
         .map(|t| Rgb888::new(t.color[0], t.color[1], t.color[2]))
         .collect();
     let clear = Rgb888::new(24, 24, 32);
-    let q = pattern.core();
+    let q = SamplePattern::new_with::<P>(pattern.block, pattern.spp, &pattern.quant)
+        .map_err(|e| anyhow!("sample table: {e}"))?;
+    // The frame is the core's loop (Laine 2011 at P on the full unit) per 8×8 screen tile, as
+    // `uvt_core::Raster` runs it; the trace watches it and writes every stage's records.
+    let engine = Engine::<General<Laine2011, P, Full>, NoZmax>::new(Laine2011, vp);
+    let mut stats = Stats::default();
+    let mut drawn = Vec::new();
+    for (i, (t, &color)) in core.iter().zip(&colors).enumerate() {
+        if let Some(d) = engine
+            .setup(i, &Prim { tri: *t, color }, &mut stats)
+            .map_err(|e| anyhow!("{e}"))?
+        {
+            drawn.push(d);
+        }
+    }
     let mut fb = TileBuffer::<8, 8, 4>::new(clear);
-    let f = |r: i32| r as f64 / 65536.0;
     for y0 in (0..vp.height()).step_by(8) {
         for x0 in (0..vp.width()).step_by(8) {
             fb.clear(clear);
@@ -384,62 +398,32 @@ fn frame_at<P: Precision>(scene: &Scene, scene_json: &str, cfg: Config) -> Resul
                 x1: (x0 + 8).min(vp.width()),
                 y1: (y0 + 8).min(vp.height()),
             };
-            for (i, &color) in colors.iter().enumerate() {
-                let Some((s, _)) = set.setups[i] else {
-                    continue;
-                };
-                let region = s.footprint().intersect(&screen);
-                if region.is_empty() {
-                    continue;
-                }
-                for cell in region.cells(bt) {
-                    let b = set.bounds(i as u32, cell)?;
-                    trace += &(json!({"type": "tile", "tri": i, "rect": [cell.x0, cell.y0, cell.x1, cell.y1],
-                    "bounds": b.map(|b| json!({"u": [f(b.u.lo()), f(b.u.hi())], "v": [f(b.v.lo()), f(b.v.hi())], "t": [f(b.t.lo()), f(b.t.hi())]}))}).to_string() + "\n");
-                    let Some(b) = b else { continue };
-                    for py in cell.y0..cell.y1 {
-                        for px in cell.x0..cell.x1 {
-                            for (si, smp) in q.pixel(px, py).iter().enumerate() {
-                                let inside = set.select(&b, smp);
-                                let pos = uvt_core::ScreenPos::of(px, py, smp);
-                                // The configuration's sample test (also outside the box, for
-                                // the trace only: it must miss there).
-                                let hit = uvt_core::sample::test::<P, Full>(
-                                    &s,
-                                    pos,
-                                    smp,
-                                    &mut Default::default(),
-                                )
-                                .map(|h| h.depth);
-                                if inside {
-                                    let rec = match grid {
-                                        None => set.sample(i as u32, px, py, smp)?,
-                                        Some(_) if s.planar().is_some() => pset
-                                            .push(&core[i], vp, pos)
-                                            .and_then(|e| e.hit)
-                                            .map(|h| h.depth),
-                                        Some(g) => bset
-                                            .push(&core[i], vp, g, pos, smp)
-                                            .hit
-                                            .map(|h| h.depth),
-                                    };
-                                    if rec != hit {
-                                        return Err(anyhow!(
-                                            "triangle {i}, pixel ({px},{py}), sample {si}: the record gives {rec:?}, the core's sample test at {cfg} {hit:?}"
-                                        ));
-                                    }
-                                }
-                                if let (true, Some(d)) = (inside, hit) {
-                                    fb.write((px - x0) as usize, (py - y0) as usize, si, color, d);
-                                }
-                                trace += &(json!({"type": "sample", "tri": i, "px": px, "py": py, "s": si,
-                                "x": px as f64 + smp.sx().to_bits() as f64 / 256.0, "y": py as f64 + smp.sy().to_bits() as f64 / 256.0,
-                                "u": f(smp.u().to_bits()), "v": f(smp.v().to_bits()), "t": f(smp.t().to_bits()),
-                                "inside": inside, "covered": hit.is_some(), "depth": hit.map(|d| d as f64 / 16777216.0)}).to_string() + "\n");
-                            }
-                        }
-                    }
-                }
+            let mut tr = Tracer {
+                set: &mut set,
+                trace: &mut trace,
+                core: &core,
+                vp,
+                cfg,
+                grid,
+                bset: &mut bset,
+                pset: &mut pset,
+                bounds: None,
+                failed: None,
+            };
+            engine
+                .render_region(
+                    drawn.iter(),
+                    screen,
+                    &q,
+                    scene.tile,
+                    &mut fb,
+                    &mut NoRegisters,
+                    &mut stats,
+                    &mut tr,
+                )
+                .map_err(|e| anyhow!("{e}"))?;
+            if let Some(e) = tr.failed {
+                return Err(e);
             }
             for py in screen.y0..screen.y1 {
                 for px in screen.x0..screen.x1 {
@@ -464,6 +448,111 @@ fn frame_at<P: Precision>(scene: &Scene, scene_json: &str, cfg: Config) -> Resul
         set.planar(pset);
     }
     Ok(set)
+}
+
+/// The frame trace's observer of the core's loop: per bounds tile its bounds record (checked
+/// against the tile the walk computed) and a `tile` line; per sample of a kept tile — the
+/// culled ones too (the loop tests them for it, [`Observer::CULLED_SAMPLES`]) — its interval
+/// check record (checked against the tile's admission), the configuration's sample-test record
+/// for an admitted sample (checked against the loop's hit) and a `sample` line. The first
+/// mismatch is kept and ends the export.
+struct Tracer<'a> {
+    set: &'a mut Set,
+    trace: &'a mut String,
+    core: &'a [Triangle],
+    vp: Viewport,
+    cfg: Config,
+    grid: Option<Grid>,
+    bset: &'a mut BSet,
+    pset: &'a mut PSet,
+    /// the current kept tile's box
+    bounds: Option<UvtBox>,
+    failed: Option<anyhow::Error>,
+}
+
+impl Tracer<'_> {
+    fn cell(&mut self, tri: u32, cell: PixelRect, fate: Fate) -> Result<()> {
+        let b = self.set.bounds(tri, cell)?;
+        let walked = match fate {
+            Fate::Kept { bounds } => Some(bounds),
+            Fate::Skipped | Fate::Zculled => None,
+        };
+        if b != walked {
+            return Err(anyhow!(
+                "triangle {tri}, tile {cell:?}: the bounds record gives {b:?}, the core's walk {walked:?}"
+            ));
+        }
+        let f = |r: i32| r as f64 / 65536.0;
+        *self.trace += &(json!({"type": "tile", "tri": tri, "rect": [cell.x0, cell.y0, cell.x1, cell.y1],
+        "bounds": b.map(|b| json!({"u": [f(b.u.lo()), f(b.u.hi())], "v": [f(b.v.lo()), f(b.v.hi())], "t": [f(b.t.lo()), f(b.t.hi())]}))}).to_string() + "\n");
+        self.bounds = b;
+        Ok(())
+    }
+
+    fn sample(
+        &mut self,
+        tri: u32,
+        px: u16,
+        py: u16,
+        si: usize,
+        smp: &Sample,
+        seen: Seen,
+    ) -> Result<()> {
+        let b = self
+            .bounds
+            .ok_or_else(|| anyhow!("a sample outside a kept tile"))?;
+        let inside = self.set.select(&b, smp);
+        if inside != seen.admitted {
+            return Err(anyhow!(
+                "triangle {tri}, pixel ({px},{py}), sample {si}: the interval record gives {inside}, the core's admission {}",
+                seen.admitted
+            ));
+        }
+        let pos = uvt_core::ScreenPos::of(px, py, smp);
+        let hit = seen.hit.map(|h| h.depth);
+        let i = tri as usize;
+        if inside {
+            let t = self
+                .core
+                .get(i)
+                .ok_or_else(|| anyhow!("triangle {tri} missing"))?;
+            let rec = match self.grid {
+                None => self.set.sample(tri, px, py, smp)?,
+                Some(_) if self.set.setups[i].is_some_and(|(s, _)| s.planar().is_some()) => self
+                    .pset
+                    .push(t, self.vp, pos)
+                    .and_then(|e| e.hit)
+                    .map(|h| h.depth),
+                Some(g) => self.bset.push(t, self.vp, g, pos, smp).hit.map(|h| h.depth),
+            };
+            if rec != hit {
+                return Err(anyhow!(
+                    "triangle {i}, pixel ({px},{py}), sample {si}: the record gives {rec:?}, the core's sample test at {} {hit:?}",
+                    self.cfg
+                ));
+            }
+        }
+        let f = |r: i32| r as f64 / 65536.0;
+        *self.trace += &(json!({"type": "sample", "tri": i, "px": px, "py": py, "s": si,
+        "x": px as f64 + smp.sx().to_bits() as f64 / 256.0, "y": py as f64 + smp.sy().to_bits() as f64 / 256.0,
+        "u": f(smp.u().to_bits()), "v": f(smp.v().to_bits()), "t": f(smp.t().to_bits()),
+        "inside": inside, "covered": hit.is_some(), "depth": hit.map(|d| d as f64 / 16777216.0)}).to_string() + "\n");
+        Ok(())
+    }
+}
+
+impl Observer for Tracer<'_> {
+    const CULLED_SAMPLES: bool = true;
+    fn cell(&mut self, tri: u32, cell: PixelRect, fate: Fate) {
+        if self.failed.is_none() {
+            self.failed = Tracer::cell(self, tri, cell, fate).err();
+        }
+    }
+    fn sample(&mut self, tri: u32, px: u16, py: u16, si: usize, s: &Sample, seen: Seen) {
+        if self.failed.is_none() {
+            self.failed = Tracer::sample(self, tri, px, py, si, s, seen).err();
+        }
+    }
 }
 
 /// Write a set into `dir` (created): hex files, manifest, trace and scene. Files are written to

@@ -291,7 +291,7 @@ fn run(cli: Cli) -> Result<()> {
                         .with_context(|| format!("cannot read {}", p.display()))?,
                 )
                 .map_err(|e| anyhow!("{}: not a precision.json: {e}", p.display()))?,
-                None => uvt_host::precision::sweep::sweep(&sw),
+                None => uvt_host::precision::sweep::sweep(&sw)?,
             };
             let md = uvt_host::precision::tables::table_md(&rows, &costs);
             std::fs::create_dir_all(&out)
@@ -411,13 +411,10 @@ fn run(cli: Cli) -> Result<()> {
             let rows: Vec<_> = scenes
                 .iter()
                 .map(|s| {
-                    (
-                        s.name.clone(),
-                        s.tris.len(),
-                        uvt_host::precision::sweep::stress_row(s),
-                    )
+                    let row = uvt_host::precision::sweep::stress_row(s)?;
+                    Ok((s.name.clone(), s.tris.len(), row))
                 })
-                .collect();
+                .collect::<Result<_>>()?;
             say(&uvt_host::precision::tables::stress_md(&rows))?;
             let bad: Vec<_> = rows
                 .iter()
