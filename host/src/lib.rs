@@ -1,8 +1,8 @@
 //! # uvt-host
 //!
 //! What users run on a workstation: scenes, sample patterns, an independent f64 reference of
-//! every stage, a frame driver that runs the fixed-point core and the reference side by side,
-//! images, reports and the STE benchmark table. The binary is `uvt` (`src/bin/uvt/`: `main.rs` runs a command, `cli.rs` declares them).
+//! every stage, the core's own render loop over whole frames in parallel, the comparison of the
+//! core with the reference, images, reports and the STE benchmark table. The binary is `uvt` (`src/bin/uvt/`: `main.rs` runs a command, `cli.rs` declares them).
 //!
 //! Modules by what they do, from the bottom up; a file uses only files of the modules listed
 //! before its own (or earlier files of its own folder, as that folder's `mod.rs` lists them),
@@ -10,14 +10,13 @@
 //! checks it):
 //!
 //! - [`scene`]: scene input — scene files, meshes, built-in scenes, memory budget, sample
-//!   patterns (its budget sizes the frame driver's per-triangle entry from the leaf
-//!   [`frame::pipeline`]);
+//!   patterns;
 //! - [`reference`](mod@reference): the independent f64 reference of every stage;
-//! - [`frame`]: the frame engine — the driver that runs a pipeline over a frame, and the
-//!   sample-by-sample comparison of the core with the reference;
+//! - [`frame`]: whole frames — the core's own loop in bands on threads, the reference's own loop;
 //! - [`config`]: configurations and their costs — the core's configuration and strategy
 //!   registries on the command line, the multiplier model, the unit variants' sample-test
-//!   cost, the documented error distance d_q, the planar static configuration;
+//!   cost, the inputs' rounding, the error statements (d_q), the planar static configuration;
+//! - [`compare`]: the one sample-by-sample comparison of the core with the reference;
 //! - [`oracle`]: the axis-aligned limit of `bench-ste`;
 //! - [`bench`](mod@bench): `uvt bench-ste`, and one bounds strategy over a frame by name;
 //! - [`converge`]: `uvt converge`;
@@ -29,6 +28,7 @@
 #![deny(missing_docs)]
 
 pub mod bench;
+pub mod compare;
 pub mod config;
 pub mod converge;
 pub mod fit;

@@ -7,7 +7,8 @@
 use std::path::Path;
 
 use uvt_core::config::registry::PLANAR;
-use uvt_host::fit::select::{classes, config_fits, Tolerance, DEFAULT_TOLERANCE_PX};
+use uvt_host::config::dq::Tolerance;
+use uvt_host::fit::select::{classes, config_fits, DEFAULT_TOLERANCE_PX};
 use uvt_host::precision::measure::planar_decisions;
 use uvt_host::scene::file::Scene;
 

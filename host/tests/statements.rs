@@ -9,8 +9,9 @@ use std::path::Path;
 
 use uvt_core::config::registry::{self, DEFAULT};
 use uvt_host::config::dq::pixel_limit;
+use uvt_host::config::dq::Tolerance;
 use uvt_host::fit::confirm::confirm;
-use uvt_host::fit::select::{classes, config_fits, Tolerance, DEFAULT_TOLERANCE_PX};
+use uvt_host::fit::select::{classes, config_fits, DEFAULT_TOLERANCE_PX};
 use uvt_host::scene::file::Scene;
 
 fn stress(name: &str) -> Scene {

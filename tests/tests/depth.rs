@@ -69,7 +69,7 @@ fn crossing_camera_plane_loses_nothing() {
     let path = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR"))
         .join("../host/stress/crossing_camera_plane.json");
     let scene = uvt_host::scene::file::Scene::load(&path).unwrap();
-    let (reached, lost) = uvt_host::precision::measure::lost_samples(&scene);
+    let (reached, lost) = uvt_host::precision::measure::lost_samples(&scene).unwrap();
     assert!(reached > 0, "the scene covers samples");
     assert_eq!(
         lost, 0,

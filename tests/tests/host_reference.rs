@@ -8,7 +8,9 @@ use embedded_graphics_core::pixelcolor::RgbColor;
 use uvt_core::{DefaultPrecision, Laine2011, NoZmax, Prim, Renderer, Rgb888};
 use uvt_host::bench::ste_table::Timing;
 use uvt_host::bench::strategy::run_frame;
-use uvt_host::frame::compare::compare;
+use uvt_host::compare::pass::{compare, Comparison, Spec};
+use uvt_host::config::dq::statements;
+use uvt_host::config::rounding::Rounding;
 use uvt_host::frame::opts::RunOpts;
 use uvt_host::reference;
 use uvt_host::scene::builtin;
@@ -79,6 +81,25 @@ fn reference_bounds_conservative_against_brute_force() {
     assert!(covered > 10_000, "sweep covered only {covered} samples");
 }
 
+/// The one comparison of `s` at the default precision: Laine 2011 at every bounds-tile size,
+/// every primitive under its statement; no violation and nothing beyond a statement.
+fn checked(s: &Scene, pat: &Pattern) -> Comparison {
+    let core = s.core_tris().unwrap();
+    let vp = s.core_viewport();
+    let r = Rounding::default_precision();
+    let spec = Spec {
+        strategy: Laine2011,
+        tiles: vec![1, 2, 4, 8],
+        statements: statements::<DefaultPrecision>(&s.tris, &core, vp, &r, 1.0),
+        tolerance: None,
+        rounding: r,
+    };
+    let d = compare::<DefaultPrecision, _>(&s.tris, &core, vp, pat, &spec);
+    assert_eq!(d.violations(), 0, "{}: {d:?}", s.name);
+    assert_eq!(d.beyond_statement, 0, "{}: {d:?}", s.name);
+    d
+}
+
 #[test]
 fn core_agrees_with_reference_beyond_quantization_distance() {
     let seed = seed();
@@ -86,7 +107,7 @@ fn core_agrees_with_reference_beyond_quantization_distance() {
     // The built-in default scene, and random triangles of every kind.
     let s = builtin::default_scene();
     let pat = Pattern::new(s.pattern, s.spp, s.seed);
-    let d = compare(&s.tris, &s.core_tris().unwrap(), s.core_viewport(), &pat);
+    let d = checked(&s, &pat);
     assert!(d.compared > 1_000_000, "{d:?}");
     assert_eq!(d.beyond_bound, 0, "default scene: {d:?}");
     let tris: Vec<SceneTri> = (0..cases(300, 5000))
@@ -102,12 +123,7 @@ fn core_agrees_with_reference_beyond_quantization_distance() {
         tris,
     };
     let pat = Pattern::new(scene.pattern, scene.spp, seed);
-    let d = compare(
-        &scene.tris,
-        &scene.core_tris().unwrap(),
-        scene.core_viewport(),
-        &pat,
-    );
+    let d = checked(&scene, &pat);
     assert_eq!(d.beyond_bound, 0, "random triangles (seed {seed}): {d:?}");
     assert!(d.compared > 100_000);
     println!("default+random: {d:?}");

@@ -4,13 +4,26 @@
 //! and at a narrow precision the differences behind the camera are explained, but not by a bound
 //! scaled down 16×.
 
-use uvt_core::Prec;
-use uvt_host::frame::compare::{check_sample, compare, compare_with, CoverageDiff, Rounding};
+use uvt_core::{DefaultPrecision, Prec, Precision, Triangle, Viewport};
+use uvt_host::compare::bound::check_sample;
+use uvt_host::compare::pass::{compare, Comparison, Spec};
+use uvt_host::config::rounding::Rounding;
 use uvt_host::reference::sample::{direction, positions};
 use uvt_host::scene::file::Scene;
 use uvt_host::scene::pattern::Pattern;
 use uvt_host::scene::tri::SceneTri;
 use uvt_tests::*;
+
+/// The comparison's decisions at precision `P` and rounding `r`.
+fn decisions<P: Precision + Sync>(
+    tris: &[SceneTri],
+    core: &[Triangle],
+    vp: Viewport,
+    pat: &Pattern,
+    r: Rounding,
+) -> Comparison {
+    compare::<P, _>(tris, core, vp, pat, &Spec::decisions(r))
+}
 
 fn stress(name: &str) -> Scene {
     let dir = std::path::PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("../host/stress");
@@ -141,18 +154,25 @@ fn wrong_core_is_caught_behind_the_camera() {
     for name in BEHIND {
         let s = stress(name);
         let pat = Pattern::new(s.pattern, s.spp, s.seed);
-        let right = compare(&s.tris, &s.core_tris().unwrap(), s.core_viewport(), &pat);
+        let right = decisions::<DefaultPrecision>(
+            &s.tris,
+            &s.core_tris().unwrap(),
+            s.core_viewport(),
+            &pat,
+            Rounding::default_precision(),
+        );
         assert_eq!(right.beyond_bound, 0, "{name}: {right:?}");
         let mut wrong = s.clone();
         for t in wrong.tris.iter_mut() {
             t.t0[0][0] += 1.0 / 64.0;
             t.t1[0][0] += 1.0 / 64.0;
         }
-        let d = compare(
+        let d = decisions::<DefaultPrecision>(
             &s.tris,
             &wrong.core_tris().unwrap(),
             s.core_viewport(),
             &pat,
+            Rounding::default_precision(),
         );
         println!("{name}: right {right:?}\n  wrong {d:?}");
         if name == "all_behind_camera" {
@@ -167,7 +187,7 @@ fn wrong_core_is_caught_behind_the_camera() {
     }
 }
 
-fn narrow(name: &str, scale: f64) -> CoverageDiff {
+fn narrow(name: &str, scale: f64) -> Comparison {
     type P = Prec<8, 8, 4>;
     let s = stress(name);
     let pat = Pattern::new(s.pattern, s.spp, s.seed).with_tuv(8);
@@ -182,7 +202,7 @@ fn narrow(name: &str, scale: f64) -> CoverageDiff {
         tuv: r.tuv * scale,
         sub: r.sub * scale,
     };
-    compare_with(&s.tris, &core, s.core_viewport(), &pat, &r)
+    decisions::<P>(&s.tris, &core, s.core_viewport(), &pat, r)
 }
 
 /// At 8 position and 8 t/u/v bits the w ≤ 0 scenes differ from f64, behind the camera too; every
@@ -190,7 +210,7 @@ fn narrow(name: &str, scale: f64) -> CoverageDiff {
 /// them (the check has teeth on exactly the cases the old one exempted).
 #[test]
 fn narrow_precision_behind_the_camera_is_explained() {
-    let (mut all, mut small) = (CoverageDiff::default(), 0);
+    let (mut all, mut small) = (Comparison::default(), 0);
     for name in BEHIND {
         let d = narrow(name, 1.0);
         println!("{name} at 8/8: {d:?}");

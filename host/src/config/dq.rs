@@ -54,11 +54,12 @@
 //! `τ_c = 2τ/max(W, H)` ([`clip_tolerance`]): the clip displacement that moves a vertex at w = 1
 //! by at most τ px.
 
+use rayon::prelude::*;
 use serde::Serialize;
 use uvt_core::config::registry::Config;
-use uvt_core::{Class, Viewport};
+use uvt_core::{Class, Precision, Setup, Triangle, Viewport};
 
-use crate::frame::compare::Rounding;
+use crate::config::rounding::{eps_of, Rounding};
 use crate::scene::tri::SceneTri;
 
 /// d_q of one primitive (px; module docs) with rounding `r` and datapath perturbation `eps`
@@ -143,4 +144,47 @@ pub fn pixel_limit(vp: (u16, u16)) -> f64 {
 /// The clip form of a tolerance of `px` pixels on viewport `vp` (module docs).
 pub fn clip_tolerance(px: f64, vp: (u16, u16)) -> f64 {
     2.0 * px / f64::from(vp.0.max(vp.1))
+}
+
+/// The tolerance in both forms of the error statement (`crate::config::dq`): pixels for the
+/// primitives stated in screen space, clip units (backward error) for the others.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct Tolerance {
+    /// pixels
+    pub px: f64,
+    /// clip units
+    pub clip: f64,
+}
+
+impl Tolerance {
+    /// `px` pixels and its clip form `2·px/max(W, H)` on viewport `vp` ([`clip_tolerance`]),
+    /// unless `clip` is given.
+    pub fn new(px: f64, clip: Option<f64>, vp: (u16, u16)) -> Tolerance {
+        Tolerance {
+            px,
+            clip: clip.unwrap_or_else(|| clip_tolerance(px, vp)),
+        }
+    }
+}
+
+/// The statements of `tris` at rounding `r` for a core sample test whose perturbation at each
+/// triangle is `eps_of` its unculled setup at `P` ([`statement`]), d_q scaled
+/// by `dq_scale` (1 in every report; tests shrink it to show a difference beyond it is caught).
+pub fn statements<P: Precision + Sync>(
+    tris: &[SceneTri],
+    core: &[Triangle],
+    vp: Viewport,
+    r: &Rounding,
+    dq_scale: f64,
+) -> Vec<Option<Statement>> {
+    let v = (vp.width(), vp.height());
+    tris.par_iter()
+        .zip(core.par_iter())
+        .map(|(st, ct)| {
+            let eps = eps_of(&Setup::unculled::<P>(ct, vp));
+            let mut s = statement(st, v, r, eps);
+            s.px = s.px.map(|d| d * dq_scale);
+            Some(s)
+        })
+        .collect()
 }

@@ -10,12 +10,16 @@
 //! - [`strategy_cost`]: the width-weighted hardware figure of every bounds strategy's stages
 //!   (operators of `uvt_core::widths::strategies`, tiled by [`multipliers`]);
 //! - [`units`]: the unit variants and their sample-test multipliers at a configuration;
-//! - [`dq`]: the documented error distance d_q of a primitive (uses [`crate::frame::compare`]);
+//! - [`rounding`]: what a configuration's core perturbs — the inputs' rounding and the bounded
+//!   test's vertex perturbation;
+//! - [`dq`]: the error statements: the documented error distance d_q of a primitive, its
+//!   backward error, the tolerance;
 //! - [`planar_static`]: the planar static configuration (`uvt_core::config::registry::PLANAR`).
 
 pub mod dq;
 pub mod multipliers;
 pub mod names;
 pub mod planar_static;
+pub mod rounding;
 pub mod strategy_cost;
 pub mod units;

@@ -31,7 +31,7 @@ use uvt_core::config::registry::{Config, PLANAR};
 use uvt_core::config::unit::Full;
 use uvt_core::{Class, Outcome, PlanarPrecision, Setup, Viewport};
 
-use crate::frame::compare::{eps_of, Rounding};
+use crate::config::rounding::{eps_of, Rounding};
 use crate::scene::file::Scene;
 use crate::scene::tri::SceneTri;
 

@@ -5,28 +5,23 @@
 //! full unit's, sample by sample, and its no-heap `uvt_core::Renderer<B, N, P, U>` (8×8 screen
 //! tiles, its Cortex-M program's) against its frame in bands.
 
-use rayon::prelude::*;
 use serde::Serialize;
-use uvt_core::bounds::strategy::{BoundsStrategy, TileBounds};
+use uvt_core::bounds::strategy::BoundsStrategy;
 use uvt_core::config::registry::Config;
 use uvt_core::{
-    with_config, with_strategy, DefocusOnly, Engine, Full, General, MotionOnly, NoZmax, Ops,
-    Outcome, Pipeline, PipelineOf, PixelRect, Precision, Prim, Raster, Rgb888, SamplePattern,
-    ScreenPos, Select, Setup, StaticOnly, Triangle, Unit,
+    with_config, with_strategy, DefocusOnly, Engine, Full, General, MotionOnly, NoZmax, Pipeline,
+    PipelineOf, Precision, Prim, Raster, Rgb888, SamplePattern, Select, StaticOnly, Triangle, Unit,
 };
 
-use crate::config::dq::Statement;
-use crate::frame::compare::{
-    check_sample_eps, check_sample_within, eps_of, footprint_union, Rounding,
-};
+use crate::compare::pass::{compare, Spec};
+use crate::config::dq::{Statement, Tolerance};
+use crate::config::rounding::Rounding;
 use crate::frame::core_frame::run_core;
 use crate::frame::opts::RunOpts;
-use crate::reference;
 use crate::scene::file::Scene;
 use crate::scene::pattern::Pattern;
 
 use super::search::inputs;
-use super::select::Tolerance;
 
 /// What the confirmation measured.
 #[derive(Clone, Debug, Default, Serialize)]
@@ -345,8 +340,9 @@ fn tile_render<L: Pipeline>(
     })
 }
 
-/// Every footprint sample of every triangle: decisions against the reference, the rigorous
-/// check, distances, and conservativeness of `strat` at `tile`.
+/// Every footprint sample of every triangle: the one comparison ([`crate::compare::pass`]) of
+/// the decisions at `P` against the reference, under the statements and the tolerance, and the
+/// conservativeness of `strat` at `tile`.
 fn brute_force<P: Precision + Sync, B: BoundsStrategy + Sync>(
     scene: &Scene,
     core: &[Triangle],
@@ -359,126 +355,27 @@ fn brute_force<P: Precision + Sync, B: BoundsStrategy + Sync>(
 where
     B::Coeffs: Send + Sync,
 {
-    let vp = scene.core_viewport();
-    let v = scene.viewport;
-    let rounding = Rounding::at(P::POS_FRAC, P::TUV_FRAC);
-    let bt = u16::from(tile);
-    scene
-        .tris
-        .par_iter()
-        .zip(core.par_iter())
-        .enumerate()
-        .map(|(i, (st, ct))| {
-            let mut c = Confirm::default();
-            let mut ops = Ops::default();
-            let fx = match uvt_core::setup::<P, Full>(ct, vp, &mut ops) {
-                Outcome::Visible(x) => Some((x, strat.prepare::<Full>(&x, &mut ops))),
-                Outcome::Culled(_) | Outcome::Refused(_) => None,
-            };
-            let rf = reference::setup::setup(st, v).ok();
-            let Some(region) = footprint_union(
-                fx.as_ref().map(|x| x.0.footprint()),
-                rf.as_ref().map(|x| x.footprint),
-            ) else {
-                return c;
-            };
-            let full = Setup::unculled::<P>(ct, vp);
-            let eps = eps_of(&full);
-            let statement = statements.get(i).copied().flatten();
-            for py in region.y0..region.y1 {
-                for px in region.x0..region.x1 {
-                    let tb = fx.as_ref().and_then(|(x, k)| {
-                        let fp = x.footprint();
-                        if !fp.contains(px, py) {
-                            return None;
-                        }
-                        let cell = PixelRect {
-                            x0: px - px % bt,
-                            y0: py - py % bt,
-                            x1: px - px % bt + bt,
-                            y1: py - py % bt + bt,
-                        }
-                        .intersect(&fp);
-                        // Row → span → tile, as the renderer walks (ops here are not reported).
-                        let row = PixelRect {
-                            x0: fp.x0,
-                            x1: fp.x1,
-                            ..cell
-                        };
-                        let span = strat.row_span(x, k, row, bt, &mut ops);
-                        if !span.admits(&cell) {
-                            return None;
-                        }
-                        strat.span_tile::<uvt_core::Full>(x, k, &span, cell, &mut ops)
-                    });
-                    for si in 0..usize::from(pat.spp) {
-                        let idx = pat.index(px, py, si);
-                        let (q, e) = (&pat.quant[idx], &pat.exact[idx]);
-                        let hf = uvt_core::sample::test::<P, Full>(
-                            &full,
-                            ScreenPos::of(px, py, q),
-                            q,
-                            &mut ops,
-                        );
-                        let (x, y) = (f64::from(px) + e[0], f64::from(py) + e[1]);
-                        let hr = reference::sample::sample_test(st, v, x, y, e[2], e[3], e[4]);
-                        c.compared += 1;
-                        if hf.is_some() != hr.is_some() {
-                            c.differ += 1;
-                            let d =
-                                reference::sample::edge_distance_px(st, v, x, y, e[2], e[3], e[4]);
-                            let k = check_sample_eps(st, v, x, y, e[2], e[3], e[4], &rounding, eps);
-                            c.beyond_bound += u64::from(k.ratio > 1.0);
-                            match statement {
-                                Some(Statement { px: Some(dq), .. }) => {
-                                    c.differ_px += 1;
-                                    c.max_distance_px = c.max_distance_px.max(d);
-                                    c.beyond_statement += u64::from(d > dq);
-                                    c.beyond_tolerance += u64::from(d > tol.px);
-                                }
-                                Some(Statement { clip, px: None }) => {
-                                    c.differ_clip += 1;
-                                    c.max_clip = c.max_clip.max(clip);
-                                    c.max_distance_clip_px = c.max_distance_clip_px.max(d);
-                                    let w = check_sample_within(
-                                        st,
-                                        v,
-                                        x,
-                                        y,
-                                        e[2],
-                                        e[3],
-                                        e[4],
-                                        rounding.sub,
-                                        [tol.clip; 3],
-                                    );
-                                    c.beyond_tolerance_clip += u64::from(w.ratio > 1.0);
-                                }
-                                None => c.beyond_statement += 1,
-                            }
-                        }
-                        if hf.is_some() {
-                            let (u, vv, t) = (q.u().to_bits(), q.v().to_bits(), q.t().to_bits());
-                            let inside = tb.as_ref().is_some_and(|b| b.admits(u, vv, t, &mut ops));
-                            c.violations += u64::from(!inside);
-                        }
-                    }
-                }
-            }
-            c
-        })
-        .reduce(Confirm::default, |mut a, b| {
-            a.compared += b.compared;
-            a.differ += b.differ;
-            a.violations += b.violations;
-            a.beyond_bound += b.beyond_bound;
-            a.differ_px += b.differ_px;
-            a.beyond_statement += b.beyond_statement;
-            a.beyond_tolerance += b.beyond_tolerance;
-            a.max_distance_px = a.max_distance_px.max(b.max_distance_px);
-            a.differ_clip += b.differ_clip;
-            a.beyond_tolerance_clip += b.beyond_tolerance_clip;
-            a.max_clip = a.max_clip.max(b.max_clip);
-            a.max_distance_clip_px = a.max_distance_clip_px.max(b.max_distance_clip_px);
-            a
-        })
+    let spec = Spec {
+        strategy: strat,
+        tiles: vec![tile],
+        statements: statements.to_vec(),
+        tolerance: Some(*tol),
+        rounding: Rounding::at(P::POS_FRAC, P::TUV_FRAC),
+    };
+    let c = compare::<P, B>(&scene.tris, core, scene.core_viewport(), pat, &spec);
+    Confirm {
+        compared: c.compared,
+        differ: c.differ,
+        violations: c.violations(),
+        beyond_bound: c.beyond_bound,
+        differ_px: c.differ_px,
+        beyond_statement: c.beyond_statement,
+        beyond_tolerance: c.beyond_tolerance,
+        max_distance_px: c.max_distance_stated_px,
+        differ_clip: c.differ_clip,
+        beyond_tolerance_clip: c.beyond_tolerance_clip,
+        max_clip: c.max_clip,
+        max_distance_clip_px: c.max_distance_clip_px,
+        ..Confirm::default()
+    }
 }

@@ -15,7 +15,9 @@ use crate::scene::file::Scene;
 use super::confirm::{confirm, Confirm};
 use super::m4::{M4Data, M4Unit};
 use super::search::{search_strategies, StratCost};
-use super::select::{classes, config_fits, narrowest, ConfigFit, Tolerance, DEFAULT_TOLERANCE_PX};
+use crate::config::dq::Tolerance;
+
+use super::select::{classes, config_fits, narrowest, ConfigFit, DEFAULT_TOLERANCE_PX};
 
 /// Everything `uvt fit` found.
 #[derive(Clone, Debug, Serialize)]

@@ -28,10 +28,10 @@ use serde::Serialize;
 use uvt_core::config::registry::{self, EXACT, PLANAR};
 use uvt_core::Class;
 
-use crate::config::dq::{clip_tolerance, eps_clip, statement, Statement};
+use crate::config::dq::{eps_clip, statement, Statement, Tolerance};
 use crate::config::planar_static;
+use crate::config::rounding::Rounding;
 use crate::config::units::{unit_sample_cost, UnitCost};
-use crate::frame::compare::Rounding;
 use crate::scene::file::Scene;
 
 /// The default tolerance (module docs).
@@ -39,27 +39,6 @@ pub const DEFAULT_TOLERANCE_PX: f64 = 1.0 / 32.0;
 
 /// Bounds-tile sizes tried.
 pub const TILES: [u8; 4] = [1, 2, 4, 8];
-
-/// The tolerance in both forms of the error statement (`crate::config::dq`): pixels for the
-/// primitives stated in screen space, clip units (backward error) for the others.
-#[derive(Clone, Copy, Debug, Serialize)]
-pub struct Tolerance {
-    /// pixels
-    pub px: f64,
-    /// clip units
-    pub clip: f64,
-}
-
-impl Tolerance {
-    /// `px` pixels and its clip form `2·px/max(W, H)` on viewport `vp` (`dq::clip_tolerance`),
-    /// unless `clip` is given.
-    pub fn new(px: f64, clip: Option<f64>, vp: (u16, u16)) -> Tolerance {
-        Tolerance {
-            px,
-            clip: clip.unwrap_or_else(|| clip_tolerance(px, vp)),
-        }
-    }
-}
 
 /// The scene's error statements at one configuration.
 #[derive(Clone, Debug, Serialize)]

@@ -20,7 +20,7 @@ use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use rayon::prelude::*;
 use uvt_core::{
     DepthCull, Drawn, Engine, Error, Fate, Observer, Pipeline, PixelRect, PixelStats, Prim,
-    RegionBuffer, Rgb888, Sample, SamplePattern, Seen, Stats, Triangle,
+    RegionBuffer, Rgb888, Sample, SamplePattern, Seen, Stats, Triangle, Unobserved,
 };
 
 use super::counters::{Frame, FrameStats};
@@ -34,19 +34,23 @@ pub const BAND: u16 = 8;
 pub const CHUNK: usize = 1 << 14;
 
 /// What the host counts beyond the core's [`Stats`], watching one band's loop: the samples of
-/// the kept tiles (each put through the tile's admission; the Cortex-M cost model's "admits")
-/// and, with the oracle, its boxes ([`super::oracle`]).
-pub struct Watch<'a> {
+/// the kept tiles (each put through the tile's admission; the Cortex-M cost model's "admits"),
+/// with the oracle its boxes ([`super::oracle`]), and a caller's own observer `X`
+/// ([`run_core_with`]).
+pub struct Watch<'a, X> {
     spp: u64,
     /// samples of the kept bounds tiles
     pub admitted: u64,
     /// the in-band oracle
     pub oracle: Option<Oracle<'a>>,
+    /// the caller's observer
+    pub extra: X,
 }
 
-impl Observer for Watch<'_> {
+impl<X: Observer> Observer for Watch<'_, X> {
+    const CULLED_SAMPLES: bool = X::CULLED_SAMPLES;
     #[inline(always)]
-    fn cell(&mut self, _tri: u32, cell: PixelRect, fate: Fate) {
+    fn cell(&mut self, tri: u32, cell: PixelRect, fate: Fate) {
         if let Fate::Kept { .. } = fate {
             let area = u64::from(cell.x1 - cell.x0) * u64::from(cell.y1 - cell.y0);
             self.admitted += area * self.spp;
@@ -54,18 +58,21 @@ impl Observer for Watch<'_> {
         if let Some(o) = &mut self.oracle {
             o.cell(fate);
         }
+        self.extra.cell(tri, cell, fate);
     }
     #[inline(always)]
-    fn sample(&mut self, _tri: u32, _px: u16, _py: u16, _si: usize, s: &Sample, seen: Seen) {
+    fn sample(&mut self, tri: u32, px: u16, py: u16, si: usize, s: &Sample, seen: Seen) {
         if let Some(o) = &mut self.oracle {
             o.sample(s, seen);
         }
+        self.extra.sample(tri, px, py, si, s, seen);
     }
     #[inline(always)]
     fn cell_end(&mut self, tri: u32, cell: PixelRect) {
         if let Some(o) = &mut self.oracle {
             o.cell_end(tri, cell);
         }
+        self.extra.cell_end(tri, cell);
     }
 }
 
@@ -73,19 +80,19 @@ impl Observer for Watch<'_> {
 type SetUp<E> = Result<Option<Drawn<E>>, Error>;
 
 /// One band's buffers (slices of the frame's) and counters.
-struct Band<'a, R> {
+struct Band<'a, R, X> {
     rect: PixelRect,
     store: RegionBuffer<'a>,
     zregs: R,
     stats: Stats,
-    watch: Watch<'a>,
+    watch: Watch<'a, X>,
 }
 
 /// The frame of `engine` (any pipeline, configuration, unit, Zmax) over `tris` with the
 /// colours, image and oracle of `o` and the sample table `pattern` (on the configuration's
 /// grids): counters, image, heat map (sample tests per pixel) and wall time. `o.vp` must be the
-/// engine's viewport. Errors are the core's (a class the
-/// unit does not accept, a pattern or bounds tile it refuses).
+/// engine's viewport. Errors are the core's (a class the unit does not accept, a pattern or
+/// bounds tile it refuses).
 pub fn run_core<L, Z>(
     engine: &Engine<L, Z>,
     tris: &[Triangle],
@@ -96,6 +103,24 @@ where
     L: Pipeline + Sync,
     L::Entry: Send + Sync,
     Z: DepthCull,
+{
+    run_core_with(engine, tris, pattern, o, |_| Unobserved).map(|(f, _)| f)
+}
+
+/// [`run_core`] with a caller's observer per band, `extra(band)` (its rectangle): the frame and
+/// the bands' observers, top to bottom.
+pub fn run_core_with<L, Z, X>(
+    engine: &Engine<L, Z>,
+    tris: &[Triangle],
+    pattern: &SamplePattern<'_>,
+    o: &RunOpts<'_>,
+    extra: impl Fn(PixelRect) -> X,
+) -> Result<(Frame, Vec<X>), Error>
+where
+    L: Pipeline + Sync,
+    L::Entry: Send + Sync,
+    Z: DepthCull,
+    X: Observer + Send,
 {
     let start = Instant::now();
     let vp = engine.viewport();
@@ -135,6 +160,7 @@ where
                 spp: spp as u64,
                 admitted: 0,
                 oracle: o.oracle.map(|t| Oracle::new(t, o.vp)),
+                extra: extra(rect),
             },
         });
     }
@@ -212,14 +238,15 @@ where
             }
         }
     }
-    drop(bands);
-    Ok(Frame {
+    let extras = bands.into_iter().map(|b| b.watch.extra).collect();
+    let frame = Frame {
         stats,
         image,
         samples: colors,
         heat,
         time: start.elapsed(),
-    })
+    };
+    Ok((frame, extras))
 }
 
 /// The first `n` values of `rest`, which keeps the others.

@@ -179,7 +179,7 @@ pub fn stress_row(scene: &Scene) -> anyhow::Result<PrecRow> {
     one::<uvt_core::DefaultPrecision>(scene, &mut acc)?;
     let [mut row] = acc;
     finish(&mut row);
-    row.lost = lost_samples(scene).1;
+    row.lost = lost_samples(scene)?.1;
     Ok(row)
 }
 

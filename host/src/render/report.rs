@@ -4,11 +4,12 @@
 
 use serde_json::json;
 
+use crate::compare::pass::Comparison;
 use crate::frame::counters::{Frame, FrameStats};
 use crate::frame::oracle::ORACLE_POINTS;
 use crate::scene::file::Scene;
 
-use super::opts::{bounds_label, per, Decisions, RenderOpts, Rendered};
+use super::opts::{bounds_label, per, RenderOpts, Rendered};
 
 /// One frame's counters; the operation counters are null for the f64 reference, which counts
 /// none (0 would read as "no operations").
@@ -44,7 +45,7 @@ pub(crate) fn report_json(
     fixed: &Frame,
     f64: &Frame,
     bbox: &Frame,
-    cov: &Decisions,
+    cov: &Comparison,
 ) -> serde_json::Value {
     let st: &FrameStats = &fixed.stats;
     let (npix, maxd) = image_diff(&fixed.image, &f64.image);
@@ -151,18 +152,18 @@ pub fn report_md(r: &Rendered) -> String {
          test (Laine 2011: ~500 / ~40 / ~25). The f64 reference counts no operations (null in report.json).\n\n",
         ops("setup_per_triangle"), ops("bounds_per_tile"), ops("sample_per_test")
     );
-    let sides = match (c.fixed_only, c.f64_only) {
-        (Some(a), Some(b)) => format!(" ({a} covered by the core only, {b} by the reference only)"),
-        _ => String::new(),
-    };
-    let viol = c.violations.map_or(String::new(), |v| {
-        format!(" Covered samples outside the core's own bounds: {v}.")
-    });
     s += &format!(
-        "## Core vs f64 reference\n\n{} (triangle, sample) pairs compared over every footprint sample, {} differ{sides} \
-         (rate {:.2e}); largest distance of a differing sample from an edge {:.2e} px; not explained by the \
-         derived quantization bound at this precision (host/src/frame/compare.rs; must be 0): {}.{viol} Resolved images differ in {} pixels (max channel difference {}).\n",
-        c.compared, c.differ, c.rate(), c.max_distance_px, c.beyond_bound,
+        "## Core vs f64 reference\n\n{} (triangle, sample) pairs compared over every footprint sample \
+         (`host/src/compare/pass.rs`), {} differ ({} covered by the core only, {} by the reference only; \
+         rate {:.2e}); largest distance of a differing sample from an edge {:.2e} px; not explained by the \
+         derived quantization bound at this precision (must be 0): {}. By error statement \
+         (`host/src/config/dq.rs`): {} of primitives stated in pixels, {} of them farther than the \
+         primitive's own d_q from an edge (must be 0); {} of primitives stated in clip space only \
+         (largest backward error δ {:.3e} clip units). Covered samples outside the core's own bounds \
+         ({bounds}, bounds tile {}): {} (must be 0). Resolved images differ in {} pixels (max channel \
+         difference {}).\n",
+        c.compared, c.differ, c.fixed_only, c.f64_only, c.rate(), c.max_distance_px, c.beyond_bound,
+        c.differ_px, c.beyond_statement, c.differ_clip, c.max_clip, j["tile"], c.violations(),
         j["image_diff_fixed_vs_f64"]["pixels"], j["image_diff_fixed_vs_f64"]["max_channel"]
     );
     s

@@ -5,18 +5,18 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::{anyhow, Context, Result};
-use uvt_core::config::registry::DEFAULT;
 use uvt_core::{with_config, with_strategy, BboxScan, NoZmax, Precision};
 
 use crate::bench::strategy::run_frame;
-use crate::frame::compare::compare;
+use crate::compare::pass::{compare, Spec};
+use crate::config::dq::statements;
+use crate::config::rounding::Rounding;
 use crate::frame::opts::RunOpts;
 use crate::frame::reference::run_reference;
-use crate::precision::measure::decisions;
 use crate::scene::file::Scene;
 use crate::scene::pattern::Pattern;
 
-use super::opts::{Decisions, RenderOpts, Rendered};
+use super::opts::{RenderOpts, Rendered};
 use super::report::{report_json, report_md};
 use super::{diff, heatmap};
 
@@ -38,7 +38,6 @@ fn pipelines<P: Precision + Sync>(scene: &Scene, o: &RenderOpts) -> Result<Rende
             eprintln!("render: [{k}/4] {what}");
         }
     };
-    let default = o.precision == DEFAULT;
     let exact = Pattern::new(scene.pattern, scene.spp, scene.seed);
     let (core, pattern) = scene.inputs_at::<P>()?;
     let vp = scene.core_viewport();
@@ -63,21 +62,19 @@ fn pipelines<P: Precision + Sync>(scene: &Scene, o: &RenderOpts) -> Result<Rende
     say(3, "core with the bounding-box scan");
     let bbox = run_frame::<_, P, NoZmax>(BboxScan, vp, &core, &pattern, &opts("bbox scan"))?;
     say(4, "comparing core and reference sample by sample");
-    let coverage = if default {
-        Decisions::from_diff(&compare(&scene.tris, &core, vp, &pattern))
-    } else {
-        let r = decisions::<P>(scene, &core, &pattern);
-        Decisions {
-            compared: r.compared,
-            differ: r.differ,
-            fixed_only: None,
-            f64_only: None,
-            beyond_bound: r.beyond_bound,
-            max_distance_px: r.max_differ_px,
-            max_bound_px: None,
-            violations: Some(r.violations),
-        }
-    };
+    let rounding = Rounding::at(P::POS_FRAC, P::TUV_FRAC);
+    let stated = statements::<P>(&scene.tris, &core, vp, &rounding, 1.0);
+    let coverage = with_strategy!(o.bounds, s => {
+        let spec = Spec {
+            strategy: s,
+            tiles: vec![scene.tile],
+            statements: stated,
+            tolerance: None,
+            rounding,
+        };
+        compare::<P, _>(&scene.tris, &core, vp, &pattern, &spec)
+    })
+    .ok_or_else(|| anyhow!("unknown bounds strategy {:?}", o.bounds))?;
     let report = report_json(scene, o, &fixed, &f64, &bbox, &coverage);
     Ok(Rendered {
         fixed,

@@ -1,7 +1,7 @@
-//! Brute-force comparison of the core's coverage with the f64 reference's, sample by sample, and
-//! the quantization bound that says where they may disagree — checked per differing sample in
-//! edge-function space, so it holds for every geometry, camera-plane crossings and w ≤ 0
-//! vertices included.
+//! The quantization bound that says where the core's decisions may disagree with the f64
+//! reference's — checked per differing sample in edge-function space ([`check_sample_eps`]), so
+//! it holds for every geometry, camera-plane crossings and w ≤ 0 vertices included. The
+//! comparison that applies it to every sample is [`super::pass`].
 //!
 //! **Setting.** The core's decision is the exact decision for its *quantized* inputs
 //! (`uvt_core::sample`): with `d = (2x/W − 1, 1 − 2y/H, 1)` the sample's direction and `p_k` the
@@ -15,10 +15,10 @@
 //! `|v| ≤ B_v + F_v` at the exact inputs; otherwise it is counted **beyond bound** (must be 0).
 //! No geometry is exempt: every term below is finite for any finite input.
 //!
-//! **Rounding of the inputs** ([`Rounding`]): clip x, y, w and CoC c of each vertex end by at most
-//! `δp = 2^-(POS+1)` (round to nearest); t, u, v by at most `δt = 2^-17` (round to 16 bits), plus
-//! `2^-(TUV+1)` when TUV < 16 (the second rounding to the coarser grid); the sub-pixel position
-//! is floored, `0 ≤ x − x' < 1/256` px (same for y).
+//! **Rounding of the inputs** ([`Rounding`], `crate::config::rounding`): clip x, y, w and CoC c
+//! of each vertex end by at most `δp = 2^-(POS+1)` (round to nearest); t, u, v by at most
+//! `δt = 2^-17` (round to 16 bits), plus `2^-(TUV+1)` when TUV < 16 (the second rounding to the
+//! coarser grid); the sub-pixel position is floored, `0 ≤ x − x' < 1/256` px (same for y).
 //!
 //! **Vertex perturbation** (exact, not first order). The core's vertex at (t', u', v') is the lerp
 //! of its rounded ends, `X'(t') = (1−t')x0' + t'x1'`, so
@@ -62,44 +62,11 @@
 //! counted separately; both are checked like every other.
 
 use glam::DVec3;
-use rayon::prelude::*;
-use uvt_core::config::precision::DefaultPrecision;
-use uvt_core::config::unit::Full;
-use uvt_core::{PixelRect, ScreenPos, Setup, Triangle, Viewport};
+use uvt_core::PixelRect;
 
+use crate::config::rounding::Rounding;
 use crate::reference;
-use crate::scene::pattern::Pattern;
 use crate::scene::tri::SceneTri;
-
-/// The largest rounding of each kind of input the core saw (module docs, "Rounding").
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Rounding {
-    /// clip x, y, w and CoC of every vertex end: |core − exact| ≤ `pos`
-    pub pos: f64,
-    /// t, u, v: |core − exact| ≤ `tuv`
-    pub tuv: f64,
-    /// sub-pixel x, y: 0 ≤ exact − core < `sub` px
-    pub sub: f64,
-}
-
-impl Rounding {
-    /// Inputs rounded to nearest on a `pos`-fraction-bit position grid and (via 16 bits) a
-    /// `tuv`-fraction-bit t/u/v grid; sub-pixel floored to 1/256 px (`Pattern::with_tuv`,
-    /// `SceneTri::to_core_with`).
-    pub fn at(pos: u32, tuv: u32) -> Rounding {
-        let half = |bits: u32| 2f64.powi(-(bits as i32) - 1);
-        Rounding {
-            pos: half(pos),
-            tuv: half(16) + if tuv < 16 { half(tuv) } else { 0.0 },
-            sub: 1.0 / 256.0,
-        }
-    }
-
-    /// The default precision: 16 fraction bits for positions and t/u/v.
-    pub fn default_precision() -> Rounding {
-        Rounding::at(16, 16)
-    }
-}
 
 /// The quantization check of one sample (module docs).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -139,16 +106,6 @@ pub fn check_sample(
     r: &Rounding,
 ) -> SampleCheck {
     check_sample_eps(tri, vp, x, y, u, v, t, r, [0.0; 3])
-}
-
-/// The perturbation bound of the core's sample test for a setup, clip units `[x, y, w]`: the
-/// bounded test decides exactly on a triangle whose vertices lie within `Setup::eps()` (raw
-/// 2^-16, rounded up) of the exact test's at the same quantized inputs (`uvt_core::sample::bounded`);
-/// zero for the exact test.
-pub fn eps_of(s: &Setup) -> [f64; 3] {
-    let e = s.eps();
-    let raw = |v: i32| f64::from(v) / 65536.0;
-    [raw(e.x()[0]), raw(e.x()[1]), raw(e.w())]
 }
 
 /// [`check_sample`] for a core sample test that adds a vertex perturbation of at most `eps`
@@ -237,76 +194,6 @@ pub fn check_sample_within(
     }
 }
 
-/// Result of a comparison.
-#[derive(Clone, Copy, Debug, Default, PartialEq, serde::Serialize)]
-pub struct CoverageDiff {
-    /// (triangle, sample) pairs compared
-    pub compared: u64,
-    /// covered by the core only
-    pub fixed_only: u64,
-    /// covered by the reference only
-    pub f64_only: u64,
-    /// differences that no input rounding explains: no edge value or det within its bound
-    /// (module docs; must be 0)
-    pub beyond_bound: u64,
-    /// largest `ratio` of a differing sample ([`SampleCheck`]): ≤ 1 when `beyond_bound` is 0;
-    /// how much of the bound the worst difference uses
-    pub max_ratio: f64,
-    /// largest distance in pixels of a differing sample from the nearest edge
-    pub max_distance_px: f64,
-    /// largest per-sample quantization distance (px) among differences explained by an edge
-    pub max_bound_px: f64,
-    /// differences explained only by det (near edge-on triangle at the sample's t, u, v)
-    pub by_det: u64,
-    /// differences on triangles with a vertex at w ≤ 0 at either end of the shutter (camera-plane
-    /// crossings, w = 0 vertices; checked like all others)
-    pub behind: u64,
-}
-
-impl CoverageDiff {
-    fn add(&mut self, o: &CoverageDiff) {
-        self.compared += o.compared;
-        self.fixed_only += o.fixed_only;
-        self.f64_only += o.f64_only;
-        self.beyond_bound += o.beyond_bound;
-        self.max_ratio = self.max_ratio.max(o.max_ratio);
-        self.max_distance_px = self.max_distance_px.max(o.max_distance_px);
-        self.max_bound_px = self.max_bound_px.max(o.max_bound_px);
-        self.by_det += o.by_det;
-        self.behind += o.behind;
-    }
-
-    /// Record one differing sample: its distance from the nearest edge and its check.
-    pub fn record(&mut self, core_covers: bool, distance_px: f64, c: &SampleCheck) {
-        if core_covers {
-            self.fixed_only += 1;
-        } else {
-            self.f64_only += 1;
-        }
-        self.max_distance_px = self.max_distance_px.max(distance_px);
-        self.max_ratio = self.max_ratio.max(c.ratio);
-        if c.ratio > 1.0 {
-            self.beyond_bound += 1;
-        } else if c.which == 3 {
-            self.by_det += 1;
-        } else if let Some(b) = c.bound_px {
-            self.max_bound_px = self.max_bound_px.max(b);
-        }
-        if c.behind {
-            self.behind += 1;
-        }
-    }
-
-    /// Differences per compared pair.
-    pub fn rate(&self) -> f64 {
-        if self.compared == 0 {
-            0.0
-        } else {
-            (self.fixed_only + self.f64_only) as f64 / self.compared as f64
-        }
-    }
-}
-
 /// The bounding rectangle of two optional footprints (`None` if both are absent).
 pub fn footprint_union(a: Option<PixelRect>, b: Option<PixelRect>) -> Option<PixelRect> {
     match (a, b) {
@@ -319,71 +206,4 @@ pub fn footprint_union(a: Option<PixelRect>, b: Option<PixelRect>) -> Option<Pix
         (Some(a), None) | (None, Some(a)) => Some(a),
         (None, None) => None,
     }
-}
-
-/// Compare every sample of every triangle's footprints (the union of the core's and the
-/// reference's; both are conservative, so every covered sample is inside it), for core triangles
-/// and pattern at the default precision (its sample test, exact or bounded; a bounded test's
-/// perturbation `Setup::eps()` is part of the bound, [`check_sample_eps`]).
-pub fn compare(tris: &[SceneTri], core: &[Triangle], vp: Viewport, pat: &Pattern) -> CoverageDiff {
-    compare_with(tris, core, vp, pat, &Rounding::default_precision())
-}
-
-/// [`compare`] with the inputs' rounding given explicitly.
-pub fn compare_with(
-    tris: &[SceneTri],
-    core: &[Triangle],
-    vp: Viewport,
-    pat: &Pattern,
-    rounding: &Rounding,
-) -> CoverageDiff {
-    let v = (vp.width(), vp.height());
-    tris.par_iter()
-        .zip(core.par_iter())
-        .map(|(st, ct)| {
-            let mut d = CoverageDiff::default();
-            let mut ops = Default::default();
-            let fp_fixed = match uvt_core::setup::<uvt_core::DefaultPrecision, uvt_core::Full>(
-                ct, vp, &mut ops,
-            ) {
-                uvt_core::Outcome::Visible(s) => Some(s.footprint()),
-                _ => None,
-            };
-            let fp_ref = reference::setup::setup(st, v).ok().map(|s| s.footprint);
-            let Some(region) = footprint_union(fp_fixed, fp_ref) else {
-                return d;
-            };
-            let full = Setup::unculled::<DefaultPrecision>(ct, vp);
-            let eps = eps_of(&full);
-            for py in region.y0..region.y1 {
-                for px in region.x0..region.x1 {
-                    for si in 0..pat.spp as usize {
-                        let idx = pat.index(px, py, si);
-                        let (q, e) = (&pat.quant[idx], &pat.exact[idx]);
-                        let f = uvt_core::sample::test::<DefaultPrecision, Full>(
-                            &full,
-                            ScreenPos::of(px, py, q),
-                            q,
-                            &mut ops,
-                        )
-                        .is_some();
-                        let (x, y) = (px as f64 + e[0], py as f64 + e[1]);
-                        let r =
-                            reference::sample::sample_test(st, v, x, y, e[2], e[3], e[4]).is_some();
-                        d.compared += 1;
-                        if f != r {
-                            let dist =
-                                reference::sample::edge_distance_px(st, v, x, y, e[2], e[3], e[4]);
-                            let c = check_sample_eps(st, v, x, y, e[2], e[3], e[4], rounding, eps);
-                            d.record(f, dist, &c);
-                        }
-                    }
-                }
-            }
-            d
-        })
-        .reduce(CoverageDiff::default, |mut a, b| {
-            a.add(&b);
-            a
-        })
 }
