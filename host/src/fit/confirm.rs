@@ -1,16 +1,17 @@
 //! The confirming half of `uvt fit` ([`super::select`] has the selection, [`super::search`] the
 //! strategy and tile-size search): the confirmation render — a brute-force pass over every
 //! footprint sample (conservativeness of the chosen strategy and tile size, decisions against the
-//! f64 reference, `compare.rs`'s rigorous per-sample check), the chosen unit's frame against the
-//! full unit's, sample by sample, and its no-heap `uvt_core::Renderer<B, N, P, U>` (8×8 screen
-//! tiles, its Cortex-M program's) against its frame in bands.
+//! f64 reference, `compare.rs`'s rigorous per-sample check) and the chosen unit's frame against
+//! the full unit's, sample by sample — the general pipeline on the unit and, where the unit has
+//! its own, the pipeline its `uvt_core::Renderer<B, N, P, U>` runs — each the core's own loop
+//! ([`crate::frame::core_frame`]).
 
 use serde::Serialize;
 use uvt_core::bounds::strategy::BoundsStrategy;
 use uvt_core::config::registry::Config;
 use uvt_core::{
     with_config, with_strategy, DefocusOnly, Engine, Full, General, MotionOnly, NoZmax, Pipeline,
-    PipelineOf, Precision, Prim, Raster, Rgb888, SamplePattern, Select, StaticOnly, Triangle, Unit,
+    PipelineOf, Precision, Rgb888, SamplePattern, Select, StaticOnly, Triangle, Unit,
 };
 
 use crate::compare::pass::{compare, Spec};
@@ -60,10 +61,6 @@ pub struct Confirm {
     pub identical_to_full: Option<bool>,
     /// why the renderer comparison could not run (e.g. a refused class, too many setups)
     pub renderer_error: Option<String>,
-    /// the chosen unit's no-heap renderer (`uvt_core::Raster`, 8×8 screen tiles: its Cortex-M
-    /// program's loop) gives the full unit's band render (`crate::frame::core_frame`) at every
-    /// sample, the same image and counts (the same loop over other regions)
-    pub matches_tile_renderer: Option<bool>,
     /// samples tested and covered by the chosen unit's renderer
     pub unit_tested_covered: [u64; 2],
     /// the unit's specialised renderer at this configuration (`uvt_core::StaticRenderer` for
@@ -98,7 +95,6 @@ impl Confirm {
             && self.beyond_tolerance == 0
             && self.beyond_tolerance_clip == 0
             && self.identical_to_full == Some(true)
-            && self.matches_tile_renderer == Some(true)
             && self
                 .specialised
                 .as_ref()
@@ -183,44 +179,20 @@ where
     };
     c.identical_to_full = Some(full == mine);
     c.unit_tested_covered = [mine.tested, mine.covered];
-    // The unit's own renderer: the specialised pipeline where it has one, else `mine`.
-    let mut own = Ok(mine);
-    c.specialised = spec.map(|(renderer, got)| {
-        let x = match &got {
-            Ok(f) => Specialised {
-                renderer,
-                identical_to_full: Some(f.samples == full.samples && f.image == full.image),
-                error: None,
-                tested_covered: [f.tested, f.covered],
-            },
-            Err(e) => Specialised {
-                renderer,
-                identical_to_full: None,
-                error: Some(e.clone()),
-                tested_covered: [0, 0],
-            },
-        };
-        own = got;
-        x
+    c.specialised = spec.map(|(renderer, got)| match &got {
+        Ok(f) => Specialised {
+            renderer,
+            identical_to_full: Some(f.samples == full.samples && f.image == full.image),
+            error: None,
+            tested_covered: [f.tested, f.covered],
+        },
+        Err(e) => Specialised {
+            renderer,
+            identical_to_full: None,
+            error: Some(e.clone()),
+            tested_covered: [0, 0],
+        },
     });
-    let prims: Vec<Prim> = core
-        .iter()
-        .zip(&colors)
-        .map(|(t, k)| Prim {
-            tri: *t,
-            color: Rgb888::new(k[0], k[1], k[2]),
-        })
-        .collect();
-    let unit = unit.to_string();
-    let tiles = on_big_stack(move || match unit.as_str() {
-        "motion-only" => tile_render::<PipelineOf<B, P, MotionOnly>>(strat, vp, &prims, &pat, tile),
-        "defocus-only" => {
-            tile_render::<PipelineOf<B, P, DefocusOnly>>(strat, vp, &prims, &pat, tile)
-        }
-        "static-only" => tile_render::<PipelineOf<B, P, StaticOnly>>(strat, vp, &prims, &pat, tile),
-        _ => tile_render::<PipelineOf<B, P, Full>>(strat, vp, &prims, &pat, tile),
-    })?;
-    c.matches_tile_renderer = Some(matches!((&tiles, &own), (Ok(a), Ok(b)) if a == b));
     Ok(c)
 }
 
@@ -286,57 +258,6 @@ where
     (name != <General<B, P, U> as Pipeline>::NAME).then(|| {
         let f = frame::<PipelineOf<B, P, U>>(strat, vp, core, table, o);
         (name, f.map(Frame::of).map_err(|e| e.to_string()))
-    })
-}
-
-/// Visible setups the screen-tile renderer holds (`Raster<_, CAPACITY>`, on a thread with a
-/// large stack); a scene with more is reported as not confirmed.
-pub const CAPACITY: usize = 4096;
-
-/// Run `f` on a thread with a stack large enough for `Raster<_, CAPACITY>`.
-fn on_big_stack<T: Send + 'static>(f: impl FnOnce() -> T + Send + 'static) -> anyhow::Result<T> {
-    std::thread::Builder::new()
-        .stack_size(1 << 30)
-        .spawn(f)
-        .map_err(|e| anyhow::anyhow!("cannot start the renderer thread: {e}"))?
-        .join()
-        .map_err(|_| anyhow::anyhow!("the renderer thread panicked"))
-}
-
-/// The unit's no-heap renderer (`Raster<L, CAPACITY>`, the loop of its Cortex-M program: 8×8
-/// screen tiles) over the whole frame, one pass per sample index (the tile buffer's sample
-/// count is a compile-time constant; each pass holds sample `si` of every pixel, and depth
-/// tests never mix samples, so the passes together are the frame).
-fn tile_render<L: Pipeline>(
-    strat: L::Bounds,
-    vp: uvt_core::Viewport,
-    prims: &[Prim],
-    pat: &Pattern,
-    tile: u8,
-) -> Result<Frame, String> {
-    let mut r = Raster::<L, CAPACITY>::new(strat, vp, prims).map_err(|e| e.to_string())?;
-    let (w, h) = (usize::from(vp.width()), usize::from(vp.height()));
-    let spp = usize::from(pat.spp);
-    let n = usize::from(pat.block);
-    let clear = Rgb888::new(CLEAR[0], CLEAR[1], CLEAR[2]);
-    let mut samples = vec![clear; w * h * spp];
-    let (mut tested, mut covered) = (0u64, 0u64);
-    for si in 0..spp {
-        let table: Vec<_> = (0..n * n).map(|p| pat.quant[p * spp + si]).collect();
-        let sp = SamplePattern::new(pat.block, 1, &table).map_err(|e| e.to_string())?;
-        r.render_with::<8, 8, 1>(&sp, tile, clear, |x, y, c, ps| {
-            samples[(usize::from(y) * w + usize::from(x)) * spp + si] = c;
-            tested += u64::from(ps.tested);
-            covered += u64::from(ps.covered);
-        })
-        .map_err(|e| e.to_string())?;
-    }
-    let image = samples.chunks(spp).map(uvt_core::resolve_colors).collect();
-    Ok(Frame {
-        samples,
-        image,
-        tested,
-        covered,
     })
 }
 

@@ -330,10 +330,6 @@ pub fn fit_md(f: &Fit) -> String {
         )),
         yes(c.identical_to_full == Some(true))
     );
-    s += &format!(
-        "| every sample, the image and the counts of the unit's no-heap renderer (8×8 screen tiles, its Cortex-M program's loop) identical to its frame in 8-row bands | | {} |\n",
-        yes(c.matches_tile_renderer == Some(true))
-    );
     if let Some(x) = &c.specialised {
         s += &format!(
             "| every sample and the image identical to the full unit with the unit's specialised renderer (`{}`, its own tile cull; the renderer of its Cortex-M program) | {} | {} |\n",
