@@ -462,7 +462,7 @@ fn render_options_override_the_scene() {
         r["fixed"]["samples_tested"],
         r["bbox_scan"]["samples_tested"]
     );
-    // At a non-default precision the comparison checks conservativeness against d_q there.
+    // The comparison checks the core's own bounds (here the bbox scan) at every precision.
     assert_eq!(r["coverage_fixed_vs_f64"]["violations"].as_u64(), Some(0));
     assert_eq!(r["coverage_fixed_vs_f64"]["beyond_bound"].as_u64(), Some(0));
     assert_eq!(image::open(out.join("fixed.png")).unwrap().width(), 16);
@@ -859,10 +859,21 @@ fn render_takes_every_strategy_and_configuration() {
             Some(0),
             "{name}"
         );
-        // The default configuration splits the differences by side; the others measure
-        // conservativeness instead.
-        let v = &r["coverage_fixed_vs_f64"]["violations"];
-        assert_eq!(v.as_u64(), (cfg != DEFAULT).then_some(0), "{name}");
+        // Every configuration splits the differences by side and by statement and checks the
+        // core's own bounds.
+        let c = &r["coverage_fixed_vs_f64"];
+        assert_eq!(c["violations"].as_u64(), Some(0), "{name}");
+        assert_eq!(c["beyond_statement"].as_u64(), Some(0), "{name}");
+        assert_eq!(
+            c["differ"].as_u64(),
+            Some(c["fixed_only"].as_u64().unwrap() + c["f64_only"].as_u64().unwrap()),
+            "{name}"
+        );
+        assert_eq!(
+            c["differ"].as_u64(),
+            Some(c["differ_px"].as_u64().unwrap() + c["differ_clip"].as_u64().unwrap()),
+            "{name}"
+        );
     }
 }
 

@@ -169,13 +169,46 @@ impl<L: Pipeline, Z: DepthCull> Engine<L, Z> {
         R: ZmaxRegisters,
         O: Observer,
     {
+        self.check_region(region, pattern, bounds_tile, store, zregs)?;
+        self.shade_region(
+            drawn,
+            region,
+            pattern,
+            bounds_tile,
+            store,
+            zregs,
+            stats,
+            obs,
+        );
+        Ok(())
+    }
+
+    /// [`Engine::render_region`] without its checks: the caller has made them (the no-heap
+    /// renderer's screen tiles, `crate::raster::renderer`).
+    #[allow(clippy::too_many_arguments)]
+    #[inline(always)]
+    pub(crate) fn shade_region<'d, B, R, O>(
+        &self,
+        drawn: impl IntoIterator<Item = &'d Drawn<L::Entry>>,
+        region: PixelRect,
+        pattern: &SamplePattern<'_>,
+        bounds_tile: u8,
+        store: &mut B,
+        zregs: &mut R,
+        stats: &mut Stats,
+        obs: &mut O,
+    ) where
+        L::Entry: 'd,
+        B: SampleStore,
+        R: ZmaxRegisters,
+        O: Observer,
+    {
         const {
             assert!(
                 R::KEEPS == Z::ENABLED,
                 "Zmax registers must match the DepthCull"
             )
         };
-        self.check_region(region, pattern, bounds_tile, store, zregs)?;
         let bt = u16::from(bounds_tile);
         let mut ops = Ops::default();
         for d in drawn {
@@ -196,7 +229,6 @@ impl<L: Pipeline, Z: DepthCull> Engine<L, Z> {
             self.pipe.walk(&d.entry, r, bt, &mut ops, &mut shade);
         }
         stats.ops.add(&ops);
-        Ok(())
     }
 
     /// The argument checks of [`Engine::render_region`].

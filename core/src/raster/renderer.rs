@@ -145,7 +145,12 @@ impl<L: Pipeline, const N: usize, Z: DepthCull> Raster<L, N, Z> {
             entries,
             stats,
         } = self;
-        engine.render_region(
+        // The checks of `Engine::render_region` are `tile_screen`'s: the pattern's spp is the
+        // buffer's, the tile lies in the viewport and fits the buffer and its registers
+        // (TW × TH), and it is made of whole bounds tiles (x0, y0 on the bounds-tile grid, the
+        // bounds tile divides TW and TH, the right and bottom edges at x0 + TW, y0 + TH or the
+        // viewport's).
+        engine.shade_region(
             entries.iter(),
             screen,
             pattern,
@@ -154,7 +159,8 @@ impl<L: Pipeline, const N: usize, Z: DepthCull> Raster<L, N, Z> {
             &mut zregs,
             stats,
             &mut Unobserved,
-        )
+        );
+        Ok(())
     }
 
     /// Render the whole viewport tile by tile, handing every resolved pixel with its counters to
@@ -279,6 +285,12 @@ fn check_tile_args<const TW: usize, const TH: usize, const S: usize>(
     }
     if x0 >= vp.w || y0 >= vp.h {
         return Err(Error::PixelOutOfRange);
+    }
+    // bt ∈ {1, 2, 4, 8}: the remainders exist.
+    if x0.checked_rem(u16::from(bounds_tile)) != Some(0)
+        || y0.checked_rem(u16::from(bounds_tile)) != Some(0)
+    {
+        return Err(Error::BoundsTile { size: bounds_tile });
     }
     Ok(())
 }

@@ -4,21 +4,21 @@
 //! Estimate (bytes) for T triangles on a W×H viewport at S samples per pixel, with N worker
 //! threads:
 //!
-//!   T · [`per_triangle_bytes`] + W·H · [`PER_PIXEL_BYTES`] + N · W · 8 · S · 11
+//!   T · [`per_triangle_bytes`] + W·H · [`PER_PIXEL_BYTES`] + W·H·S · [`PER_SAMPLE_BYTES`]
+//!   + N · W · 8 · S · 11 + [`FRAME_SETUP_BYTES`]
 //!
 //! - per triangle: the f64 scene triangle twice (the list and its growth while built), the mesh
-//!   vertices and indices it came from, the core triangle, the frame driver's per-triangle entry
-//!   (setup outcome, footprint and ops; the setups themselves are recomputed per band and not
-//!   kept), and 8 bytes of band lists — sizes taken with `size_of` from this build;
-//! - per pixel: three resolved images and three sample-count maps, the two derived images, their
-//!   band copies and the PNG buffers (64 bytes);
-//! - per worker: one 8-row band of depth (f64) and color (3 bytes) per sample.
-//!
-//! Checked against the peak resident set size (`/usr/bin/time -f %M uvt render`, debug build,
-//! 2 worker threads, 2026-11-22, the camera of `host/scenes/camera_meshes.json`): a
-//! 512-segment sphere of radius 1 (261120 triangles) on 64×36 px at 4 spp,
-//! estimate 196.4 MiB, peak 126.1 MiB; a 300×300-cell grid (180000 triangles) on 320×180 px at
-//! 16 spp, estimate 139.6 MiB, peak 95.4 MiB — the estimate is about 1.5× the measured peak.
+//!   vertices and indices it came from, the core triangle, and the f64 reference's per-triangle
+//!   footprint, class and band lists (the core's frame keeps no per-triangle entry: its set-up
+//!   triangles live in a few chunks, [`FRAME_SETUP_BYTES`]) — sizes taken with `size_of` from
+//!   this build;
+//! - per pixel: three resolved images and three sample-count maps, the two derived images, the
+//!   PNG buffers and the core frame's per-pixel counters (76 bytes);
+//! - per sample: the core frame's depth (4 bytes) and colour (3), kept for the whole frame;
+//! - per worker: one 8-row band of the f64 reference's depth (f64) and colour (3 bytes) per
+//!   sample;
+//! - the core frame's chunks of set-up triangles (`crate::frame::core_frame`: at most 8 chunks
+//!   of 256 KiB).
 //!
 //! The default budget is [`DEFAULT_MEM_BUDGET`] (4 GiB); `uvt render --mem-budget 8G` raises it.
 //! Scene and OBJ files are read only if they are regular files of at most [`FILE_MAX_BYTES`].
@@ -34,20 +34,21 @@ pub const DEFAULT_MEM_BUDGET: u64 = 4 << 30;
 /// Largest scene or OBJ file read: 256 MiB.
 pub const FILE_MAX_BYTES: u64 = 256 << 20;
 
-/// Bytes per pixel of the images and maps `uvt render` keeps.
-pub const PER_PIXEL_BYTES: u64 = 64;
+/// Bytes per pixel of the images and maps `uvt render` keeps (module docs).
+pub const PER_PIXEL_BYTES: u64 = 76;
+
+/// Bytes per sample of the frames `uvt render` runs (module docs).
+pub const PER_SAMPLE_BYTES: u64 = 7;
+
+/// Bytes of the core frame's set-up triangles alive at once (module docs).
+pub const FRAME_SETUP_BYTES: u64 = 8 * (256 << 10);
 
 /// Bytes one triangle costs from mesh to frame (see the module documentation).
 pub fn per_triangle_bytes() -> u64 {
     use std::mem::size_of;
-    // The frame driver keeps per triangle only its setup's outcome, footprint and ops (each
-    // band recomputes the setups it renders, one at a time). Its outcome,
-    // `frame::pipeline::SetupOut<PixelRect>`, has the layout of this `Result` (a test in
-    // `frame::pipeline` holds the two sizes equal; the scene folder does not import the frame's).
-    let entry = size_of::<(
-        Result<(uvt_core::PixelRect, uvt_core::Class), uvt_core::Cull>,
-        uvt_core::Ops,
-    )>();
+    // The f64 reference's frame keeps per triangle its setup's footprint and class or its cull
+    // (`crate::frame::reference`), and 4 bytes per band it meets (counted as 8).
+    let entry = size_of::<Result<(uvt_core::PixelRect, uvt_core::Class), uvt_core::Cull>>();
     let mesh = size_of::<[u32; 3]>() + size_of::<glam::DVec3>() + 2 * size_of::<[f64; 5]>();
     (2 * size_of::<super::tri::SceneTri>() + mesh + size_of::<uvt_core::Triangle>() + entry + 8)
         as u64
@@ -59,7 +60,9 @@ pub fn estimate(tris: u64, viewport: (u16, u16), spp: u16) -> u64 {
     let threads = rayon::current_num_threads() as u64;
     tris.saturating_mul(per_triangle_bytes())
         .saturating_add(w * h * PER_PIXEL_BYTES)
+        .saturating_add(w * h * spp as u64 * PER_SAMPLE_BYTES)
         .saturating_add(threads * w * 8 * spp as u64 * 11)
+        .saturating_add(FRAME_SETUP_BYTES)
 }
 
 /// `bytes` for people: `1.50 GiB`, `12.0 MiB`, `900 B`.
