@@ -251,11 +251,6 @@ impl<'a> Workload<'a> {
         &self.header
     }
 
-    /// Number of samples in the table.
-    pub fn sample_count(&self) -> usize {
-        self.samples.len() / (SAMPLE_WORDS * 4)
-    }
-
     /// The samples, through [`Sample::new`].
     pub fn samples(&self) -> impl Iterator<Item = Result<Sample, FormatError>> + 'a {
         self.samples.chunks_exact(SAMPLE_WORDS * 4).map(|c| {

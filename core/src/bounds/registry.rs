@@ -23,18 +23,53 @@
 
 pub use crate::bounds::composed::{best, hull, hull_edge, hull_lens, BEST_SLABS};
 
+/// The registry's one list: `$callback!` receives every strategy as `name => value;`, in the
+/// order of the tables (module docs). Internal: use [`STRATEGIES`] and
+/// [`with_strategy!`](crate::with_strategy).
+#[doc(hidden)]
+#[macro_export]
+macro_rules! __uvt_strategies {
+    ($callback:ident!($($pre:tt)*)) => {
+        $crate::$callback!($($pre)*
+            "bbox" => $crate::bounds::bbox::BboxScan;
+            "laine2011" => $crate::bounds::laine::Laine2011;
+            "hull" => $crate::bounds::composed::hull();
+            "lens-t" => $crate::bounds::lens_time::LensTime::<{ $crate::bounds::composed::BEST_SLABS }>;
+            "hyper" => $crate::bounds::hyper::Hyper;
+            "hull+lens-t" => $crate::bounds::composed::hull_lens();
+            "hull+edge-t" => $crate::bounds::composed::hull_edge();
+            "best" => $crate::bounds::composed::best();
+            "auto" => $crate::bounds::auto::Auto::new();
+        )
+    };
+}
+
+/// The names of [`__uvt_strategies`] as an array.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! __uvt_strategy_array {
+    ($($name:literal => $value:expr;)*) => {
+        [$($name,)*]
+    };
+}
+
+/// The dispatch of [`with_strategy!`](crate::with_strategy) over the entries.
+#[doc(hidden)]
+#[macro_export]
+macro_rules! __uvt_strategy_dispatch {
+    ($n:ident, $s:ident, $body:expr; $($name:literal => $value:expr;)*) => {
+        match $n {
+            $($name => {
+                let $s = $value;
+                ::core::option::Option::Some($body)
+            })*
+            _ => ::core::option::Option::None,
+        }
+    };
+}
+
 /// The name of every strategy of the registry, in the order of the tables (module docs).
-pub const STRATEGIES: [&str; 9] = [
-    "bbox",
-    "laine2011",
-    "hull",
-    "lens-t",
-    "hyper",
-    "hull+lens-t",
-    "hull+edge-t",
-    "best",
-    "auto",
-];
+pub const STRATEGIES: [&str; 9] = __uvt_strategies!(__uvt_strategy_array!());
 
 /// `with_strategy!(name, s => body)`: `Some(body)` with `s` bound to the strategy named `name`
 /// (one of [`STRATEGIES`]), `None` for any other name. The only place a strategy's name meets
@@ -47,48 +82,10 @@ pub const STRATEGIES: [&str; 9] = [
 /// ```
 #[macro_export]
 macro_rules! with_strategy {
-    ($name:expr, $s:ident => $body:expr) => {
-        match $name {
-            "bbox" => {
-                let $s = $crate::bounds::bbox::BboxScan;
-                ::core::option::Option::Some($body)
-            }
-            "laine2011" => {
-                let $s = $crate::bounds::laine::Laine2011;
-                ::core::option::Option::Some($body)
-            }
-            "hull" => {
-                let $s = $crate::bounds::composed::hull();
-                ::core::option::Option::Some($body)
-            }
-            "lens-t" => {
-                let $s =
-                    $crate::bounds::lens_time::LensTime::<{ $crate::bounds::composed::BEST_SLABS }>;
-                ::core::option::Option::Some($body)
-            }
-            "hyper" => {
-                let $s = $crate::bounds::hyper::Hyper;
-                ::core::option::Option::Some($body)
-            }
-            "hull+lens-t" => {
-                let $s = $crate::bounds::composed::hull_lens();
-                ::core::option::Option::Some($body)
-            }
-            "hull+edge-t" => {
-                let $s = $crate::bounds::composed::hull_edge();
-                ::core::option::Option::Some($body)
-            }
-            "best" => {
-                let $s = $crate::bounds::composed::best();
-                ::core::option::Option::Some($body)
-            }
-            "auto" => {
-                let $s = $crate::bounds::auto::Auto::new();
-                ::core::option::Option::Some($body)
-            }
-            _ => ::core::option::Option::None,
-        }
-    };
+    ($name:expr, $s:ident => $body:expr) => {{
+        let name: &str = $name;
+        $crate::__uvt_strategies!(__uvt_strategy_dispatch!(name, $s, $body;))
+    }};
 }
 
 #[cfg(test)]

@@ -87,8 +87,6 @@ impl Classes {
     pub const DEFOCUS: Classes = Classes(0b1100);
     /// motion + defocus only
     pub const BOTH: Classes = Classes(0b1000);
-    /// every blurred class (motion, defocus, both)
-    pub const BLUR: Classes = Classes(0b1110);
     /// motion only
     pub const MOTION_ONLY: Classes = Classes(0b0010);
     /// static only

@@ -510,7 +510,7 @@ pub fn rule_source(rules: &[ClassRule; 4], from: &str) -> String {
         .flatten()
         .collect();
         let rule = if parts.is_empty() {
-            "laine2011".to_string()
+            Pick::Laine.name().to_string()
         } else {
             parts.join(", ")
         };

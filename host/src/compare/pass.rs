@@ -271,22 +271,31 @@ where
             .collect(),
         ..Default::default()
     };
-    tris.par_iter()
-        .zip(core.par_iter())
-        .enumerate()
-        .map(|(i, (st, ct))| {
-            let mut d = empty.clone();
-            let statement = spec.statements.get(i).copied().flatten();
+    let each = |i: usize| {
+        let mut d = empty.clone();
+        let statement = spec.statements.get(i).copied().flatten();
+        if let (Some(st), Some(ct)) = (tris.get(i), core.get(i)) {
             one::<P, B>(st, ct, vp, pat, spec, statement, &mut d);
-            d
-        })
-        .reduce(
-            || empty.clone(),
-            |mut a, b| {
-                a.add(&b);
-                a
-            },
-        )
+        }
+        d
+    };
+    over_triangles(tris.len().min(core.len()), &each, &empty)
+}
+
+/// The comparisons of triangles `0..n` by `each`, in parallel, summed onto `empty`. Not generic:
+/// the parallel iterator's machinery is compiled once, not once per precision and strategy.
+fn over_triangles(
+    n: usize,
+    each: &(dyn Fn(usize) -> Comparison + Sync),
+    empty: &Comparison,
+) -> Comparison {
+    (0..n).into_par_iter().map(each).reduce(
+        || empty.clone(),
+        |mut a, b| {
+            a.add(&b);
+            a
+        },
+    )
 }
 
 /// The bounds-tile cell of pixel (`px`, `py`) at size `bt`, clipped to `fp`.

@@ -10,8 +10,8 @@ use serde::Serialize;
 use uvt_core::bounds::strategy::BoundsStrategy;
 use uvt_core::config::registry::Config;
 use uvt_core::{
-    with_config, with_strategy, DefocusOnly, Engine, Full, General, MotionOnly, NoZmax, Pipeline,
-    PipelineOf, Precision, Rgb888, SamplePattern, Select, StaticOnly, Triangle, Unit,
+    with_config, with_strategy, DefocusOnly, Engine, Full, General, Laine2011, MotionOnly, NoZmax,
+    Pipeline, PipelineOf, Precision, Rgb888, SamplePattern, Select, StaticOnly, Triangle, Unit,
 };
 
 use crate::compare::pass::{compare, Spec};
@@ -133,12 +133,12 @@ where
     B::Coeffs: Send + Sync,
     (P, Full): Select<B>,
     (P, DefocusOnly): Select<B>,
-    (P, StaticOnly): Select<B>,
-    (P, MotionOnly): Select<B>,
-    PipelineOf<B, P, StaticOnly>: Sync,
-    PipelineOf<B, P, MotionOnly>: Sync,
-    <PipelineOf<B, P, StaticOnly> as Pipeline>::Entry: Send + Sync,
-    <PipelineOf<B, P, MotionOnly> as Pipeline>::Entry: Send + Sync,
+    (P, StaticOnly): Select<B> + Select<Laine2011>,
+    (P, MotionOnly): Select<B> + Select<Laine2011>,
+    PipelineOf<Laine2011, P, StaticOnly>: Sync,
+    PipelineOf<Laine2011, P, MotionOnly>: Sync,
+    <PipelineOf<Laine2011, P, StaticOnly> as Pipeline>::Entry: Send + Sync,
+    <PipelineOf<Laine2011, P, MotionOnly> as Pipeline>::Entry: Send + Sync,
 {
     let (core, pat) = inputs::<P>(scene)?;
     let mut c = brute_force::<P, B>(scene, &core, &pat, strat, tile, tol, statements);
@@ -166,8 +166,8 @@ where
         u => Err(format!("unknown unit {u}")),
     };
     let spec = match unit {
-        "static-only" => specialised::<P, B, StaticOnly>(strat, vp, &core, &table, &o),
-        "motion-only" => specialised::<P, B, MotionOnly>(strat, vp, &core, &table, &o),
+        "static-only" => specialised::<P, StaticOnly>(vp, &core, &table, &o),
+        "motion-only" => specialised::<P, MotionOnly>(vp, &core, &table, &o),
         _ => None,
     };
     let (full, mine) = match (full, mine) {
@@ -241,22 +241,23 @@ where
 
 /// The renderer a user instantiates for unit `U` at precision `P`, `Renderer<B, N, P, U>`, when
 /// it runs the unit's own pipeline (`uvt_core::units::select`): its name and frame; `None`
-/// where it runs the general pipeline.
-fn specialised<P: Precision, B: BoundsStrategy, U: Unit>(
-    strat: B,
+/// where it runs the general pipeline. The unit's own pipeline culls with its own tests and
+/// does not use the bounds strategy `B` (the type keeps it, unused), so it is run with Laine
+/// 2011 whatever was chosen: the same pipeline.
+fn specialised<P: Precision, U: Unit>(
     vp: uvt_core::Viewport,
     core: &[Triangle],
     table: &SamplePattern<'_>,
     o: &RunOpts<'_>,
 ) -> Option<(&'static str, Result<Frame, String>)>
 where
-    (P, U): Select<B>,
-    PipelineOf<B, P, U>: Sync,
-    <PipelineOf<B, P, U> as Pipeline>::Entry: Send + Sync,
+    (P, U): Select<Laine2011>,
+    PipelineOf<Laine2011, P, U>: Sync,
+    <PipelineOf<Laine2011, P, U> as Pipeline>::Entry: Send + Sync,
 {
-    let name = <PipelineOf<B, P, U> as Pipeline>::NAME;
-    (name != <General<B, P, U> as Pipeline>::NAME).then(|| {
-        let f = frame::<PipelineOf<B, P, U>>(strat, vp, core, table, o);
+    let name = <PipelineOf<Laine2011, P, U> as Pipeline>::NAME;
+    (name != <General<Laine2011, P, U> as Pipeline>::NAME).then(|| {
+        let f = frame::<PipelineOf<Laine2011, P, U>>(Laine2011, vp, core, table, o);
         (name, f.map(Frame::of).map_err(|e| e.to_string()))
     })
 }

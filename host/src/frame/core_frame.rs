@@ -24,7 +24,6 @@ use std::time::{Duration, Instant};
 
 use embedded_graphics_core::pixelcolor::RgbColor;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
-use rayon::prelude::*;
 use uvt_core::raster::zmax::ZmaxRegisters;
 use uvt_core::{
     DepthCull, Drawn, Engine, Error, Fate, Observer, Pipeline, PixelRect, PixelStats, Prim,
@@ -205,20 +204,29 @@ where
             drawn.resize_with(part.len(), || Ok(None));
             let mut counted = vec![Stats::default(); part.len()];
             // Each triangle is set up in its slot (its entry is not moved again) and read there
-            // by the bands.
-            drawn
-                .par_iter_mut()
-                .zip(counted.par_iter_mut())
-                .zip(part.par_iter())
-                .enumerate()
-                .for_each(|(k, ((slot, s), t))| {
-                    let i = base + k;
-                    let prim = Prim {
-                        tri: *t,
-                        color: o.colors.get(i).map_or(clear, |&c| color(c)),
-                    };
-                    *slot = engine.setup(i, &prim, s);
-                });
+            // by the bands; pieces of SETUP_PIECE triangles are the parallel tasks (spawned
+            // tasks, not a parallel iterator: its machinery would be compiled again for every
+            // pipeline).
+            rayon::scope(|pieces| {
+                let slots = drawn
+                    .chunks_mut(SETUP_PIECE)
+                    .zip(counted.chunks_mut(SETUP_PIECE));
+                for (n, ((slots, counts), tris)) in slots.zip(part.chunks(SETUP_PIECE)).enumerate()
+                {
+                    let first = base + n * SETUP_PIECE;
+                    pieces.spawn(move |_| {
+                        let each = slots.iter_mut().zip(counts.iter_mut()).zip(tris);
+                        for (k, ((slot, s), t)) in each.enumerate() {
+                            let i = first + k;
+                            let prim = Prim {
+                                tri: *t,
+                                color: o.colors.get(i).map_or(clear, |&c| color(c)),
+                            };
+                            *slot = engine.setup(i, &prim, s);
+                        }
+                    });
+                }
+            });
             for s in &counted {
                 setup.add(s);
             }
@@ -306,6 +314,9 @@ where
     };
     Ok((frame, extras))
 }
+
+/// Triangles one setup task sets up.
+const SETUP_PIECE: usize = 64;
 
 /// Chunks set up and not yet rendered by every band they meet, at most.
 pub const MAX_INFLIGHT: usize = 8;

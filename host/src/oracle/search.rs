@@ -93,16 +93,6 @@ impl BoxSearch {
         self.found.map(|f| f.0)
     }
 
-    /// Whether `(u, v, t)` (dimensions 2..5) lies in the box found so far.
-    pub fn contains_uvt(&self, uvt: [i32; 3]) -> bool {
-        self.found.is_some_and(|(b, _)| {
-            b[2..]
-                .iter()
-                .zip(uvt)
-                .all(|(iv, x)| iv[0] <= x && x <= iv[1])
-        })
-    }
-
     /// Add covered point `p` to the box.
     pub fn grow(&mut self, p: P5) {
         match &mut self.found {

@@ -1,5 +1,9 @@
 //! The types of `auto`'s rule: what it may pick ([`Pick`]) and one class's tier ([`Tier`]).
 
+use crate::bounds::composed::{hull, hull_edge};
+use crate::bounds::laine::Laine2011;
+use crate::bounds::strategy::BoundsStrategy;
+
 /// A strategy `auto` may pick for a triangle.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Pick {
@@ -14,12 +18,13 @@ pub enum Pick {
 impl Pick {
     /// Every pick, in order of setup cost.
     pub const ALL: [Pick; 3] = [Pick::Laine, Pick::Hull, Pick::HullEdge];
-    /// The registry name of the picked strategy.
-    pub const fn name(self) -> &'static str {
+    /// The registry name of the picked strategy: the strategy's own
+    /// (`crate::bounds::registry`'s values).
+    pub fn name(self) -> &'static str {
         match self {
-            Pick::Laine => "laine2011",
-            Pick::Hull => "hull",
-            Pick::HullEdge => "hull+edge-t",
+            Pick::Laine => Laine2011.name(),
+            Pick::Hull => hull().name(),
+            Pick::HullEdge => hull_edge().name(),
         }
     }
 }

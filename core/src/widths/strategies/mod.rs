@@ -9,58 +9,95 @@ pub mod hyper;
 pub mod laine;
 pub mod lens_time;
 
+use crate::bounds::auto::Auto;
+use crate::bounds::bbox::BboxScan;
+use crate::bounds::composed::BEST_SLABS;
+use crate::bounds::edge_time::EdgeTime;
+use crate::bounds::hull::HullCull;
+use crate::bounds::hyper::Hyper;
+use crate::bounds::laine::Laine2011;
+use crate::bounds::lens_time::LensTime;
 use crate::config::registry::Config;
 use crate::widths::ops::{Classes, Inventory, OpKind, Stage};
 use crate::widths::row::ext;
 
 /// The operators of the strategy named `name` (one of
-/// [`STRATEGIES`](crate::bounds::registry::STRATEGIES)) at configuration `cfg`; `None` for any
-/// other name.
+/// [`STRATEGIES`](crate::bounds::registry::STRATEGIES), through
+/// [`with_strategy!`](crate::with_strategy)) at configuration `cfg`; `None` for any other name.
 pub fn inventory(name: &str, cfg: &Config) -> Option<Inventory> {
-    let mut inv = Inventory::default();
-    let i = &mut inv;
-    match name {
-        "bbox" => {}
-        "laine2011" => laine::push(i, cfg),
-        "hull" => {
-            hull::push(i, cfg);
-            laine::push(i, cfg);
-        }
-        "lens-t" => {
-            laine::push(i, cfg);
-            lens_time::push(i, cfg);
-        }
-        "hyper" => {
-            laine::push(i, cfg);
-            hyper::push(i, cfg);
-        }
-        "hull+lens-t" => {
-            hull::push(i, cfg);
-            laine::push(i, cfg);
-            lens_time::push(i, cfg);
-        }
-        "hull+edge-t" => {
-            hull::push(i, cfg);
-            edge_time::push(i, cfg);
-            laine::push(i, cfg);
-        }
-        "best" => {
-            hull::push(i, cfg);
-            edge_time::push(i, cfg);
-            laine::push(i, cfg);
-            hyper::push(i, cfg);
-        }
-        "auto" => {
-            auto_pick(i);
-            auto_travel(i, cfg);
-            hull::push(i, cfg);
-            edge_time::push(i, cfg);
-            laine::push(i, cfg);
-        }
-        _ => return None,
-    }
-    Some(inv)
+    crate::with_strategy!(name, s => of(&s, cfg))
 }
+
+/// The operators of strategy `s` at configuration `cfg`.
+pub fn of<S: Operators>(_: &S, cfg: &Config) -> Inventory {
+    let mut inv = Inventory::default();
+    S::push(&mut inv, cfg);
+    inv
+}
+
+/// A strategy's operators by width, composed as the strategy is composed: a part's own
+/// operators ([`laine`], [`hull`], …), then its inner strategy's. Every strategy of the registry
+/// has them (a test and [`inventory`] check it).
+pub trait Operators {
+    /// Push the strategy's operators at configuration `cfg`.
+    fn push(inv: &mut Inventory, cfg: &Config);
+}
+
+impl Operators for BboxScan {
+    /// The bounding-box scan computes no bounds.
+    fn push(_: &mut Inventory, _: &Config) {}
+}
+
+impl Operators for Laine2011 {
+    fn push(inv: &mut Inventory, cfg: &Config) {
+        laine::push(inv, cfg);
+    }
+}
+
+/// Lens-dependent time bounds on Laine 2011's, at the registry's slab count.
+impl Operators for LensTime<BEST_SLABS> {
+    fn push(inv: &mut Inventory, cfg: &Config) {
+        laine::push(inv, cfg);
+        lens_time::push(inv, cfg);
+    }
+}
+
+/// The bilinear surfaces on Laine 2011's bounds.
+impl Operators for Hyper {
+    fn push(inv: &mut Inventory, cfg: &Config) {
+        laine::push(inv, cfg);
+        hyper::push(inv, cfg);
+    }
+}
+
+/// Swept-hull culling in front of the inner strategy.
+impl<S: Operators> Operators for HullCull<S> {
+    fn push(inv: &mut Inventory, cfg: &Config) {
+        hull::push(inv, cfg);
+        S::push(inv, cfg);
+    }
+}
+
+/// The edge-direction time bound in front of the inner strategy.
+impl<S: Operators> Operators for EdgeTime<S> {
+    fn push(inv: &mut Inventory, cfg: &Config) {
+        edge_time::push(inv, cfg);
+        S::push(inv, cfg);
+    }
+}
+
+/// `auto`: its pick and travel limit, and every candidate's unit ([`Pick`](crate::bounds::auto::tier::Pick)):
+/// the largest candidate's operators, hull+edge-t's, hold the others' (hull's, Laine 2011's).
+impl Operators for Auto {
+    fn push(inv: &mut Inventory, cfg: &Config) {
+        auto_pick(inv);
+        auto_travel(inv, cfg);
+        <HullEdge as Operators>::push(inv, cfg);
+    }
+}
+
+/// The type of `auto`'s largest candidate.
+type HullEdge = HullCull<EdgeTime<Laine2011>>;
 
 /// `Auto::pick`: the footprint check (its area against the least of the tier's two areas), then
 /// the own extent's area (`Auto::area`) and the tier compare, per triangle, every class (the
