@@ -23,8 +23,8 @@
 //! checksum and builds every sample and triangle through the core's checked constructors.
 //!
 //! **Stages** ([`stages`]): every triangle is set up once (with the strategy's preparation),
-//! then its footprint is walked three times, band by band (8 rows, the host frame driver's
-//! walk): the tile walk alone (row spans and tile bounds), the walk with every sample of every
+//! then its footprint is walked three times, band by band (8 rows, full width: the same tiles
+//! and row spans as the host's frames, `uvt_core::raster::engine`): the tile walk alone (row spans and tile bounds), the walk with every sample of every
 //! kept tile put through the box and predicate, and the walk with the sample test of every
 //! admitted sample. The caller's `lap` (instructions since its last call, on the Cortex-M)
 //! after each part gives setup, walk, predicate (= second − first walk: the sample loop, box
@@ -51,7 +51,7 @@ pub const HEADER_WORDS: usize = 11;
 pub const SAMPLE_WORDS: usize = 5;
 /// Words per triangle.
 pub const TRI_WORDS: usize = 30;
-/// Rows of one band of the walk (the host frame driver's).
+/// Rows of one band of the walk (full-width bands of any height walk the same tiles and rows).
 pub const BAND: u16 = 8;
 
 /// The bits of an `i32` as a word.

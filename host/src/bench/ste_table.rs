@@ -115,8 +115,8 @@ pub struct BenchRow {
     pub rounds: usize,
     /// STE of the f64 reference (Laine 2011 in f64)
     pub f64: f64,
-    /// wall ms of the f64 reference's frame (same frame driver, no oracle; the fastest of as
-    /// many frames as the row's strategies got, [`timing`])
+    /// wall ms of the f64 reference's frame (its own loop, `crate::frame::reference`; the
+    /// fastest of as many frames as the row's strategies got, [`timing`])
     pub f64_ms: f64,
     /// the axis-aligned limit at bounds tile 1 (all zero when not requested)
     pub limit: Limit,

@@ -4,8 +4,7 @@
 //! - [`json`]: strict JSON and the value readers of scene files;
 //! - [`tri`]: one scene triangle (f64 clip space) and its rounding to the core's inputs;
 //! - [`pattern`]: sample patterns (exact and quantized sample tables);
-//! - [`budget`]: the memory budget checked before anything large is allocated (it sizes the frame
-//!   driver's per-triangle entry from [`crate::frame::pipeline`], which uses nothing of the crate);
+//! - [`budget`]: the memory budget checked before anything large is allocated;
 //! - [`mesh`]: the convenience form (meshes, camera, lens) turned into scene triangles;
 //! - [`file`](mod@file): scene files (`"format":"uvt-scene"`) and the validated [`file::Scene`];
 //! - [`builtin`]: the built-in scenes (the default scene, the benchmark scenes).
