@@ -6,7 +6,7 @@
 //!
 //! Modules by what they do, from the bottom up; a file uses only files of the modules listed
 //! before its own (or earlier files of its own folder, as that folder's `mod.rs` lists them),
-//! never a `mod.rs` nor this root, so there is no import circle (`tests/tests/imports.rs`
+//! never a `mod.rs` nor this root, so there is no import circle (`tests/tests/model/imports.rs`
 //! checks it):
 //!
 //! - [`scene`]: scene input — scene files, meshes, built-in scenes, memory budget, sample

@@ -1,5 +1,5 @@
 // A stand-in for a user's own bounded sample-test unit, for the test of the bench's wiring
-// options (tests/tests/bsample.rs): the architectural ports only, 3 clocks of latency, and no
+// options (tests/tests/external/bsample.rs): the architectural ports only, 3 clocks of latency, and no
 // arithmetic — it replays the expected outputs of the +OUT file in issue order. +REPLAY_FLIP=r
 // flips bit 0 of record r's depth, which the bench must report.
 `timescale 1ns / 1ps

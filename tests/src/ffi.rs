@@ -1,5 +1,5 @@
-//! The C library for the RTL tests that link the model (`tests/tests/dpi.rs`,
-//! `tests/tests/cocotb.rs`): `cargo build --release -p uvt-ffi` once per test process, into the
+//! The C library for the RTL tests that link the model (`tests/tests/external/dpi.rs`,
+//! `tests/tests/external/cocotb.rs`): `cargo build --release -p uvt-ffi` once per test process, into the
 //! workspace's own target folder, and the paths of what it made.
 
 use std::path::PathBuf;

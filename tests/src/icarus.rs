@@ -1,5 +1,5 @@
-//! The Icarus Verilog runner shared by the RTL tests (`tests/tests/bsample.rs`,
-//! `tests/tests/vectors.rs`): compile a testbench with `iverilog -g2005 -Wall` (a warning is a
+//! The Icarus Verilog runner shared by the RTL tests (`tests/tests/external/bsample.rs`,
+//! `tests/tests/external/vectors.rs`): compile a testbench with `iverilog -g2005 -Wall` (a warning is a
 //! failure) and run it with `vvp` on a vector file pair. Both tools come from the Debian package
 //! `iverilog`, which `tests/run.sh` installs.
 

@@ -14,7 +14,7 @@
 //        ahead of the dual path) and stage 26 split in two (docs/rtl.md "Placed and routed
 //        speed" for what each gives)
 // The default configuration bounded-16-16-16-20 (and the exact one) is BND = TUV = 16, the only
-// values the committed records exercise (tests/tests/bounds_rtl.rs); others are untested.
+// values the committed records exercise (tests/tests/external/bounds_rtl.rs); others are untested.
 //
 // Ports (setup_out / bounds_in record fields, vectors/README.md; i64 / i128 two's complement):
 //   x0, y0, x1, y1      the tile (bounds_in words 1, 2), inside the triangle's footprint

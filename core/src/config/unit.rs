@@ -6,7 +6,7 @@
 //! contain them. A triangle whose class (`Triangle::class`) the unit does not accept is
 //! refused by the renderer with `Error::ClassNotInUnit`, never rendered with
 //! the terms left out. For every triangle a variant accepts, its output is bit-identical to
-//! [`Full`]'s at the same precision (`tests/tests/variants.rs`): the gated terms are exactly the
+//! [`Full`]'s at the same precision (`tests/tests/model/variants.rs`): the gated terms are exactly the
 //! ones the class does not use.
 //!
 //! Input fields each variant reads (`Triangle::class` decides acceptance from the whole triangle;

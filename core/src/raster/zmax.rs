@@ -2,7 +2,7 @@
 //! tile the tile step keeps is skipped for a triangle when the triangle's smallest possible depth
 //! is not less than the largest depth stored in that tile, since then every one of its samples
 //! would fail the depth test. Only the work changes: image, depth buffer and written samples are
-//! bit-identical with and without it (`tests/tests/zmax.rs`).
+//! bit-identical with and without it (`tests/tests/model/zmax.rs`).
 //!
 //! The render loop takes it as a type parameter ([`DepthCull`]: [`NoZmax`], the default,
 //! compiles it out; [`Zmax`] runs it), so every renderer — a screen tile on the Cortex-M, a band
@@ -33,7 +33,7 @@
 //! within half an LSB of the camera plane, where the datapaths take their rare paths and depth
 //! may diverge) gets [`DEPTH_NEAR`]: it is never culled. Neither is a static triangle at a
 //! planar precision (its depth comes from a rounded depth plane with a per-sample error bound,
-//! `sample::planar`): [`DEPTH_NEAR`] too. `tests/tests/zmax.rs` checks the floor against every
+//! `sample::planar`): [`DEPTH_NEAR`] too. `tests/tests/model/zmax.rs` checks the floor against every
 //! covered sample's depth at every precision.
 //!
 //! **The Zmax registers** ([`DepthCull::Registers`]: [`PixelMax`] with Zmax, the zero-sized

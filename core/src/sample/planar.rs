@@ -33,7 +33,7 @@
 //!
 //! **What it decides: exactly the exact test on `P'`.** These are the exact test's edge values,
 //! orientation and fill rule (`sample.rs`) for the triangle with vertices `P'_k`, bit for bit
-//! (`tests/tests/planar.rs` compares with an independent 192-bit evaluation). The open cone of
+//! (`tests/tests/model/planar.rs` compares with an independent 192-bit evaluation). The open cone of
 //! a triangle is invariant under positive per-vertex factors: the triangle `2^s_k·P'_k` has
 //! normals `2^(s_{k+1}+s_{k+2})·n_k` and determinant `2^(s_0+s_1+s_2)·det P'` — the same signs,
 //! the same decision. A triangle with `det P' = 0` (a sliver that rounding makes degenerate)
@@ -92,7 +92,7 @@
 //!
 //! *Error against the exact z/w of the rounded triangle* (raw LSBs of 2^-24): at most
 //! `(3·2^30 + Σ|G_i·d_i|·2^-30)/2^f + 1` (the floors of G and of the depth, D32's truncation;
-//! checked on every hit by `tests/tests/planar.rs`).
+//! checked on every hit by `tests/tests/model/planar.rs`).
 //!
 //! *Error against the exact depth of the unrounded triangle* (what `Exact` computes, before its
 //! own floor): on the triangle's plane z is linear in `X = (x, y, w)`, `z = ζ·X` with `P·ζ = z`
@@ -102,7 +102,7 @@
 //! d`). Hence `|Δ(z/w)| ≤ Σ_k |λ_k|·h_k·‖ζ'‖₁ / d_w` — the vertex move times the rounded
 //! plane's depth slope; for a hit with every `w_k > 0` (`λ_k ≥ 0`, `Σ λ_k·w_k = d_w`) at most
 //! `max_k h_k·‖ζ'‖₁ / min_k w_k`. In LSBs: that × 2^24, plus the error above and Exact's own
-//! floor (1). Checked per hit, exactly as stated, by `tests/tests/planar.rs`
+//! floor (1). Checked per hit, exactly as stated, by `tests/tests/model/planar.rs`
 //! (`depth_within_the_derived_bound_of_exact`), which fails on the old z rounding. Depth never
 //! influences coverage.
 

@@ -48,7 +48,7 @@
 //! decision outside the same margins.
 //!
 //! **Tightness (measured).** Rounding every input to a corner of its box moves a value by up to
-//! 0.88 of its bound (`tests/tests/quant_check.rs`, 4000 random triangles of every kind); the
+//! 0.88 of its bound (`tests/tests/model/quant_check.rs`, 4000 random triangles of every kind); the
 //! differing samples of the test scenes use at most 0.31 of it (default precision), 0.21 (8/8
 //! bits, camera-plane crossing), so a bound 16× smaller would already be violated there.
 //!

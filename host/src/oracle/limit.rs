@@ -2,7 +2,7 @@
 //! of the triangle's coverage set, and how many pattern samples such a box would test.
 //!
 //! For every triangle and every bounds tile that Laine 2011 keeps (a conservative bound: the tiles
-//! it culls hold no covered sample — tested in `tests/tests/conservative.rs`), the covered set is
+//! it culls hold no covered sample — tested in `tests/tests/model/conservative.rs`), the covered set is
 //! the set of points on the core's grids (x, y in 1/256 px within the tile, u, v, t raw inside
 //! Laine's box) that the core's sample test covers; its box is what the tightest conservative
 //! axis-aligned bound must test. Its six faces are extremes of the projection of that set onto

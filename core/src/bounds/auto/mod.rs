@@ -172,7 +172,7 @@ impl Auto {
     /// [`Auto::pick`], counting its operations: [`CHECK_OPS`], and [`PICK_OPS`] when the
     /// footprint is not below both of the tier's areas (module docs, **Cost**). The early answer
     /// is the tier's at [`Auto::area`]: the area is at most the footprint's (each side is), so
-    /// below both areas it is Laine 2011 either way (`tests/tests/auto.rs` checks the two agree).
+    /// below both areas it is Laine 2011 either way (`tests/tests/model/auto.rs` checks the two agree).
     fn pick_counted(&self, setup: &Setup, ops: &mut Ops) -> Pick {
         let Some(t) = self.rule.get(setup.class.index()) else {
             return Pick::Laine;

@@ -14,7 +14,7 @@ use crate::stats::Ops;
 
 /// Most faces a triangle keeps in per-tile form: the first [`KEPT_FACES`] of the greedy order
 /// ([`HullTiles::of`]). Keeping fewer faces only culls fewer tiles (conservative); on the quick
-/// bench scenes no triangle keeps more than 6 (`tests/tests/hull.rs` measures the most on each,
+/// bench scenes no triangle keeps more than 6 (`tests/tests/model/hull.rs` measures the most on each,
 /// so the cap changes no decision there). It sets the per-triangle record: 8 faces of 3 × 128
 /// bits and 2 corner bits, against 24 before — the record every strategy with hull culling
 /// stores and copies per triangle.

@@ -16,7 +16,7 @@ const DEPTH_SAT_SCALE: i64 = 1 << (31 - DEPTH_FRAC);
 /// `u128` (one 128-by-64-bit hardware division there, [`depth_quotient_wide`]); the others use
 /// 32-bit divides only ([`depth_quotient_32`], the Cortex-M's UDIV). `bounded_frozen` checks
 /// both against the 128-bit floor division on extreme and random operands on the host, and the
-/// Cortex-M4F checksum test (`tests/tests/m4_qemu.rs`) runs the 32-bit one against the host's
+/// Cortex-M4F checksum test (`tests/tests/external/m4_qemu.rs`) runs the 32-bit one against the host's
 /// image.
 #[inline]
 pub(crate) fn depth_quotient(num: i64, den: i64) -> i64 {

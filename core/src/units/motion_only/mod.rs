@@ -46,7 +46,7 @@
 //! **Same image as the full unit.** Both units' culls are conservative and both decide with the
 //! same test on the same values, so every sample is covered by the same triangles with the same
 //! depths, written in the same triangle order: image, depth, covered, written and occluded
-//! counts are equal (`tests/tests/motion_unit.rs`). The work differs: tiles visited and skipped,
+//! counts are equal (`tests/tests/model/motion_unit.rs`). The work differs: tiles visited and skipped,
 //! samples tested, culling reasons and the operation counts.
 
 pub mod cull;

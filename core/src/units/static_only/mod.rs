@@ -28,7 +28,7 @@
 //! saturated the same way (`f < 1`, or a viewport where some position saturates, calls the
 //! planar test's own function; otherwise the floor from the sum's two words, [`static_depth`]). So
 //! [`static_test`] returns bit for bit what [`crate::sample::planar::planar_test`] returns on the same
-//! triangle and position (`tests/tests/static_unit.rs`).
+//! triangle and position (`tests/tests/model/static_unit.rs`).
 //!
 //! **Footprint** (exact, no ε: coverage is decided on `P'` itself, so bounds of `P'` are
 //! conservative as they stand). A covered `d` lies in the closed cone `Σ λ_k P'_k`, λ ≥ 0
@@ -60,7 +60,7 @@
 //! planar test, so every sample is covered by the same triangles with the same depths, written
 //! in the same triangle order: image, depth, covered, written and occluded counts are equal.
 //! What differs is the work: tiles visited and skipped, samples tested, culled-triangle reasons
-//! and the operation counts (`tests/tests/static_unit.rs` checks the equalities).
+//! and the operation counts (`tests/tests/model/static_unit.rs` checks the equalities).
 
 pub mod cull;
 pub mod sample;

@@ -28,7 +28,7 @@ fn header_is_current() {
             .map_or(committed.lines().count().min(made.lines().count()), |i| i);
         panic!(
             "ffi/include/uvt.h is not what cbindgen makes of ffi/src (first difference at line {}): \
-             regenerate with `UVT_BLESS=1 cargo test -p uvt-ffi --test header`",
+             regenerate with `UVT_BLESS=1 cargo test -p uvt-ffi --test c_api header::`",
             first + 1
         );
     }

@@ -6,7 +6,7 @@
 //! (its host-ns column excepted) and its figures in README.md's headline rows. A figure that
 //! moved — a new compiler, a changed workload — fails here until the files are regenerated.
 //! (`uvt widths` against `core/README.md` is checked by `core/src/widths/mod.rs`, `uvt cost` against
-//! its cost paragraph by `host/tests/cost_text.rs`.)
+//! its cost paragraph by `host/tests/cli/cost_text.rs`.)
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -22,8 +22,11 @@ fn root() -> PathBuf {
 
 /// Run `bash demo/m4_report.sh ARGS` from the repository root in `target/m4-test` (the outer
 /// `cargo test` holds `target/`; `m4_qemu.rs` builds the same programs there); its standard
-/// output.
+/// output. One run at a time with `m4_qemu.rs`'s builds (same test binary, same output paths).
 fn m4_report(args: &[&str]) -> String {
+    let _one = crate::m4_qemu::M4F
+        .lock()
+        .unwrap_or_else(|e| e.into_inner());
     let o = Command::new("bash")
         .current_dir(root())
         .arg("demo/m4_report.sh")

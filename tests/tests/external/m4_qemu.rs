@@ -13,8 +13,8 @@ use std::process::Command;
 use std::sync::Mutex;
 
 /// The Cortex-M4F builds share one target directory and one output path: one build-and-run at
-/// a time.
-static M4F: Mutex<()> = Mutex::new(());
+/// a time (`reports.rs`, in the same test binary, builds there too and holds it as well).
+pub(crate) static M4F: Mutex<()> = Mutex::new(());
 
 fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("..")

@@ -1,0 +1,30 @@
+//! The model's properties, one module per subject: pure Rust, no outside tool (conservativeness,
+//! watertightness, depth, every bounds strategy and unit variant against the reference, the
+//! quantization bound, the documentation's paths and the crates' import graph). One test binary:
+//! `cargo test -p uvt-tests --test model`; one module: `cargo test -p uvt-tests --test model
+//! zmax::`.
+
+mod auto;
+mod bounded;
+mod conservative;
+mod depth;
+mod docs;
+mod domain;
+mod edge_time;
+mod hindsight;
+mod host_reference;
+mod hull;
+mod imports;
+mod limit;
+mod motion_unit;
+mod planar;
+mod precision;
+mod quant_check;
+mod row_span;
+mod stages;
+mod static_unit;
+mod ste;
+mod strategy_ops;
+mod variants;
+mod watertight;
+mod zmax;
