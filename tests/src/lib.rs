@@ -237,6 +237,24 @@ pub fn check_conservative_scaled<B: BoundsStrategy, P: uvt_core::Precision>(
     Ok(covered)
 }
 
+/// [`check_conservative_with`] for every strategy of the registry
+/// (`uvt_core::bounds::registry::STRATEGIES`, each as `AnyStrategy`: its own code) at precision
+/// `P`: the covered samples (the same for every strategy), or the first violation.
+pub fn check_every_strategy<P: uvt_core::Precision>(
+    t: &Triangle,
+    vp: Viewport,
+    pat: &SamplePattern<'_>,
+    bt: u16,
+) -> Result<u64, String> {
+    let mut covered = 0;
+    for name in uvt_core::bounds::registry::STRATEGIES {
+        let s = uvt_core::bounds::any::AnyStrategy::named(name)
+            .ok_or_else(|| format!("{name}: not in the registry"))?;
+        covered = check_conservative_with::<_, P>(&s, t, vp, pat, bt)?;
+    }
+    Ok(covered)
+}
+
 /// Count, for every sample of the viewport, how many of `tris` cover it (no bounds involved).
 pub fn coverage_counts(tris: &[Triangle], vp: Viewport, pat: &SamplePattern<'_>) -> Vec<u8> {
     coverage_counts_with::<uvt_core::DefaultPrecision>(tris, vp, pat)

@@ -6,6 +6,7 @@
 //! of every named strategy ([`registry`]). The conservativeness proof of each is at the top of
 //! its file.
 
+pub mod any;
 pub mod auto;
 pub mod bbox;
 pub mod composed;

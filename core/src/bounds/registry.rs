@@ -23,24 +23,26 @@
 
 pub use crate::bounds::composed::{best, hull, hull_edge, hull_lens, BEST_SLABS};
 
-/// The registry's one list: `$callback!` receives every strategy as `name => value;`, in the
-/// order of the tables (module docs). Internal: use [`STRATEGIES`] and
-/// [`with_strategy!`](crate::with_strategy).
+/// The registry's one list: `$callback!` receives every strategy as
+/// `name => Variant: Type = value;`, in the order of the tables (module docs): its name, its
+/// variant in [`AnyStrategy`](crate::bounds::any::AnyStrategy), its type and its value.
+/// Internal: use [`STRATEGIES`], [`with_strategy!`](crate::with_strategy) and
+/// [`AnyStrategy`](crate::bounds::any::AnyStrategy).
 #[doc(hidden)]
 #[macro_export]
 macro_rules! __uvt_strategies {
     ($callback:ident!($($pre:tt)*)) => {
-        $crate::$callback!($($pre)*
-            "bbox" => $crate::bounds::bbox::BboxScan;
-            "laine2011" => $crate::bounds::laine::Laine2011;
-            "hull" => $crate::bounds::composed::hull();
-            "lens-t" => $crate::bounds::lens_time::LensTime::<{ $crate::bounds::composed::BEST_SLABS }>;
-            "hyper" => $crate::bounds::hyper::Hyper;
-            "hull+lens-t" => $crate::bounds::composed::hull_lens();
-            "hull+edge-t" => $crate::bounds::composed::hull_edge();
-            "best" => $crate::bounds::composed::best();
-            "auto" => $crate::bounds::auto::Auto::new();
-        )
+        $crate::$callback! {$($pre)*
+            "bbox" => Bbox: $crate::bounds::bbox::BboxScan = $crate::bounds::bbox::BboxScan;
+            "laine2011" => Laine2011: $crate::bounds::laine::Laine2011 = $crate::bounds::laine::Laine2011;
+            "hull" => Hull: $crate::bounds::hull::HullCull<$crate::bounds::laine::Laine2011> = $crate::bounds::composed::hull();
+            "lens-t" => LensTime: $crate::bounds::lens_time::LensTime<{ $crate::bounds::composed::BEST_SLABS }> = $crate::bounds::lens_time::LensTime::<{ $crate::bounds::composed::BEST_SLABS }>;
+            "hyper" => Hyper: $crate::bounds::hyper::Hyper = $crate::bounds::hyper::Hyper;
+            "hull+lens-t" => HullLens: $crate::bounds::hull::HullCull<$crate::bounds::lens_time::LensTime<{ $crate::bounds::composed::BEST_SLABS }>> = $crate::bounds::composed::hull_lens();
+            "hull+edge-t" => HullEdge: $crate::bounds::hull::HullCull<$crate::bounds::edge_time::EdgeTime<$crate::bounds::laine::Laine2011>> = $crate::bounds::composed::hull_edge();
+            "best" => Best: $crate::bounds::hull::HullCull<$crate::bounds::edge_time::EdgeTime<$crate::bounds::hyper::Hyper>> = $crate::bounds::composed::best();
+            "auto" => Auto: $crate::bounds::auto::Auto = $crate::bounds::auto::Auto::new();
+        }
     };
 }
 
@@ -48,7 +50,7 @@ macro_rules! __uvt_strategies {
 #[doc(hidden)]
 #[macro_export]
 macro_rules! __uvt_strategy_array {
-    ($($name:literal => $value:expr;)*) => {
+    ($($name:literal => $variant:ident: $ty:ty = $value:expr;)*) => {
         [$($name,)*]
     };
 }
@@ -57,10 +59,10 @@ macro_rules! __uvt_strategy_array {
 #[doc(hidden)]
 #[macro_export]
 macro_rules! __uvt_strategy_dispatch {
-    ($n:ident, $s:ident, $body:expr; $($name:literal => $value:expr;)*) => {
+    ($n:ident, $s:ident, $body:expr; $($name:literal => $variant:ident: $ty:ty = $value:expr;)*) => {
         match $n {
             $($name => {
-                let $s = $value;
+                let $s: $ty = $value;
                 ::core::option::Option::Some($body)
             })*
             _ => ::core::option::Option::None,
@@ -105,6 +107,14 @@ mod tests {
         }
         for bad in ["", "laine", "Laine2011", "hull+hyper", "edge-t"] {
             assert_eq!(crate::with_strategy!(bad, s => s.name()), None, "{bad:?}");
+            assert!(
+                crate::bounds::any::AnyStrategy::named(bad).is_none(),
+                "{bad:?}"
+            );
+        }
+        for name in STRATEGIES {
+            let any = crate::bounds::any::AnyStrategy::named(name).map(|s| s.name());
+            assert_eq!(any, Some(name), "{name}");
         }
     }
 }

@@ -7,11 +7,12 @@
 //! ([`crate::frame::core_frame`]).
 
 use serde::Serialize;
+use uvt_core::bounds::any::AnyStrategy;
 use uvt_core::bounds::strategy::BoundsStrategy;
 use uvt_core::config::registry::Config;
 use uvt_core::{
-    with_config, with_strategy, DefocusOnly, Engine, Full, General, Laine2011, MotionOnly, NoZmax,
-    Pipeline, PipelineOf, Precision, Rgb888, SamplePattern, Select, StaticOnly, Triangle, Unit,
+    with_config, DefocusOnly, Engine, Full, General, Laine2011, MotionOnly, NoZmax, Pipeline,
+    PipelineOf, Precision, Rgb888, SamplePattern, Select, StaticOnly, Triangle, Unit,
 };
 
 use crate::compare::pass::{compare, Spec};
@@ -103,8 +104,10 @@ impl Confirm {
 }
 
 /// Confirm the choice (module docs); `statements[i]`: primitive i's error statement at `config`
-/// (`crate::fit::select::ConfigFit::statements`).
-/// `None` for a configuration outside the registry or a strategy outside its list.
+/// (`crate::fit::select::ConfigFit::statements`). The strategy runs as
+/// [`AnyStrategy`] (its own code, picked by name once per call: one instance of the checks per
+/// configuration, not per configuration and strategy). `None` for a configuration outside the
+/// registry or a strategy outside its list.
 pub fn confirm(
     scene: &Scene,
     config: Config,
@@ -114,10 +117,8 @@ pub fn confirm(
     tol: &Tolerance,
     statements: &[Option<Statement>],
 ) -> Option<anyhow::Result<Confirm>> {
-    with_config!(config, P => with_strategy!(strategy, s => {
-        confirm_at::<P, _>(scene, s, tile, unit, tol, statements)
-    }))
-    .flatten()
+    let s = AnyStrategy::named(strategy)?;
+    with_config!(config, P => confirm_at::<P, _>(scene, s, tile, unit, tol, statements))
 }
 
 fn confirm_at<P: Precision + Sync, B>(

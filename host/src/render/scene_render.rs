@@ -5,7 +5,8 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::{anyhow, Context, Result};
-use uvt_core::{with_config, with_strategy, BboxScan, NoZmax, Precision};
+use uvt_core::bounds::any::AnyStrategy;
+use uvt_core::{with_config, BboxScan, NoZmax, Precision};
 
 use crate::bench::strategy::run_frame;
 use crate::compare::pass::{compare, Spec};
@@ -53,10 +54,10 @@ fn pipelines<P: Precision + Sync>(scene: &Scene, o: &RenderOpts) -> Result<Rende
         oracle: Some(&scene.tris),
         ..opts("uvt fixed")
     };
-    let fixed = with_strategy!(o.bounds, s => {
-        run_frame::<_, P, NoZmax>(s, vp, &core, &pattern, &fixed_opts)
-    })
-    .ok_or_else(|| anyhow!("unknown bounds strategy {:?}", o.bounds))??;
+    // The strategy by name (`AnyStrategy`: its own code, one instance per configuration).
+    let strategy = AnyStrategy::named(o.bounds)
+        .ok_or_else(|| anyhow!("unknown bounds strategy {:?}", o.bounds))?;
+    let fixed = run_frame::<_, P, NoZmax>(strategy, vp, &core, &pattern, &fixed_opts)?;
     say(2, "f64 reference");
     let f64 = run_reference(&scene.tris, &exact, &opts("uvt f64"));
     say(3, "core with the bounding-box scan");
@@ -64,17 +65,14 @@ fn pipelines<P: Precision + Sync>(scene: &Scene, o: &RenderOpts) -> Result<Rende
     say(4, "comparing core and reference sample by sample");
     let rounding = Rounding::at(P::POS_FRAC, P::TUV_FRAC);
     let stated = statements::<P>(&scene.tris, &core, vp, &rounding, 1.0);
-    let coverage = with_strategy!(o.bounds, s => {
-        let spec = Spec {
-            strategy: s,
-            tiles: vec![scene.tile],
-            statements: stated,
-            tolerance: None,
-            rounding,
-        };
-        compare::<P, _>(&scene.tris, &core, vp, &pattern, &spec)
-    })
-    .ok_or_else(|| anyhow!("unknown bounds strategy {:?}", o.bounds))?;
+    let spec = Spec {
+        strategy,
+        tiles: vec![scene.tile],
+        statements: stated,
+        tolerance: None,
+        rounding,
+    };
+    let coverage = compare::<P, _>(&scene.tris, &core, vp, &pattern, &spec);
     let report = report_json(scene, o, &fixed, &f64, &bbox, &coverage);
     Ok(Rendered {
         fixed,

@@ -1,14 +1,18 @@
 //! Conservativeness: a sample the sample test covers is never culled by setup, never outside the
 //! footprint and never outside its bounds tile's (u, v, t) intervals or rejected by its per-sample
-//! predicate — for every strategy (Laine 2011, swept-hull culling, lens-slab time bounds with 1,
-//! 2, 8 slabs, bilinear (u, t)/(v, t) surfaces, hull + slabs, the combined best = hull + surfaces), every triangle kind and every bounds-tile size. Property tests (proptest, shrinking) plus a seeded-random sweep
+//! predicate — for every strategy of the registry (`STRATEGIES`, each run as `AnyStrategy`: its
+//! own code; lens-slab time bounds also with 1, 2 and 8 slabs) at every configuration of the
+//! registry (`CONFIGS`, and two beside it), every triangle kind and every bounds-tile size: a new
+//! strategy or configuration is covered without editing this file. Property tests (proptest, shrinking) plus a seeded-random sweep
 //! (`UVT_SEED`, printed on failure; `UVT_EXTENSIVE=1` for many more cases).
 
 use proptest::prelude::*;
-use uvt_core::bounds::hyper::Hyper;
 use uvt_core::bounds::lens_time::LensTime;
-use uvt_core::bounds::registry::{best, hull, hull_lens};
-use uvt_core::{BboxScan, Laine2011, SamplePattern, Viewport};
+use uvt_core::config::registry::{Config, CONFIGS};
+use uvt_core::{
+    with_config, Bounded, DefaultPrecision, Prec, Precision, Sample, SamplePattern, Triangle,
+    Viewport,
+};
 use uvt_tests::kinds::{make, params, Kind, ALL_KINDS, NP};
 use uvt_tests::*;
 
@@ -19,77 +23,65 @@ fn check_all(kind: Kind, p: &[f64; NP], pat_seed: u64) -> Result<u64, String> {
     let pat = SamplePattern::new(2, 8, &samples).unwrap();
     let mut covered = 0;
     for bt in [1u16, 2, 4, 8] {
-        covered = check_conservative(&Laine2011, &t, vp, &pat, bt)?;
-        check_conservative(&hull(), &t, vp, &pat, bt)?;
-        check_conservative(&LensTime::<8>, &t, vp, &pat, bt)?;
-        check_conservative(&best(), &t, vp, &pat, bt)?;
-        check_conservative(&Hyper, &t, vp, &pat, bt)?;
-        check_conservative(&hull_lens(), &t, vp, &pat, bt)?;
+        covered = check_every_strategy::<DefaultPrecision>(&t, vp, &pat, bt)?;
     }
-    check_conservative(&BboxScan, &t, vp, &pat, 1)?;
+    // Slab counts beside the registry's (lens-t has BEST_SLABS).
     check_conservative(&LensTime::<1>, &t, vp, &pat, 2)?;
     check_conservative(&LensTime::<2>, &t, vp, &pat, 1)?;
+    check_conservative(&LensTime::<8>, &t, vp, &pat, 4)?;
     Ok(covered)
 }
 
-/// The same check at narrow precisions: triangles and samples snapped to the grids.
+/// Every strategy at configuration `P`, triangle and samples snapped to its grids, at the
+/// bounds-tile sizes `tiles`.
+fn check_at<P: Precision>(
+    t: &Triangle,
+    vp: Viewport,
+    samples: &[Sample],
+    tiles: &[u16],
+) -> Result<u64, String> {
+    let tt = snap_tri::<P>(t);
+    let ss = snap_samples::<P>(samples);
+    let pat = SamplePattern::new_with::<P>(2, 8, &ss).map_err(|e| e.to_string())?;
+    let mut covered = 0;
+    for &bt in tiles {
+        covered += check_every_strategy::<P>(&tt, vp, &pat, bt)
+            .map_err(|e| format!("{}: {e}", Config::of::<P>()))?;
+    }
+    Ok(covered)
+}
+
+/// The same check at every exact configuration of the registry (narrower exact inputs:
+/// triangles and samples snapped to the grids), and at `Prec<12, 10, 0>` beside them.
 fn check_narrow(kind: Kind, p: &[f64; NP], pat_seed: u64) -> Result<(), String> {
-    use uvt_core::Prec;
     let t = make(kind, p);
     let vp = Viewport::new(24, 20).unwrap();
     let mut rng = Rng(pat_seed);
     let samples = random_samples(&mut rng, 2, 8);
-    macro_rules! at {
-        ($p:ty) => {{
-            let tt = snap_tri::<$p>(&t);
-            let ss = snap_samples::<$p>(&samples);
-            let pat = SamplePattern::new_with::<$p>(2, 8, &ss).unwrap();
-            for bt in [1u16, 2, 4, 8] {
-                check_conservative_with::<_, $p>(&Laine2011, &tt, vp, &pat, bt)?;
-                check_conservative_with::<_, $p>(&best(), &tt, vp, &pat, bt)?;
-                check_conservative_with::<_, $p>(&Hyper, &tt, vp, &pat, bt)?;
-                check_conservative_with::<_, $p>(&hull_lens(), &tt, vp, &pat, bt)?;
-            }
-        }};
+    for e in CONFIGS.iter().filter(|e| e.config.off().is_none()) {
+        with_config!(e.config, P => check_at::<P>(&t, vp, &samples, &[1, 2, 4, 8]))
+            .unwrap_or_else(|| Err(format!("{}: no type", e.name)))?;
     }
-    at!(Prec<6, 6, 2>);
-    at!(Prec<8, 8, 4>);
-    at!(Prec<12, 10, 0>);
+    check_at::<Prec<12, 10, 0>>(&t, vp, &samples, &[1, 2, 4, 8])?;
     Ok(())
 }
 
-/// The same check at bounded sample-test precisions (`Bounded<…, OFF>`), the rounded test as the
-/// truth: setup and every strategy, widened by the conservative epsilon, must still admit every
-/// sample the rounded test covers — at the candidate default (OFF = 20, ε ≈ 10 raw) and at coarse
-/// grids (OFF = 24, 28: ε up to 26216 raw, 0.4 clip units on this 24×20 viewport), where a
-/// strategy that dropped its epsilon term fails.
+/// The same check at every bounded and planar configuration of the registry, the rounded test
+/// as the truth: setup and every strategy, widened by the conservative epsilon, must still admit
+/// every sample the rounded test covers — at the default (OFF = 20, ε ≈ 10 raw) and at coarse
+/// grids (OFF up to 28: ε up to 26216 raw, 0.4 clip units on this 24×20 viewport, with
+/// `Bounded<16, 16, 16, 28>` beside the registry), where a strategy that dropped its epsilon
+/// term fails.
 fn check_bounded(kind: Kind, p: &[f64; NP], pat_seed: u64) -> Result<u64, String> {
-    use uvt_core::Bounded;
     let t = make(kind, p);
     let vp = Viewport::new(24, 20).unwrap();
     let samples = mixed_samples(pat_seed);
-    let pat = SamplePattern::new(2, 8, &samples).unwrap();
     let mut covered = 0;
-    macro_rules! at {
-        ($p:ty) => {{
-            for bt in [1u16, 4] {
-                covered += check_conservative_with::<_, $p>(&Laine2011, &t, vp, &pat, bt)?;
-                // Every tighter strategy carries the epsilon itself (hull faces widened by the
-                // projected perturbation, slab and surface values by (ε_x + ε_w)·E).
-                check_conservative_with::<_, $p>(&hull(), &t, vp, &pat, bt)?;
-                check_conservative_with::<_, $p>(&LensTime::<8>, &t, vp, &pat, bt)?;
-                check_conservative_with::<_, $p>(&Hyper, &t, vp, &pat, bt)?;
-                check_conservative_with::<_, $p>(&best(), &t, vp, &pat, bt)?;
-                check_conservative_with::<_, $p>(&hull_lens(), &t, vp, &pat, bt)?;
-            }
-            check_conservative_with::<_, $p>(&LensTime::<1>, &t, vp, &pat, 2)?;
-            check_conservative_with::<_, $p>(&best(), &t, vp, &pat, 8)?;
-            check_conservative_with::<_, $p>(&BboxScan, &t, vp, &pat, 1)?;
-        }};
+    for e in CONFIGS.iter().filter(|e| e.config.off().is_some()) {
+        covered += with_config!(e.config, P => check_at::<P>(&t, vp, &samples, &[1, 4]))
+            .unwrap_or_else(|| Err(format!("{}: no type", e.name)))?;
     }
-    at!(uvt_core::BoundedPrecision);
-    at!(Bounded<16, 16, 16, 24>);
-    at!(Bounded<16, 16, 16, 28>);
+    covered += check_at::<Bounded<16, 16, 16, 28>>(&t, vp, &samples, &[1, 8])?;
     Ok(covered)
 }
 

@@ -7,19 +7,22 @@
 //! boxes never dropping a covered sample (brute force over whole viewports); refusal of the
 //! other classes. Seed: `UVT_SEED`; more cases with `UVT_EXTENSIVE=1`.
 
+use uvt_core::config::registry::{CONFIGS, DEFAULT};
 use uvt_core::sample::bounded;
 use uvt_core::setup::Outcome;
 use uvt_core::units::motion_only::cull::slab_of;
 use uvt_core::units::motion_only::sample::motion_test;
 use uvt_core::units::motion_only::setup::{motion_setup, SLABS};
 use uvt_core::{
-    Bounded, Class, DefaultPrecision, DefocusOnly, Error, Exact, Full, Laine2011, MotionOnly,
-    MotionRenderer, Ops, PlanarPrecision, Precision, Prim, Renderer, Rgb888, Sample, SamplePattern,
-    ScreenPos, Select, Setup, StaticOnly, TileBuffer, Triangle, Viewport,
+    with_config, Bounded, Class, DefaultPrecision, DefocusOnly, Error, Exact, Full, Laine2011,
+    MotionOnly, MotionRenderer, Ops, PlanarPrecision, Precision, Prim, Renderer, Rgb888, Sample,
+    SamplePattern, ScreenPos, Select, Setup, StaticOnly, TileBuffer, Triangle, Viewport,
 };
 use uvt_demo as demo;
 use uvt_tests::kinds::{make, Kind, ALL_KINDS, NP};
-use uvt_tests::{c, cases, dump, dump_sample, random_samples, sample_raw, seed, Rng};
+use uvt_tests::{
+    c, cases, dump, dump_sample, random_samples, sample_raw, seed, snap_samples, snap_tri, Rng,
+};
 
 const CAP: usize = 64;
 
@@ -194,8 +197,8 @@ fn demo_prims_render_identically() {
 }
 
 /// Seeded random motion-only scenes of every kind in odd viewports, every bounds-tile size,
-/// random and t-grid patterns (T = 2^15: the general datapath), at the default grid, a coarser
-/// one (S = 24) and the planar configuration.
+/// random and t-grid patterns (T = 2^15: the general datapath), at every bounded and planar
+/// configuration of the registry (triangles and samples snapped to its grids).
 #[test]
 fn seeded_motion_scenes_render_identically() {
     fn run<P: Precision>(name: &str, n: u32, salt: u64)
@@ -208,13 +211,20 @@ fn seeded_motion_scenes_render_identically() {
         for case in 0..n {
             let vp = Viewport::new(8 + rng.below(40) as u16, 8 + rng.below(40) as u16).expect("vp");
             let k = 1 + rng.below(8) as usize;
-            let prims = scene(&mut rng, k, &mut mix);
-            let samples = if case % 2 == 0 {
+            // On P's grids (snapping keeps shared vertices shared).
+            let prims: Vec<Prim> = scene(&mut rng, k, &mut mix)
+                .into_iter()
+                .map(|p| Prim {
+                    tri: snap_tri::<P>(&p.tri),
+                    ..p
+                })
+                .collect();
+            let samples = snap_samples::<P>(&if case % 2 == 0 {
                 random_samples(&mut rng, 4, 4)
             } else {
                 grid_samples(&mut rng)
-            };
-            let pat = SamplePattern::new(4, 4, &samples).expect("pattern");
+            });
+            let pat = SamplePattern::new_with::<P>(4, 4, &samples).expect("pattern");
             let bt = [1u8, 2, 4, 8][rng.below(4) as usize];
             if let Err(e) = compare::<P>(&prims, vp, &pat, bt, None) {
                 let tris: String = prims.iter().map(|p| dump(&p.tri)).collect();
@@ -232,9 +242,21 @@ fn seeded_motion_scenes_render_identically() {
             "{name}: every kind and shared pairs occurred: {mix:?}"
         );
     }
-    run::<DefaultPrecision>("bounded-16-16-16-20", cases(200, 2000), 0);
-    run::<Bounded<16, 16, 16, 24>>("bounded-16-16-16-24", cases(60, 600), 1);
-    run::<PlanarPrecision>("planar-16-16-16-20", cases(60, 600), 2);
+    // Every configuration of the registry with a bounded test (the motion-only unit's own
+    // pipeline runs there), the default with the most cases.
+    for (i, e) in CONFIGS
+        .iter()
+        .enumerate()
+        .filter(|(_, e)| e.config.off().is_some())
+    {
+        let n = if e.config == DEFAULT {
+            cases(200, 2000)
+        } else {
+            cases(60, 600)
+        };
+        with_config!(e.config, P => run::<P>(e.name, n, i as u64))
+            .expect("a registry configuration");
+    }
 }
 
 /// 2048-pixel viewport sides (the general datapath at S = 20 for every sample): random tiles

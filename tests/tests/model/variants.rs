@@ -1,23 +1,29 @@
 //! Unit variants (`uvt_core::config::unit`): each variant renders every primitive list it accepts
 //! bit-identically to the full unit at the same precision — every sample's colour and depth, every
-//! pixel's counters and the renderer's `Stats` (operation counts included) — at the default bounded
-//! precision, at `Exact` and at `PlanarPrecision`. Scenes: the built-in benchmark scenes (quick
+//! pixel's counters and the renderer's `Stats` (operation counts included) — with every strategy
+//! of the registry (`STRATEGIES`) at every configuration of the registry (`CONFIGS`) on the demo
+//! scene and seeded random triangles, and with Laine 2011 at the default, exact and planar
+//! configurations on the large scenes. Scenes: the built-in benchmark scenes (quick
 //! size) and the default scene of `host/src/scene/builtin.rs`, the demo scene, and seeded random
 //! triangles per class (`UVT_SEED`; more in `UVT_EXTENSIVE=1` mode), each filtered to the classes
 //! the variant accepts. And a primitive a variant cannot handle is refused with
 //! `Error::ClassNotInUnit` naming index, class and unit.
 
 use embedded_graphics_core::pixelcolor::RgbColor;
+use uvt_core::bounds::any::AnyStrategy;
+use uvt_core::bounds::registry::STRATEGIES;
+use uvt_core::config::registry::{Config, CONFIGS, DEFAULT, EXACT, PLANAR};
 use uvt_core::input::SamplePattern;
 use uvt_core::{
-    DefaultPrecision, DefocusOnly, Error, Exact, Full, General, Laine2011, MotionOnly, PixelStats,
-    PlanarPrecision, Precision, Prim, Raster, Renderer, Rgb888, Select, StaticOnly, Stats,
-    TileBuffer, Triangle, Unit, Viewport,
+    with_config, BoundsStrategy, DefaultPrecision, DefocusOnly, Error, Exact, Full, General,
+    Laine2011, MotionOnly, PixelStats, PlanarPrecision, Precision, Prim, Raster, Renderer, Rgb888,
+    Select, StaticOnly, Stats, TileBuffer, Triangle, Unit, Viewport,
 };
 use uvt_demo as demo;
 use uvt_host::scene::builtin::{self, Bench, Blur};
 use uvt_host::scene::file::Scene;
 use uvt_host::scene::pattern::Pattern;
+use uvt_tests::{snap_samples, snap_tri};
 /// Most visible triangles a test scene has (the quick game scenes have ≈ 2 600).
 const CAP: usize = 4096;
 /// Everything a render produces: per sample (colour, depth) in tile-walk order, per pixel
@@ -28,19 +34,18 @@ struct Out {
     pixels: Vec<PixelStats>,
     stats: Stats,
 }
-/// Render `prims` with the general pipeline on unit `U` at precision `P` (Laine2011, the unit's
-/// missing effects compiled out; `Renderer` itself runs the static-only and motion-only units'
-/// own pipelines at planar and bounded precisions, `static_unit.rs` and `motion_unit.rs`), 8×8
-/// screen tiles, reading every sample of every tile back.
-fn render<P: Precision, U: Unit, const S: usize>(
+/// Render `prims` with the general pipeline on unit `U` at precision `P` with strategy `strat`
+/// (the unit's missing effects compiled out; `Renderer` itself runs the static-only and
+/// motion-only units' own pipelines at planar and bounded precisions, `static_unit.rs` and
+/// `motion_unit.rs`), 8×8 screen tiles, reading every sample of every tile back.
+fn render<B: BoundsStrategy, P: Precision, U: Unit, const S: usize>(
+    strat: B,
     prims: &[Prim],
     vp: Viewport,
     pat: &SamplePattern<'_>,
     bt: u8,
 ) -> Result<Out, Error> {
-    let mut r = Box::new(Raster::<General<Laine2011, P, U>, CAP>::new(
-        Laine2011, vp, prims,
-    )?);
+    let mut r = Box::new(Raster::<General<B, P, U>, CAP>::new(strat, vp, prims)?);
     let clear = Rgb888::new(7, 8, 9);
     let mut fb = Box::new(TileBuffer::<8, 8, S>::new(clear));
     let mut out = Out {
@@ -76,9 +81,10 @@ fn accepted<U: Unit>(prims: &[Prim]) -> Vec<Prim> {
         .collect()
 }
 
-/// The variant `U` against `Full` at precision `P` on the prims `U` accepts. Returns how many
-/// prims were compared.
-fn same_as_full<P: Precision, U: Unit, const S: usize>(
+/// The variant `U` against `Full` at precision `P` with strategy `strat` on the prims `U`
+/// accepts. Returns how many prims were compared.
+fn same_as_full<B: BoundsStrategy + Copy, P: Precision, U: Unit, const S: usize>(
+    strat: B,
     what: &str,
     prims: &[Prim],
     vp: Viewport,
@@ -87,16 +93,18 @@ fn same_as_full<P: Precision, U: Unit, const S: usize>(
 ) -> usize {
     let mine = accepted::<U>(prims);
     let ctx = format!(
-        "{what}: unit {} vs full at {} ({} of {} prims; UVT_SEED={})",
+        "{what}: unit {} vs full at {} with {} ({} of {} prims; UVT_SEED={})",
         U::NAME,
-        std::any::type_name::<P>(),
+        Config::of::<P>(),
+        strat.name(),
         mine.len(),
         prims.len(),
         uvt_tests::seed()
     );
-    let want =
-        render::<P, Full, S>(&mine, vp, pat, bt).unwrap_or_else(|e| panic!("{ctx}: full: {e}"));
-    let got = render::<P, U, S>(&mine, vp, pat, bt).unwrap_or_else(|e| panic!("{ctx}: {e}"));
+    let want = render::<B, P, Full, S>(strat, &mine, vp, pat, bt)
+        .unwrap_or_else(|e| panic!("{ctx}: full: {e}"));
+    let got =
+        render::<B, P, U, S>(strat, &mine, vp, pat, bt).unwrap_or_else(|e| panic!("{ctx}: {e}"));
     if let Some(i) = (0..want.samples.len()).find(|&i| want.samples.get(i) != got.samples.get(i)) {
         let (wc, wd) = want.samples[i];
         let (gc, gd) = got.samples.get(i).copied().unwrap_or(([0; 3], 0));
@@ -119,31 +127,70 @@ fn same_as_full<P: Precision, U: Unit, const S: usize>(
     mine.len()
 }
 
-/// Every variant against `Full`, at the default bounded precision and at `Exact`; returns
-/// the prims compared per variant.
-fn all_variants<const S: usize>(
+/// Every variant against `Full` with strategy `strat` at precision `P`; the prims compared per
+/// variant (motion-only, defocus-only, static-only).
+fn variants_at<B: BoundsStrategy + Copy, P: Precision, const S: usize>(
+    strat: B,
     what: &str,
     prims: &[Prim],
     vp: Viewport,
     pat: &SamplePattern<'_>,
     bt: u8,
 ) -> [usize; 3] {
-    let run = |f: fn(&str, &[Prim], Viewport, &SamplePattern<'_>, u8) -> usize| {
-        f(what, prims, vp, pat, bt)
-    };
-    let n = [
-        run(same_as_full::<DefaultPrecision, MotionOnly, S>),
-        run(same_as_full::<DefaultPrecision, DefocusOnly, S>),
-        run(same_as_full::<DefaultPrecision, StaticOnly, S>),
-    ];
-    run(same_as_full::<Exact, MotionOnly, S>);
-    run(same_as_full::<Exact, DefocusOnly, S>);
-    run(same_as_full::<Exact, StaticOnly, S>);
-    // The planar static configuration (issue 13): static triangles take the planar test on
-    // every unit.
-    run(same_as_full::<PlanarPrecision, MotionOnly, S>);
-    run(same_as_full::<PlanarPrecision, DefocusOnly, S>);
-    run(same_as_full::<PlanarPrecision, StaticOnly, S>);
+    [
+        same_as_full::<B, P, MotionOnly, S>(strat, what, prims, vp, pat, bt),
+        same_as_full::<B, P, DefocusOnly, S>(strat, what, prims, vp, pat, bt),
+        same_as_full::<B, P, StaticOnly, S>(strat, what, prims, vp, pat, bt),
+    ]
+}
+
+/// Every variant against `Full` at every configuration of the registry (`CONFIGS`; the table
+/// snapped to each one's t/u/v grid, the triangles to its position grid) with every strategy
+/// of the registry (`STRATEGIES`, as `AnyStrategy`) when `every` — else, for the large scenes,
+/// with Laine 2011 at the default, exact and planar configurations; returns the prims compared
+/// per variant at the default configuration.
+fn all_variants<const S: usize>(
+    what: &str,
+    prims: &[Prim],
+    vp: Viewport,
+    pat: &SamplePattern<'_>,
+    bt: u8,
+    every: bool,
+) -> [usize; 3] {
+    let mut n = [0; 3];
+    let chosen = |c: &Config| every || [DEFAULT, EXACT, PLANAR].contains(c);
+    for e in CONFIGS.iter().filter(|e| chosen(&e.config)) {
+        let k = with_config!(e.config, P => {
+            let snapped: Vec<Prim> = prims
+                .iter()
+                .map(|p| Prim { tri: snap_tri::<P>(&p.tri), ..*p })
+                .collect();
+            let table: Vec<_> = (0..pat.block() as usize * pat.block() as usize)
+                .flat_map(|px| {
+                    let (x, y) = ((px % pat.block() as usize) as u16, (px / pat.block() as usize) as u16);
+                    pat.pixel(x, y).to_vec()
+                })
+                .collect();
+            let samples = snap_samples::<P>(&table);
+            let sp = SamplePattern::new_with::<P>(pat.block(), pat.spp(), &samples)
+                .expect("snapped table");
+            let what = format!("{what} at {}", e.name);
+            if every {
+                let mut k = [0; 3];
+                for name in STRATEGIES {
+                    let s = AnyStrategy::named(name).expect("a registry strategy");
+                    k = variants_at::<_, P, S>(s, &what, &snapped, vp, &sp, bt);
+                }
+                k
+            } else {
+                variants_at::<_, P, S>(Laine2011, &what, &snapped, vp, &sp, bt)
+            }
+        })
+        .expect("a registry configuration");
+        if e.config == DEFAULT {
+            n = k;
+        }
+    }
     n
 }
 
@@ -164,8 +211,8 @@ fn check_scene(scene: &Scene) -> [usize; 3] {
     let pat = pattern.core();
     let vp = scene.core_viewport();
     match scene.spp {
-        16 => all_variants::<16>(&scene.name, &prims, vp, &pat, scene.tile),
-        4 => all_variants::<4>(&scene.name, &prims, vp, &pat, scene.tile),
+        16 => all_variants::<16>(&scene.name, &prims, vp, &pat, scene.tile, false),
+        4 => all_variants::<4>(&scene.name, &prims, vp, &pat, scene.tile, false),
         other => panic!("{}: spp {other} not instantiated", scene.name),
     }
 }
@@ -231,6 +278,7 @@ fn demo_scene_renders_identically_on_every_accepting_unit() {
             demo::viewport().unwrap(),
             &pat,
             demo::BOUNDS_TILE,
+            true,
         );
         // prims: 0 static, 1 motion, 2 defocus, 3–5 both, 6 static (culled)
         assert_eq!(
@@ -272,6 +320,7 @@ fn random_triangles_render_identically_on_every_accepting_unit() {
                 vp,
                 &pat,
                 bt,
+                true,
             );
             for (t, k) in totals.iter_mut().zip(n) {
                 *t += k;
