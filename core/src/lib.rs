@@ -40,6 +40,8 @@
 )]
 
 pub mod arith;
+// With its macros (the strategies' one list, `bounds::registry`) in textual scope below.
+#[macro_use]
 pub mod bounds;
 pub mod config;
 pub mod error;

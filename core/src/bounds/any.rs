@@ -169,4 +169,4 @@ macro_rules! __uvt_any_strategy {
     };
 }
 
-crate::__uvt_strategies!(__uvt_any_strategy!());
+__uvt_strategies!(__uvt_any_strategy!());

@@ -6,6 +6,11 @@
 //! of every named strategy ([`registry`]). The conservativeness proof of each is at the top of
 //! its file.
 
+// First, with its macros: the one list of strategies is in textual scope for `any` below and,
+// through the crate root's `#[macro_use] pub mod bounds`, for `widths` (no path back to the root).
+#[macro_use]
+pub mod registry;
+
 pub mod any;
 pub mod auto;
 pub mod bbox;
@@ -15,5 +20,4 @@ pub mod hull;
 pub mod hyper;
 pub mod laine;
 pub mod lens_time;
-pub mod registry;
 pub mod strategy;

@@ -25,7 +25,7 @@ use crate::widths::row::ext;
 /// [`STRATEGIES`](crate::bounds::registry::STRATEGIES), through
 /// [`with_strategy!`](crate::with_strategy)) at configuration `cfg`; `None` for any other name.
 pub fn inventory(name: &str, cfg: &Config) -> Option<Inventory> {
-    crate::with_strategy!(name, s => of(&s, cfg))
+    with_strategy!(name, s => of(&s, cfg))
 }
 
 /// The operators of strategy `s` at configuration `cfg`.
