@@ -1,8 +1,8 @@
 //! The model's properties, one module per subject: pure Rust, no outside tool (conservativeness,
 //! watertightness, depth, every bounds strategy and unit variant against the reference, the
-//! quantization bound, the documentation's paths and the crates' import graph). One test binary:
-//! `cargo test -p uvt-tests --test model`; one module: `cargo test -p uvt-tests --test model
-//! zmax::`.
+//! quantization bound, the paths named in the documentation and in comments, and the crates'
+//! import graph). One test binary: `cargo test -p uvt-tests --test model`; one module:
+//! `cargo test -p uvt-tests --test model zmax::`.
 
 mod auto;
 mod bounded;
