@@ -1,5 +1,5 @@
 //! The interface version, the kind codes and the record lengths of the header (held equal to
-//! the layouts by `tests/boundary.rs`).
+//! the layouts by `ffi/tests/c_api/boundary.rs`).
 
 /// Version of this C interface: bumped when a function's signature or meaning changes.
 pub const UVT_FFI_VERSION: u32 = 1;

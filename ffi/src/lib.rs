@@ -17,7 +17,7 @@
 //! Every function returns [`UVT_OK`] or a negative `UVT_ERR_*` code; `uvt_last_error()` then
 //! names what was refused (the field, like `uvt vectors check`). **No panic crosses the
 //! boundary**: every entry point runs inside `catch_unwind` and a panic becomes
-//! [`UVT_ERR_INTERNAL`] (tested by `tests/boundary.rs` with random words, null pointers and
+//! [`UVT_ERR_INTERNAL`] (tested by `ffi/tests/c_api/boundary.rs` with random words, null pointers and
 //! short buffers).
 //!
 //! # Unsafe code

@@ -23,7 +23,8 @@
 //! - [`fit`]: `uvt fit` and `uvt units`;
 //! - [`precision`]: `uvt precision`;
 //! - [`render`]: `uvt render`;
-//! - [`vectors`]: `uvt vectors`, the golden test vectors for RTL.
+//! - [`vectors`]: `uvt vectors`, the golden test vectors for RTL;
+//! - [`splice`]: `uvt splice`, the documentation's copies of reports and command outputs.
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
 
@@ -38,4 +39,5 @@ pub mod precision;
 pub mod reference;
 pub mod render;
 pub mod scene;
+pub mod splice;
 pub mod vectors;

@@ -69,7 +69,7 @@ impl Kind {
             .ok_or_else(|| format!("unknown record kind `{s}` (one of {})", STAGES.join(", ")))
     }
     /// Words of an input record (`spp` samples for a resolve record): the layout's, kept as
-    /// constants for the per-record paths (`tests/layout.rs` holds them equal to [`layout`]).
+    /// constants for the per-record paths (`records/tests/codec/layout.rs` holds them equal to [`layout`]).
     pub fn words_in(self, spp: u32) -> u32 {
         match self {
             Kind::Setup => 32,

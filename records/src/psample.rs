@@ -1,5 +1,5 @@
 //! Planar sample-test records (`psample_in.hex` / `psample_out.hex`) of the planar static
-//! configuration ([`PLANAR`]: `uvt_core::PlanarPrecision`, `core/src/planar.rs`):
+//! configuration ([`PLANAR`]: `uvt_core::PlanarPrecision`, `core/src/sample/planar.rs`):
 //! self-contained inputs of `uvt_core::sample::planar::planar_eval` — the static triangle's raw t0
 //! vertices (x, y, z, w; CoC 0, t1 = t0), the viewport, **what the planar setup hands the
 //! per-sample test** (the edge normals `n_k = (a, b, c)`, the orientation σ, the depth plane `G`

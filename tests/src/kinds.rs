@@ -1,6 +1,6 @@
-//! Triangle kinds of the conservativeness tests (`tests/conservative.rs`), shared with the
-//! row-span, planar and static-unit tests and the bounded-margin measurement
-//! (`examples/bounded_margin.rs`).
+//! Triangle kinds of the conservativeness tests (`tests/tests/model/conservative.rs`), shared
+//! with the auto, edge-time, motion-unit, planar, row-span, static-unit, strategy-ops and Zmax
+//! tests.
 
 use uvt_core::Triangle;
 

@@ -255,12 +255,8 @@ pub fn check_every_strategy<P: uvt_core::Precision>(
     Ok(covered)
 }
 
-/// Count, for every sample of the viewport, how many of `tris` cover it (no bounds involved).
-pub fn coverage_counts(tris: &[Triangle], vp: Viewport, pat: &SamplePattern<'_>) -> Vec<u8> {
-    coverage_counts_with::<uvt_core::DefaultPrecision>(tris, vp, pat)
-}
-
-/// [`coverage_counts`] with `P`'s sample test (exact or bounded).
+/// Count, for every sample of the viewport, how many of `tris` cover it with `P`'s sample test
+/// (exact or bounded; no bounds involved).
 pub fn coverage_counts_with<P: uvt_core::Precision>(
     tris: &[Triangle],
     vp: Viewport,

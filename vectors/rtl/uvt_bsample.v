@@ -1,4 +1,4 @@
-// uvt_bsample — the bounded sample test of uvt-core (core/src/bounded.rs, steps 1–8) as a fully
+// uvt_bsample — the bounded sample test of uvt-core (core/src/sample/bounded/, steps 1–8) as a fully
 // pipelined unit: one sample per clock, bit-exact against the golden vectors bsample_in.hex /
 // bsample_out.hex. Synthesizable Verilog-2005 (Icarus Verilog and Yosys).
 //
@@ -34,7 +34,7 @@ module uvt_bsample #(
     parameter POS = 16,
     parameter TUV = 16,
     parameter OFF = 20,
-    // the unit variant (core/src/unit.rs): MOTION = 0 leaves out key frame 1, t and the lerp
+    // the unit variant (core/src/config/unit.rs): MOTION = 0 leaves out key frame 1, t and the lerp
     // multipliers; DEFOCUS = 0 the CoC, u, v, the CoC lerp and the lens multipliers. Full: 1, 1;
     // motion-only: 1, 0; defocus-only: 0, 1; static-only: 0, 0.
     parameter MOTION = 1,

@@ -1,6 +1,6 @@
 // uvt_mul — a signed AW × BW product decomposed explicitly into hard-multiplier-sized partial
 // products, so that synthesis maps each `*` to exactly one hard multiplier (vectors/README.md
-// "Multiplier decomposition"; host/src/cost.rs models the same rule). Combinational;
+// "Multiplier decomposition"; host/src/config/multipliers.rs models the same rule). Combinational;
 // synthesizable Verilog-2005 (Icarus Verilog and Yosys).
 //
 // Tiling rule (ports PA × PB, signed only, as the DSP48E1's 25 × 18; ECP5 builds use 18 × 18):

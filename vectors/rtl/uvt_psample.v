@@ -1,4 +1,4 @@
-// uvt_psample — the planar static sample test of uvt-core (core/src/planar.rs, configuration
+// uvt_psample — the planar static sample test of uvt-core (core/src/sample/planar.rs, configuration
 // planar-16-16-16-20) as a fully pipelined unit: one sample per clock, bit-exact against the
 // golden vectors psample_in.hex / psample_out.hex. Synthesizable Verilog-2005 (Icarus Verilog
 // and Yosys).
@@ -7,7 +7,7 @@
 // never sees the vertices): the edge normals n_k = (a, b, c) = P'_{k+1} × P'_{k+2} of the rounded
 // vertices (|.| <= 2·(2^15 − 1)^2 < 2^31), the orientation σ = ±1 and the depth plane G, f; plus
 // the viewport and the sample position. Widths are those of the frozen contract
-// (core/src/planar_frozen.rs): the rounded vertices have 15 bits, so n, G and the direction d have
+// (core/src/verify/planar_frozen.rs): the rounded vertices have 15 bits, so n, G and the direction d have
 // 32 and every product is 32 × 32 → 64 bits; the only parameters are the multiplier tiling's.
 //
 // Per sample (planar.rs "Per sample", "Depth"):
@@ -31,8 +31,8 @@
 // With PIPE = 1 the products of stage 2 take one more clock and those of stage 3 two more
 // (uvt_mul REG; a LUT chunk's rows summed four at a time): LAT = 9.
 // Every product goes through uvt_mul.v, which tiles it into hard multipliers as the cost model
-// (host/src/cost.rs, host/src/planar.rs PRODUCTS) counts: 3·1 + 12·2 = 27 DSP48E1 (25 × 18),
-// 3·1 + 12·4 = 51 MULT18X18D (18 × 18).
+// (host/src/config/multipliers.rs, host/src/config/planar_static.rs PRODUCTS) counts:
+// 3·1 + 12·2 = 27 DSP48E1 (25 × 18), 3·1 + 12·4 = 51 MULT18X18D (18 × 18).
 //
 // Ports = record fields (vectors/README.md "RTL integration: the planar sample-test unit"):
 //   n[32*(3k+i) +: 32]  psample_in word 13 + 3k + i (n0_a n0_b n0_c n1_a … n2_c)

@@ -36,8 +36,8 @@
 //! so each is `α + β·xl + γ·(n − 1)` with integers α, β, γ computed once in `prepare`; a tile
 //! evaluates `α + β·xl` (2 ops per coefficient, 16 per axis, plus the width n and the compare
 //! n = 1) and adds `γ·(n − 1)` only when its side is not 1 pixel. The surfaces are the same integers
-//! as those of the corner values evaluated per tile (`hyper/reference.rs` compares every tile
-//! with that formulation).
+//! as those of the corner values evaluated per tile (`core/src/verify/hyper_reference.rs`
+//! compares every tile with that formulation).
 #![warn(
     clippy::arithmetic_side_effects,
     clippy::indexing_slicing,

@@ -40,7 +40,7 @@ pub type SubPixel = U0F8;
 /// is never a depth output, so a covered sample always wins against an empty slot.
 pub type Depth = I8F24;
 
-/// Screen position in pixels with [`PX_FRAC`] fraction bits (raw `i64`), used by bounds.
+/// Screen position in pixels with 16 fraction bits (raw `i64`), used by bounds.
 pub type PixelCoord = i64;
 
 /// Dual-space distance δ = (a + w)·E − 2·w·ξ (raw `i64`, [`COORD_FRAC`] fraction bits).
@@ -76,9 +76,6 @@ pub const DEPTH_FAR: i32 = i32::MAX - 1;
 
 /// The near end of the depth outputs (raw): z/w ≤ −128 saturates here.
 pub const DEPTH_NEAR: i32 = i32::MIN;
-
-/// Fraction bits of [`PixelCoord`].
-pub const PX_FRAC: u32 = 16;
 
 /// Fixed-point shift of the lens-bound reciprocals (`2^RECIP_SHIFT / Δ`), see `bounds.rs`.
 pub const RECIP_SHIFT: u32 = 80;

@@ -18,8 +18,9 @@
 //! **Regions are made of whole bounds tiles** (their left and top edges on the bounds-tile grid,
 //! their right and bottom edges on it or at the viewport's edge), so every bounds tile of the
 //! screen lies in exactly one region, and any division of the screen into regions — 8 × 8
-//! screen tiles, 8-row bands — visits the same tiles and samples with the same decisions, in the
-//! same order per sample: the image and every tile and sample count are the same. (A strategy
+//! screen tiles, full-width bands one bounds tile high — visits the same tiles and samples with
+//! the same decisions, in the same order per sample: the image and every tile and sample count
+//! are the same. (A strategy
 //! with row spans computes one span per row of a region, so its row-span operations, and the
 //! tile operations a span spares, depend on the regions' width.)
 

@@ -1,6 +1,6 @@
 //! Stage 3 — the 5D sample test: does the triangle at the sample's (t, u, v) cover the sample's
 //! screen position, and at what depth? (Olano & Greer 1997 homogeneous edge functions;
-//! Akenine-Möller 2007 §3.3.2 time-continuous triangles; `shared/notes/bounds-math.md` §1.)
+//! Akenine-Möller 2007 §3.3.2 time-continuous triangles.)
 //!
 //! **Exact.** Vertex positions at the sample's (t, u, v) are formed without any rounding at the
 //! class's scale (`F` fraction bits: 16 static, 32 motion-only or defocus-only, 48 both):

@@ -7,7 +7,7 @@
 //! same formula the code evaluates; its width is the number of bits a two's-complement register
 //! needs for every value in `[−bound, bound]` (sign included: +2^29 needs 31 bits). A product
 //! row also carries its multiplier: the operand widths and how many such products the stage
-//! forms — the hardware cost model (`host/src/cost.rs`) reads them from here.
+//! forms — the hardware cost model (`host/src/config/multipliers.rs`) reads them from here.
 //!
 //! `core/README.md`'s width tables are the output of [`write_markdown`] (`uvt widths`), and a
 //! test fails if they differ; `width_corners.rs` drives the domain's extreme corners through each

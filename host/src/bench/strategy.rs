@@ -104,18 +104,7 @@ impl StratResult {
 }
 
 /// Run strategy `name` (one of [`STRATEGIES`]) over a frame at the default precision, without
-/// Zmax: its counters and wall time.
-pub fn run_strategy(
-    name: &str,
-    vp: Viewport,
-    tris: &[Triangle],
-    pattern: &Pattern,
-    o: &RunOpts<'_>,
-) -> Result<StratResult> {
-    run_strategy_image(name, vp, tris, pattern, o).map(|r| r.0)
-}
-
-/// [`run_strategy`] with the resolved image (empty unless `o.image`).
+/// Zmax: its counters, wall time and resolved image (empty unless `o.image`).
 pub fn run_strategy_image(
     name: &str,
     vp: Viewport,

@@ -1,5 +1,5 @@
 //! The planar static configuration ([`PLANAR`] of the registry, `planar-16-16-16-20`:
-//! `uvt_core::PlanarPrecision`, `core/src/planar.rs`) in the host tools: its documented error distance d_q per
+//! `uvt_core::PlanarPrecision`, `core/src/sample/planar.rs`) in the host tools: its documented error distance d_q per
 //! primitive, its sample-test multipliers per unit, and the triangles its vertex rounding makes
 //! degenerate. `uvt precision`, `uvt fit` (and its confirmation) and `uvt bench-ste --precision`
 //! use these.

@@ -49,14 +49,14 @@ pub struct UnitCost {
 const LERP_FIELDS: u32 = 5;
 
 /// The sample-test cost of the unit with the given terms at a bounded `cfg`, from the width
-/// table's `sample` rows restricted to the stages the unit has (`core/src/bounded.rs`
-/// `vertex`/`eval_class`): `1 lerp` — x, y, w, z lerps when the unit has motion, the CoC lerp
-/// only with motion and defocus (4 or 5 of the 5 fields; none without motion: static and
-/// defocus-only triangles read the t0 values, the depth's z included); `2 lens` only with
-/// defocus; offsets, edges, orientation (its rare path serves w ≤ 0 vertices, which static
-/// triangles have too) and depth in every unit. `None` for an exact configuration (its rows are
-/// sized for the widest class; a per-unit table is not modelled) or a lerp row whose count is
-/// not a multiple of the five fields.
+/// table's `sample` rows restricted to the stages the unit has
+/// (`core/src/sample/bounded/datapath.rs` `vertex`): `1 lerp` — x, y, w, z lerps when the unit
+/// has motion, the CoC lerp only with motion and defocus (4 or 5 of the 5 fields; none without
+/// motion: static and defocus-only triangles read the t0 values, the depth's z included);
+/// `2 lens` only with defocus; offsets, edges, orientation (its rare path serves w ≤ 0
+/// vertices, which static triangles have too) and depth in every unit. `None` for an exact
+/// configuration (its rows are sized for the widest class; a per-unit table is not modelled) or
+/// a lerp row whose count is not a multiple of the five fields.
 pub fn unit_sample_cost(cfg: &Config, motion: bool, defocus: bool) -> Option<UnitCost> {
     cfg.off()?;
     let t = table(cfg);

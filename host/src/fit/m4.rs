@@ -1,5 +1,5 @@
 //! The Cortex-M4F figures of the unit programs (`m4_units.json`, written by
-//! `bash core/examples/m4_report.sh --units`): flash, RAM, stack and instructions per stage of
+//! `bash demo/m4_report.sh --units`): flash, RAM, stack and instructions per stage of
 //! each unit variant, which `uvt units` and `uvt fit` show beside the multiplier estimates.
 
 use std::path::Path;
@@ -7,7 +7,7 @@ use std::path::Path;
 use anyhow::{Context, Result};
 use serde::{Deserialize, Serialize};
 
-/// One unit of `m4_units.json` (`core/examples/m4_report.sh --units`).
+/// One unit of `m4_units.json` (`demo/m4_report.sh --units`).
 #[derive(Clone, Debug, Deserialize, Serialize)]
 pub struct M4Unit {
     /// unit name

@@ -317,7 +317,7 @@ pub fn fit_md(f: &Fit) -> String {
         yes(c.beyond_tolerance_clip == 0)
     );
     s += &format!(
-        "| decisions ≠ f64 no rounding explains (`host/src/frame/compare.rs` check) | {} of {} compared | {} |\n",
+        "| decisions ≠ f64 no rounding explains (`host/src/compare/bound.rs` check) | {} of {} compared | {} |\n",
         c.beyond_bound,
         c.compared,
         yes(c.beyond_bound == 0)

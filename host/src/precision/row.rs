@@ -3,7 +3,7 @@
 //! d_q.
 //!
 //! Per configuration (`exact-P-T-B` = `Prec<P, T, B>`, the exact sample test;
-//! `bounded-P-T-B-O` = `Bounded<P, T, B, O>`, the hardware-width test of `core/src/bounded.rs`)
+//! `bounded-P-T-B-O` = `Bounded<P, T, B, O>`, the hardware-width test of `core/src/sample/bounded/`)
 //! the scene's exact f64 triangles are rounded to the position grid, the pattern's t/u/v to the
 //! t/u/v grid (sub-pixel stays 8 bits), and the core runs at that precision. The reference always
 //! runs on the exact values.

@@ -1,6 +1,6 @@
 //! f64 reference — stage 1, setup (mirrors `uvt_core::setup`, written independently).
 //!
-//! Same definitions as `shared/notes/bounds-math.md`, in f64 with no rounding: class, frustum time
+//! Same definitions as the core's setup, in f64 with no rounding: class, frustum time
 //! span from the plane chords, degeneracy, lens-corner boxes in pixels with the camera-plane test,
 //! footprint. The camera-plane test here intersects every segment between two of the six
 //! lens-extended points with the half-line (the core instead tests cone membership), so the two

@@ -147,7 +147,7 @@ pub fn report_md(r: &Rendered) -> String {
           around {n} dense points of the tile that the exact triangle covers; counting the samples inside it estimates \
           from above what any axis-aligned bound could reach. It is computed during the core's frame.\n\
         - **Wall ms**: wall-clock time of each pipeline's whole frame on this machine (setup, bounds, sample tests, \
-          depth test and resolve, in parallel over 8-row bands). The core's time includes the oracle's dense \
+          depth test and resolve, in parallel over bands: the core's one row of bounds tiles high, the reference's 8 rows). The core's time includes the oracle's dense \
           sampling; the comparison below is not included in any of them. Host timings of a reference model, \
           not of hardware.\n\n",
         t = j["tile"],

@@ -50,17 +50,6 @@ impl SceneTri {
         };
         Triangle::new_with::<P>(self.t0.map(v), self.t1.map(v))
     }
-
-    /// The f64 values the core actually sees (after quantization), for the reference when it is
-    /// asked to run on identical inputs.
-    pub fn quantized(&self) -> SceneTri {
-        let q = |a: [f64; 5]| a.map(|v| quantize(v).to_num::<f64>());
-        SceneTri {
-            t0: self.t0.map(q),
-            t1: self.t1.map(q),
-            color: self.color,
-        }
-    }
 }
 
 /// Every coordinate and CoC inside the core's domain (after rounding).

@@ -1,4 +1,4 @@
-//! The bounded sample test (`core/src/bounded.rs`): hand-picked cases bit for bit, and its
+//! The bounded sample test (`core/src/sample/bounded/`): hand-picked cases bit for bit, and its
 //! agreement with the exact test — decisions may differ only where the derived vertex
 //! perturbation can move an edge across the sample (seeded random, `UVT_SEED`).
 

@@ -1,4 +1,4 @@
-//! Edge-direction time bounds (`core/src/strategies/edge_time.rs`): conservativeness of
+//! Edge-direction time bounds (`core/src/bounds/edge_time.rs`): conservativeness of
 //! `EdgeTime` on Laine 2011 and of the compositions `hull_edge()` and `best()` — proptest and a
 //! seeded-random sweep (`UVT_SEED`, printed on failure; `UVT_EXTENSIVE=1` for many more cases),
 //! each case a whole-viewport brute force against the sample test — at the exact precision and at

@@ -1,8 +1,8 @@
 //! The f64 reference and the core's frames: the reference's own bounds are conservative against
 //! its brute-force coverage; the core agrees with the reference on every sample farther than the
-//! documented quantization distance from an edge; the core's loop over 8-row bands on threads
-//! (the host's frame) gives exactly the image and counters of the same loop over 8×8 screen
-//! tiles (the no-heap renderer's).
+//! documented quantization distance from an edge; the core's loop over bands of one row of
+//! bounds tiles on threads (the host's frame) gives exactly the image and counters of the same
+//! loop over 8×8 screen tiles (the no-heap renderer's).
 
 use embedded_graphics_core::pixelcolor::RgbColor;
 use uvt_core::{DefaultPrecision, Laine2011, NoZmax, Prim, Renderer, Rgb888};
@@ -129,8 +129,9 @@ fn core_agrees_with_reference_beyond_quantization_distance() {
     println!("default+random: {d:?}");
 }
 
-/// The core's loop over 8-row bands on threads (`uvt_host::frame::core_frame`) reproduces the same
-/// loop over 8×8 screen tiles (`uvt_core::Renderer`) exactly: image and every counter, at every
+/// The core's loop over bands of one row of bounds tiles on threads
+/// (`uvt_host::frame::core_frame`) reproduces the same loop over 8×8 screen tiles
+/// (`uvt_core::Renderer`) exactly: image and every counter, at every
 /// bounds-tile size. (The no-heap renderer keeps 4096 setups inline, so this runs on a thread
 /// with a large stack.)
 #[test]

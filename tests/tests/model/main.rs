@@ -1,8 +1,8 @@
 //! The model's properties, one module per subject: pure Rust, no outside tool (conservativeness,
 //! watertightness, depth, every bounds strategy and unit variant against the reference, the
-//! quantization bound, the documentation's paths and the crates' import graph). One test binary:
-//! `cargo test -p uvt-tests --test model`; one module: `cargo test -p uvt-tests --test model
-//! zmax::`.
+//! quantization bound, the paths named in the documentation and in comments, the
+//! documentation's copies of committed reports, and the crates' import graph). One test binary: `cargo test -p uvt-tests --test model`; one module:
+//! `cargo test -p uvt-tests --test model zmax::`.
 
 mod auto;
 mod bounded;
@@ -20,6 +20,7 @@ mod motion_unit;
 mod planar;
 mod precision;
 mod quant_check;
+mod report_copies;
 mod row_span;
 mod stages;
 mod static_unit;

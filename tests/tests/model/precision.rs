@@ -1,6 +1,6 @@
 //! Precision as a parameter: the sweep stays conservative at every precision, its errors shrink
 //! toward the default, and the stress scenes hold (no panic, no violation, differences from f64
-//! only where the derived quantization bound of `host/src/frame/compare.rs` allows).
+//! only where the derived quantization bound of `host/src/compare/bound.rs` allows).
 
 use uvt_core::{Error, Interval, Prec, Precision, Sample, SamplePattern, Triangle, Vertex};
 use uvt_host::precision::row::CONFIGS;

@@ -3,7 +3,8 @@
 //! Zmax gives bit-identical colors, depths and written counts on seeded occluding scenes (every
 //! unit, precision and bounds-tile size), on every stress and example scene and on the bench's
 //! occlusion rows, while Zmax does skip tiles; the core's loop over screen tiles (the no-heap
-//! renderer) and over 8-row bands (the host's frame) skip the same tiles. Seed: `UVT_SEED`; more cases with `UVT_EXTENSIVE=1`.
+//! renderer) and over bands of one row of bounds tiles (the host's frame) skip the same tiles.
+//! Seed: `UVT_SEED`; more cases with `UVT_EXTENSIVE=1`.
 
 use uvt_core::config::formats::DEPTH_NEAR;
 use uvt_core::config::registry::CONFIGS;
@@ -347,7 +348,7 @@ fn seeded_scenes_render_identically_with_zmax() {
 
 /// The core's frame with and without Zmax on `scene` at precision `P` with `strategy`: the same
 /// image, never more tests; returns (tested without, tested with, tiles skipped).
-fn driver_pair<P: Precision + Sync>(scene: &Scene, strategy: &str) -> (u64, u64, u64) {
+fn frame_pair<P: Precision + Sync>(scene: &Scene, strategy: &str) -> (u64, u64, u64) {
     let (tris, pattern) = scene.inputs_at::<P>().expect("scene on the grid");
     let colors = scene.colors();
     let base = RunOpts {
@@ -401,10 +402,10 @@ fn stress_and_example_scenes_render_identically_with_zmax() {
     scenes.extend(scenes_in("../host/scenes"));
     for s in &scenes {
         for name in uvt_core::bounds::registry::STRATEGIES {
-            driver_pair::<DefaultPrecision>(s, name);
+            frame_pair::<DefaultPrecision>(s, name);
         }
-        driver_pair::<Exact>(s, "laine2011");
-        driver_pair::<PlanarPrecision>(s, "laine2011");
+        frame_pair::<Exact>(s, "laine2011");
+        frame_pair::<PlanarPrecision>(s, "laine2011");
     }
 }
 
@@ -414,7 +415,7 @@ fn occlusion_rows_render_identically_and_cull() {
     use uvt_host::scene::builtin::{bench_scene, Bench, Blur};
     for row in [Blur::Static, Blur::Both] {
         let s = bench_scene(Bench::Occluded, row, true);
-        let (off, on, culled) = driver_pair::<DefaultPrecision>(&s, "laine2011");
+        let (off, on, culled) = frame_pair::<DefaultPrecision>(&s, "laine2011");
         assert!(
             culled > 0 && on < off,
             "{}: tested {off} / {on}, {culled} tiles skipped",
@@ -423,8 +424,8 @@ fn occlusion_rows_render_identically_and_cull() {
     }
 }
 
-/// The core's loop over 8×8 screen tiles (the no-heap renderer) and over 8-row bands (the
-/// host's frame) make the same Zmax decisions: on a stress scene with overlap, the same samples
+/// The core's loop over 8×8 screen tiles (the no-heap renderer) and over bands of one row of
+/// bounds tiles (the host's frame) make the same Zmax decisions: on a stress scene with overlap, the same samples
 /// tested and written, tiles skipped and Zmax operations (floors, register refreshes, tile
 /// checks) with Zmax.
 #[test]

@@ -266,7 +266,7 @@ pub fn pair_faces(pts: &[[i64; 3]], vp: Viewport, ops: &mut Ops) -> HullCoeffs {
 
 /// Whether `face` is negative at every sample position of `tile` (then the tile is culled);
 /// `false` on overflow. Counts 7 operations per face in `ops.bounds`. The direct form, kept as
-/// the reference of [`HullTiles::culls`] (`hull/reference.rs`).
+/// the reference of [`HullTiles::culls`] (`core/src/verify/hull_reference.rs`).
 pub fn face_culls(face: &HullFace, tile: PixelRect, ops: &mut Ops) -> bool {
     ops.bounds = ops.bounds.saturating_add(7);
     let one = SUBPIXEL_ONE;

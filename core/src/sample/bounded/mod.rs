@@ -1,7 +1,7 @@
 //! Stage 3, bounded — a hardware-width sample test that rounds at declared points to declared
-//! widths and then decides coverage exactly on the rounded values
-//! (`shared/notes/bounded-datapath.md` §1–2). Selected by a [`crate::config::precision::Bounded`]
-//! precision (`OFFSET_SHIFT = Some(S)`); the exact test in `sample.rs` stays the `Prec` path.
+//! widths and then decides coverage exactly on the rounded values. Selected by a
+//! [`crate::config::precision::Bounded`] precision (`OFFSET_SHIFT = Some(S)`); the exact test in
+//! `exact.rs` stays the `Prec` path.
 //!
 //! **Datapath, per sample** (raw units: clip values have 16 fraction bits; `T`, `U`, `V` raw
 //! t/u/v with 16 fraction bits; `W`, `H` the viewport; `xs`, `ys` the position in 1/256 px):
@@ -35,9 +35,9 @@
 //! **What the test decides.** With `x' = (a'·2^S + (2xs − 256W)·w)/(256W)` and `y'` likewise,
 //! `E'` and `det' = Σ E'_k·w_k` are positive multiples of the exact test's `E_k` and `det` for
 //! the triangle `P'_k = (x'_k, y'_k, w_k)` (the translation by the sample and the common scale
-//! cancel: note §1), so off the edges (every `E'_k ≠ 0`) coverage is **exactly** the exact
+//! cancel), so off the edges (every `E'_k ≠ 0`) coverage is **exactly** the exact
 //! test's on `P'`. A sample exactly on a rounded edge (`E'_k = 0`) is decided by a tie key that
-//! needs no multiplier (step 7) instead of `sample.rs`'s edge-normal rule, which would cost four
+//! needs no multiplier (step 7) instead of `exact.rs`'s edge-normal rule, which would cost four
 //! 32 × 30-bit products per edge in hardware for a case that decides only samples at distance 0
 //! from an edge. Hence:
 //! - **Watertight by construction.** Every rounding is a function of the vertex's own data and
@@ -51,7 +51,7 @@
 //!   position at (t, u) and `k` counts the half-LSB roundings on the way (lerp of x; lerp of c,
 //!   times \|U\| ≤ 1; the lens product): k = 0 static, 1 motion, 1 defocus, 3 both. Same for y
 //!   with H. `|w' − w| ≤ 1/2` raw for motion classes (lerp), 0 otherwise. Setup and the bounds
-//!   take the integer ceilings of these as the conservative epsilon (`setup.rs`, `bounds.rs`).
+//!   take the integer ceilings of these as the conservative epsilon (`setup/eps.rs`).
 //!
 //! A sample position outside the viewport (`xs ≥ 256W` or `ys ≥ 256H`) is never covered: the
 //! range proofs above assume `|2xs − 256W| ≤ 256W`, and a renderer never asks.

@@ -238,6 +238,26 @@ pub enum Cmd {
         #[arg(long, default_value = "host/report/synth.json")]
         synth: PathBuf,
     },
+    /// Refresh the documentation's copies of reports: every block of README.md and docs/*.md
+    /// between `<!-- report:begin FILE#SECTION … -->` and `<!-- report:end -->` becomes that
+    /// section of the committed report (`table-N`: its N-th Markdown table; `all`: the whole
+    /// file). With --block NAME --file PAGE, the block between `<!-- NAME:begin … -->` and
+    /// `<!-- NAME:end -->` of PAGE becomes the standard input instead (host/report/regen.sh runs
+    /// both).
+    Splice {
+        /// change nothing: list the report blocks that differ and fail if one does
+        #[arg(long, conflicts_with = "block")]
+        check: bool,
+        /// the name of a block of --file to fill from the standard input (e.g. strategy-cost)
+        #[arg(long, requires = "file")]
+        block: Option<String>,
+        /// the page holding --block
+        #[arg(long, requires = "block")]
+        file: Option<PathBuf>,
+        /// the repository root (README.md, docs/ and the reports' paths are relative to it)
+        #[arg(long, default_value = ".")]
+        root: PathBuf,
+    },
     /// Stiff and extreme cases: STE, error against f64 and conservativeness per scene file.
     Stress {
         /// folder of scene files

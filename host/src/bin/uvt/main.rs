@@ -406,6 +406,49 @@ fn run(cli: Cli) -> Result<()> {
             say(&uvt_host::fit::synth::planar_md(syn.as_deref(), &synth))?;
             say(&uvt_host::fit::synth::bounds_md(syn.as_deref(), &synth))?;
         }
+        Cmd::Splice {
+            check,
+            block,
+            file,
+            root,
+        } => match (block, file) {
+            (Some(name), Some(page)) => {
+                let mut body = String::new();
+                std::io::Read::read_to_string(&mut std::io::stdin(), &mut body)
+                    .context("reading the block from the standard input")?;
+                let changed = uvt_host::splice::splice_block(&page, &name, &body)?;
+                say(&format!(
+                    "{}: block {name} {}\n",
+                    page.display(),
+                    if changed { "updated" } else { "unchanged" }
+                ))?;
+            }
+            _ => {
+                let done = uvt_host::splice::splice_reports(&root, check)?;
+                if done.is_empty() {
+                    bail!(
+                        "no report block in README.md or docs/*.md under {}",
+                        root.display()
+                    );
+                }
+                let mut differ = 0;
+                for s in &done {
+                    differ += usize::from(s.changed);
+                    let state = match (s.changed, check) {
+                        (false, _) => "same",
+                        (true, true) => "differs",
+                        (true, false) => "updated",
+                    };
+                    say(&format!("{}: {} {state}\n", s.at, s.source))?;
+                }
+                if check && differ > 0 {
+                    bail!(
+                        "{differ} of {} report blocks differ from their reports",
+                        done.len()
+                    );
+                }
+            }
+        },
         Cmd::Stress { dir } => {
             let scenes = uvt_host::precision::sweep::stress_scenes(&dir)?;
             let rows: Vec<_> = scenes
