@@ -50,8 +50,8 @@ steps=(
   "strategy-cost;-;under 1 s (README.md);docs/bounds.md (strategy-cost block);uvt cost --strategies | uvt splice --block strategy-cost --file docs/bounds.md"
   "m4-report;qemu;24 s (docs/performance.md);docs/performance.md (m4-report block);bash demo/m4_report.sh, its tables | uvt splice --block m4-report --file docs/performance.md"
   "m4-sweep;qemu;15 s (docs/precision.md);host/report/m4.json;bash demo/m4_report.sh --sweep"
-  "m4-units;qemu;13 s with the thumbv7 builds cached (docs/units.md);host/report/m4_units.json;bash demo/m4_report.sh --units"
-  "m4-units-planar;qemu;13 s (docs/units.md);host/report/m4_units_planar.json;bash demo/m4_report.sh --units host/report/m4_units_planar.json planar-16-16-16-20"
+  "m4-units;qemu;13 s with the thumbv7 builds cached (docs/units.md);host/report/m4_units.json, docs/units.md (m4-units blocks);bash demo/m4_report.sh --units; uvt m4-units | uvt splice --block m4-units[-same] --file docs/units.md"
+  "m4-units-planar;qemu;13 s (docs/units.md);host/report/m4_units_planar.json, docs/units.md (m4-units-planar blocks);bash demo/m4_report.sh --units host/report/m4_units_planar.json planar-16-16-16-20; uvt m4-units host/report/m4_units_planar.json | uvt splice --block m4-units-planar[-same] --file docs/units.md"
   "m4-strategies;qemu;18 min from a fresh clone (docs/performance.md);host/report/m4_strategies.json;bash demo/m4_report.sh --strategies"
   "m4-zmax;qemu;about 13 min (README.md);host/report/m4_zmax.json;bash demo/m4_report.sh --zmax"
   "auto-rule;-;25 s (docs/bounds.md);core/src/bounds/auto/rule.rs;uvt auto-rule --out core/src/bounds/auto/rule.rs"
@@ -182,8 +182,24 @@ step_m4-report() {
   splice_block m4-report docs/performance.md "$tmp/m4-report.md"
 }
 step_m4-sweep() { run bash demo/m4_report.sh --sweep >&2; }
-step_m4-units() { run bash demo/m4_report.sh --units >&2; }
-step_m4-units-planar() { run bash demo/m4_report.sh --units host/report/m4_units_planar.json planar-16-16-16-20 >&2; }
+# units_tables JSON BLOCK: `uvt m4-units JSON`'s two tables into the blocks BLOCK and BLOCK-same
+# of docs/units.md (the tables are its output's first and second paragraphs).
+units_tables() {
+  local json=$1 name=$2
+  uvt_to "$tmp/$name.md" m4-units "$json"
+  run_to "$tmp/$name.1.md" awk 'BEGIN { RS = "" } NR == 1' "$tmp/$name.md"
+  run_to "$tmp/$name.2.md" awk 'BEGIN { RS = "" } NR == 2' "$tmp/$name.md"
+  splice_block "$name" docs/units.md "$tmp/$name.1.md"
+  splice_block "$name-same" docs/units.md "$tmp/$name.2.md"
+}
+step_m4-units() {
+  run bash demo/m4_report.sh --units >&2
+  units_tables host/report/m4_units.json m4-units
+}
+step_m4-units-planar() {
+  run bash demo/m4_report.sh --units host/report/m4_units_planar.json planar-16-16-16-20 >&2
+  units_tables host/report/m4_units_planar.json m4-units-planar
+}
 step_m4-strategies() { run bash demo/m4_report.sh --strategies >/dev/null; }
 step_m4-zmax() { run bash demo/m4_report.sh --zmax >/dev/null; }
 step_auto-rule() {

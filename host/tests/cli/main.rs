@@ -8,6 +8,7 @@ mod cost_text;
 mod diff_image;
 mod fit_cli;
 mod focus_range;
+mod m4_units_tables;
 mod planar_fit;
 mod precision_cli;
 mod scene_files;

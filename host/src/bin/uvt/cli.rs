@@ -222,6 +222,14 @@ pub enum Cmd {
         #[arg(long, default_value = "4G")]
         mem_budget: String,
     },
+    /// The Cortex-M4F unit programs' tables of docs/units.md from `m4_units.json` (`bash
+    /// demo/m4_report.sh --units` writes it): flash, RAM, stack and instructions per call of
+    /// each unit, against the full unit, and the full unit on each narrower unit's triangles.
+    M4Units {
+        /// the report (`host/report/m4_units_planar.json` for the planar configuration's)
+        #[arg(default_value = "host/report/m4_units.json")]
+        file: PathBuf,
+    },
     /// The unit-variant table: per unit flash, RAM and M4F instructions (from m4_units.json),
     /// the sample test's multiplier estimate restricted to the unit's stages and the RTL unit's
     /// synthesized counts (from synth.json); then the static-only unit at the planar static

@@ -388,6 +388,7 @@ fn run(cli: Cli) -> Result<()> {
                 );
             }
         }
+        Cmd::M4Units { file } => say(&uvt_host::fit::m4::programs_md(&file)?)?,
         Cmd::Units {
             config,
             m4_units,
