@@ -58,11 +58,11 @@ steps=(
   "synth;yosys;the committed entries took 5413 s (four configurations), 2076 s (four units at -j 2), 67 s (planar) and 781 s + 217 s (bounds unit): about 2 h 20 min (docs/rtl.md);host/report/synth.json;bash vectors/rtl/synth.sh -j 2"
   "pnr;yosys nextpnr;psample 180 s, bounds 1875 s and bsample-lut17 2131 s with synthesis (README.md), psample-pipe1 250 s and bounds-pipe1 1513 s of P&R (docs/rtl.md): about 1 h 40 min;host/report/pnr.json;bash vectors/rtl/pnr.sh psample psample-pipe1 bounds bounds-pipe1 bsample-lut17"
   "precision;-;30 s after the release build (docs/precision.md);host/report/precision-quick/precision.{md,json,svg};uvt precision --quick --out host/report/precision-quick"
-  "bench-ste-quick;-;8m20s (docs/bounds.md);host/report/bench-ste-quick.{md,json};uvt bench-ste --quick --tile-sweep --json host/report/bench-ste-quick.json > host/report/bench-ste-quick.md"
-  "bench-ste-full;-;23m59s (docs/bounds.md);host/report/bench-ste-full.{md,json};uvt bench-ste --no-limit --json host/report/bench-ste-full.json > host/report/bench-ste-full.md"
-  "bench-zmax-quick;-;17 s (docs/performance.md);host/report/bench-zmax-quick.{md,json};uvt bench-zmax --quick --json host/report/bench-zmax-quick.json > host/report/bench-zmax-quick.md"
-  "bench-zmax-full;-;7m05s (docs/performance.md);host/report/bench-zmax-full.{md,json};uvt bench-zmax --json host/report/bench-zmax-full.json > host/report/bench-zmax-full.md"
-  "converge;-;24 s (docs/performance.md);host/report/converge/converge.{md,json,svg};uvt converge --out host/report/converge"
+  "bench-ste-quick;-;6m46s (docs/bounds.md);host/report/bench-ste-quick.{md,json};uvt bench-ste --quick --tile-sweep --json host/report/bench-ste-quick.json > host/report/bench-ste-quick.md"
+  "bench-ste-full;-;20m29s (docs/bounds.md);host/report/bench-ste-full.{md,json};uvt bench-ste --no-limit --json host/report/bench-ste-full.json > host/report/bench-ste-full.md"
+  "bench-zmax-quick;-;12 s (docs/performance.md);host/report/bench-zmax-quick.{md,json};uvt bench-zmax --quick --json host/report/bench-zmax-quick.json > host/report/bench-zmax-quick.md"
+  "bench-zmax-full;-;4m49s (docs/performance.md);host/report/bench-zmax-full.{md,json};uvt bench-zmax --json host/report/bench-zmax-full.json > host/report/bench-zmax-full.md"
+  "converge;-;15 s (docs/performance.md);host/report/converge/converge.{md,json,svg};uvt converge --out host/report/converge"
   "docs;-;not recorded (under 1 s);README.md, docs/*.md (report blocks);uvt splice"
 )
 
