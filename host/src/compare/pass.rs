@@ -11,8 +11,13 @@
 //!   primitive's error statement ([`crate::config::dq`]): stated in pixels, it must lie within
 //!   the primitive's own d_q of an edge (*beyond statement* must be 0) and, with a tolerance,
 //!   within it; stated in clip space only, it is counted with its backward error δ and, with a
-//!   tolerance, must be explained by a vertex move of the clip tolerance; without a statement it
+//!   tolerance, must be explained by a vertex move of the clip tolerance and the primitive's
+//!   δ must be small against its own extent (`Statement::informative`); without a statement it
 //!   fails;
+//! - **per primitive, what a user sees**: the samples the core and the reference cover; a
+//!   primitive one of them draws and the other does not is counted (*lost*, *gained*), and every
+//!   primitive with a failing decision is listed by index with its covered samples on both sides
+//!   and why it fails ([`PrimFail`]), so a report can name it;
 //! - **the depth** of a sample both cover (LSBs of the I8F24 depth);
 //! - **conservativeness** of the bounds strategy at every bounds-tile size asked: a sample the
 //!   core covers must be admitted by its tile — row span, tile step and per-sample predicate,
@@ -134,8 +139,42 @@ pub struct Comparison {
     pub depth_lsb_sum: f64,
     /// samples the depth error was measured on
     pub depth_n: u64,
+    /// differing decisions of primitives stated in clip space only whose δ is not small against
+    /// the primitive's own extent (`Statement::informative`: the statement says nothing)
+    pub differ_clip_uninformative: u64,
+    /// samples the core covers, summed over the primitives
+    pub core_covered: u64,
+    /// samples the reference covers, summed over the primitives
+    pub reference_covered: u64,
+    /// primitives the reference draws (covers a sample of) and the core does not
+    pub lost: u64,
+    /// primitives the core draws and the reference does not
+    pub gained: u64,
     /// conservativeness per bounds-tile size, in the order asked
     pub tiles: Vec<TileCheck>,
+    /// every primitive with a failing decision, in scene order
+    pub failing: Vec<PrimFail>,
+}
+
+/// A primitive with a failing decision ([`Comparison::failing`]).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct PrimFail {
+    /// its index in the scene
+    pub primitive: usize,
+    /// its statement: `"pixels"`, `"clip"` or `"none"`
+    pub stated: &'static str,
+    /// d_q (px) or δ (clip units) of that statement
+    pub bound: f64,
+    /// samples the core covers
+    pub core_covered: u64,
+    /// samples the reference covers
+    pub reference_covered: u64,
+    /// its differing decisions
+    pub differ: u64,
+    /// of those, failing (beyond the bound, its statement or the tolerance)
+    pub failing: u64,
+    /// why, in words
+    pub why: Vec<&'static str>,
 }
 
 impl Comparison {
@@ -167,6 +206,14 @@ impl Comparison {
             (&mut self.differ_clip, o.differ_clip),
             (&mut self.beyond_tolerance, o.beyond_tolerance),
             (&mut self.beyond_tolerance_clip, o.beyond_tolerance_clip),
+            (
+                &mut self.differ_clip_uninformative,
+                o.differ_clip_uninformative,
+            ),
+            (&mut self.core_covered, o.core_covered),
+            (&mut self.reference_covered, o.reference_covered),
+            (&mut self.lost, o.lost),
+            (&mut self.gained, o.gained),
             (&mut self.depth_n, o.depth_n),
         ];
         for (a, b) in sums {
@@ -185,6 +232,7 @@ impl Comparison {
             *a = a.max(b);
         }
         self.depth_lsb_sum += o.depth_lsb_sum;
+        self.failing.extend(o.failing.iter().cloned());
         for (a, b) in self.tiles.iter_mut().zip(&o.tiles) {
             a.violations += b.violations;
             a.slack_n += b.slack_n;
@@ -199,7 +247,7 @@ impl Comparison {
 
     /// One differing decision at `distance` px from the nearest edge, its bound check `c`, the
     /// check of the clip tolerance `within` (with a tolerance and a clip statement), under
-    /// statement `st`.
+    /// statement `st`. Whether it fails (beyond the bound, its statement or the tolerance).
     fn differs(
         &mut self,
         core_covers: bool,
@@ -208,7 +256,13 @@ impl Comparison {
         st: Option<Statement>,
         tol: Option<Tolerance>,
         within: impl FnOnce(f64) -> f64,
-    ) {
+    ) -> bool {
+        let before = [
+            self.beyond_bound,
+            self.beyond_statement,
+            self.beyond_tolerance,
+            self.beyond_tolerance_clip,
+        ];
         self.differ += 1;
         if core_covers {
             self.fixed_only += 1;
@@ -234,16 +288,26 @@ impl Comparison {
                     self.beyond_tolerance += u64::from(distance > t.px);
                 }
             }
-            Some(Statement { clip, px: None }) => {
+            Some(s @ Statement { px: None, .. }) => {
                 self.differ_clip += 1;
-                self.max_clip = self.max_clip.max(clip);
+                self.max_clip = self.max_clip.max(s.clip);
                 self.max_distance_clip_px = self.max_distance_clip_px.max(distance);
+                self.differ_clip_uninformative += u64::from(!s.informative());
                 if let Some(t) = tol {
-                    self.beyond_tolerance_clip += u64::from(within(t.clip) > 1.0);
+                    // A statement that says nothing meets no tolerance (`Statement::meets`).
+                    self.beyond_tolerance_clip +=
+                        u64::from(!s.informative() || within(t.clip) > 1.0);
                 }
             }
             None => self.beyond_statement += 1,
         }
+        before
+            != [
+                self.beyond_bound,
+                self.beyond_statement,
+                self.beyond_tolerance,
+                self.beyond_tolerance_clip,
+            ]
     }
 }
 
@@ -275,7 +339,7 @@ where
         let mut d = empty.clone();
         let statement = spec.statements.get(i).copied().flatten();
         if let (Some(st), Some(ct)) = (tris.get(i), core.get(i)) {
-            one::<P, B>(st, ct, vp, pat, spec, statement, &mut d);
+            one::<P, B>(i, st, ct, vp, pat, spec, statement, &mut d);
         }
         d
     };
@@ -309,8 +373,10 @@ fn cell_of(px: u16, py: u16, fp: PixelRect, bt: u16) -> PixelRect {
     .intersect(&fp)
 }
 
-/// One triangle of [`compare`].
+/// One triangle of [`compare`], primitive `index` of the scene.
+#[allow(clippy::too_many_arguments)]
 fn one<P: Precision, B: BoundsStrategy>(
+    index: usize,
     st: &SceneTri,
     ct: &Triangle,
     vp: Viewport,
@@ -337,6 +403,8 @@ fn one<P: Precision, B: BoundsStrategy>(
     let full = Setup::unculled::<P>(ct, vp);
     let eps = eps_of(&full);
     let r = &spec.rounding;
+    let mut covered = [0u64; 2];
+    let mut failing = 0u64;
     let mut tiles = Vec::with_capacity(spec.tiles.len());
     for py in region.y0..region.y1 {
         for px in region.x0..region.x1 {
@@ -392,13 +460,22 @@ fn one<P: Precision, B: BoundsStrategy>(
                 let (x, y) = (f64::from(px) + e[0], f64::from(py) + e[1]);
                 let hr = reference::sample::sample_test(st, v, x, y, e[2], e[3], e[4]);
                 d.compared += 1;
+                covered[0] += u64::from(hf.is_some());
+                covered[1] += u64::from(hr.is_some());
                 if hf.is_some() != hr.is_some() {
                     let dist = reference::sample::edge_distance_px(st, v, x, y, e[2], e[3], e[4]);
                     let c = check_sample_eps(st, v, x, y, e[2], e[3], e[4], r, eps);
                     let within = |clip: f64| {
                         check_sample_within(st, v, x, y, e[2], e[3], e[4], r.sub, [clip; 3]).ratio
                     };
-                    d.differs(hf.is_some(), dist, &c, statement, spec.tolerance, within);
+                    failing += u64::from(d.differs(
+                        hf.is_some(),
+                        dist,
+                        &c,
+                        statement,
+                        spec.tolerance,
+                        within,
+                    ));
                 }
                 if let (Some(h), Some(z)) = (hf, hr) {
                     if h.depth != DEPTH_FAR && z.abs() < 128.0 {
@@ -432,4 +509,92 @@ fn one<P: Precision, B: BoundsStrategy>(
             }
         }
     }
+    per_primitive(
+        d,
+        index,
+        statement,
+        spec.tolerance.is_some(),
+        covered,
+        failing,
+    );
+}
+
+/// The per-primitive verdict of [`one`] (module docs): `d` holds primitive `index`'s counts alone,
+/// `covered` its samples covered by the core and by the reference.
+fn per_primitive(
+    d: &mut Comparison,
+    index: usize,
+    st: Option<Statement>,
+    tolerance: bool,
+    covered: [u64; 2],
+    failing: u64,
+) {
+    d.core_covered += covered[0];
+    d.reference_covered += covered[1];
+    d.lost += u64::from(covered[1] > 0 && covered[0] == 0);
+    d.gained += u64::from(covered[0] > 0 && covered[1] == 0);
+    let clip_says_nothing = tolerance && d.differ_clip_uninformative > 0;
+    let why: Vec<&'static str> = [
+        (d.beyond_bound > 0, "differs where no rounding explains it"),
+        (d.beyond_statement > 0, "differs beyond its statement"),
+        (
+            d.beyond_tolerance > 0,
+            "differs farther than the tolerance from an edge",
+        ),
+        (
+            clip_says_nothing,
+            "its clip statement says nothing: δ above 1/16 of its extent",
+        ),
+        (
+            d.beyond_tolerance_clip > 0 && !clip_says_nothing,
+            "differs beyond a vertex move of the clip tolerance",
+        ),
+    ]
+    .into_iter()
+    .filter_map(|(f, w)| f.then_some(w))
+    .collect();
+    if why.is_empty() {
+        return;
+    }
+    let (stated, bound) = match st {
+        Some(Statement { px: Some(dq), .. }) => ("pixels", dq),
+        Some(s) => ("clip", s.clip),
+        None => ("none", f64::NAN),
+    };
+    d.failing.push(PrimFail {
+        primitive: index,
+        stated,
+        bound,
+        core_covered: covered[0],
+        reference_covered: covered[1],
+        differ: d.differ,
+        failing,
+        why,
+    });
+}
+
+/// The primitives a comparison fails on ([`Comparison::failing`]), named (at most the first 20), as Markdown.
+pub fn failing_md(failing: &[PrimFail]) -> String {
+    if failing.is_empty() {
+        return String::new();
+    }
+    let mut s = format!(
+        "\n{} primitive(s) fail{}:\n\n| primitive | stated in | d_q px / δ clip units | covered (configuration / f64) | differing | failing | why |\n|---|---|---|---|---|---|---|\n",
+        failing.len(),
+        if failing.len() > 20 { " (the first 20)" } else { "" }
+    );
+    for p in failing.iter().take(20) {
+        s += &format!(
+            "| {} | {} | {:.3e} | {} / {} | {} | {} | {} |\n",
+            p.primitive,
+            p.stated,
+            p.bound,
+            p.core_covered,
+            p.reference_covered,
+            p.differ,
+            p.failing,
+            p.why.join("; ")
+        );
+    }
+    s
 }

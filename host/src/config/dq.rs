@@ -40,15 +40,33 @@
 //!   crossers and w ≤ 0 vertices included. It is *measured* by `compare.rs`'s per-sample check
 //!   (`check_sample_eps`): a differing decision that no edge value or det within its Hadamard
 //!   bound for a δ-perturbation explains is counted "beyond bound" (must be 0).
-//! - *Screen space (d_q px), where it says something.* When every vertex stays in front of the
-//!   camera by more than its Δw (above) and the resulting d_q is at most the viewport's diagonal
-//!   ([`pixel_limit`]), every differing decision lies within d_q px of an edge. A larger d_q is
-//!   finite but meaningless (a displacement bound larger than the screen): `host/stress/domain_edge.json`'s
-//!   second triangle has a vertex at w = 2^-16 (one LSB) and x = 8191.99, so its projection
-//!   x/w ≈ 5·10^8 moves by ≈ 2.5·10^8 under a half-LSB w rounding — 8·10^11 px on the 2048-px
-//!   viewport, although that vertex is "at infinity" in one direction either way and the
-//!   per-sample distances stay below 3·10^-3 px. Such a primitive, and one whose vertex can
-//!   reach the camera plane, is stated in clip space only; no report says "no bound".
+//! - *Screen space (d_q px), wherever it is defined.* When every vertex stays in front of the
+//!   camera by more than its Δw (above), every differing decision lies within d_q px of an edge,
+//!   and the primitive is held to that figure **however large it is**: a configuration whose
+//!   d_q leaves the screen does not thereby escape to the clip statement. (Before issue 50 a d_q
+//!   beyond the viewport's diagonal moved the primitive to the clip statement, and a
+//!   configuration bad enough to lose a triangle could "meet" a pixel tolerance that way:
+//!   one static triangle at w = 0.00166, 0.003 clip units across, lost all its 8454 samples at
+//!   `bounded-12-12-12-24` and its confirmation passed.) A d_q beyond the tolerance fails it:
+//!   `host/stress/domain_edge.json`'s second triangle has a vertex at w = 2^-16 (one LSB) and
+//!   x = 8191.99, so its projection x/w ≈ 5·10^8 moves by ≈ 2.5·10^8 under a half-LSB w
+//!   rounding — d_q 1.17·10^12 px on the 2048-px viewport (the x and y moves together) — and no configuration meets a pixel
+//!   tolerance for it, although the per-sample distances stay below 3·10^-3 px (the figure
+//!   bounds every point of the edge, the on-screen ones and the one at "infinity" alike).
+//! - *Clip space only*, where the pixel form is undefined: a vertex within its Δw of the camera
+//!   plane (or behind it). Such a primitive is held to its backward error δ, and δ must be
+//!   **small against the primitive itself** ([`Statement::informative`]): at most
+//!   [`CLIP_SHARE`] = 1/16 of its clip extent ([`extent`]: a lower bound, over the shutter and
+//!   the lens, of its longest edge in (x, y, w)). A triangle whose every vertex may move by more
+//!   than its own size is not described by "the exact decision of a nearby triangle": at
+//!   δ ≥ half its longest edge the nearby triangle may be a point, which draws nothing. 1/16 keeps
+//!   the nearby triangle's longest edge within 1/8 of its length and its direction within 7.2°.
+//!   A configuration whose δ is not that small does not meet any tolerance for the primitive,
+//!   and every differing decision of it fails a confirmation with a tolerance.
+//!
+//! **Meeting a tolerance** is one rule ([`Statement::meets`]) that `uvt fit`'s selection and its
+//! confirmation both read: a primitive stated in pixels meets τ when d_q ≤ τ; one stated in clip
+//! space only when δ ≤ τ_c and its statement is informative.
 //!
 //! A tolerance given in pixels (`uvt fit --tolerance τ`) has the clip form
 //! `τ_c = 2τ/max(W, H)` ([`clip_tolerance`]): the clip displacement that moves a vertex at w = 1
@@ -107,9 +125,39 @@ pub struct Statement {
     /// with every vertex moved by at most this (always finite)
     pub clip: f64,
     /// d_q, px: every differing decision lies within this distance of an edge; `None` where
-    /// only the clip statement applies (a vertex can reach the camera plane, or d_q exceeds
-    /// [`pixel_limit`])
+    /// only the clip statement applies (a vertex can reach the camera plane)
     pub px: Option<f64>,
+    /// the primitive's own clip extent ([`extent`]), against which δ must be small
+    pub extent: f64,
+}
+
+/// The largest share of a primitive's clip extent its backward error δ may be for the clip
+/// statement to say something (module docs).
+pub const CLIP_SHARE: f64 = 1.0 / 16.0;
+
+impl Statement {
+    /// The clip statement says something about this primitive: δ ≤ [`CLIP_SHARE`] × its extent
+    /// (module docs). Always checked; it decides only for primitives stated in clip space only.
+    pub fn informative(&self) -> bool {
+        self.clip <= CLIP_SHARE * self.extent
+    }
+
+    /// δ as a share of the primitive's extent (infinite for a zero extent).
+    pub fn share(&self) -> f64 {
+        if self.extent > 0.0 {
+            self.clip / self.extent
+        } else {
+            f64::INFINITY
+        }
+    }
+
+    /// The one rule of meeting tolerance `tol` (module docs, "Meeting a tolerance").
+    pub fn meets(&self, tol: &Tolerance) -> bool {
+        match self.px {
+            Some(d) => d <= tol.px,
+            None => self.clip <= tol.clip && self.informative(),
+        }
+    }
 }
 
 /// The statement of one primitive with rounding `r` and datapath perturbation `eps` (raw clip
@@ -117,8 +165,38 @@ pub struct Statement {
 pub fn statement(tri: &SceneTri, vp: (u16, u16), r: &Rounding, eps: [f64; 3]) -> Statement {
     Statement {
         clip: backward(tri, r, eps),
-        px: prim_dq(tri, vp, r, eps).filter(|d| *d <= pixel_limit(vp)),
+        px: prim_dq(tri, vp, r, eps),
+        extent: extent(tri),
     }
+}
+
+/// The primitive's clip extent (clip units; module docs): a lower bound, at every (t, u, v), on
+/// its longest edge in (x, y, w). Per edge: the edge vector at the lens centre is linear in t,
+/// so its smallest length is the distance of the origin from a segment; the lens offset adds
+/// `(u·Δc, v·Δc, 0)` with |u|, |v| ≤ 1, at most `√2·|Δc|`, and |Δc| (linear in t) is largest at
+/// an end. The largest of the three edges' bounds, 0 when none is positive.
+pub fn extent(tri: &SceneTri) -> f64 {
+    let mut e: f64 = 0.0;
+    for k in 0..3 {
+        let l = (k + 1) % 3;
+        let at = |v: &[[f64; 5]; 3], f: usize| v[l][f] - v[k][f];
+        let d0 = [0, 1, 3].map(|f| at(&tri.t0, f));
+        let d1 = [0, 1, 3].map(|f| at(&tri.t1, f));
+        let dd = [0, 1, 2].map(|i| d1[i] - d0[i]);
+        let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        let dd2 = dot(dd, dd);
+        // The t in [0, 1] nearest the origin (0 when the edge does not change).
+        let t = if dd2 > 0.0 {
+            (-dot(d0, dd) / dd2).clamp(0.0, 1.0)
+        } else {
+            0.0
+        };
+        let p = [0, 1, 2].map(|i| d0[i] + t * dd[i]);
+        let shortest = dot(p, p).sqrt();
+        let dc = at(&tri.t0, 4).abs().max(at(&tri.t1, 4).abs());
+        e = e.max(shortest - std::f64::consts::SQRT_2 * dc);
+    }
+    e.max(0.0)
 }
 
 /// The backward error δ (clip units) of one primitive: the largest vertex perturbation
@@ -136,9 +214,14 @@ pub fn backward(tri: &SceneTri, r: &Rounding, eps: [f64; 3]) -> f64 {
     d
 }
 
-/// The largest d_q (px) stated in screen space: the viewport's diagonal (module docs).
-pub fn pixel_limit(vp: (u16, u16)) -> f64 {
-    f64::from(vp.0).hypot(f64::from(vp.1))
+/// A distance in pixels as reports print it: 6 decimals, or 4 significant digits from 10^4 px
+/// on (a d_q is held however large; module docs).
+pub fn px_text(d: f64) -> String {
+    if d < 1e4 {
+        format!("{d:.6}")
+    } else {
+        format!("{d:.3e}")
+    }
 }
 
 /// The clip form of a tolerance of `px` pixels on viewport `vp` (module docs).

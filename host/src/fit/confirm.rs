@@ -1,7 +1,8 @@
 //! The confirming half of `uvt fit` ([`super::select`] has the selection, [`super::search`] the
 //! strategy and tile-size search): the confirmation render — a brute-force pass over every
 //! footprint sample (conservativeness of the chosen strategy and tile size, decisions against the
-//! f64 reference, `compare.rs`'s rigorous per-sample check) and the chosen unit's frame against
+//! f64 reference, `compare.rs`'s rigorous per-sample check, and per primitive what a user sees:
+//! its covered samples against the reference's, every primitive with a failing decision named) and the chosen unit's frame against
 //! the full unit's, sample by sample — the general pipeline on the unit and, where the unit has
 //! its own, the pipeline its `uvt_core::Renderer<B, N, P, U>` runs — each the core's own loop
 //! ([`crate::frame::core_frame`]).
@@ -15,7 +16,7 @@ use uvt_core::{
     PipelineOf, Precision, Rgb888, SamplePattern, Select, StaticOnly, Triangle, Unit,
 };
 
-use crate::compare::pass::{compare, Spec};
+use crate::compare::pass::{compare, PrimFail, Spec};
 use crate::config::dq::{Statement, Tolerance};
 use crate::config::rounding::Rounding;
 use crate::frame::core_frame::run_core;
@@ -57,6 +58,15 @@ pub struct Confirm {
     /// their largest distance (px) from the nearest edge (measured; the clip statement does not
     /// bound it)
     pub max_distance_clip_px: f64,
+    /// of those, of primitives whose δ is not small against their own extent (each fails)
+    pub differ_clip_uninformative: u64,
+    /// samples covered by the configuration and by the f64 reference
+    pub covered: [u64; 2],
+    /// primitives the reference draws and the configuration does not, and the other way round
+    pub lost_gained: [u64; 2],
+    /// every primitive with a failing decision, named (`crate::compare::pass::PrimFail`; must
+    /// be empty)
+    pub failing: Vec<PrimFail>,
     /// the chosen unit's renderer produced the full unit's colour at every sample, the same
     /// resolved image and the same tested / covered counts
     pub identical_to_full: Option<bool>,
@@ -91,6 +101,7 @@ impl Confirm {
     /// Every confirmation holds.
     pub fn ok(&self) -> bool {
         self.violations == 0
+            && self.failing.is_empty()
             && self.beyond_bound == 0
             && self.beyond_statement == 0
             && self.beyond_tolerance == 0
@@ -299,6 +310,10 @@ where
         beyond_tolerance_clip: c.beyond_tolerance_clip,
         max_clip: c.max_clip,
         max_distance_clip_px: c.max_distance_clip_px,
+        differ_clip_uninformative: c.differ_clip_uninformative,
+        covered: [c.core_covered, c.reference_covered],
+        lost_gained: [c.lost, c.gained],
+        failing: c.failing,
         ..Confirm::default()
     }
 }

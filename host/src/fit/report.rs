@@ -15,7 +15,8 @@ use crate::scene::file::Scene;
 use super::confirm::{confirm, Confirm};
 use super::m4::{M4Data, M4Unit};
 use super::search::{search_strategies, StratCost};
-use crate::config::dq::Tolerance;
+use crate::compare::pass::failing_md;
+use crate::config::dq::{px_text, Tolerance};
 
 use super::select::{classes, config_fits, narrowest, ConfigFit, DEFAULT_TOLERANCE_PX};
 
@@ -42,7 +43,7 @@ pub struct Fit {
     /// d_q of every configuration
     pub configs: Vec<ConfigFit>,
     /// primitives stated in clip space only at the chosen configuration (a vertex can reach the
-    /// camera plane, or d_q beyond the viewport's diagonal; `crate::config::dq`)
+    /// camera plane; `crate::config::dq`)
     pub clip_primitives: Vec<usize>,
     /// static triangles that the planar configuration's vertex rounding makes degenerate
     /// (culled; the default does not cull them) and the static triangles:
@@ -227,7 +228,7 @@ pub fn fit_md(f: &Fit) -> String {
         s += &format!("| {n} | {c} |\n");
     }
     s += &format!(
-        "\nSmallest unit accepting every class: **{}**.\n\n## Configuration\n\nError statement per configuration (`host/src/config/dq.rs`): every primitive has a backward error δ in clip units; where it says something, also a documented error distance d_q in pixels. Largest d_q over the primitives stated in pixels, largest δ over those stated in clip space only (–: none), sample-test cost of the {} unit:\n\n| configuration | d_q px | worst primitive | δ clip units (clip-space primitives) | worst primitive | meets {} px / {:.3e} clip | DSP48E1 | Σ bit-products |\n|---|---|---|---|---|---|---|---|\n",
+        "\nSmallest unit accepting every class: **{}**.\n\n## Configuration\n\nError statement per configuration (`host/src/config/dq.rs`): every primitive has a backward error δ in clip units; wherever every vertex stays in front of the camera, also a documented error distance d_q in pixels, which it is held to however large. Largest d_q over the primitives stated in pixels, largest δ over those stated in clip space only and δ's largest share of such a primitive's own clip extent (at most 1/16 says something; –: none), sample-test cost of the {} unit:\n\n| configuration | d_q px | worst primitive | δ clip units (clip-space primitives) | worst primitive | δ / extent | meets {} px / {:.3e} clip | DSP48E1 | Σ bit-products |\n|---|---|---|---|---|---|---|---|---|\n",
         f.unit, f.unit, f.tolerance_px, f.tolerance_clip
     );
     for c in &f.configs {
@@ -237,18 +238,19 @@ pub fn fit_md(f: &Fit) -> String {
         );
         let idx = |i: Option<usize>| i.map_or("–".into(), |i| i.to_string());
         s += &format!(
-            "| {} | {} | {} | {} | {} | {} | {d} | {b} |\n",
+            "| {} | {} | {} | {} | {} | {} | {} | {d} | {b} |\n",
             c.config,
-            c.d_q_px.map_or("–".into(), |d| format!("{d:.6}")),
+            c.d_q_px.map_or("–".into(), px_text),
             idx(c.worst_primitive),
             c.clip.map_or("–".into(), |d| format!("{d:.3e}")),
             idx(c.worst_clip_primitive),
+            c.clip_share.map_or("–".into(), |d| format!("{d:.3e}")),
             if c.meets { "yes" } else { "no" }
         );
     }
     if !f.clip_primitives.is_empty() {
         s += &format!(
-            "\nPrimitives stated in clip space only at {} (a vertex can reach the camera plane, or d_q would exceed the viewport's diagonal): {:?}. Each of their decisions equals the exact decision of the primitive with every vertex moved by at most its δ.\n",
+            "\nPrimitives stated in clip space only at {} (a vertex can reach the camera plane): {:?}. Each of their decisions equals the exact decision of the primitive with every vertex moved by at most its δ, which is at most 1/16 of the primitive's own clip extent.\n",
             f.config, f.clip_primitives
         );
     }
@@ -317,6 +319,16 @@ pub fn fit_md(f: &Fit) -> String {
         yes(c.beyond_tolerance_clip == 0)
     );
     s += &format!(
+        "| primitives with a decision beyond the bound, their statement or the tolerance (named below); covered samples {} against the f64 reference's {}; primitives lost {}, drawn where the reference draws nothing {} | {} of {} | {} |\n",
+        c.covered[0],
+        c.covered[1],
+        c.lost_gained[0],
+        c.lost_gained[1],
+        c.failing.len(),
+        f.class_counts.iter().sum::<u64>(),
+        yes(c.failing.is_empty())
+    );
+    s += &format!(
         "| decisions ≠ f64 no rounding explains (`host/src/compare/bound.rs` check) | {} of {} compared | {} |\n",
         c.beyond_bound,
         c.compared,
@@ -341,6 +353,7 @@ pub fn fit_md(f: &Fit) -> String {
             yes(x.identical_to_full == Some(true))
         );
     }
+    s += &failing_md(&c.failing);
     let (m, d) = (&f.sample_cost, &f.sample_cost_full_default);
     s += &format!(
         "\n## Saved against the full unit at {DEFAULT}\n\n| figure | {} unit, {} | full unit, {DEFAULT} | saved |\n|---|---|---|---|\n| sample test DSP48E1 (model) | {} | {} | {} |\n| sample test MULT18X18D (model) | {} | {} | {} |\n| sample test Σ bit-products | {} | {} | {} |\n",

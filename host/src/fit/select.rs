@@ -11,10 +11,12 @@
 //! A tolerance below the exact 16-fraction-bit configuration's d_q is unreachable (error).
 //!
 //! **Both forms of the statement** (`crate::config::dq`). A configuration meets the tolerance
-//! when every primitive stated in pixels has d_q ≤ τ and every primitive stated in clip space
-//! only (a vertex can reach the camera plane, or d_q beyond the viewport's diagonal) has a
-//! backward error δ ≤ τ_c, the clip form of the tolerance (`2τ/max(W, H)` unless
-//! `--clip-tolerance` gives it). No primitive is left without a requirement.
+//! when every primitive meets it by the one rule of `crate::config::dq::Statement::meets`: one
+//! stated in pixels has d_q ≤ τ, however large d_q is; one stated in clip space only (a vertex
+//! can reach the camera plane) has a backward error δ ≤ τ_c, the clip form of the tolerance
+//! (`2τ/max(W, H)` unless `--clip-tolerance` gives it), and δ at most 1/16 of its own clip
+//! extent (a larger δ says nothing about the primitive). No primitive is left without a
+//! requirement.
 //!
 //! **Narrowest configuration**: the bounded configurations of the sweep and the planar static
 //! configuration (`uvt_core::config::registry::PLANAR`, `crate::config::planar_static`: its own per-primitive d_q,
@@ -28,7 +30,7 @@ use serde::Serialize;
 use uvt_core::config::registry::{self, EXACT, PLANAR};
 use uvt_core::Class;
 
-use crate::config::dq::{eps_clip, statement, Statement, Tolerance};
+use crate::config::dq::{eps_clip, px_text, statement, Statement, Tolerance};
 use crate::config::planar_static;
 use crate::config::rounding::Rounding;
 use crate::config::units::{unit_sample_cost, UnitCost};
@@ -54,6 +56,10 @@ pub struct ConfigFit {
     pub clip: Option<f64>,
     /// the primitive attaining it
     pub worst_clip_primitive: Option<usize>,
+    /// largest δ as a share of the primitive's own clip extent over the primitives stated in
+    /// clip space only (`None`: there are none); above 1/16 the statement says nothing
+    /// (`crate::config::dq::Statement::informative`)
+    pub clip_share: Option<f64>,
     /// the chosen unit's sample-test cost (`None`: exact, not modelled per unit)
     pub unit_cost: Option<UnitCost>,
     /// meets the tolerance in both forms
@@ -75,8 +81,11 @@ impl ConfigFit {
         let (mut d_q_px, mut worst_primitive) = (None::<f64>, None);
         let (mut clip, mut worst_clip_primitive) = (None::<f64>, None);
         let mut clip_primitives = Vec::new();
+        let mut clip_share = None::<f64>;
+        let mut meets = true;
         for (i, st) in statements.iter().enumerate() {
             let Some(st) = st else { continue };
+            meets &= st.meets(tol);
             match st.px {
                 Some(d) if d_q_px.map_or(true, |m| d > m) => {
                     d_q_px = Some(d);
@@ -85,6 +94,7 @@ impl ConfigFit {
                 Some(_) => {}
                 None => {
                     clip_primitives.push(i);
+                    clip_share = Some(clip_share.map_or(st.share(), |m| m.max(st.share())));
                     if clip.map_or(true, |m| st.clip > m) {
                         clip = Some(st.clip);
                         worst_clip_primitive = Some(i);
@@ -92,13 +102,13 @@ impl ConfigFit {
                 }
             }
         }
-        let meets = d_q_px.map_or(true, |d| d <= tol.px) && clip.map_or(true, |c| c <= tol.clip);
         ConfigFit {
             config,
             d_q_px,
             worst_primitive,
             clip,
             worst_clip_primitive,
+            clip_share,
             unit_cost,
             meets,
             clip_primitives,
@@ -195,12 +205,14 @@ pub fn narrowest<'a>(fits: &'a [ConfigFit], tol: &Tolerance) -> Result<&'a Confi
         exact.config,
         EXACT.pos(),
         exact.d_q_px.map_or("no primitive in pixels".into(), |d| format!(
-            "a documented error distance of {d:.6} px (primitive {})",
+            "a documented error distance of {} px (primitive {})",
+            px_text(d),
             exact.worst_primitive.map_or("?".into(), |i| i.to_string())
         )),
         exact.clip.map_or("no primitive in clip space only".into(), |c| format!(
-            "a backward error of {c:.3e} clip units (primitive {}, stated in clip space only)",
-            exact.worst_clip_primitive.map_or("?".into(), |i| i.to_string())
+            "a backward error of {c:.3e} clip units (primitive {}, stated in clip space only; δ up to {:.3} of a primitive's own clip extent, at most 1/16 says something)",
+            exact.worst_clip_primitive.map_or("?".into(), |i| i.to_string()),
+            exact.clip_share.unwrap_or(0.0)
         )),
     )
 }

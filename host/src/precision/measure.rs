@@ -57,6 +57,9 @@ pub(super) fn errors<P: Precision + Sync>(
         acc.beyond_dq += c.beyond_statement;
         acc.differ_clip += c.differ_clip;
         acc.max_clip = acc.max_clip.max(c.max_clip);
+        acc.differ_clip_uninformative += c.differ_clip_uninformative;
+        acc.prims_lost_gained[0] += c.lost;
+        acc.prims_lost_gained[1] += c.gained;
         acc.depth_lsb[0] = acc.depth_lsb[0].max(c.depth_lsb_max);
         acc.depth_lsb[1] += c.depth_lsb_sum;
         acc.depth_n += c.depth_n;

@@ -23,8 +23,9 @@
 //! (`crate::config::dq`: the input rounding and the datapath perturbation together, per
 //! primitive): *beyond d_q* counts those of primitives stated in pixels that lie farther than the
 //! primitive's own d_q from an edge (must be 0); the others are stated in clip space only (a
-//! vertex can reach the camera plane, or d_q beyond the viewport's diagonal) and are counted with
-//! their largest backward error δ; `compare.rs`'s per-sample check (*beyond bound*) tests the clip
+//! vertex can reach the camera plane) and are counted with their largest backward error δ, those
+//! whose δ is not small against the primitive (`crate::config::dq::Statement::informative`)
+//! apart; `compare.rs`'s per-sample check (*beyond bound*) tests the clip
 //! statement on every differing decision.
 
 use serde::Serialize;
@@ -101,6 +102,12 @@ pub struct PrecRow {
     pub differ_clip: u64,
     /// the largest backward error δ (clip units) of such a primitive
     pub max_clip: f64,
+    /// of `differ_clip`, those of primitives whose δ is above 1/16 of their own clip extent
+    /// (`crate::config::dq::Statement::informative`: the statement says nothing about them)
+    pub differ_clip_uninformative: u64,
+    /// primitives the reference draws and the core does not, and the other way round
+    /// (`crate::compare::pass::Comparison::lost`, `gained`)
+    pub prims_lost_gained: [u64; 2],
     /// triangles the configuration culls as degenerate that the default does not (the planar
     /// configuration's vertex rounding: `crate::config::planar_static::degenerate`)
     pub degenerate: u64,

@@ -40,13 +40,14 @@ pub fn table_md(rows: &[PrecRow], costs: &Costs) -> String {
 }
 
 /// A row's differing decisions by the statement covering them (`crate::config::dq`): those of
-/// primitives stated in pixels beyond their own d_q, then the count stated in clip space only and
-/// their largest backward error.
+/// primitives stated in pixels beyond their own d_q, then the count stated in clip space only,
+/// their largest backward error and, when some, how many belong to primitives about which the
+/// clip statement says nothing (δ above 1/16 of the primitive's extent).
 fn by_statement(r: &PrecRow) -> String {
-    let clip = if r.differ_clip > 0 {
-        format!("{} ({:.1e})", r.differ_clip, r.max_clip)
-    } else {
-        "0".to_string()
+    let clip = match (r.differ_clip, r.differ_clip_uninformative) {
+        (0, _) => "0".to_string(),
+        (n, 0) => format!("{n} ({:.1e})", r.max_clip),
+        (n, u) => format!("{n} ({:.1e}; {u} say nothing)", r.max_clip),
     };
     format!("{} / {clip}", r.beyond_dq)
 }
