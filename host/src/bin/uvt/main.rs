@@ -533,6 +533,7 @@ fn run(cli: Cli) -> Result<()> {
         Cmd::Vectors(VecCmd::Ver {
             kind,
             arch_only,
+            count,
             spp,
         }) => {
             let k = uvt_records::kind::Kind::parse(&kind).map_err(|e| anyhow!(e))?;
@@ -547,10 +548,15 @@ fn run(cli: Cli) -> Result<()> {
                     v.pairs
                 );
             }
+            uvt_host::vectors::pipe::check_count(v.pairs, count, &kind)?;
             say(&format!("PASS {} {kind} pairs match the model\n", v.pairs))?;
         }
         Cmd::Vectors(VecCmd::Decode { kind, words }) => {
-            say(&uvt_host::vectors::pipe::decode(&kind, &words)?)?;
+            let d = uvt_host::vectors::pipe::decode(&kind, &words)?;
+            say(&d.text)?;
+            if d.differs {
+                bail!("the given {kind} output differs from the model's");
+            }
         }
         Cmd::Vectors(VecCmd::Layout) => {
             for st in uvt_host::vectors::format::STAGES {
