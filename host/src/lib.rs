@@ -9,6 +9,8 @@
 //! never a `mod.rs` nor this root, so there is no import circle (`tests/tests/model/imports.rs`
 //! checks it):
 //!
+//! - [`log`]: lines on the standard error (progress, warnings) that a closed pipe does not turn
+//!   into a panic;
 //! - [`scene`]: scene input — scene files, meshes, built-in scenes, memory budget, sample
 //!   patterns;
 //! - [`reference`](mod@reference): the independent f64 reference of every stage;
@@ -27,6 +29,8 @@
 //! - [`splice`]: `uvt splice`, the documentation's copies of reports and command outputs.
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
+// Lines on stderr go through `log::line`: a closed pipe must not panic.
+#![deny(clippy::print_stderr)]
 
 pub mod bench;
 pub mod compare;
@@ -34,6 +38,7 @@ pub mod config;
 pub mod converge;
 pub mod fit;
 pub mod frame;
+pub mod log;
 pub mod oracle;
 pub mod precision;
 pub mod reference;

@@ -52,26 +52,42 @@ pub fn compile_with(
 }
 
 /// Run the compiled testbench `tb` with the plusargs `args` (`"+SEED=7"`); its standard output.
-/// Panics with vvp's error output if it fails.
+/// Panics with vvp's output if it exits non-zero (a bench's FAIL ends with `$fatal`).
 pub fn run(tb: &Path, args: &[String]) -> String {
+    let (ok, out) = vvp(tb, args);
+    assert!(ok, "vvp {} {args:?} exited non-zero: {out}", tb.display());
+    out
+}
+
+/// Run the compiled testbench `tb` that must fail: panics unless vvp exits non-zero (a bench's
+/// FAIL ends with `$fatal`); its standard output.
+pub fn run_failing(tb: &Path, args: &[String]) -> String {
+    let (ok, out) = vvp(tb, args);
+    assert!(
+        !ok,
+        "vvp {} {args:?} exited 0 on a failing run: {out}",
+        tb.display()
+    );
+    out
+}
+
+/// vvp's exit status (success or not) and its standard output followed by its error output.
+fn vvp(tb: &Path, args: &[String]) -> (bool, String) {
     let o = Command::new("vvp")
         .arg("-n")
         .arg(tb)
         .args(args)
         .output()
         .expect("vvp (Debian package iverilog; tests/run.sh installs it)");
-    assert!(
+    (
         o.status.success(),
-        "vvp {} failed: {}",
-        tb.display(),
-        String::from_utf8_lossy(&o.stderr)
-    );
-    String::from_utf8_lossy(&o.stdout).into_owned()
+        String::from_utf8_lossy(&o.stdout).into_owned() + &String::from_utf8_lossy(&o.stderr),
+    )
 }
 
-/// Run the testbench `tb` on the vector pair `{stem}_in.hex` / `{stem}_out.hex` of `set`
-/// (`+IN`, `+OUT`, `+N` = the output file's line count, then `extra`); its standard output.
-pub fn run_vectors(tb: &Path, set: &Path, stem: &str, extra: &[String]) -> String {
+/// `+IN`, `+OUT`, `+N` of the vector pair `{stem}_in.hex` / `{stem}_out.hex` of `set` (`+N` = the
+/// output file's line count), then `extra`.
+fn vector_args(set: &Path, stem: &str, extra: &[String]) -> Vec<String> {
     let out = set.join(format!("{stem}_out.hex"));
     let n = std::fs::read_to_string(&out)
         .unwrap_or_else(|e| panic!("{}: {e}", out.display()))
@@ -83,5 +99,16 @@ pub fn run_vectors(tb: &Path, set: &Path, stem: &str, extra: &[String]) -> Strin
         format!("+N={n}"),
     ];
     args.extend_from_slice(extra);
-    run(tb, &args)
+    args
+}
+
+/// [`run`] the testbench `tb` on the vector pair `{stem}_in.hex` / `{stem}_out.hex` of `set`
+/// (`+IN`, `+OUT`, `+N` = the output file's line count, then `extra`).
+pub fn run_vectors(tb: &Path, set: &Path, stem: &str, extra: &[String]) -> String {
+    run(tb, &vector_args(set, stem, extra))
+}
+
+/// [`run_failing`] on a vector pair as [`run_vectors`] runs it: vvp must exit non-zero.
+pub fn run_vectors_failing(tb: &Path, set: &Path, stem: &str, extra: &[String]) -> String {
+    run_failing(tb, &vector_args(set, stem, extra))
 }

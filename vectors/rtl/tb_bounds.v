@@ -13,7 +13,8 @@
 // words is refused.
 // Prints "PASS <n> records (<k> nonempty)" or "FAIL <errors> mismatching fields in <n> records";
 // each of the first 10 mismatches as "MISMATCH record <r> (line <r+1>) field <name>: expected
-// <hex> (<decimal>) observed <hex> (<decimal>)" followed by the record's inputs.
+// <hex> (<decimal>) observed <hex> (<decimal>)" followed by the record's inputs. A FAIL ends
+// with `$fatal`: vvp exits 1 (0 on PASS).
 // Your own unit: `-DUVT_DUT=my_unit` instantiates my_unit (no parameters passed) with the ports
 // of uvt_bounds.v; results are matched in issue order by out_valid, so any latency works.
 `ifndef UVT_DUT
@@ -75,7 +76,7 @@ module tb_bounds;
             fd = $fopen(path, "r");
             if (fd == 0) begin
                 $display("FAIL cannot open %0s", path);
-                $finish;
+                $fatal(1, "tb_bounds: see the FAIL line above");
             end
             while (!$feof(fd)) begin
                 c = $fgets(line, fd);
@@ -172,7 +173,7 @@ module tb_bounds;
     initial begin
         if (!$value$plusargs("SET=%s", dir)) begin
             $display("FAIL usage: +SET=<vector set directory> [+SEED=n] [+BUBBLES=percent] [+DRAIN=clocks] [+JUNK=1]");
-            $finish;
+            $fatal(1, "tb_bounds: see the FAIL line above");
         end
         if (!$value$plusargs("SEED=%d", seed)) seed = 1;
         if (!$value$plusargs("BUBBLES=%d", bubbles)) bubbles = 25;
@@ -184,11 +185,11 @@ module tb_bounds;
         if (words != ns * SW) begin
             $display("FAIL %0s: %0d words in %0d lines, not %0d per line (setup_out format: set SW, LENS_AT, DUAL_AT)",
                      fname, words, ns, SW);
-            $finish;
+            $fatal(1, "tb_bounds: see the FAIL line above");
         end
         if (ns > MAXSET) begin
             $display("FAIL %0d setup records exceed MAXSET %0d", ns, MAXSET);
-            $finish;
+            $fatal(1, "tb_bounds: see the FAIL line above");
         end
         $readmemh(fname, setup_mem, 0, ns * SW - 1);
         $sformat(fname, "%0s/bounds_out.hex", dir);
@@ -197,7 +198,7 @@ module tb_bounds;
         if (words != n * WO || n > MAXREC) begin
             $display("FAIL %0s: %0d words in %0d lines (%0d per line, at most %0d lines)", fname,
                      words, n, WO, MAXREC);
-            $finish;
+            $fatal(1, "tb_bounds: see the FAIL line above");
         end
         $readmemh(fname, out_mem, 0, n * WO - 1);
         $sformat(fname, "%0s/bounds_in.hex", dir);
@@ -205,7 +206,7 @@ module tb_bounds;
         if (words != n * WI || lines != n) begin
             $display("FAIL %0s: %0d words in %0d lines, bounds_out.hex has %0d records", fname,
                      words, lines, n);
-            $finish;
+            $fatal(1, "tb_bounds: see the FAIL line above");
         end
         $readmemh(fname, in_mem, 0, n * WI - 1);
         errors = 0; issued = 0; got = 0; nonempties = 0;
@@ -239,6 +240,8 @@ module tb_bounds;
         end
         if (errors == 0) $display("PASS %0d records (%0d nonempty)", n, nonempties);
         else $display("FAIL %0d mismatching fields in %0d records", errors, n);
+        // A failing bench ends with a non-zero exit status of vvp, a passing one with 0.
+        if (errors != 0) $fatal(1, "tb_bounds: %0d mismatching fields", errors);
         $finish;
     end
 endmodule

@@ -10,10 +10,10 @@
 // <m> skipped (class not in the unit)") or "FAIL <errors> mismatching fields in <n> records"
 // (", <m> skipped …" likewise); each of the first 10 mismatches
 // as "MISMATCH record <r> (line <r+1>) field <name>: expected <hex> observed <hex>" followed by
-// the record's input words in hex.
+// the record's input words in hex. A FAIL ends with `$fatal`: vvp exits 1 (0 on PASS).
 // Your own unit (docs/rtl.md "Wiring your own unit"): `-DUVT_DUT=my_unit` instantiates my_unit
-// instead of uvt_bsample; `-DUVT_ARCH_ONLY` connects and checks only the architectural ports —
-// clk, in_valid, trin, vp_w, vp_h, xs, ys, t, u, v in; out_valid, out_covered, depth out — and
+// instead of uvt_bsample; `-DUVT_ARCH_ONLY` connects and checks only the architectural ports
+// (their one table, with widths, and the command: docs/rtl.md "Wiring your own unit") and
 // passes the unit no parameter. Any latency works: outputs are matched in issue order by
 // out_valid (+DRAIN=<clocks> waits that long for the last results, default 200). Before the
 // verdict: "LATENCY edge <a> depth <b> clocks", the first sample's (−1: no such result).
@@ -125,13 +125,13 @@ module tb_bsample;
         if (!$value$plusargs("IN=%s", in_file) || !$value$plusargs("OUT=%s", out_file) ||
             !$value$plusargs("N=%d", n)) begin
             $display("FAIL usage: +IN=bsample_in.hex +OUT=bsample_out.hex +N=records [+STRIDE=k]");
-            $finish;
+            $fatal(1, "tb_bsample: see the FAIL line above");
         end
         if (!$value$plusargs("STRIDE=%d", stride) || stride < 1) stride = 1;
         if (!$value$plusargs("DRAIN=%d", drain) || drain < 1) drain = 200;
         if (n > MAXREC) begin
             $display("FAIL %0d records exceed MAXREC %0d", n, MAXREC);
-            $finish;
+            $fatal(1, "tb_bsample: see the FAIL line above");
         end
         $readmemh(in_file, in_mem, 0, n * WI - 1);
         $readmemh(out_file, out_mem, 0, n * WO - 1);
@@ -181,6 +181,8 @@ module tb_bsample;
 `endif
         if (skipped > 0) $write(", %0d skipped (class not in the unit)", skipped);
         $write("\n");
+        // A failing bench ends with a non-zero exit status of vvp, a passing one with 0.
+        if (errors != 0) $fatal(1, "tb_bsample: %0d mismatching fields", errors);
         $finish;
     end
 endmodule

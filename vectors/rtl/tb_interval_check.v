@@ -1,6 +1,7 @@
 // Testbench: loads exported golden vectors with $readmemh and checks uvt_interval_check against
 // every record. Plusargs: +IN=<select_in.hex> +OUT=<select_out.hex> +N=<records>.
-// Prints "PASS <n> records" or "FAIL <errors> of <n> records" (first mismatches listed).
+// Prints "PASS <n> records" or "FAIL <errors> of <n> records" (first mismatches listed); a FAIL
+// ends with `$fatal`: vvp exits 1 (0 on PASS).
 `timescale 1ns / 1ps
 module tb_interval_check;
     localparam WORDS = 9;
@@ -21,11 +22,11 @@ module tb_interval_check;
         if (!$value$plusargs("IN=%s", in_file) || !$value$plusargs("OUT=%s", out_file) ||
             !$value$plusargs("N=%d", n)) begin
             $display("FAIL usage: +IN=select_in.hex +OUT=select_out.hex +N=records");
-            $finish;
+            $fatal(1, "tb_interval_check: see the FAIL line above");
         end
         if (n > MAXREC) begin
             $display("FAIL %0d records exceed MAXREC %0d", n, MAXREC);
-            $finish;
+            $fatal(1, "tb_interval_check: see the FAIL line above");
         end
         $readmemh(in_file, in_mem, 0, n * WORDS - 1);
         $readmemh(out_file, out_mem, 0, n - 1);
@@ -46,6 +47,8 @@ module tb_interval_check;
         end
         if (errors == 0) $display("PASS %0d records", n);
         else $display("FAIL %0d of %0d records", errors, n);
+        // A failing bench ends with a non-zero exit status of vvp, a passing one with 0.
+        if (errors != 0) $fatal(1, "tb_interval_check: %0d mismatching records", errors);
         $finish;
     end
 endmodule

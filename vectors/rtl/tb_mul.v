@@ -1,7 +1,8 @@
 // tb_mul — uvt_mul against the plain `*` for one operand-width pair: every corner pair
 // (−2^(n−1), −2^(n−1)+1, −1, 0, 1, 2^(n−1)−1 of each operand) and NR seeded random pairs.
 // REG > 0 (the pipelined forms): each pair is held for REG clocks before p is compared.
-// Prints "PASS n products AWxBW: h hard multipliers, l LUT bits (layout)" or each mismatch with operands, expected and observed.
+// Prints "PASS n products AWxBW: h hard multipliers, l LUT bits (layout)" or each mismatch with operands, expected and observed,
+// and a FAIL line that ends with `$fatal`: vvp exits 1 (0 on PASS).
 //   iverilog -g2005 -Ptb_mul.AW=18 -Ptb_mul.BW=32 [-Ptb_mul.PA=25 -Ptb_mul.PB=18 -Ptb_mul.LW=8
 //     -Ptb_mul.REG=0] uvt_mul.v tb_mul.v
 //   vvp -n a.out [+SEED=n] [+NR=n]
@@ -65,6 +66,8 @@ module tb_mul;
                      dut.SWAP, dut.LX, dut.LY);
         else
             $display("FAIL %0d of %0d products %0dx%0d (SEED=%0d)", bad, n, AW, BW, seed);
+        // A failing bench ends with a non-zero exit status of vvp, a passing one with 0.
+        if (bad != 0) $fatal(1, "tb_mul: %0d wrong products", bad);
         $finish;
     end
 endmodule

@@ -6,10 +6,11 @@
 // Prints "LATENCY <clocks> clocks" (the first sample's), then "PASS <n> records" or "FAIL <errors>
 // mismatching fields in <n> records"; each of the
 // first 10 mismatches as "MISMATCH record <r> (line <r+1>) field <name>: expected <hex>
-// observed <hex>" followed by the record's input words in hex.
+// observed <hex>" followed by the record's input words in hex. A FAIL ends with `$fatal`: vvp
+// exits 1 (0 on PASS).
 // Your own unit: `-DUVT_DUT=my_unit` instantiates my_unit instead of uvt_psample;
-// `-DUVT_ARCH_ONLY` connects and checks only clk, in_valid, n, sigma, f, g, vp_w, vp_h, xs, ys
-// in and out_valid, covered, depth out, and passes no parameter. Any latency works (results are
+// `-DUVT_ARCH_ONLY` connects and checks only the architectural ports (their one table, with
+// widths, and the command: docs/rtl.md "Wiring your own unit"), and passes no parameter. Any latency works (results are
 // matched in issue order by out_valid; +DRAIN=<clocks>, default 200, waits for the last).
 `ifndef UVT_DUT
 `define UVT_DUT uvt_psample
@@ -102,12 +103,12 @@ module tb_psample;
         if (!$value$plusargs("IN=%s", in_file) || !$value$plusargs("OUT=%s", out_file) ||
             !$value$plusargs("N=%d", n)) begin
             $display("FAIL usage: +IN=psample_in.hex +OUT=psample_out.hex +N=records");
-            $finish;
+            $fatal(1, "tb_psample: see the FAIL line above");
         end
         if (!$value$plusargs("DRAIN=%d", drain) || drain < 1) drain = 200;
         if (n > MAXREC) begin
             $display("FAIL %0d records exceed MAXREC %0d", n, MAXREC);
-            $finish;
+            $fatal(1, "tb_psample: see the FAIL line above");
         end
         if (n > 0) begin
             $readmemh(in_file, in_mem, 0, n * WI - 1);
@@ -143,6 +144,8 @@ module tb_psample;
         $write(" (architectural: covered, depth)");
 `endif
         $write("\n");
+        // A failing bench ends with a non-zero exit status of vvp, a passing one with 0.
+        if (errors != 0) $fatal(1, "tb_psample: %0d mismatching fields", errors);
         $finish;
     end
 endmodule

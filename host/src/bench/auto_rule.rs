@@ -445,7 +445,12 @@ pub fn derive(m4: &M4Stages) -> anyhow::Result<[ClassRule; 4]> {
     for (k, r) in m4.rows.iter().enumerate() {
         let kind = Bench::from_name(&r.scene)?;
         let row = Blur::from_name(&r.row)?;
-        eprintln!("auto-rule: {} {} ({})", r.scene, r.row, r.size.name());
+        crate::log::line(&format!(
+            "auto-rule: {} {} ({})",
+            r.scene,
+            r.row,
+            r.size.name()
+        ));
         let per = r.per_class();
         let bytes = bench_workload(kind, row, r.size.is_quick(), r.every)?;
         let w = Workload::parse(&bytes).map_err(anyhow_of)?;

@@ -247,11 +247,11 @@ fn rows_at<P: Precision + Sync>(
     for &kind in scenes {
         for &row in rows {
             // Progress as plain lines on stderr (readable in logs, not only on a terminal).
-            eprintln!(
+            crate::log::line(&format!(
                 "bench-ste: row {} of {total}: {kind:?} {}",
                 out.len() + 1,
                 row.label()
-            );
+            ));
             let s = bench_scene(kind, row, quick);
             let pattern = Pattern::new(s.pattern, s.spp, s.seed);
             let core = s.core_tris().expect("built-in scene converts");

@@ -77,12 +77,12 @@ pub fn sweep(sw: &Sweep) -> anyhow::Result<Vec<PrecRow>> {
             for (r, &row) in sw.rows.iter().enumerate() {
                 // Progress as plain lines on stderr (readable in logs, not only on a terminal).
                 let per = sw.scenes.len() * sw.rows.len();
-                eprintln!(
+                crate::log::line(&format!(
                     "precision: row {} of {}: {cfg} {kind:?} {}",
                     n * per + k * sw.rows.len() + r + 1,
                     chosen.len() * per,
                     row.label()
-                );
+                ));
                 let s = shrink(bench_scene(kind, row, true), sw.shrink);
                 with_config!(e.config, P => one::<P>(&s, &mut accs)).transpose()?;
             }
@@ -108,10 +108,10 @@ fn one<P: Precision + Sync>(s: &Scene, accs: &mut [PrecRow]) -> anyhow::Result<(
     let colors = s.colors();
     if P::PLANAR {
         let (n, stat) = planar_static::degenerate(s);
-        eprintln!(
+        crate::log::line(&format!(
             "precision: {}: {n} of {stat} static triangles degenerate after the planar rounding",
             s.name
-        );
+        ));
     }
     let eps = uvt_core::Eps::of(P::OFFSET_SHIFT, uvt_core::Class::MotionDefocus, vp);
     let e3 = [eps.x()[0], eps.x()[1], eps.w()].map(i32::unsigned_abs);

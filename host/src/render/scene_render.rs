@@ -36,7 +36,7 @@ pub fn render_with(scene: &Scene, o: &RenderOpts) -> Result<Rendered> {
 fn pipelines<P: Precision + Sync>(scene: &Scene, o: &RenderOpts) -> Result<Rendered> {
     let say = |k: u32, what: &str| {
         if o.progress {
-            eprintln!("render: [{k}/4] {what}");
+            crate::log::line(&format!("render: [{k}/4] {what}"));
         }
     };
     let exact = Pattern::new(scene.pattern, scene.spp, scene.seed);

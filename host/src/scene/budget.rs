@@ -65,6 +65,24 @@ pub fn estimate(tris: u64, viewport: (u16, u16), spp: u16) -> u64 {
         .saturating_add(FRAME_SETUP_BYTES)
 }
 
+/// The one budget check of every scene, built-in or from a file: `tris` triangles on `viewport`
+/// at `spp` samples per pixel must fit `limit` bytes ([`estimate`]); the error names the
+/// estimate and the budget.
+pub fn check(tris: u64, viewport: (u16, u16), spp: u16, limit: u64) -> Result<()> {
+    let need = estimate(tris, viewport, spp);
+    if need > limit {
+        bail!(
+            "{tris} triangles on {}×{} px at {spp} spp need about {}, over the memory budget of {} \
+             (raise it with --mem-budget)",
+            viewport.0,
+            viewport.1,
+            human(need),
+            human(limit)
+        );
+    }
+    Ok(())
+}
+
 /// `bytes` for people: `1.50 GiB`, `12.0 MiB`, `900 B`.
 pub fn human(bytes: u64) -> String {
     const U: [&str; 4] = ["B", "KiB", "MiB", "GiB"];

@@ -46,6 +46,22 @@ pub struct Scene {
 }
 
 impl Scene {
+    /// A scene built in code (a built-in one) under the options a scene file is loaded with:
+    /// `opts`' viewport and samples per pixel replace its own, then the memory budget check every
+    /// scene passes ([`budget::check`]; a file's while it is read).
+    pub fn with_opts(mut self, opts: &LoadOpts) -> Result<Scene> {
+        self.viewport = opts.viewport.unwrap_or(self.viewport);
+        self.spp = opts.spp.unwrap_or(self.spp);
+        budget::check(
+            self.tris.len() as u64,
+            self.viewport,
+            self.spp,
+            opts.mem_budget,
+        )
+        .map_err(|e| anyhow!("built-in scene {}: {e}", self.name))?;
+        Ok(self)
+    }
+
     /// The core viewport.
     pub fn core_viewport(&self) -> Viewport {
         Viewport::new(self.viewport.0, self.viewport.1).expect("validated viewport")
@@ -193,18 +209,7 @@ impl Scene {
             }
         };
         let check = |tris: u64, field: &str| -> Result<()> {
-            let need = budget::estimate(tris, viewport, spp);
-            if need > opts.mem_budget {
-                bail!(
-                    "{field}: {tris} triangles on {}×{} px at {spp} spp need about {}, over the \
-                     memory budget of {} (raise it with --mem-budget)",
-                    viewport.0,
-                    viewport.1,
-                    budget::human(need),
-                    budget::human(opts.mem_budget)
-                );
-            }
-            Ok(())
+            budget::check(tris, viewport, spp, opts.mem_budget).map_err(|e| anyhow!("{field}: {e}"))
         };
         let mut warnings = Vec::new();
         let tris = match (obj.get("triangles"), obj.get("meshes")) {

@@ -87,12 +87,35 @@ pub fn ver(input: impl BufRead, kind: Kind, spp: u32, arch_only: bool) -> Result
     Ok(v)
 }
 
+/// `ver`'s count check: `pairs` read against `expected` (`--count`), or at least one without
+/// it — a runner that died before writing anything must not pass. The error names both numbers.
+pub fn check_count(pairs: u64, expected: Option<u64>, kind: &str) -> Result<()> {
+    match expected {
+        Some(n) if n != pairs => bail!(
+            "{pairs} {kind} pairs on stdin, --count says {n}: the runner lost or added records"
+        ),
+        None if pairs == 0 => bail!(
+            "no {kind} pairs on stdin: the runner wrote nothing (give --count N to require N)"
+        ),
+        _ => Ok(()),
+    }
+}
+
+/// What `decode` shows: the text, and whether a given output differs from the model's.
+#[derive(Debug)]
+pub struct Decoded {
+    /// the fields, the model's output and the differing fields
+    pub text: String,
+    /// an input+output pair was given and its output is not the model's
+    pub differs: bool,
+}
+
 /// Decode record words of `what` — a file stem (`bsample_in`, `psample_out`, …) or a kind name
 /// (`bsample`: the words are an input record, an output record, or an input record followed by
 /// an output record) — field by field; for an input record, also the model's output, and for a
 /// pair, the fields in which the given output differs from the model's. `words` are hex words
 /// (arguments may hold several, separated by spaces).
-pub fn decode(what: &str, words: &[String]) -> Result<String> {
+pub fn decode(what: &str, words: &[String]) -> Result<Decoded> {
     let ws: Vec<u32> = words
         .iter()
         .flat_map(|a| a.split_whitespace())
@@ -135,16 +158,18 @@ pub fn decode(what: &str, words: &[String]) -> Result<String> {
     let lines = |title: &str, file: &str, w: &[u32]| {
         format!("{title}\n  {}\n", kind::decode(file, w).join("\n  "))
     };
+    let done = |text: String, differs: bool| Ok(Decoded { text, differs });
     if side == "out" {
         s += &lines(&format!("{name}_out"), &format!("{name}_out"), &ws);
-        return Ok(s);
+        return done(s, false);
     }
     let inp = &ws[..wi.min(n)];
     s += &lines(&format!("{name}_in"), &format!("{name}_in"), inp);
     if kind.needs_setup() {
         s += "(the model's output needs the setup_in record this one names: `uvt vectors check`)\n";
-        return Ok(s);
+        return done(s, false);
     }
+    let mut differs = false;
     match kind::run(kind, inp, None) {
         Err(e) => s += &format!("the model refuses this input: {e}\n"),
         Ok(exp) => {
@@ -155,6 +180,7 @@ pub fn decode(what: &str, words: &[String]) -> Result<String> {
             );
             if side == "pair" {
                 let d = kind::diff(&format!("{name}_out"), &exp.0, &ws[wi..], None);
+                differs = !d.is_empty();
                 s += &if d.is_empty() {
                     "the given output is the model's\n".to_string()
                 } else {
@@ -163,5 +189,5 @@ pub fn decode(what: &str, words: &[String]) -> Result<String> {
             }
         }
     }
-    Ok(s)
+    done(s, differs)
 }

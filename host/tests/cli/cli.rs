@@ -390,6 +390,48 @@ fn bad_resource_limits_fail_fast() {
     ]);
     let e = String::from_utf8_lossy(&o.stderr);
     assert!(!o.status.success() && e.contains("--mem-budget"), "{e}");
+    // The built-in scene passes the same check: refused at its own size and at 2048×2048, 64 spp
+    // (it used to render regardless of the budget), with nothing written.
+    for extra in [&[][..], &["--viewport", "2048x2048", "--spp", "64"][..]] {
+        let out = dir.path().join("builtin-out");
+        let mut args = vec![
+            "render",
+            "--mem-budget",
+            "1M",
+            "--out",
+            out.to_str().unwrap(),
+        ];
+        args.extend_from_slice(extra);
+        let o = uvt(&args);
+        let e = String::from_utf8_lossy(&o.stderr);
+        assert!(
+            !o.status.success()
+                && e.contains("built-in scene default: ")
+                && e.contains("over the memory budget of 1.00 MiB"),
+            "{extra:?}: {e}"
+        );
+        assert!(
+            !out.exists(),
+            "{extra:?}: the refused render wrote {}",
+            out.display()
+        );
+    }
+    let e = String::from_utf8_lossy(
+        &uvt(&[
+            "render",
+            "--mem-budget",
+            "1M",
+            "--viewport",
+            "2048x2048",
+            "--spp",
+            "64",
+            "--out",
+            "/nonexistent/x",
+        ])
+        .stderr,
+    )
+    .into_owned();
+    assert!(e.contains("on 2048×2048 px at 64 spp"), "{e}");
 }
 
 #[test]

@@ -1,8 +1,9 @@
 //! `uvt vectors gen | runner | uvt vectors ver` and `uvt vectors decode`: a stream's shards
 //! concatenate to the stream byte for byte; pairs whose outputs are the model's pass `ver`, a
 //! flipped output bit fails it naming the line and the field (in both modes where the field is
-//! architectural, only in full mode where it is internal); `decode` shows a record's fields
-//! and the model's answer; bad input is refused with a reason and a non-zero exit.
+//! architectural, only in full mode where it is internal) and so do fewer pairs than fed (none,
+//! or not `--count`); `decode` shows a record's fields and the model's answer and exits non-zero
+//! when a given output differs from it; bad input is refused with a reason and a non-zero exit.
 //! `UVT_SEED` seeds the streams (printed on failure).
 
 use std::io::Write;
@@ -168,11 +169,76 @@ fn decode_shows_the_fields_and_the_models_answer() {
         .collect();
     let mut args = vec!["vectors", "decode", "bsample"];
     args.extend(words.iter().map(String::as_str));
-    let t = text(&uvt(&args, None));
+    let bad = uvt(&args, None);
+    let t = text(&bad);
     assert!(
         t.contains("the given output differs") && t.contains("field e1"),
         "{t}"
     );
+    assert!(
+        !bad.status.success() && t.contains("differs from the model's"),
+        "a pair whose output differs from the model's exited 0: {t}"
+    );
+    // the model's own pair: the same decode, exit 0
+    let words: Vec<String> = p[0]
+        .0
+        .iter()
+        .chain(&p[0].1)
+        .map(|w| format!("{w:08x}"))
+        .collect();
+    let mut args = vec!["vectors", "decode", "bsample"];
+    args.extend(words.iter().map(String::as_str));
+    let good = uvt(&args, None);
+    assert!(
+        good.status.success() && text(&good).contains("the given output is the model's"),
+        "{}",
+        text(&good)
+    );
+}
+
+#[test]
+fn ver_fails_on_fewer_pairs_than_expected() {
+    let g = uvt(
+        &["vectors", "gen", "bsample", "--count", "5", "--seed", "3"],
+        None,
+    );
+    let p = pairs(Kind::Bsample, &String::from_utf8_lossy(&g.stdout));
+    // a dead runner: nothing on stdin
+    let empty = uvt(&["vectors", "ver", "bsample"], Some(""));
+    assert!(
+        !empty.status.success() && text(&empty).contains("no bsample pairs on stdin"),
+        "an empty stdin passed: {}",
+        text(&empty)
+    );
+    assert!(!text(&empty).contains("PASS"), "{}", text(&empty));
+    // a runner that lost records: fewer pairs than --count
+    let short = uvt(
+        &["vectors", "ver", "bsample", "--count", "6"],
+        Some(&lines(&p)),
+    );
+    assert!(
+        !short.status.success()
+            && text(&short).contains("5 bsample pairs on stdin, --count says 6"),
+        "{}",
+        text(&short)
+    );
+    let zero = uvt(&["vectors", "ver", "bsample", "--count", "5"], Some(""));
+    assert!(!zero.status.success(), "{}", text(&zero));
+    // the expected number: pass
+    for args in [
+        &["vectors", "ver", "bsample", "--count", "5"][..],
+        &["vectors", "ver", "bsample"][..],
+    ] {
+        let ok = uvt(args, Some(&lines(&p)));
+        assert!(
+            ok.status.success() && text(&ok).contains("PASS 5 bsample pairs"),
+            "{args:?}: {}",
+            text(&ok)
+        );
+    }
+    // --count 0 accepts an empty stdin (nothing was fed)
+    let none = uvt(&["vectors", "ver", "bsample", "--count", "0"], Some(""));
+    assert!(none.status.success(), "{}", text(&none));
 }
 
 #[test]

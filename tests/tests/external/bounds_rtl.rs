@@ -64,10 +64,20 @@ fn build(dir: &Path, name: &str, unit: &str) -> PathBuf {
     )
 }
 
+/// Run the bench on `set`: vvp must exit 0.
 fn run(tb: &Path, set: &Path, extra: &[&str]) -> String {
+    icarus::run(tb, &args(set, extra))
+}
+
+/// Run the bench on `set`, which must fail: vvp must exit non-zero.
+fn run_failing(tb: &Path, set: &Path) -> String {
+    icarus::run_failing(tb, &args(set, &[]))
+}
+
+fn args(set: &Path, extra: &[&str]) -> Vec<String> {
     let mut args = vec![format!("+SET={}", set.display())];
     args.extend(extra.iter().map(|s| s.to_string()));
-    icarus::run(tb, &args)
+    args
 }
 
 fn lines(path: &Path) -> Vec<String> {
@@ -225,7 +235,7 @@ fn rtl_bounds_bench_reports_a_flipped_bit() {
         })
         .collect();
     std::fs::write(&path, text).unwrap();
-    let out = run(&tb, &set, &[]);
+    let out = run_failing(&tb, &set);
     let want = |r: usize, field: &str, exp: u32, obs: u32| {
         format!(
             "MISMATCH record {r} (line {}) field {field}: expected {exp:08x} ({}) observed {obs:08x} ({})",
@@ -308,7 +318,7 @@ fn rtl_bounds_mutants_fail() {
     for (name, from, to, fields) in mutants {
         let rtl = mutant(dir.path(), name, from, to);
         let tb = build(dir.path(), &format!("tb_{name}"), rtl.to_str().unwrap());
-        let out = run(&tb, &set, &[]);
+        let out = run_failing(&tb, &set);
         assert!(
             out.lines().any(|l| l.starts_with("MISMATCH record ")
                 && fields

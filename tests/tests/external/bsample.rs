@@ -58,9 +58,15 @@ fn build(dir: &Path, g: Grid) -> PathBuf {
     build_with(dir, g, (25, 18))
 }
 
-/// Run the compiled testbench on the bsample files of `set`.
+/// Run the compiled testbench on the bsample files of `set`: vvp must exit 0.
 fn run(tb: &Path, set: &Path) -> String {
     icarus::run_vectors(tb, set, "bsample", &[])
+}
+
+/// Run the compiled testbench on the bsample files of `set`, which must fail: vvp must exit
+/// non-zero (the bench's FAIL ends with `$fatal`).
+fn run_failing(tb: &Path, set: &Path) -> String {
+    icarus::run_vectors_failing(tb, set, "bsample", &[])
 }
 
 fn coverage(set: &str) -> serde_json::Value {
@@ -182,7 +188,7 @@ fn rtl_sample_test_unit_passes_every_committed_record() {
     let depth = set_word(&bad, "bsample_out.hex", hit, 1, |w| w ^ (1 << 7));
     let miss = first_record(&bad, false);
     let a1 = set_word(&bad, "bsample_out.hex", miss, 4, |w| w ^ 1);
-    let out = run(&tb, &bad);
+    let out = run_failing(&tb, &bad);
     assert!(
         out.contains(&format!(
             "MISMATCH record {hit} (line {}) field depth: expected {:016x} observed {:016x}",
@@ -239,7 +245,7 @@ fn rtl_sample_test_unit_matches_other_configurations() {
         );
         // The default set through this configuration's unit: refused, naming the configuration.
         if g != Grid::DEFAULT {
-            let out = run(&tb, &committed().join("frame_b"));
+            let out = run_failing(&tb, &committed().join("frame_b"));
             assert!(
                 out.contains("MISMATCH record 0 (line 1): configuration off_shift 20 pos_frac 16 tuv_frac 16"),
                 "{out}"
@@ -524,7 +530,7 @@ fn rtl_unit_variants_pass_the_committed_records_of_their_classes() {
         }
         let depth = set_word(&bad, "bsample_out.hex", hit, 1, |w| w ^ (1 << 3));
         set_word(&bad, "bsample_out.hex", other, 1, |w| w ^ (1 << 3));
-        let out = run(&tb, &bad);
+        let out = run_failing(&tb, &bad);
         assert!(
             out.contains(&format!(
                 "MISMATCH record {hit} (line {}) field depth: expected {:016x} observed {:016x}",
@@ -568,8 +574,12 @@ fn the_bench_takes_your_own_unit_in_architectural_mode() {
         "{out}"
     );
     let hit = first_record(&set, true);
-    let bad =
-        uvt_tests::icarus::run_vectors(&tb, &set, "bsample", &[format!("+REPLAY_FLIP={hit}")]);
+    let bad = uvt_tests::icarus::run_vectors_failing(
+        &tb,
+        &set,
+        "bsample",
+        &[format!("+REPLAY_FLIP={hit}")],
+    );
     assert!(
         bad.contains(&format!(
             "MISMATCH record {hit} (line {}) field depth",
@@ -589,4 +599,47 @@ fn the_bench_takes_your_own_unit_in_architectural_mode() {
         out.contains(&format!("PASS {n} records (architectural: covered, depth)")),
         "{out}"
     );
+}
+
+/// docs/rtl.md's command for checking one's own unit, run as it stands there (from the
+/// repository root, on `tests/rtl/replay3_bsample.v`), passes with exit status 0; the same
+/// command with `tests/rtl/wrap_bsample.v` — a wrapper that instantiates the committed unit,
+/// which needs `uvt_mul.v` too — in its place passes as well (on frame_a, for time).
+#[test]
+fn the_documented_own_unit_command_passes() {
+    let root = uvt_tests::ffi::root();
+    let doc = std::fs::read_to_string(root.join("docs/rtl.md")).unwrap();
+    let block = doc
+        .split("```sh\n")
+        .skip(1)
+        .map(|b| b.split("```").next().unwrap())
+        .find(|b| b.contains("-DUVT_DUT=replay3_bsample"))
+        .expect("docs/rtl.md: the own-unit command (with -DUVT_DUT=replay3_bsample)");
+    let dir = tempfile::tempdir().unwrap();
+    let wrapped = block
+        .replace("replay3_bsample", "wrap_bsample")
+        .replace("vectors/unit/", "vectors/frame_a/");
+    for (script, n) in [
+        (
+            block.to_string(),
+            coverage("unit")["records"].as_u64().unwrap(),
+        ),
+        (wrapped, coverage("frame_a")["records"].as_u64().unwrap()),
+    ] {
+        let o = std::process::Command::new("bash")
+            .arg("-ec")
+            .arg(&script)
+            .current_dir(&root)
+            .env("TMPDIR", dir.path())
+            .output()
+            .expect("bash");
+        let out =
+            String::from_utf8_lossy(&o.stdout).into_owned() + &String::from_utf8_lossy(&o.stderr);
+        assert!(
+            o.status.success()
+                && out.contains(&format!("PASS {n} records (architectural: covered, depth)")),
+            "{script}\n{:?}: {out}",
+            o.status
+        );
+    }
 }

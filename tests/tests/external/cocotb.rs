@@ -243,3 +243,24 @@ fn planar_unit_matches_and_its_mutant_and_a_corrupted_output_are_caught() {
         "{out}"
     );
 }
+
+/// Architectural mode touches only the architectural ports (docs/rtl.md, "Wiring your own
+/// unit"): a unit with no edge ports — `tests/rtl/wrap_bsample.v` around the committed unit,
+/// named `uvt_bsample` as `run.py --rtl` takes it — passes with `UVT_ARCH_ONLY=1`.
+#[test]
+fn arch_only_mode_needs_only_the_architectural_ports() {
+    let dir = tempfile::tempdir().unwrap();
+    let rtl = ffi::root().join("vectors/rtl");
+    std::fs::copy(rtl.join("uvt_mul.v"), dir.path().join("uvt_mul.v")).unwrap();
+    let unit = std::fs::read_to_string(rtl.join("uvt_bsample.v"))
+        .unwrap()
+        .replace("module uvt_bsample", "module uvt_bsample_ref");
+    let wrapper = std::fs::read_to_string(ffi::root().join("tests/rtl/wrap_bsample.v"))
+        .unwrap()
+        .replace("module wrap_bsample", "module uvt_bsample")
+        .replace("    uvt_bsample unit (", "    uvt_bsample_ref unit (");
+    assert!(wrapper.contains("uvt_bsample_ref unit ("), "{wrapper}");
+    std::fs::write(dir.path().join("uvt_bsample.v"), unit + "\n" + &wrapper).unwrap();
+    let (ok, out) = run(Some(dir.path()), 100, &[("UVT_ARCH_ONLY", "1".into())]);
+    assert!(ok, "UVT_SEED={}:\n{out}", seed());
+}

@@ -7,6 +7,8 @@
 //!   ties and (bounded) triangles with a vertex at w <= 0.
 //! - A flipped bit of the model's expected output (`+CORRUPT=k`) fails, naming the field; with
 //!   `+ARCH_ONLY=1` a corrupted edge value passes (only covered and depth are compared).
+//! - The example output of `vectors/dpi/README.md` (the bounded bench's PASS line, a MISMATCH
+//!   and its FAIL line) is what the commands shown there print.
 //! - A mutated copy of the RTL (the bounded unit's fill-rule tie key reversed, the planar unit's
 //!   fill rule for clockwise triangles reversed) fails.
 //! - `harness.cpp` (no DPI) passes on a short run and prints its rates, and fails on a corrupted
@@ -182,6 +184,40 @@ fn pass_and_corrupt(unit: &str, counts: &[&str]) {
     assert_fail(&bench(&tb, &corrupt_e), "e0");
     let arch: Vec<&str> = corrupt_e.iter().copied().chain(["+ARCH_ONLY=1"]).collect();
     assert_eq!(count(&bench(&tb, &arch), "samples"), 3000);
+    if unit == "bsample" {
+        readme_examples(&tb);
+    }
+}
+
+/// vectors/dpi/README.md's example output of the bounded bench is what its commands print now:
+/// the PASS line of `+SEED=1 +N=100000` and the MISMATCH and FAIL lines of `+SEED=1 +N=1000
+/// +CORRUPT=500`, each a line of the README as it stands.
+fn readme_examples(tb: &Path) {
+    let path = dpi_dir().join("README.md");
+    let readme = std::fs::read_to_string(&path).unwrap();
+    let has = |line: &str| readme.lines().any(|r| r == line);
+    for (args, starts) in [
+        (&["+SEED=1", "+N=100000"][..], &["PASS "][..]),
+        (
+            &["+SEED=1", "+N=1000", "+CORRUPT=500"][..],
+            &["MISMATCH ", "FAIL "][..],
+        ),
+    ] {
+        let args: Vec<String> = args.iter().map(|a| a.to_string()).collect();
+        let out = run(tb, &args).1;
+        for start in starts {
+            let line = out
+                .lines()
+                .find(|l| l.starts_with(start))
+                .unwrap_or_else(|| panic!("no {start}line in the output of {args:?}:\n{out}"));
+            assert!(
+                has(line),
+                "{}: its example output of `tb {}` is not what the bench prints now; the line is\n{line}",
+                path.display(),
+                args.join(" ")
+            );
+        }
+    }
 }
 
 fn mutated(unit: &str, from: &str, to: &str, field: &str) {

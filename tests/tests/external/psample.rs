@@ -37,8 +37,14 @@ fn build(dir: &Path, ports: (u32, u32)) -> PathBuf {
     )
 }
 
+/// Run the bench on the psample files of `set`: vvp must exit 0.
 fn run(tb: &Path, set: &Path) -> String {
     icarus::run_vectors(tb, set, "psample", &[])
+}
+
+/// Run the bench on the psample files of `set`, which must fail: vvp must exit non-zero.
+fn run_failing(tb: &Path, set: &Path) -> String {
+    icarus::run_vectors_failing(tb, set, "psample", &[])
 }
 
 /// Run the bench `tb` on committed set `set`, assert it passes every planar record of the set
@@ -362,7 +368,7 @@ fn rtl_planar_unit_catches_a_flipped_bit_of_each_kind() {
         ));
     }
     write_records(&sub.join("psample_out.hex"), &so);
-    let out = run(&tb, &sub);
+    let out = run_failing(&tb, &sub);
     for (kind, w) in &want {
         assert!(out.contains(w), "{kind}: missing '{w}' in: {out}");
     }
@@ -380,7 +386,7 @@ fn rtl_planar_unit_catches_a_flipped_bit_of_each_kind() {
     si[1][26] ^= 1 << 8; // xs
     si[2][22] ^= 2; // σ: 01 ↔ 11
     write_records(&sub.join("psample_in.hex"), &si);
-    let out = run(&tb, &sub);
+    let out = run_failing(&tb, &sub);
     assert!(
         out.contains("MISMATCH record 0 (line 1) field e0: "),
         "n0_c flip: {out}"

@@ -234,7 +234,7 @@ fn rtl_interval_check_passes_every_exported_record() {
         t.replacen("00000000", "00000001", 1)
     };
     std::fs::write(&f, flipped).unwrap();
-    let out = iverilog(&bad, &tb);
+    let out = icarus::run_vectors_failing(&tb, &bad, "select", &[]);
     assert!(
         out.contains("FAIL 1 of") && out.contains("MISMATCH line 1"),
         "{out}"

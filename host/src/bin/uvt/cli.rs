@@ -353,7 +353,8 @@ pub enum VecCmd {
     },
     /// Read input+output record pairs of KIND from stdin (one pair per line: the input words,
     /// then the output words) and compare each output with the model's; non-zero exit on any
-    /// difference, naming the line and every differing field.
+    /// difference, naming the line and every differing field, and on fewer pairs than expected
+    /// (none at all, or not --count).
     Ver {
         /// record kind: bsample, psample, setup, select or resolve
         kind: String,
@@ -361,12 +362,17 @@ pub enum VecCmd {
         /// before its Laine coefficients)
         #[arg(long)]
         arch_only: bool,
+        /// the number of pairs expected (what was fed to the runner); another number fails.
+        /// Omitted: at least one
+        #[arg(long)]
+        count: Option<u64>,
         /// samples per resolve record
         #[arg(long, default_value_t = 16)]
         spp: u32,
     },
     /// Decode one record field by field (hex and value) and show the model's output for an
-    /// input record; given input and output words, the fields that differ from the model's.
+    /// input record; given input and output words, the fields that differ from the model's
+    /// (non-zero exit when the given output differs).
     Decode {
         /// a file stem (bsample_in, psample_out, …) or a kind (bsample: input, output or both)
         kind: String,

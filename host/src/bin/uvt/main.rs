@@ -1,6 +1,8 @@
 //! `uvt`: command-line tools of the uvt reference model. Bad input exits non-zero with a message
 //! naming what is wrong.
 #![forbid(unsafe_code)]
+// Lines on stderr go through `log::line`: a closed pipe must not panic.
+#![deny(clippy::print_stderr)]
 
 use std::io::Write;
 use std::process::ExitCode;
@@ -21,7 +23,7 @@ fn main() -> ExitCode {
         // A closed stdout (`uvt vectors layout | head`) ends the program quietly.
         Err(e) if is_broken_pipe(&e) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("uvt: error: {e:#}");
+            uvt_host::log::line(&format!("uvt: error: {e:#}"));
             ExitCode::FAILURE
         }
     }
@@ -128,16 +130,11 @@ fn run(cli: Cli) -> Result<()> {
                 Some(p) => {
                     let l = Scene::load_with(&p, &load)?;
                     for w in &l.warnings {
-                        eprintln!("uvt: warning: {}: {w}", p.display());
+                        uvt_host::log::line(&format!("uvt: warning: {}: {w}", p.display()));
                     }
                     l.scene
                 }
-                None => {
-                    let mut s = builtin::default_scene();
-                    s.viewport = load.viewport.unwrap_or(s.viewport);
-                    s.spp = spp.unwrap_or(s.spp);
-                    s
-                }
+                None => builtin::default_scene().with_opts(&load)?,
             };
             s.tile = tile.unwrap_or(s.tile);
             s.seed = seed.unwrap_or(s.seed);
@@ -359,7 +356,7 @@ fn run(cli: Cli) -> Result<()> {
             };
             let l = Scene::load_with(&scene, &load)?;
             for w in &l.warnings {
-                eprintln!("uvt: warning: {}: {w}", scene.display());
+                uvt_host::log::line(&format!("uvt: warning: {}: {w}", scene.display()));
             }
             let f = uvt_host::fit::report::fit(
                 &l.scene,
@@ -533,6 +530,7 @@ fn run(cli: Cli) -> Result<()> {
         Cmd::Vectors(VecCmd::Ver {
             kind,
             arch_only,
+            count,
             spp,
         }) => {
             let k = uvt_records::kind::Kind::parse(&kind).map_err(|e| anyhow!(e))?;
@@ -547,10 +545,15 @@ fn run(cli: Cli) -> Result<()> {
                     v.pairs
                 );
             }
+            uvt_host::vectors::pipe::check_count(v.pairs, count, &kind)?;
             say(&format!("PASS {} {kind} pairs match the model\n", v.pairs))?;
         }
         Cmd::Vectors(VecCmd::Decode { kind, words }) => {
-            say(&uvt_host::vectors::pipe::decode(&kind, &words)?)?;
+            let d = uvt_host::vectors::pipe::decode(&kind, &words)?;
+            say(&d.text)?;
+            if d.differs {
+                bail!("the given {kind} output differs from the model's");
+            }
         }
         Cmd::Vectors(VecCmd::Layout) => {
             for st in uvt_host::vectors::format::STAGES {
