@@ -52,6 +52,7 @@ steps=(
   "m4-sweep;qemu;15 s (docs/precision.md);host/report/m4.json;bash demo/m4_report.sh --sweep"
   "m4-units;qemu;13 s with the thumbv7 builds cached (docs/units.md);host/report/m4_units.json, docs/units.md (m4-units blocks);bash demo/m4_report.sh --units; uvt m4-units | uvt splice --block m4-units[-same] --file docs/units.md"
   "m4-units-planar;qemu;13 s (docs/units.md);host/report/m4_units_planar.json, docs/units.md (m4-units-planar blocks);bash demo/m4_report.sh --units host/report/m4_units_planar.json planar-16-16-16-20; uvt m4-units host/report/m4_units_planar.json | uvt splice --block m4-units-planar[-same] --file docs/units.md"
+  "fit-example;-;under 1 s after the release build (docs/units.md);docs/units.md (fit-example block);uvt fit host/stress/edges_on_pixel_and_tile_boundaries.json, its fit.md with headings at level 4 | uvt splice --block fit-example --file docs/units.md"
   "m4-strategies;qemu;18 min from a fresh clone (docs/performance.md);host/report/m4_strategies.json;bash demo/m4_report.sh --strategies"
   "m4-zmax;qemu;about 13 min (README.md);host/report/m4_zmax.json;bash demo/m4_report.sh --zmax"
   "auto-rule;-;25 s (docs/bounds.md);core/src/bounds/auto/rule.rs;uvt auto-rule --out core/src/bounds/auto/rule.rs"
@@ -220,6 +221,13 @@ step_auto-rule() {
 }
 step_synth() { run bash vectors/rtl/synth.sh -j 2 >&2; }
 step_pnr() { run bash vectors/rtl/pnr.sh psample psample-pipe1 bounds bounds-pipe1 bsample-lut17 >&2; }
+# The fit example of docs/units.md: fit.md of a static stress scene, its headings at level 4 (as
+# host/tests/cli/fit_cli.rs's check of the block reads it).
+step_fit-example() {
+  uvt fit host/stress/edges_on_pixel_and_tile_boundaries.json --out "$tmp/fit-example" >/dev/null
+  run_to "$tmp/fit-example.md" sed -e 's/^## /#### /' -e 's/^# /#### /' "$tmp/fit-example/fit.md"
+  splice_block fit-example docs/units.md "$tmp/fit-example.md"
+}
 step_precision() {
   uvt precision --quick --out "$tmp/precision-quick" >/dev/null
   publish host/report/precision-quick "$tmp/precision-quick/precision.md" \

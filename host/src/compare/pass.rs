@@ -121,6 +121,9 @@ pub struct Comparison {
     pub beyond_statement: u64,
     /// largest distance (px) from the nearest edge of a difference stated in pixels
     pub max_distance_stated_px: f64,
+    /// the largest d_q (px) of a primitive stated in pixels with a difference: how far the
+    /// statements allow them to lie
+    pub max_dq_px: f64,
     /// differing decisions of primitives stated in clip space only
     pub differ_clip: u64,
     /// the largest backward error δ (clip units) of a primitive with such a difference
@@ -224,6 +227,7 @@ impl Comparison {
             (&mut self.max_distance_px, o.max_distance_px),
             (&mut self.max_bound_px, o.max_bound_px),
             (&mut self.max_distance_stated_px, o.max_distance_stated_px),
+            (&mut self.max_dq_px, o.max_dq_px),
             (&mut self.max_clip, o.max_clip),
             (&mut self.max_distance_clip_px, o.max_distance_clip_px),
             (&mut self.depth_lsb_max, o.depth_lsb_max),
@@ -283,6 +287,7 @@ impl Comparison {
             Some(Statement { px: Some(dq), .. }) => {
                 self.differ_px += 1;
                 self.max_distance_stated_px = self.max_distance_stated_px.max(distance);
+                self.max_dq_px = self.max_dq_px.max(dq);
                 self.beyond_statement += u64::from(distance > dq);
                 if let Some(t) = tol {
                     self.beyond_tolerance += u64::from(distance > t.px);

@@ -35,7 +35,7 @@ use crate::config::rounding::{eps_of, Rounding};
 use crate::scene::file::Scene;
 use crate::scene::tri::SceneTri;
 
-use super::dq::{eps_clip, Statement};
+use super::dq::eps_clip;
 use super::multipliers::{dsp48e1, ecp5};
 use super::units::{unit_sample_cost, UnitCost};
 
@@ -98,23 +98,6 @@ pub fn prim_dq(
     let r = Rounding::at(16, 16);
     let d = super::dq::prim_dq(tri, vp, &r, eps(core, class, cvp))?;
     Some(d * scale)
-}
-
-/// The error statement (`super::dq::Statement`: backward error, and d_q where the pixel form
-/// applies) of one primitive at this configuration; `None` for an invalid viewport.
-pub fn statement(
-    tri: &SceneTri,
-    core: &uvt_core::Triangle,
-    class: Class,
-    vp: (u16, u16),
-) -> Option<Statement> {
-    let cvp = Viewport::new(vp.0, vp.1).ok()?;
-    Some(super::dq::statement(
-        tri,
-        vp,
-        &Rounding::at(16, 16),
-        eps(core, class, cvp),
-    ))
 }
 
 /// Static triangles the planar setup culls as degenerate (`det P' = 0` after the vertex

@@ -111,7 +111,7 @@ pub fn fit(
         cls.iter().any(|c| c.defocus()),
     );
     let terms = unit_terms(unit).ok_or_else(|| anyhow!("unknown unit {unit}"))?;
-    let fits = config_fits(scene, &cls, terms, &tol_full);
+    let fits = config_fits(scene, terms, &tol_full)?;
     let chosen = narrowest(&fits, &tol_full)?.clone();
     let cfg = registry::find(&chosen.config)
         .ok_or_else(|| anyhow!("not a configuration of the registry: {}", chosen.config))?;

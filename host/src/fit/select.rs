@@ -28,9 +28,9 @@
 use anyhow::{anyhow, bail, Result};
 use serde::Serialize;
 use uvt_core::config::registry::{self, EXACT, PLANAR};
-use uvt_core::Class;
+use uvt_core::{with_config, Class, Precision};
 
-use crate::config::dq::{eps_clip, px_text, statement, Statement, Tolerance};
+use crate::config::dq::{px_text, statements, Statement, Tolerance};
 use crate::config::planar_static;
 use crate::config::rounding::Rounding;
 use crate::config::units::{unit_sample_cost, UnitCost};
@@ -133,48 +133,46 @@ pub fn classes(scene: &Scene) -> Result<Vec<Class>> {
 }
 
 /// The statements of every configuration of the sweep and of the planar static configuration
-/// (`crate::config::planar_static`, last) for the scene's primitives and their classes.
-pub fn config_fits(
-    scene: &Scene,
-    classes: &[Class],
-    unit: (bool, bool),
-    tol: &Tolerance,
-) -> Vec<ConfigFit> {
-    let vp = scene.core_viewport();
+/// (last) for the scene's primitives: each configuration's own ([`crate::config::dq::statements`]
+/// of the triangles rounded to its grids, the perturbation of its own setup of each), the
+/// statements `uvt render` and `uvt precision` count that configuration's differences under.
+pub fn config_fits(scene: &Scene, unit: (bool, bool), tol: &Tolerance) -> Result<Vec<ConfigFit>> {
     let mut out = Vec::new();
-    for e in registry::sweep() {
-        let (name, cfg) = (e.name, e.config);
-        let r = Rounding::at(cfg.pos(), cfg.tuv());
-        let st = scene
-            .tris
-            .iter()
-            .zip(classes)
-            .map(|(t, c)| Some(statement(t, scene.viewport, &r, eps_clip(&cfg, *c, vp))))
-            .collect();
-        out.push(ConfigFit::new(
-            name.to_string(),
-            st,
-            unit_sample_cost(&cfg, unit.0, unit.1),
-            tol,
-        ));
+    for cfg in registry::sweep()
+        .map(|e| e.config)
+        .chain(std::iter::once(PLANAR))
+    {
+        let st = with_config!(cfg, P => statements_at::<P>(scene))
+            .ok_or_else(|| anyhow!("configuration {cfg} has no precision type"))??;
+        let cost = if cfg.planar() {
+            planar_static::unit_cost(unit.0, unit.1)
+        } else {
+            unit_sample_cost(&cfg, unit.0, unit.1)
+        };
+        out.push(ConfigFit::new(cfg.to_string(), st, cost, tol));
     }
-    // The planar static configuration: per-primitive ε for static triangles.
-    let st = scene
+    Ok(out)
+}
+
+/// The statements of the scene's primitives at `P` (rounded to `P`'s grids).
+fn statements_at<P: Precision + Sync>(scene: &Scene) -> Result<Vec<Option<Statement>>> {
+    let core = scene
         .tris
         .iter()
-        .zip(classes)
-        .map(|(t, c)| {
-            let core = t.to_core().ok()?;
-            planar_static::statement(t, &core, *c, scene.viewport)
+        .enumerate()
+        .map(|(i, t)| {
+            t.to_core_with::<P>()
+                .map_err(|e| anyhow!("triangles[{i}]: {e}"))
         })
-        .collect();
-    out.push(ConfigFit::new(
-        PLANAR.to_string(),
-        st,
-        planar_static::unit_cost(unit.0, unit.1),
-        tol,
-    ));
-    out
+        .collect::<Result<Vec<_>>>()?;
+    let r = Rounding::at(P::POS_FRAC, P::TUV_FRAC);
+    Ok(statements::<P>(
+        &scene.tris,
+        &core,
+        scene.core_viewport(),
+        &r,
+        1.0,
+    ))
 }
 
 /// The narrowest configuration meeting the tolerance (module docs), or the unreachable error.

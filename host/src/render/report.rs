@@ -164,8 +164,8 @@ pub fn report_md(r: &Rendered) -> String {
          (`host/src/compare/pass.rs`), {} differ ({} covered by the core only, {} by the reference only; \
          rate {:.2e}); largest distance of a differing sample from an edge {:.2e} px; not explained by the \
          derived quantization bound at this precision (must be 0): {}. By error statement \
-         (`host/src/config/dq.rs`): {} of primitives stated in pixels, {} of them farther than the \
-         primitive's own d_q from an edge (must be 0); {} of primitives stated in clip space only \
+         (`host/src/config/dq.rs`): {} of primitives stated in pixels (their largest d_q {} px, farthest \
+         from an edge {:.2e} px), {} of them farther than the primitive's own d_q from an edge (must be 0); {} of primitives stated in clip space only \
          (largest backward error δ {:.3e} clip units; {} of primitives whose δ is above 1/16 of their own \
          clip extent, about which the statement says nothing). Per primitive: the core covers {} samples, \
          the reference {}; {} primitives the reference draws are lost, {} drawn where the reference \
@@ -174,7 +174,7 @@ pub fn report_md(r: &Rendered) -> String {
          ({bounds}, bounds tile {}): {} (must be 0). Resolved images differ in {} pixels (max channel \
          difference {}).\n",
         c.compared, c.differ, c.fixed_only, c.f64_only, c.rate(), c.max_distance_px, c.beyond_bound,
-        c.differ_px, c.beyond_statement, c.differ_clip, c.max_clip, c.differ_clip_uninformative,
+        c.differ_px, crate::config::dq::px_text(c.max_dq_px), c.max_distance_stated_px, c.beyond_statement, c.differ_clip, c.max_clip, c.differ_clip_uninformative,
         c.core_covered, c.reference_covered, c.lost, c.gained, c.failing.len(), j["tile"], c.violations(),
         j["image_diff_fixed_vs_f64"]["pixels"], j["image_diff_fixed_vs_f64"]["max_channel"]
     );

@@ -398,3 +398,43 @@ fn fit_draws_a_triangle_near_the_camera_within_the_tolerance() {
     assert!(c["covered"][0].as_u64().unwrap() > 5000, "{c}");
     assert_eq!(c["lost_gained"], serde_json::json!([0, 0]), "{c}");
 }
+
+#[test]
+fn docs_fit_example_is_the_command() {
+    // docs/units.md's fit example is `uvt fit` of a static stress scene from the repository root
+    // (the committed Cortex-M files), its headings at level 4: a report format changed without
+    // `bash host/report/regen.sh --only fit-example`, or a figure edited by hand, fails here.
+    let root = repo("..");
+    let dir = tempfile::tempdir().unwrap();
+    let o = Command::new(env!("CARGO_BIN_EXE_uvt"))
+        .current_dir(&root)
+        .args([
+            "fit",
+            "host/stress/edges_on_pixel_and_tile_boundaries.json",
+            "--out",
+        ])
+        .arg(dir.path())
+        .output()
+        .expect("run uvt");
+    assert!(o.status.success(), "{}", text(&o));
+    let md = std::fs::read_to_string(dir.path().join("fit.md")).unwrap();
+    let want: Vec<String> = md
+        .lines()
+        .map(|l| match (l.strip_prefix("## "), l.strip_prefix("# ")) {
+            (Some(r), _) | (None, Some(r)) => format!("#### {r}"),
+            _ => l.to_string(),
+        })
+        .collect();
+    let page = std::fs::read_to_string(root.join("docs/units.md")).unwrap();
+    let b = uvt_host::splice::blocks(&page)
+        .unwrap()
+        .into_iter()
+        .find(|b| b.name == "fit-example")
+        .expect("docs/units.md has the block fit-example");
+    let lines: Vec<&str> = page.lines().collect();
+    assert_eq!(
+        lines[b.begin..b.end - 1].join("\n").trim_end(),
+        want.join("\n").trim_end(),
+        "docs/units.md's fit example differs from the command (bash host/report/regen.sh --only fit-example)"
+    );
+}

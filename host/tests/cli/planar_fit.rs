@@ -119,12 +119,7 @@ fn fit_never_picks_planar_beyond_the_tolerance() {
     let s = guard_band();
     let cls = classes(&s).unwrap();
     let planar = |tol: f64| {
-        let fits = config_fits(
-            &s,
-            &cls,
-            (false, false),
-            &Tolerance::new(tol, None, s.viewport),
-        );
+        let fits = config_fits(&s, (false, false), &Tolerance::new(tol, None, s.viewport));
         fits.into_iter()
             .find(|f| f.config == PLANAR.to_string())
             .expect("fit lists the planar configuration")
@@ -158,7 +153,6 @@ fn fit_picks_planar_for_a_benign_static_scene_when_cheapest() {
     let cls = classes(&s).unwrap();
     let fits = config_fits(
         &s,
-        &cls,
         (false, false),
         &Tolerance::new(DEFAULT_TOLERANCE_PX, None, s.viewport),
     );

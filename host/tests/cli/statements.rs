@@ -35,7 +35,7 @@ fn every_primitive_of_every_stress_scene_has_a_finite_statement() {
         let s = stress(name);
         let cls = classes(&s).unwrap();
         let tol = Tolerance::new(DEFAULT_TOLERANCE_PX, None, s.viewport);
-        for f in config_fits(&s, &cls, (true, true), &tol) {
+        for f in config_fits(&s, (true, true), &tol).unwrap() {
             assert_eq!(f.statements.len(), s.tris.len());
             for (i, st) in f.statements.iter().enumerate() {
                 let st = st.unwrap_or_else(|| panic!("{name} {}: primitive {i}", f.config));
@@ -67,7 +67,7 @@ fn a_camera_plane_crosser_is_stated_in_clip_space_and_a_narrow_configuration_fai
     let s = stress("crossing_camera_plane.json");
     let cls = classes(&s).unwrap();
     let tol = Tolerance::new(DEFAULT_TOLERANCE_PX, None, s.viewport);
-    let fits = config_fits(&s, &cls, (true, true), &tol);
+    let fits = config_fits(&s, (true, true), &tol).unwrap();
     let narrow = fits
         .iter()
         .find(|f| f.config == "bounded-8-8-8-28")
@@ -113,7 +113,7 @@ fn domain_edge_is_held_to_its_pixel_bound() {
     let s = stress("domain_edge.json");
     let cls = classes(&s).unwrap();
     let tol = Tolerance::new(DEFAULT_TOLERANCE_PX, None, s.viewport);
-    let fits = config_fits(&s, &cls, (true, true), &tol);
+    let fits = config_fits(&s, (true, true), &tol).unwrap();
     let exact = fits
         .iter()
         .find(|f| f.config == registry::EXACT.to_string())
@@ -161,7 +161,7 @@ fn a_triangle_near_the_camera_is_held_to_its_pixel_bound_and_never_lost() {
     let s = near_camera();
     let cls = classes(&s).unwrap();
     let tol = Tolerance::new(1.0, None, s.viewport);
-    let fits = config_fits(&s, &cls, (true, true), &tol);
+    let fits = config_fits(&s, (true, true), &tol).unwrap();
     let mut lost = 0;
     for f in &fits {
         let st = f.statements[0].unwrap();
@@ -219,7 +219,7 @@ fn a_clip_statement_larger_than_the_primitive_meets_no_tolerance() {
     let s = stress("crossing_camera_plane.json");
     let cls = classes(&s).unwrap();
     let tol = Tolerance::new(1000.0, Some(10.0), s.viewport);
-    let fits = config_fits(&s, &cls, (true, true), &tol);
+    let fits = config_fits(&s, (true, true), &tol).unwrap();
     let mut said_nothing = 0;
     for f in &fits {
         for st in f.statements.iter().flatten().filter(|st| st.px.is_none()) {
