@@ -7,7 +7,9 @@ use std::path::Path;
 
 use anyhow::Result;
 
+use uvt_core::bounds::strategy::BoundsStrategy;
 use uvt_core::config::registry::{self, Config};
+use uvt_core::Laine2011;
 
 use crate::scene::file::Scene;
 
@@ -52,17 +54,44 @@ pub fn export_default(dir: &Path, seed: u64, cfg: Option<Config>) -> Result<()> 
     }
     for (name, text) in [("frame_a", FRAME_A), ("frame_b", FRAME_B)] {
         let scene = Scene::parse(text, name, Path::new("."))?;
-        let set = export::frame(&scene, text, at)?;
+        let set = export::frame(&scene, text, at, Laine2011.name())?;
         export::write(&set, &dir.join(name), "frame", scene.seed)?;
     }
     Ok(())
 }
 
-/// Export frame-level vectors of one scene file into `dir` at configuration `cfg`.
-pub fn export_scene(path: &Path, dir: &Path, cfg: Config) -> Result<()> {
+/// Export into `dir` frame-level vectors of `scene`, loaded from the scene file `path` under the
+/// options `uvt render` takes (`--spp`, `--tile`, `--viewport`), with bounds strategy `strategy`
+/// (a name of [`STRATEGIES`](uvt_core::bounds::registry::STRATEGIES)) at configuration `cfg`:
+/// what `uvt render` runs with the same options ([`export::frame`]). The set's `scene.json` is
+/// the file's text when the options leave its viewport, samples per pixel and bounds tile as
+/// they are; otherwise the scene as it ran ([`Scene::to_json`]: direct form, the options
+/// applied).
+pub fn export_scene(
+    path: &Path,
+    scene: &Scene,
+    dir: &Path,
+    cfg: Config,
+    strategy: &'static str,
+) -> Result<()> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| anyhow::anyhow!("cannot read scene file {}: {e}", path.display()))?;
-    let scene = Scene::load(path)?;
-    let set = export::frame(&scene, &text, cfg)?;
+    let file = Scene::load(path)?;
+    let ran = |s: &Scene| (s.viewport, s.spp, s.tile);
+    let text = if ran(&file) == ran(scene) {
+        text
+    } else {
+        let mut j = scene.to_json();
+        j["description"] = serde_json::json!(format!(
+            "scene file {} as uvt vectors export ran it: viewport {}x{}, {} spp, bounds tile {}",
+            path.display(),
+            scene.viewport.0,
+            scene.viewport.1,
+            scene.spp,
+            scene.tile
+        ));
+        serde_json::to_string(&j)? + "\n"
+    };
+    let set = export::frame(scene, &text, cfg, strategy)?;
     export::write(&set, dir, "frame", scene.seed)
 }

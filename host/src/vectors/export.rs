@@ -8,14 +8,16 @@ use anyhow::{anyhow, Context, Result};
 use embedded_graphics_core::pixelcolor::RgbColor;
 use rand::{Rng, SeedableRng};
 use serde_json::json;
+use uvt_core::bounds::any::AnyStrategy;
 use uvt_core::bounds::laine::LaineCoeffs;
+use uvt_core::bounds::strategy::BoundsStrategy;
 use uvt_core::config::registry::Config;
 use uvt_core::config::unit::Full;
 use uvt_core::raster::zmax::NoRegisters;
 use uvt_core::{
-    with_config, Engine, Fate, General, Laine2011, Lens, NoZmax, Observer, PixelRect, Precision,
-    Prim, Rgb888, Sample, SamplePattern, Seen, Setup, Stats, SubPixel, TileBuffer, Time, Triangle,
-    UvtBox, Viewport,
+    with_config, with_strategy, Engine, Fate, General, Laine2011, Lens, NoZmax, Observer,
+    PixelRect, Precision, Prim, RegionBuffer, Rgb888, Sample, SamplePattern, Seen, Setup, Stats,
+    SubPixel, Time, Triangle, UvtBox, Viewport,
 };
 
 use crate::scene::builtin::random_tri;
@@ -61,6 +63,10 @@ pub struct Set {
     pub pcases: Vec<PCase>,
     /// the configuration of the setup, bounds and per-sample records
     pub config: Config,
+    /// the bounds strategy of the frame (a name of
+    /// [`STRATEGIES`](uvt_core::bounds::registry::STRATEGIES)); `laine2011`, the RTL bounds
+    /// unit's, for a unit-level set
+    pub strategy: &'static str,
 }
 impl Set {
     fn new(config: Config, spp: u32) -> Set {
@@ -76,6 +82,7 @@ impl Set {
             pcov: None,
             pcases: Vec::new(),
             config,
+            strategy: Laine2011.name(),
         }
     }
     fn push(&mut self, file: &str, r: Rec) {
@@ -325,29 +332,59 @@ pub fn unit(seed: u64, cfg: Config) -> Result<Set> {
     set.planar(pset);
     Ok(set)
 }
-/// A frame-level set at configuration `cfg`: every stage of one frame as `uvt render --precision
-/// CFG` runs it (triangles rounded onto its position grid, samples onto its t/u/v grid; 8×8
-/// screen tiles in raster order; triangles in submission order; bounds tiles aligned to the
+/// A frame-level set at configuration `cfg` with bounds strategy `strategy` (a name of
+/// [`STRATEGIES`](uvt_core::bounds::registry::STRATEGIES)): every stage of one frame as `uvt
+/// render --precision CFG --bounds STRATEGY` runs it at the scene's samples per pixel, bounds
+/// tile and viewport (triangles rounded onto its position grid, samples onto its t/u/v grid;
+/// 8×8 screen tiles in raster order; triangles in submission order; bounds tiles aligned to the
 /// bounds-tile grid and clipped to footprint ∩ screen tile), plus `trace.jsonl`. Every sample
 /// inside a tile's box gets the configuration's sample-test record: `sample_*` at an exact
 /// configuration, `bsample_*` at a bounded one, `psample_*` (static triangles) and `bsample_*`
 /// (the others) at a planar one. A bounded configuration's set also has the planar static
 /// unit's records of the frame's static triangles (`psample_*`, up to 320 per triangle).
-pub fn frame(scene: &Scene, scene_json: &str, cfg: Config) -> Result<Set> {
-    with_config!(cfg, P => frame_at::<P>(scene, scene_json, cfg))
+///
+/// Bounds records (`bounds_*`) are those of the RTL bounds unit, which implements Laine 2011:
+/// they are written, and checked against the walk, only when `strategy` is `laine2011`; with
+/// any other strategy the `tile` lines carry the box the strategy's walk computed and the set
+/// has no bounds records ([`write`]'s manifest says so). The interval-check records stay box
+/// containment; the core's admission must equal it for a strategy whose tile is its box alone
+/// (its `Tile` type is [`UvtBox`], whose predicate admits everything, as Laine 2011's), and
+/// imply it for one with a per-sample predicate (it admits fewer samples than its box holds);
+/// the trace's `sample` lines of such a strategy also say whether the sample was `admitted`
+/// (tested).
+pub fn frame(scene: &Scene, scene_json: &str, cfg: Config, strategy: &str) -> Result<Set> {
+    with_config!(cfg, P => frame_at::<P>(scene, scene_json, cfg, strategy))
         .ok_or_else(|| anyhow!("configuration {cfg} is not in the registry"))?
 }
 
-fn frame_at<P: Precision>(scene: &Scene, scene_json: &str, cfg: Config) -> Result<Set> {
-    if scene.spp != 4 {
-        return Err(anyhow!(
-            "frame vectors use 4 samples per pixel (the scene has {})",
-            scene.spp
-        ));
-    }
+/// Whether strategy `_s`'s tiles are their box alone (no per-sample predicate).
+fn box_only<B: BoundsStrategy>(_s: &B) -> bool
+where
+    B::Tile: 'static,
+{
+    std::any::TypeId::of::<B::Tile>() == std::any::TypeId::of::<UvtBox>()
+}
+
+fn frame_at<P: Precision>(
+    scene: &Scene,
+    scene_json: &str,
+    cfg: Config,
+    strategy: &str,
+) -> Result<Set> {
+    let unknown = || {
+        anyhow!(
+            "unknown bounds strategy {strategy:?} (accepted: {})",
+            uvt_core::bounds::registry::STRATEGIES.join(", ")
+        )
+    };
+    let any = AnyStrategy::named(strategy).ok_or_else(unknown)?;
+    let box_only = with_strategy!(strategy, s => box_only(&s)).ok_or_else(unknown)?;
+    let laine = any.name() == Laine2011.name();
     let (core, pattern) = scene.inputs_at::<P>()?;
     let vp = scene.core_viewport();
-    let mut set = Set::new(cfg, scene.spp as u32);
+    let spp = usize::from(scene.spp);
+    let mut set = Set::new(cfg, u32::from(scene.spp));
+    set.strategy = any.name();
     set.scene = Some(scene_json.into());
     let grid = Grid::from_config(cfg).ok();
     let (mut bset, mut pset) = (BSet::default(), PSet::default());
@@ -375,9 +412,10 @@ fn frame_at<P: Precision>(scene: &Scene, scene_json: &str, cfg: Config) -> Resul
     let clear = Rgb888::new(24, 24, 32);
     let q = SamplePattern::new_with::<P>(pattern.block, pattern.spp, &pattern.quant)
         .map_err(|e| anyhow!("sample table: {e}"))?;
-    // The frame is the core's loop (Laine 2011 at P on the full unit) per 8×8 screen tile, as
-    // `uvt_core::Raster` runs it; the trace watches it and writes every stage's records.
-    let engine = Engine::<General<Laine2011, P, Full>, NoZmax>::new(Laine2011, vp);
+    // The frame is the core's loop (the strategy, by name as `uvt render` takes it, at P on the
+    // full unit) per 8×8 screen tile, as `uvt_core::Raster` runs it; the trace watches it and
+    // writes every stage's records.
+    let engine = Engine::<General<AnyStrategy, P, Full>, NoZmax>::new(any, vp);
     let mut stats = Stats::default();
     let mut drawn = Vec::new();
     for (i, (t, &color)) in core.iter().zip(&colors).enumerate() {
@@ -388,16 +426,27 @@ fn frame_at<P: Precision>(scene: &Scene, scene_json: &str, cfg: Config) -> Resul
             drawn.push(d);
         }
     }
-    let mut fb = TileBuffer::<8, 8, 4>::new(clear);
+    // One screen tile's samples (depth and colour), the scene's spp per pixel.
+    let mut depth = vec![0i32; 8 * 8 * spp];
+    let mut color = vec![clear; 8 * 8 * spp];
     for y0 in (0..vp.height()).step_by(8) {
         for x0 in (0..vp.width()).step_by(8) {
-            fb.clear(clear);
             let screen = PixelRect {
                 x0,
                 y0,
                 x1: (x0 + 8).min(vp.width()),
                 y1: (y0 + 8).min(vp.height()),
             };
+            let n = usize::from(screen.x1 - x0) * usize::from(screen.y1 - y0) * spp;
+            let mut fb = RegionBuffer::new(
+                screen,
+                scene.spp,
+                clear,
+                &mut depth[..n],
+                &mut color[..n],
+                &mut [],
+            )
+            .map_err(|e| anyhow!("{e}"))?;
             let mut tr = Tracer {
                 set: &mut set,
                 trace: &mut trace,
@@ -407,6 +456,8 @@ fn frame_at<P: Precision>(scene: &Scene, scene_json: &str, cfg: Config) -> Resul
                 grid,
                 bset: &mut bset,
                 pset: &mut pset,
+                laine,
+                box_only,
                 bounds: None,
                 failed: None,
             };
@@ -428,7 +479,7 @@ fn frame_at<P: Precision>(scene: &Scene, scene_json: &str, cfg: Config) -> Resul
             for py in screen.y0..screen.y1 {
                 for px in screen.x0..screen.x1 {
                     let (tx, ty) = ((px - x0) as usize, (py - y0) as usize);
-                    let cs: Vec<Rgb888> = (0..4)
+                    let cs: Vec<Rgb888> = (0..spp)
                         .map(|s| fb.sample_color(tx, ty, s).unwrap_or(clear))
                         .collect();
                     let c = set.resolve(&cs);
@@ -450,12 +501,13 @@ fn frame_at<P: Precision>(scene: &Scene, scene_json: &str, cfg: Config) -> Resul
     Ok(set)
 }
 
-/// The frame trace's observer of the core's loop: per bounds tile its bounds record (checked
-/// against the tile the walk computed) and a `tile` line; per sample of a kept tile — the
-/// culled ones too (the loop tests them for it, [`Observer::CULLED_SAMPLES`]) — its interval
-/// check record (checked against the tile's admission), the configuration's sample-test record
-/// for an admitted sample (checked against the loop's hit) and a `sample` line. The first
-/// mismatch is kept and ends the export.
+/// The frame trace's observer of the core's loop: per bounds tile its bounds record (Laine 2011
+/// only; checked against the tile the walk computed) and a `tile` line; per sample of a kept
+/// tile — the culled ones too (the loop tests them for it, [`Observer::CULLED_SAMPLES`]) — its
+/// interval check record (checked against the tile's admission: equal for a box-only
+/// strategy, implied by it otherwise), the configuration's sample-test record for a sample
+/// inside the box (checked against the loop's hit) and a `sample` line. The first mismatch is
+/// kept and ends the export.
 struct Tracer<'a> {
     set: &'a mut Set,
     trace: &'a mut String,
@@ -465,6 +517,10 @@ struct Tracer<'a> {
     grid: Option<Grid>,
     bset: &'a mut BSet,
     pset: &'a mut PSet,
+    /// the strategy is Laine 2011: bounds records are written and checked
+    laine: bool,
+    /// the strategy's tiles are their box alone: admission equals box containment
+    box_only: bool,
     /// the current kept tile's box
     bounds: Option<UvtBox>,
     failed: Option<anyhow::Error>,
@@ -472,15 +528,17 @@ struct Tracer<'a> {
 
 impl Tracer<'_> {
     fn cell(&mut self, tri: u32, cell: PixelRect, fate: Fate) -> Result<()> {
-        let b = self.set.bounds(tri, cell)?;
-        let walked = match fate {
+        let b = match fate {
             Fate::Kept { bounds } => Some(bounds),
             Fate::Skipped | Fate::Zculled => None,
         };
-        if b != walked {
-            return Err(anyhow!(
-                "triangle {tri}, tile {cell:?}: the bounds record gives {b:?}, the core's walk {walked:?}"
-            ));
+        if self.laine {
+            let rec = self.set.bounds(tri, cell)?;
+            if rec != b {
+                return Err(anyhow!(
+                    "triangle {tri}, tile {cell:?}: the bounds record gives {rec:?}, the core's walk {b:?}"
+                ));
+            }
         }
         let f = |r: i32| r as f64 / 65536.0;
         *self.trace += &(json!({"type": "tile", "tri": tri, "rect": [cell.x0, cell.y0, cell.x1, cell.y1],
@@ -502,7 +560,12 @@ impl Tracer<'_> {
             .bounds
             .ok_or_else(|| anyhow!("a sample outside a kept tile"))?;
         let inside = self.set.select(&b, smp);
-        if inside != seen.admitted {
+        let agrees = if self.box_only {
+            inside == seen.admitted
+        } else {
+            inside || !seen.admitted
+        };
+        if !agrees {
             return Err(anyhow!(
                 "triangle {tri}, pixel ({px},{py}), sample {si}: the interval record gives {inside}, the core's admission {}",
                 seen.admitted
@@ -533,10 +596,14 @@ impl Tracer<'_> {
             }
         }
         let f = |r: i32| r as f64 / 65536.0;
-        *self.trace += &(json!({"type": "sample", "tri": i, "px": px, "py": py, "s": si,
+        let mut line = json!({"type": "sample", "tri": i, "px": px, "py": py, "s": si,
         "x": px as f64 + smp.sx().to_bits() as f64 / 256.0, "y": py as f64 + smp.sy().to_bits() as f64 / 256.0,
         "u": f(smp.u().to_bits()), "v": f(smp.v().to_bits()), "t": f(smp.t().to_bits()),
-        "inside": inside, "covered": hit.is_some(), "depth": hit.map(|d| d as f64 / 16777216.0)}).to_string() + "\n");
+        "inside": inside, "covered": hit.is_some(), "depth": hit.map(|d| d as f64 / 16777216.0)});
+        if !self.box_only {
+            line["admitted"] = json!(seen.admitted);
+        }
+        *self.trace += &(line.to_string() + "\n");
         Ok(())
     }
 }
@@ -592,6 +659,15 @@ pub fn write(set: &Set, dir: &Path, kind: &str, seed: u64) -> Result<()> {
         "cases": set.cases, "files": files,
     });
     let mut manifest = manifest;
+    // Absent for Laine 2011 (the committed sets' strategy, their bytes unchanged): its bounds
+    // records are written.
+    if set.strategy != Laine2011.name() {
+        manifest["bounds_strategy"] = json!(set.strategy);
+        manifest["bounds_records"] = json!(format!(
+            "none: the RTL bounds unit (vectors/rtl/uvt_bounds.v) implements laine2011; the trace's tile lines carry the boxes of {}",
+            set.strategy
+        ));
+    }
     if let (Some(cov), Ok(g)) = (&set.bcov, Grid::from_config(set.config)) {
         manifest["bsample_config"] = json!({"name": g.name(), "grid": g, "core": format!("uvt_core::bounded_eval at {}", g.name())});
         manifest["bsample_coverage"] = json!(cov);

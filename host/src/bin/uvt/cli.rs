@@ -4,7 +4,7 @@
 
 use std::path::PathBuf;
 
-use clap::{Parser, Subcommand};
+use clap::{Args, Parser, Subcommand};
 use uvt_host::config::names;
 
 #[derive(Parser)]
@@ -28,21 +28,12 @@ pub enum Cmd {
         /// output directory (created if absent)
         #[arg(long, default_value = "out")]
         out: PathBuf,
-        /// samples per pixel, 1..=64 (overrides the scene file)
-        #[arg(long, allow_hyphen_values = true, value_parser = clap::value_parser!(u16).range(1..=64))]
-        spp: Option<u16>,
-        /// bounds tile size 1, 2, 4 or 8 (overrides the scene file)
-        #[arg(long, allow_hyphen_values = true, value_parser = clap::value_parser!(u8).range(1..=8))]
-        tile: Option<u8>,
-        /// viewport WxH, e.g. 320x180 (overrides the scene file; the mesh form is re-projected)
-        #[arg(long)]
-        viewport: Option<String>,
+        /// how the core runs the frame: samples per pixel, bounds tile, viewport, strategy
+        #[command(flatten)]
+        frame: FrameArgs,
         /// sample pattern seed (overrides the scene file)
         #[arg(long)]
         seed: Option<u64>,
-        /// bounds strategy of the core: any of `uvt configs --strategies` (e.g. best)
-        #[arg(long, default_value = "laine2011")]
-        bounds: String,
         /// the core's configuration: `default` (bounded-16-16-16-20) or any name of `uvt
         /// configs` (e.g. exact-12-12-8); the f64 reference stays exact
         #[arg(long, default_value = names::DEFAULT_ALIAS)]
@@ -289,6 +280,24 @@ pub enum Cmd {
     },
 }
 
+/// The options of how the core runs a frame that `uvt render` and `uvt vectors export --scene`
+/// share (one definition, so a frame trace can be taken of exactly what `render` ran).
+#[derive(Args)]
+pub struct FrameArgs {
+    /// samples per pixel, 1..=64 (overrides the scene file)
+    #[arg(long, allow_hyphen_values = true, value_parser = clap::value_parser!(u16).range(1..=64))]
+    pub spp: Option<u16>,
+    /// bounds tile size 1, 2, 4 or 8 (overrides the scene file)
+    #[arg(long, allow_hyphen_values = true, value_parser = clap::value_parser!(u8).range(1..=8))]
+    pub tile: Option<u8>,
+    /// viewport WxH, e.g. 320x180 (overrides the scene file; the mesh form is re-projected)
+    #[arg(long)]
+    pub viewport: Option<String>,
+    /// bounds strategy of the core: any of `uvt configs --strategies` (e.g. best)
+    #[arg(long, default_value = "laine2011")]
+    pub bounds: String,
+}
+
 #[derive(Subcommand)]
 pub enum SceneCmd {
     /// List the built-in scenes.
@@ -306,11 +315,16 @@ pub enum SceneCmd {
 #[derive(Subcommand)]
 pub enum VecCmd {
     /// Write vectors: without --scene the committed sets (unit/, unit_exact/, frame_a/,
-    /// frame_b/) into DIR, or with --config the unit and frame sets at that configuration.
+    /// frame_b/) into DIR, or with --config the unit and frame sets at that configuration; with
+    /// --scene the frame set of that scene as `uvt render` runs it with the same --spp, --tile,
+    /// --viewport and --bounds (bounds records for laine2011 only: the RTL bounds unit's).
     Export {
         /// frame-level vectors of this scene file only
         #[arg(long)]
         scene: Option<PathBuf>,
+        /// how the core runs the frame (with --scene only), as for `uvt render`
+        #[command(flatten)]
+        frame: FrameArgs,
         /// configuration of every stage's records and the trace: `default` or a name of `uvt
         /// configs` (without --scene: unit/, frame_a/, frame_b/ at it; default: the committed
         /// sets)

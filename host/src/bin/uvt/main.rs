@@ -5,17 +5,20 @@
 #![deny(clippy::print_stderr)]
 
 use std::io::Write;
+use std::path::Path;
 use std::process::ExitCode;
 
 use anyhow::{anyhow, bail, Context, Result};
 use clap::Parser;
+use uvt_core::bounds::strategy::BoundsStrategy;
+use uvt_core::Laine2011;
 use uvt_host::config::names;
 use uvt_host::scene::budget;
 use uvt_host::scene::builtin::{self, Bench, Blur};
 use uvt_host::scene::file::{LoadOpts, Scene};
 
 mod cli;
-use cli::{Cli, Cmd, SceneCmd, VecCmd};
+use cli::{Cli, Cmd, FrameArgs, SceneCmd, VecCmd};
 
 fn main() -> ExitCode {
     match run(Cli::parse()) {
@@ -55,6 +58,50 @@ fn parse_viewport(s: &str) -> Result<(u16, u16)> {
             .filter(|v| (1..=2048).contains(v))
     };
     Ok((d(w).ok_or_else(bad)?, d(h).ok_or_else(bad)?))
+}
+
+impl FrameArgs {
+    /// The strategy `--bounds` names.
+    fn strategy(&self) -> Result<&'static str> {
+        names::strategy("--bounds", &self.bounds)
+    }
+
+    /// The first of these options given, if any (`--bounds` counts when not its default).
+    fn given(&self) -> Option<&'static str> {
+        [
+            (self.spp.is_some(), "--spp"),
+            (self.tile.is_some(), "--tile"),
+            (self.viewport.is_some(), "--viewport"),
+            (self.bounds != Laine2011.name(), "--bounds"),
+        ]
+        .into_iter()
+        .find_map(|(given, opt)| given.then_some(opt))
+    }
+
+    /// The scene file at `path` (its warnings on stderr), or without one the built-in default
+    /// scene, under these options and the memory budget `mem_budget` (bytes).
+    fn scene(&self, path: Option<&Path>, mem_budget: u64) -> Result<Scene> {
+        if let Some(t) = self.tile.filter(|t| ![1, 2, 4, 8].contains(t)) {
+            bail!("--tile {t}: not one of 1, 2, 4, 8");
+        }
+        let load = LoadOpts {
+            mem_budget,
+            viewport: self.viewport.as_deref().map(parse_viewport).transpose()?,
+            spp: self.spp,
+        };
+        let mut s = match path {
+            Some(p) => {
+                let l = Scene::load_with(p, &load)?;
+                for w in &l.warnings {
+                    uvt_host::log::line(&format!("uvt: warning: {}: {w}", p.display()));
+                }
+                l.scene
+            }
+            None => builtin::default_scene().with_opts(&load)?,
+        };
+        s.tile = self.tile.unwrap_or(s.tile);
+        Ok(s)
+    }
 }
 
 /// Built-in scenes by name: `default` and the benchmark rows `game-motion`, `dense-both2`, …
@@ -104,39 +151,19 @@ fn run(cli: Cli) -> Result<()> {
         Cmd::Render {
             scene,
             out,
-            spp,
-            tile,
-            viewport,
+            frame,
             seed,
-            bounds,
             precision,
             mem_budget,
         } => {
             uvt_host::render::scene_render::check_out_dir(&out)?;
             let opts = uvt_host::render::opts::RenderOpts {
-                bounds: names::strategy("--bounds", &bounds)?,
+                bounds: frame.strategy()?,
                 precision: names::precision("--precision", &precision)?,
                 progress: true,
             };
-            if let Some(t) = tile.filter(|t| ![1, 2, 4, 8].contains(t)) {
-                bail!("--tile {t}: not one of 1, 2, 4, 8");
-            }
-            let load = LoadOpts {
-                mem_budget: budget::parse_size(&mem_budget).context("--mem-budget")?,
-                viewport: viewport.as_deref().map(parse_viewport).transpose()?,
-                spp,
-            };
-            let mut s = match scene {
-                Some(p) => {
-                    let l = Scene::load_with(&p, &load)?;
-                    for w in &l.warnings {
-                        uvt_host::log::line(&format!("uvt: warning: {}: {w}", p.display()));
-                    }
-                    l.scene
-                }
-                None => builtin::default_scene().with_opts(&load)?,
-            };
-            s.tile = tile.unwrap_or(s.tile);
+            let budget = budget::parse_size(&mem_budget).context("--mem-budget")?;
+            let mut s = frame.scene(scene.as_deref(), budget)?;
             s.seed = seed.unwrap_or(s.seed);
             let r = uvt_host::render::scene_render::render_with(&s, &opts)?;
             let files = uvt_host::render::scene_render::write(&r, &s, &out)?;
@@ -471,6 +498,7 @@ fn run(cli: Cli) -> Result<()> {
         }
         Cmd::Vectors(VecCmd::Export {
             scene,
+            frame,
             config,
             out,
             seed,
@@ -479,13 +507,24 @@ fn run(cli: Cli) -> Result<()> {
             let cfg = config
                 .map(|c| names::precision("--config", &c))
                 .transpose()?;
+            let strategy = frame.strategy()?;
             match scene {
-                Some(p) => uvt_host::vectors::committed::export_scene(
-                    &p,
-                    &out,
-                    cfg.unwrap_or(uvt_core::config::registry::DEFAULT),
-                )?,
-                None => uvt_host::vectors::committed::export_default(&out, seed, cfg)?,
+                Some(p) => {
+                    let s = frame.scene(Some(&p), budget::DEFAULT_MEM_BUDGET)?;
+                    uvt_host::vectors::committed::export_scene(
+                        &p,
+                        &s,
+                        &out,
+                        cfg.unwrap_or(uvt_core::config::registry::DEFAULT),
+                        strategy,
+                    )?
+                }
+                None => {
+                    if let Some(opt) = frame.given() {
+                        bail!("{opt} applies to a frame set of one scene: it needs --scene FILE");
+                    }
+                    uvt_host::vectors::committed::export_default(&out, seed, cfg)?
+                }
             }
             say(&format!("wrote vectors to {}\n", out.display()))?;
         }
