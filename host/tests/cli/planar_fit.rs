@@ -8,7 +8,7 @@ use std::path::Path;
 
 use uvt_core::config::registry::PLANAR;
 use uvt_host::config::dq::Tolerance;
-use uvt_host::fit::select::{classes, config_fits, DEFAULT_TOLERANCE_PX};
+use uvt_host::fit::select::{config_fits, DEFAULT_TOLERANCE_PX};
 use uvt_host::precision::measure::planar_decisions;
 use uvt_host::scene::file::Scene;
 
@@ -117,9 +117,8 @@ fn planar_dq_bounds_every_difference_and_a_halved_dq_is_caught() {
 #[test]
 fn fit_never_picks_planar_beyond_the_tolerance() {
     let s = guard_band();
-    let cls = classes(&s).unwrap();
     let planar = |tol: f64| {
-        let fits = config_fits(&s, (false, false), &Tolerance::new(tol, None, s.viewport));
+        let fits = config_fits(&s, (false, false), &Tolerance::new(tol, None, s.viewport)).unwrap();
         fits.into_iter()
             .find(|f| f.config == PLANAR.to_string())
             .expect("fit lists the planar configuration")
@@ -150,12 +149,12 @@ fn fit_never_picks_planar_beyond_the_tolerance() {
 #[test]
 fn fit_picks_planar_for_a_benign_static_scene_when_cheapest() {
     let s = benign();
-    let cls = classes(&s).unwrap();
     let fits = config_fits(
         &s,
         (false, false),
         &Tolerance::new(DEFAULT_TOLERANCE_PX, None, s.viewport),
-    );
+    )
+    .unwrap();
     for f in &fits {
         println!(
             "{}: d_q {:?} px, DSP48E1 {:?}, Σ bit-products {:?}",

@@ -11,7 +11,7 @@ use std::path::Path;
 use uvt_core::config::registry::{self, DEFAULT};
 use uvt_host::config::dq::Tolerance;
 use uvt_host::fit::confirm::confirm;
-use uvt_host::fit::select::{classes, config_fits, DEFAULT_TOLERANCE_PX};
+use uvt_host::fit::select::{config_fits, DEFAULT_TOLERANCE_PX};
 use uvt_host::scene::file::Scene;
 
 fn stress(name: &str) -> Scene {
@@ -33,7 +33,6 @@ fn every_primitive_of_every_stress_scene_has_a_finite_statement() {
     let (mut px, mut clip) = (0, 0);
     for name in &names {
         let s = stress(name);
-        let cls = classes(&s).unwrap();
         let tol = Tolerance::new(DEFAULT_TOLERANCE_PX, None, s.viewport);
         for f in config_fits(&s, (true, true), &tol).unwrap() {
             assert_eq!(f.statements.len(), s.tris.len());
@@ -65,7 +64,6 @@ fn every_primitive_of_every_stress_scene_has_a_finite_statement() {
 #[test]
 fn a_camera_plane_crosser_is_stated_in_clip_space_and_a_narrow_configuration_fails() {
     let s = stress("crossing_camera_plane.json");
-    let cls = classes(&s).unwrap();
     let tol = Tolerance::new(DEFAULT_TOLERANCE_PX, None, s.viewport);
     let fits = config_fits(&s, (true, true), &tol).unwrap();
     let narrow = fits
@@ -111,7 +109,6 @@ fn a_camera_plane_crosser_is_stated_in_clip_space_and_a_narrow_configuration_fai
 #[test]
 fn domain_edge_is_held_to_its_pixel_bound() {
     let s = stress("domain_edge.json");
-    let cls = classes(&s).unwrap();
     let tol = Tolerance::new(DEFAULT_TOLERANCE_PX, None, s.viewport);
     let fits = config_fits(&s, (true, true), &tol).unwrap();
     let exact = fits
@@ -159,7 +156,6 @@ fn near_camera() -> Scene {
 #[test]
 fn a_triangle_near_the_camera_is_held_to_its_pixel_bound_and_never_lost() {
     let s = near_camera();
-    let cls = classes(&s).unwrap();
     let tol = Tolerance::new(1.0, None, s.viewport);
     let fits = config_fits(&s, (true, true), &tol).unwrap();
     let mut lost = 0;
@@ -217,7 +213,6 @@ fn a_clip_statement_larger_than_the_primitive_meets_no_tolerance() {
     // crossing_camera_plane.json's crosser at the narrow configurations: δ within a clip
     // tolerance of 10 clip units, but above 1/16 of the primitive's own extent.
     let s = stress("crossing_camera_plane.json");
-    let cls = classes(&s).unwrap();
     let tol = Tolerance::new(1000.0, Some(10.0), s.viewport);
     let fits = config_fits(&s, (true, true), &tol).unwrap();
     let mut said_nothing = 0;

@@ -437,7 +437,7 @@ fn rtl_planar_unit_passes_in_architectural_mode() {
     w[1] = format!("{:08x}", u32::from_str_radix(&w[1], 16).unwrap() ^ 1);
     lines[hit] = w.join(" ");
     std::fs::write(bad.join("psample_out.hex"), lines.join("\n") + "\n").unwrap();
-    let out = run(&tb, &bad);
+    let out = run_failing(&tb, &bad);
     assert!(
         out.contains(&format!(
             "MISMATCH record {hit} (line {}) field depth",
