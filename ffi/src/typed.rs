@@ -3,26 +3,20 @@
 //! edge values, as the configuration's sample test computes them — the bounded test of
 //! `bounded-…` configurations, and of a `planar-…` one's moving and defocused triangles; the
 //! planar test of a `planar-…` configuration's static triangles. Exact configurations have
-//! 192-bit edge values: use the records (`uvt_sample`).
+//! 192-bit edge values: use the records (`uvt_sample`). The logic is `uvt_records::typed`'s, shared
+//! with the Python module; this file is its C boundary.
 
 use std::ffi::c_char;
 
-use uvt_core::config::registry::{self, Config};
-use uvt_core::sample::{bounded, planar};
-use uvt_core::{
-    Class, Lens, Ops, PlanarPrecision, Sample, ScreenPos, Setup, SubPixel, Time, Triangle, Vertex,
-    Viewport,
-};
-use uvt_records::bsample::Grid;
+use uvt_records::typed::{Hit, Tri, TypedError, TRI_WORDS};
 
 use crate::error::{c_str, guard, words, Fail, UVT_ERR_CONFIG, UVT_ERR_NULL, UVT_OK};
 
 /// A triangle set up at one configuration (opaque to C; made by `uvt_tri_new`, freed by
 /// `uvt_tri_free`).
+// `uvt_records::typed::Tri`, the one implementation the Python module shares.
 pub struct UvtTri {
-    setup: Setup,
-    grid: Grid,
-    planar: bool,
+    tri: Tri,
 }
 
 /// The result of one sample test.
@@ -39,89 +33,23 @@ pub struct UvtHit {
     pub e: [i64; 3],
 }
 
-fn make(verts: &[u32], vp_w: u16, vp_h: u16, config: Option<&str>) -> Result<UvtTri, Fail> {
-    let cfg: Config = match config {
-        None => registry::DEFAULT,
-        Some(n) => registry::find(n)
-            .ok_or_else(|| Fail::new(UVT_ERR_CONFIG, format!("unknown configuration `{n}`")))?,
-    };
-    let grid = Grid::from_config(cfg).map_err(|e| Fail::new(UVT_ERR_CONFIG, e))?;
-    let g = |i: usize| verts[i] as i32;
-    let vert = |b: usize| Vertex::from_bits([g(b), g(b + 1), g(b + 2), g(b + 3), g(b + 4)]);
-    let tri = Triangle::new([vert(0), vert(5), vert(10)], [vert(15), vert(20), vert(25)])
-        .map_err(|e| Fail::input(format!("triangle refused by the core: {e}")))?;
-    if grid.tri(&tri) != tri {
-        return Err(Fail::input(format!(
-            "triangle not on the {}-fraction-bit position grid of {cfg}",
-            grid.pos
-        )));
-    }
-    let vp =
-        Viewport::new(vp_w, vp_h).map_err(|e| Fail::input(format!("viewport refused: {e}")))?;
-    let planar = cfg.planar() && tri.class() == Class::Static;
-    let setup = if planar {
-        let s = Setup::unculled::<PlanarPrecision>(&tri, vp);
-        if s.planar().is_none() {
-            return Err(Fail::input(
-                "the planar setup culls this triangle (det P' = 0 after the vertex rounding): it has no sample tests",
-            ));
+impl From<Hit> for UvtHit {
+    fn from(h: Hit) -> UvtHit {
+        UvtHit {
+            covered: i32::from(h.covered),
+            det_sign: h.det_sign,
+            depth: h.depth,
+            e: h.e,
         }
-        s
-    } else {
-        // the bounded test reads the triangle, class and viewport of the setup only; the
-        // shift is the configuration's (as `run_bsample` does)
-        Setup::unculled::<uvt_core::BoundedPrecision>(&tri, vp)
-    };
-    Ok(UvtTri {
-        setup,
-        grid,
-        planar,
-    })
+    }
 }
 
-impl UvtTri {
-    fn sample(&self, xs: u32, ys: u32, t: i32, u: i32, v: i32) -> Result<UvtHit, Fail> {
-        let pos = ScreenPos { xs, ys };
-        let mut ops = Ops::default();
-        if self.planar {
-            let e = planar::eval(&self.setup, pos, &mut ops).ok_or_else(|| {
-                Fail::input(format!(
-                    "position xs = {xs}, ys = {ys} outside the viewport"
-                ))
-            })?;
-            let sigma = self.setup.planar().map_or(0, |p| p.sigma());
-            return Ok(UvtHit {
-                covered: i32::from(e.hit.is_some()),
-                det_sign: sigma,
-                depth: e.hit.map_or(0, |h| h.depth),
-                e: e.e,
-            });
+impl From<TypedError> for Fail {
+    fn from(e: TypedError) -> Fail {
+        match e {
+            TypedError::Config(m) => Fail::new(UVT_ERR_CONFIG, m),
+            TypedError::Input(m) => Fail::input(m),
         }
-        let s = Sample::new(
-            SubPixel::ZERO,
-            SubPixel::ZERO,
-            Lens::from_bits(u),
-            Lens::from_bits(v),
-            Time::from_bits(t),
-        )
-        .map_err(|e| Fail::input(format!("sample refused by the core: {e}")))?;
-        if self.grid.sample(&s) != s {
-            return Err(Fail::input(format!(
-                "t, u or v not on the {}-fraction-bit grid",
-                self.grid.tuv
-            )));
-        }
-        let e = bounded::eval(&self.setup, self.grid.off, pos, &s, &mut ops).ok_or_else(|| {
-            Fail::input(format!(
-                "position xs = {xs}, ys = {ys} outside the viewport"
-            ))
-        })?;
-        Ok(UvtHit {
-            covered: i32::from(e.hit.is_some()),
-            det_sign: e.det_sign as i32,
-            depth: e.hit.map_or(0, |h| h.depth),
-            e: e.e,
-        })
     }
 }
 
@@ -147,8 +75,18 @@ pub unsafe extern "C" fn uvt_tri_new(
             return Err(Fail::new(UVT_ERR_NULL, "out: null pointer"));
         }
         // SAFETY: the caller's contract.
-        let (v, c) = unsafe { (words(verts.cast(), 30, "verts")?, c_str(config, "config")?) };
-        let t = make(v, vp_w, vp_h, c)?;
+        let (v, c) = unsafe {
+            (
+                words(verts.cast(), TRI_WORDS, "verts")?,
+                c_str(config, "config")?,
+            )
+        };
+        let v: &[u32; TRI_WORDS] = v
+            .try_into()
+            .map_err(|_| Fail::input("verts: not 30 words"))?;
+        let t = UvtTri {
+            tri: Tri::new(v, vp_w, vp_h, c)?,
+        };
         // SAFETY: `out` is non-null and writable (the caller's contract); the box is released
         // by `uvt_tri_free`.
         unsafe { *out = Box::into_raw(Box::new(t)) };
@@ -177,9 +115,9 @@ pub unsafe extern "C" fn uvt_tri_sample(
             return Err(Fail::new(UVT_ERR_NULL, "tri or hit: null pointer"));
         }
         // SAFETY: a live handle (the caller's contract).
-        let h = unsafe { &*tri }.sample(xs, ys, t, u, v)?;
+        let h = unsafe { &*tri }.tri.sample(xs, ys, t, u, v)?;
         // SAFETY: non-null and writable (the caller's contract).
-        unsafe { *hit = h };
+        unsafe { *hit = h.into() };
         Ok(UVT_OK)
     })
 }
@@ -196,7 +134,7 @@ pub unsafe extern "C" fn uvt_tri_class(tri: *const UvtTri) -> i32 {
             return Err(Fail::new(UVT_ERR_NULL, "tri: null pointer"));
         }
         // SAFETY: a live handle (the caller's contract).
-        Ok(unsafe { &*tri }.setup.class().index() as i32)
+        Ok(unsafe { &*tri }.tri.class().index() as i32)
     })
 }
 

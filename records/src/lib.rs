@@ -9,7 +9,9 @@
 //! - [`bsample`]: the bounded sample-test records (any bounded configuration);
 //! - [`psample`]: the planar sample-test records (the planar static configuration);
 //! - [`kind`]: the record kinds by name and one entry point that runs any of them;
-//! - [`stream`]: the seeded input-record streams (`uvt vectors gen`, `uvt_gen`), shardable.
+//! - [`stream`]: the seeded input-record streams (`uvt vectors gen`, `uvt_gen`), shardable;
+//! - [`typed`]: the typed API (a triangle set up once, its sample test) of the C library and the
+//!   Python module.
 
 #![forbid(unsafe_code)]
 #![deny(missing_docs)]
@@ -20,3 +22,4 @@ pub mod kind;
 pub mod psample;
 pub mod stages;
 pub mod stream;
+pub mod typed;
