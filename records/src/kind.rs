@@ -212,22 +212,48 @@ pub fn first_difference(
     diff(file, expected, observed, only).into_iter().next()
 }
 
-/// Every field of `file` whose value differs, one message per field ("field NAME: expected HEX =
-/// DECODED, observed HEX = DECODED"); `only` restricts the comparison to the named fields.
-pub fn diff(file: &str, expected: &[u32], observed: &[u32], only: Option<&[&str]>) -> Vec<String> {
+/// One field two records differ in ([`diff_fields`]).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct FieldDiff {
+    /// the field (its name, words and bits: [`field_value`] reads it from either record)
+    pub field: crate::format::RecField,
+    /// "field NAME: expected HEX = DECODED, observed HEX = DECODED"
+    pub message: String,
+}
+
+/// Every field of `file` whose value differs between `expected` and `observed`, in layout order;
+/// `only` restricts the comparison to the named fields.
+pub fn diff_fields(
+    file: &str,
+    expected: &[u32],
+    observed: &[u32],
+    only: Option<&[&str]>,
+) -> Vec<FieldDiff> {
     if expected == observed {
         return Vec::new(); // the common case, without building the layout
     }
     let spp = expected.len().max(observed.len()) as u32;
     layout(file, spp)
         .fields
-        .iter()
+        .into_iter()
         .filter(|f| only.map_or(true, |o| o.contains(&f.name.as_str())))
         .filter(|f| field_value(f, expected) != field_value(f, observed))
         .map(|f| {
-            let (a, b) = (show_field(f, expected), show_field(f, observed));
-            format!("field {}: expected {a}, observed {b}", f.name)
+            let (a, b) = (show_field(&f, expected), show_field(&f, observed));
+            FieldDiff {
+                message: format!("field {}: expected {a}, observed {b}", f.name),
+                field: f,
+            }
         })
+        .collect()
+}
+
+/// Every field of `file` whose value differs, one message per field ("field NAME: expected HEX =
+/// DECODED, observed HEX = DECODED"); `only` restricts the comparison to the named fields.
+pub fn diff(file: &str, expected: &[u32], observed: &[u32], only: Option<&[&str]>) -> Vec<String> {
+    diff_fields(file, expected, observed, only)
+        .into_iter()
+        .map(|d| d.message)
         .collect()
 }
 

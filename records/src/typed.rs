@@ -125,8 +125,11 @@ impl Tri {
     pub fn sample(&self, xs: u32, ys: u32, t: i32, u: i32, v: i32) -> Result<Hit, TypedError> {
         let pos = ScreenPos { xs, ys };
         let mut ops = Ops::default();
-        let outside =
-            || TypedError::Input(format!("position xs = {xs}, ys = {ys} outside the viewport"));
+        let outside = || {
+            TypedError::Input(format!(
+                "position xs = {xs}, ys = {ys} outside the viewport"
+            ))
+        };
         if self.planar {
             let e = planar::eval(&self.setup, pos, &mut ops).ok_or_else(outside)?;
             let sigma = self.setup.planar().map_or(0, |p| p.sigma());
