@@ -46,3 +46,22 @@ cargo clippy --locked -p uvt-demo --example m4_render --target thumbv7m-none-eab
 
 echo "== tests"
 cargo test --locked --workspace
+
+echo "== Python module (py/): wheel built by maturin, installed in target/py-venv, pytest"
+# The venv: made anew when py/requirements.txt (exact versions) changes; pip needs PyPI. The wheel
+# is built with the dev profile (target/debug; debug assertions and overflow checks on): about half
+# the time of the release build `pip install ./py` makes (maturin's `--profile test` would build
+# the test harness). The tests compare the module with the `uvt` binary and libuvt_ffi.so of the
+# test profile (target/debug, made by the cargo steps above; the line below is a no-op then).
+cargo build --locked --profile test -p uvt-ffi -p uvt-host --bin uvt
+venv=target/py-venv
+if ! cmp -s py/requirements.txt "$venv/uvt-requirements.txt"; then
+  rm -rf "$venv"
+  python3 -m venv "$venv"
+  "$venv/bin/pip" install -q --disable-pip-version-check -r py/requirements.txt
+  cp py/requirements.txt "$venv/uvt-requirements.txt"
+fi
+rm -rf target/py-wheel
+"$venv/bin/maturin" build --locked --profile dev -m py/Cargo.toml -o target/py-wheel
+"$venv/bin/pip" install -q --disable-pip-version-check --force-reinstall --no-deps target/py-wheel/uvt-*.whl
+"$venv/bin/python" -m pytest py/tests -q -p no:cacheprovider
