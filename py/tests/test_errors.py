@@ -28,6 +28,10 @@ def test_triangle_errors():
         uvt.Triangle(v.astype(np.float64), vp)
     with pytest.raises(TypeError, match="config"):
         uvt.Triangle(v, vp, 3)
+    with pytest.raises(TypeError, match="viewport"):
+        uvt.Triangle(v, (1.5, 2))
+    with pytest.raises(TypeError, match="viewport"):
+        uvt.Triangle(v, 7)
     with pytest.raises(uvt.InputError, match="viewport refused: viewport 4000x10"):
         uvt.Triangle(v, (4000, 10))
     off = v.astype(np.int64).copy()

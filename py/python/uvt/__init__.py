@@ -201,7 +201,7 @@ class Triangle(_uvt.Triangle):
     ``cls``: 0 static, 1 motion, 2 defocus, 3 both.
     """
 
-    def __new__(cls, vertices: Any, viewport: Tuple[int, int] = (0, 0), config: Optional[str] = None) -> "Triangle":
+    def __new__(cls, vertices: Any, viewport: Tuple[int, int], config: Optional[str] = None) -> "Triangle":
         arr = np.asarray(vertices)
         if arr.dtype.kind not in "iu":
             raise TypeError(f"vertices: raw 16.16 integer words are needed, not dtype {arr.dtype}")
@@ -209,9 +209,12 @@ class Triangle(_uvt.Triangle):
             raise ValueError(f"vertices: shape (2, 3, 5) needed (t0/t1 × 3 vertices × x, y, z, w, coc), not {arr.shape}")
         if config is not None and not isinstance(config, str):
             raise TypeError(f"config: a configuration name, not {type(config).__name__}")
-        vp = tuple(viewport)
-        if len(vp) != 2:
-            raise ValueError(f"viewport: (width, height) needed, not {viewport!r}")
+        try:
+            vp = tuple(viewport)
+        except TypeError:
+            raise TypeError(f"viewport: (width, height) needed, not {viewport!r}") from None
+        if len(vp) != 2 or not all(isinstance(x, (int, np.integer)) and not isinstance(x, bool) for x in vp):
+            raise TypeError(f"viewport: (width, height) ints needed, not {viewport!r}")
         return super().__new__(cls, [int(x) for x in arr.reshape(-1)], (int(vp[0]), int(vp[1])), config)
 
     def test_batch(self, xs: Any, ys: Any, t: Any, u: Any, v: Any) -> BatchHits:
