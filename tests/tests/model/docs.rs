@@ -28,8 +28,8 @@ fn root() -> PathBuf {
 }
 
 /// The top-level folders a repository path starts with.
-const TOP: [&str; 9] = [
-    "core", "host", "demo", "tests", "testkit", "vectors", "docs", "ffi", "records",
+const TOP: [&str; 10] = [
+    "core", "host", "demo", "tests", "testkit", "vectors", "docs", "ffi", "records", "py",
 ];
 
 /// The repository as the scan sees it: every file under the top-level folders and at the root
