@@ -49,8 +49,8 @@ cargo test --locked --workspace
 
 echo "== Python module (py/): wheel built by maturin, installed in target/py-venv, pytest"
 # The venv: made anew when py/requirements.txt (exact versions) changes; pip needs PyPI. The wheel
-# is built with the dev profile (target/debug; debug assertions and overflow checks on): about half
-# the time of the release build `pip install ./py` makes (maturin's `--profile test` would build
+# is built with the dev profile (target/debug; debug assertions and overflow checks on): a seventh
+# of the time of the release build `pip install ./py` makes (maturin's `--profile test` would build
 # the test harness). The tests compare the module with the `uvt` binary and libuvt_ffi.so of the
 # test profile (target/debug, made by the cargo steps above; the line below is a no-op then).
 cargo build --locked --profile test -p uvt-ffi -p uvt-host --bin uvt
