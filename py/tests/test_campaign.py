@@ -115,7 +115,7 @@ def test_killed_worker_loses_no_shard(tmp_path):
     worker; the verdict is the uninterrupted campaign's."""
     from distributed import Client, LocalCluster
 
-    spec = Campaign(shards=10, per_shard=4000, seed=4)
+    spec = Campaign(shards=10, per_shard=20000, seed=4)
     c = LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=":0")
     client = Client(c)
     try:

@@ -121,11 +121,12 @@ class FfiModel:
         u32p = ctypes.POINTER(ctypes.c_uint32)
         lib.uvt_last_error.restype = ctypes.c_char_p
         lib.uvt_gen.restype = ctypes.c_int32
+        vp = ctypes.c_void_p  # raw addresses into numpy arrays: cheaper than a pointer object
         lib.uvt_gen.argtypes = [ctypes.c_uint32, ctypes.c_char_p, ctypes.c_uint64,
-                                ctypes.c_uint64, ctypes.c_uint32, u32p, ctypes.c_size_t]
+                                ctypes.c_uint64, ctypes.c_uint32, vp, ctypes.c_size_t]
         lib.uvt_run.restype = ctypes.c_int32
-        lib.uvt_run.argtypes = [ctypes.c_uint32, u32p, ctypes.c_size_t, u32p, ctypes.c_size_t,
-                                u32p, ctypes.c_size_t]
+        lib.uvt_run.argtypes = [ctypes.c_uint32, vp, ctypes.c_size_t, vp, ctypes.c_size_t,
+                                vp, ctypes.c_size_t]
         lib.uvt_compare.restype = ctypes.c_int32
         lib.uvt_compare.argtypes = [ctypes.c_uint32, u32p, u32p, ctypes.c_size_t,
                                     ctypes.c_uint32]
@@ -156,12 +157,10 @@ class FfiModel:
         r = shard_range(count, k, m)
         out = np.zeros((len(r), wi), dtype=np.uint32)
         cfg = None if config is None else config.encode()
-        buf = (ctypes.c_uint32 * wi)()
+        base, step, gen = out.ctypes.data, 4 * wi, self.lib.uvt_gen
         for j, i in enumerate(r):
-            n = self.lib.uvt_gen(code, cfg, seed, i, 16, buf, wi)
-            if n < 0:
+            if gen(code, cfg, seed, i, 16, base + j * step, wi) < 0:
                 raise self._err(f"uvt_gen({kind}, {config}, seed {seed}, record {i})")
-            out[j] = buf[:]
         return out
 
     def run(self, kind, inputs):
@@ -169,11 +168,9 @@ class FfiModel:
         wi, wo = self.words(kind)
         inputs = np.ascontiguousarray(inputs, dtype=np.uint32)
         out = np.zeros((len(inputs), wo), dtype=np.uint32)
-        u32p = ctypes.POINTER(ctypes.c_uint32)
+        bi, bo, run = inputs.ctypes.data, out.ctypes.data, self.lib.uvt_run
         for j in range(len(inputs)):
-            n = self.lib.uvt_run(code, inputs[j].ctypes.data_as(u32p), wi, None, 0,
-                                 out[j].ctypes.data_as(u32p), wo)
-            if n < 0:
+            if run(code, bi + 4 * wi * j, wi, None, 0, bo + 4 * wo * j, wo) < 0:
                 raise self._err(f"uvt_run({kind}, record {j})")
         return out
 
