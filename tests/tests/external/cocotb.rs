@@ -11,7 +11,8 @@
 //! made here: the module's requirements (py/requirements.txt, when present),
 //! `vectors/cocotb/requirements.txt`, then `pip install ./py` (a release build of the module:
 //! minutes), redone when the requirements or the sources the module is built from (`py/`,
-//! `core/`, `records/`, `host/`, `ffi/`, `Cargo.lock`) change. pip needs PyPI on the first run. Builds and results go to temporary folders.
+//! `core/`, `records/`, `host/`, `ffi/`, `Cargo.lock`) change. pip needs PyPI on the first
+//! run. Builds and results go to temporary folders.
 //! `UVT_SEED` seeds the stimulus (printed on failure); `UVT_EXTENSIVE=1` runs 10× the samples.
 
 use std::collections::hash_map::DefaultHasher;
