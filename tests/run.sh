@@ -44,24 +44,28 @@ cargo clippy --locked -p uvt-demo --example m4_render --target thumbv7em-none-ea
 cargo clippy --locked -p uvt-demo --example m4_stages --target thumbv7em-none-eabihf -- -D warnings
 cargo clippy --locked -p uvt-demo --example m4_render --target thumbv7m-none-eabi -- -D warnings
 
-echo "== tests"
-cargo test --locked --workspace
-
 echo "== Python module (py/): wheel built by maturin, installed in target/py-venv, pytest"
-# The venv: made anew when py/requirements.txt (exact versions) changes; pip needs PyPI. The wheel
+# Before the cargo tests: the cocotb and pyuvm tests (tests/tests/external/cocotb.rs) run in this
+# venv with the module installed. The venv: made anew when a requirements file (exact versions:
+# the module's, its campaigns', the cocotb benches') changes; pip needs PyPI. The wheel
 # is built with the dev profile (target/debug; debug assertions and overflow checks on): a seventh
 # of the time of the release build `pip install ./py` makes (maturin's `--profile test` would build
 # the test harness). The tests compare the module with the `uvt` binary and libuvt_ffi.so of the
-# test profile (target/debug, made by the cargo steps above; the line below is a no-op then).
+# test profile (target/debug; the line below builds them, and `cargo test` reuses them).
 cargo build --locked --profile test -p uvt-ffi -p uvt-host --bin uvt
 venv=target/py-venv
-if ! cmp -s py/requirements.txt "$venv/uvt-requirements.txt"; then
+reqs=(py/requirements.txt py/requirements-campaign.txt vectors/cocotb/requirements.txt)
+if ! cat "${reqs[@]}" | cmp -s - "$venv/uvt-requirements.txt"; then
   rm -rf "$venv"
   python3 -m venv "$venv"
-  "$venv/bin/pip" install -q --disable-pip-version-check -r py/requirements.txt
-  cp py/requirements.txt "$venv/uvt-requirements.txt"
+  "$venv/bin/pip" install -q --disable-pip-version-check -r py/requirements.txt -r vectors/cocotb/requirements.txt
+  cat "${reqs[@]}" >"$venv/uvt-requirements.txt"
 fi
 rm -rf target/py-wheel
 "$venv/bin/maturin" build --locked --profile dev -m py/Cargo.toml -o target/py-wheel
 "$venv/bin/pip" install -q --disable-pip-version-check --force-reinstall --no-deps target/py-wheel/uvt-*.whl
 "$venv/bin/python" -m pytest py/tests -q -p no:cacheprovider
+
+echo "== tests"
+cargo test --locked --workspace
+

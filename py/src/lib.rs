@@ -389,6 +389,30 @@ fn fields(file: &str, spp: u32) -> PyResult<Vec<FieldRow>> {
         .collect())
 }
 
+/// The record indices (start, end) of shard K of M of a stream of `count` records: the
+/// records `gen` returns for it (`uvt_records::stream::Shard::range`).
+#[pyfunction]
+fn shard_range(count: u64, k: u64, m: u64) -> PyResult<(u64, u64)> {
+    let r = Shard::new(k, m).map_err(input_err)?.range(count);
+    Ok((r.start, r.end))
+}
+
+/// The configuration the stream of `kind` at `config` (None: the kind's default) is made at
+/// (None for kinds without one), or the stream's refusal (`uvt_records::stream::Stream::new`).
+#[pyfunction]
+#[pyo3(signature = (kind, config=None))]
+fn stream_config(kind: &str, config: Option<&str>) -> PyResult<Option<String>> {
+    let k = kind_of(kind)?;
+    let s = Stream::new(k, config, 0, 16).map_err(|e| {
+        if k.needs_setup() {
+            input_err(e)
+        } else {
+            config_err(e)
+        }
+    })?;
+    Ok(s.config())
+}
+
 /// Input records of the seeded stream (kind, config, seed): indices of shard `shard` = (K, M)
 /// of `count` records (None: all), `spp` samples per resolve record; (n, in_words) uint32.
 /// The same records as `uvt vectors gen --shard K/M` and the C library's `uvt_gen`.
@@ -760,6 +784,8 @@ fn _uvt(m: &Bound<'_, PyModule>) -> PyResult<()> {
         wrap_pyfunction!(kinds, m)?,
         wrap_pyfunction!(fields, m)?,
         wrap_pyfunction!(gen, m)?,
+        wrap_pyfunction!(shard_range, m)?,
+        wrap_pyfunction!(stream_config, m)?,
         wrap_pyfunction!(run, m)?,
         wrap_pyfunction!(compare, m)?,
         wrap_pyfunction!(decode, m)?,

@@ -45,6 +45,8 @@ __all__ = [
     "InputError",
     "ConfigError",
     "gen",
+    "shard_range",
+    "stream_config",
     "run",
     "compare",
     "decode",
@@ -271,6 +273,19 @@ def gen(
         if sh[0] < 0 or sh[1] < 0:
             raise InputError(f"shard {sh[0]}/{sh[1]}: need 1 ≤ K ≤ M")
     return _uvt.gen(k.name, config, int(seed), int(count), sh, int(spp))
+
+
+def shard_range(count: int, k: int, m: int) -> Tuple[int, int]:
+    """The record indices ``(start, end)`` of shard ``k`` of ``m`` (1 ≤ k ≤ m) of a stream of
+    ``count`` records: the records ``gen(…, shard=(k, m))`` returns (InputError otherwise)."""
+    return _uvt.shard_range(int(count), int(k), int(m))
+
+
+def stream_config(kind: str, config: Optional[str] = None) -> Optional[str]:
+    """The configuration the seeded stream of ``kind`` at ``config`` (None: the kind's default)
+    is made at — None for kinds without one — or the stream's refusal (ConfigError for a
+    configuration the kind is not made at, InputError for a kind without a stream)."""
+    return _uvt.stream_config(_kind(kind).name, config)
 
 
 def run(kind: str, inputs: Any, *, setup: Any = None) -> np.ndarray:

@@ -82,6 +82,12 @@ def gen(
 ) -> npt.NDArray[np.uint32]:
     """Input records of a seeded stream (or one shard of it)."""
 
+def shard_range(count: int, k: int, m: int) -> Tuple[int, int]:
+    """The record indices (start, end) of shard K of M of a stream of ``count`` records."""
+
+def stream_config(kind: str, config: Optional[str] = None) -> Optional[str]:
+    """The configuration the stream of ``kind`` at ``config`` is made at (None: none)."""
+
 def run(kind: str, inputs: npt.NDArray[np.uint32], setup: Optional[npt.NDArray[np.uint32]] = None) -> npt.NDArray[np.uint32]:
     """The model's output records."""
 

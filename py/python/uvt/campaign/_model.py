@@ -1,32 +1,16 @@
-"""The model operations a campaign needs: gen, run, compare, decode.
-
-The campaign calls the ``uvt`` module's batch functions (``uvt.gen``, ``uvt.run``,
-``uvt.compare``, ``uvt.decode``: the native ``uvt._uvt`` built by maturin). Where that module is
-not importable — a checkout without the wheel installed — the same operations run through the C
-library ``libuvt_ffi.so`` with ``ctypes`` (``UVT_FFI_LIB`` names it; ``cargo build --release -p
-uvt-ffi`` makes ``target/release/libuvt_ffi.so``), record by record and so slower; the results
-are the same records. :func:`load` picks one, and :class:`Mismatch` is what both report.
+"""The model operations a campaign needs — gen, run, compare, decode — from the ``uvt`` module
+(its native ``uvt._uvt``, built by maturin). Kinds, configurations and shards are the module's
+(read from the Rust registries and ``uvt_records::stream``), never a list of this package's.
 """
 
 from __future__ import annotations
 
-import ctypes
-import os
 from dataclasses import dataclass
-from typing import Any, Optional, Sequence
+from typing import Any, Optional, Sequence, Tuple
 
 import numpy as np
 
-#: The kinds whose input records form a self-contained seeded stream (``uvt vectors gen``):
-#: the only kinds a campaign can run (bounds and exact sample-test records name a triangle of a
-#: ``setup_in`` file).
-STREAM_KINDS = ("bsample", "psample", "setup", "select", "resolve")
-
-_KIND_CODES = {"setup": 0, "bounds": 1, "select": 2, "sample": 3, "bsample": 4, "psample": 5,
-               "resolve": 6}
-_KINDS_WITHOUT_CONFIG = ("select", "resolve")
-PLANAR_CONFIG = "planar-16-16-16-20"
-DEFAULT_CONFIG = "bounded-16-16-16-20"
+import uvt
 
 
 class CampaignError(ValueError):
@@ -45,61 +29,36 @@ class Mismatch:
     observed: Any
 
 
+def stream_kinds() -> Tuple[str, ...]:
+    """The kinds whose input records form a self-contained seeded stream (``uvt vectors gen``):
+    those that need no ``setup_in`` record (``uvt.KINDS``)."""
+    return tuple(k for k, i in uvt.KINDS.items() if not i.needs_setup)
+
+
 def shard_range(count: int, k: int, m: int) -> range:
-    """The record indices of shard ``k`` of ``m`` (1-based, contiguous) of a stream of ``count``
-    records: exactly ``uvt vectors gen --count COUNT --shard K/M`` (records/src/stream.rs)."""
-    return range(count * (k - 1) // m, count * k // m)
+    """The record indices of shard ``k`` of ``m`` (1-based) of a stream of ``count`` records
+    (``uvt.shard_range``: exactly what ``uvt vectors gen --shard K/M`` gives)."""
+    try:
+        a, b = uvt.shard_range(count, k, m)
+    except uvt.UvtError as e:
+        raise CampaignError(str(e)) from e
+    return range(a, b)
 
 
 def config_for(kind: str, config: Optional[str]) -> Optional[str]:
-    """The configuration a stream of ``kind`` is made at: ``None`` for kinds without one,
-    the planar configuration for ``psample``, ``config`` (default: the default configuration)
-    otherwise."""
-    if kind in _KINDS_WITHOUT_CONFIG:
-        return None
-    if kind == "psample":
-        return PLANAR_CONFIG
-    return config or DEFAULT_CONFIG
-
-
-class NativeModel:
-    """The ``uvt`` module's batch calls (numpy in, numpy out)."""
-
-    name = "uvt module"
-
-    def __init__(self, mod):
-        self.mod = mod
-        self.configs = tuple(getattr(mod, "CONFIGS", ()))
-        self.kinds = tuple(getattr(mod, "KINDS", STREAM_KINDS))
-
-    def gen(self, kind, config, seed, count, shard):
-        return np.ascontiguousarray(self.mod.gen(kind, config, seed, count, shard=shard),
-                                    dtype=np.uint32)
-
-    def run(self, kind, inputs):
-        return np.ascontiguousarray(self.mod.run(kind, inputs), dtype=np.uint32)
-
-    def compare(self, kind, inputs, outputs, architectural=False):
-        r = self.mod.compare(kind, inputs, outputs, architectural=architectural)
-        out = []
-        for m in r.mismatches:
-            if isinstance(m, (tuple, list)):
-                out.append(Mismatch(int(m[0]), str(m[1]), m[2], m[3]))
-            else:
-                out.append(Mismatch(int(m.record), str(m.field), m.expected, m.observed))
-        return int(r.pairs), out
-
-    def decode(self, kind, in_words, out_words=None):
-        d = self.mod.decode(kind, np.asarray(in_words, dtype=np.uint32),
-                            None if out_words is None else np.asarray(out_words, dtype=np.uint32))
-        return {str(k): _plain(v) for k, v in dict(d).items()}
+    """The configuration a stream of ``kind`` at ``config`` (None: the kind's default) is made
+    at, None for kinds without one (``uvt.stream_config``); a refusal is a CampaignError."""
+    try:
+        return uvt.stream_config(kind, config)
+    except uvt.UvtError as e:
+        raise CampaignError(f"kind {kind!r}, configuration {config!r}: {e}") from e
 
 
 def _plain(v):
     """A decoded value as JSON can hold it."""
-    if isinstance(v, (np.integer,)):
+    if isinstance(v, np.integer):
         return int(v)
-    if isinstance(v, (np.floating,)):
+    if isinstance(v, np.floating):
         return float(v)
     if isinstance(v, dict):
         return {str(k): _plain(x) for k, x in v.items()}
@@ -108,129 +67,42 @@ def _plain(v):
     return v
 
 
-class FfiModel:
-    """The C library through ``ctypes``: the same operations, one record per call."""
+class Model:
+    """The ``uvt`` module's batch calls (numpy in, numpy out)."""
 
-    name = "libuvt_ffi (ctypes)"
+    name = "uvt module"
 
-    def __init__(self, path: str):
-        if not os.path.isfile(path):
-            raise CampaignError(f"UVT_FFI_LIB={path}: no such file (cargo build --release -p "
-                                "uvt-ffi makes target/release/libuvt_ffi.so)")
-        lib = ctypes.CDLL(os.path.abspath(path))
-        u32p = ctypes.POINTER(ctypes.c_uint32)
-        lib.uvt_last_error.restype = ctypes.c_char_p
-        lib.uvt_gen.restype = ctypes.c_int32
-        vp = ctypes.c_void_p  # raw addresses into numpy arrays: cheaper than a pointer object
-        lib.uvt_gen.argtypes = [ctypes.c_uint32, ctypes.c_char_p, ctypes.c_uint64,
-                                ctypes.c_uint64, ctypes.c_uint32, vp, ctypes.c_size_t]
-        lib.uvt_run.restype = ctypes.c_int32
-        lib.uvt_run.argtypes = [ctypes.c_uint32, vp, ctypes.c_size_t, vp, ctypes.c_size_t,
-                                vp, ctypes.c_size_t]
-        lib.uvt_compare.restype = ctypes.c_int32
-        lib.uvt_compare.argtypes = [ctypes.c_uint32, u32p, u32p, ctypes.c_size_t,
-                                    ctypes.c_uint32]
-        lib.uvt_words.restype = ctypes.c_int32
-        lib.uvt_words.argtypes = [ctypes.c_uint32, ctypes.c_uint32, u32p, u32p]
-        self.lib = lib
-        self.configs = ()
-        self.kinds = tuple(_KIND_CODES)
-
-    def _err(self, what):
-        return CampaignError(f"{what}: {self.lib.uvt_last_error().decode('utf-8', 'replace')}")
-
-    def _code(self, kind):
-        if kind not in _KIND_CODES:
-            raise CampaignError(f"unknown kind {kind!r}: one of {', '.join(_KIND_CODES)}")
-        return _KIND_CODES[kind]
-
-    def words(self, kind):
-        wi, wo = ctypes.c_uint32(), ctypes.c_uint32()
-        if self.lib.uvt_words(self._code(kind), 16, ctypes.byref(wi), ctypes.byref(wo)) != 0:
-            raise self._err(f"uvt_words({kind})")
-        return wi.value, wo.value
+    def __init__(self):
+        self.configs = uvt.CONFIGS
+        self.kinds = tuple(uvt.KINDS)
 
     def gen(self, kind, config, seed, count, shard):
-        code = self._code(kind)
-        wi, _ = self.words(kind)
-        k, m = shard
-        r = shard_range(count, k, m)
-        out = np.zeros((len(r), wi), dtype=np.uint32)
-        cfg = None if config is None else config.encode()
-        base, step, gen = out.ctypes.data, 4 * wi, self.lib.uvt_gen
-        for j, i in enumerate(r):
-            if gen(code, cfg, seed, i, 16, base + j * step, wi) < 0:
-                raise self._err(f"uvt_gen({kind}, {config}, seed {seed}, record {i})")
-        return out
+        return uvt.gen(kind, config, seed, count, shard=shard)
 
     def run(self, kind, inputs):
-        code = self._code(kind)
-        wi, wo = self.words(kind)
-        inputs = np.ascontiguousarray(inputs, dtype=np.uint32)
-        out = np.zeros((len(inputs), wo), dtype=np.uint32)
-        bi, bo, run = inputs.ctypes.data, out.ctypes.data, self.lib.uvt_run
-        for j in range(len(inputs)):
-            if run(code, bi + 4 * wi * j, wi, None, 0, bo + 4 * wo * j, wo) < 0:
-                raise self._err(f"uvt_run({kind}, record {j})")
-        return out
+        return uvt.run(kind, inputs)
 
     def compare(self, kind, inputs, outputs, architectural=False):
-        code = self._code(kind)
-        exp = self.run(kind, inputs)
-        obs = np.ascontiguousarray(outputs, dtype=np.uint32)
-        u32p = ctypes.POINTER(ctypes.c_uint32)
-        out = []
-        for j in np.nonzero((exp != obs).any(axis=1))[0]:
-            rc = self.lib.uvt_compare(code, exp[j].ctypes.data_as(u32p),
-                                      obs[j].ctypes.data_as(u32p), exp.shape[1],
-                                      1 if architectural else 0)
-            if rc == 0:
-                continue
-            msg = self.lib.uvt_last_error().decode("utf-8", "replace")
-            # "field NAME: expected X = …, observed Y = …", one line per field
-            for line in msg.splitlines() or [msg]:
-                line = line.strip()
-                name = line.split(":")[0].replace("field ", "").strip() or "?"
-                exp_s = line.split("expected ", 1)[1].split(", observed")[0] if "expected " in line else ""
-                obs_s = line.split("observed ", 1)[1] if "observed " in line else ""
-                out.append(Mismatch(int(j), name, exp_s, obs_s))
-        return len(obs), out
+        r = uvt.compare(kind, inputs, outputs, architectural=architectural)
+        return int(r.pairs), [
+            Mismatch(int(m.record), str(m.field), m.expected, m.observed) for m in r.mismatches
+        ]
 
     def decode(self, kind, in_words, out_words=None):
-        return {"in": [f"{int(w):08x}" for w in in_words],
-                **({} if out_words is None else {"out": [f"{int(w):08x}" for w in out_words]})}
+        d = uvt.decode(kind, np.asarray(in_words, dtype=np.uint32),
+                       None if out_words is None else np.asarray(out_words, dtype=np.uint32))
+        return {str(k): _plain(v) for k, v in dict(d).items()}
 
 
-_LOADED = None
+_MODEL = Model()
 
 
-def load():
-    """The model operations of this process: the ``uvt`` module's, or the C library's through
-    ``ctypes`` when the module's batch calls are missing and ``UVT_FFI_LIB`` is set. A
-    :class:`CampaignError` says how to get either."""
-    global _LOADED
-    if _LOADED is not None:
-        return _LOADED
-    try:
-        import uvt  # noqa: PLC0415
-
-        if all(hasattr(uvt, f) for f in ("gen", "run", "compare", "decode")):
-            _LOADED = NativeModel(uvt)
-            return _LOADED
-    except ImportError:
-        pass
-    path = os.environ.get("UVT_FFI_LIB")
-    if path:
-        _LOADED = FfiModel(path)
-        return _LOADED
-    raise CampaignError("the uvt module's batch calls (uvt.gen, uvt.run, uvt.compare, "
-                        "uvt.decode) are missing: install the wheel (pip install ./py), or set "
-                        "UVT_FFI_LIB to libuvt_ffi.so (cargo build --release -p uvt-ffi)")
+def load() -> Model:
+    """The model operations (the ``uvt`` module's)."""
+    return _MODEL
 
 
-def words(model, kind: str) -> Sequence[int]:
-    """(input words, output words) of a record of ``kind``, from one generated record."""
-    if isinstance(model, FfiModel):
-        return model.words(kind)
-    rec = model.gen(kind, config_for(kind, None), 0, 1, (1, 1))
-    return rec.shape[1], model.run(kind, rec).shape[1]
+def words(model: Model, kind: str) -> Sequence[int]:
+    """(input words, output words) of a record of ``kind`` (``uvt.KINDS``)."""
+    i = uvt.KINDS[kind]
+    return i.in_words, i.out_words
