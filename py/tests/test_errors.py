@@ -36,7 +36,7 @@ def test_triangle_errors():
         uvt.Triangle(v, (4000, 10))
     off = v.astype(np.int64).copy()
     off[0, 0, 0] += 1  # x one LSB off the 12-bit grid
-    with pytest.raises(uvt.InputError, match="not on the 12-fraction-bit position grid"):
+    with pytest.raises(uvt.InputError, match=r"not on the 12-fraction-bit position grid of bounded-12-12-12-24: t0_v0_x = 0x[0-9a-f]{8} has bits below 2\^-12"):
         uvt.Triangle(off, vp, "bounded-12-12-12-24")
     big = v.astype(np.int64).copy()
     big[0, 1, 3] = 0  # w = 0 at every key frame of one vertex is accepted; a coc out of range is not
@@ -66,6 +66,10 @@ def test_sample_errors():
         tri.test_batch([-1], [0], [0], [0], [0])
     with pytest.raises(TypeError):
         tri.test(0.5, 0, 0, 0, 0)
+    # On a 12-bit t/u/v grid a t one LSB off it is refused, naming t and its raw bits.
+    coarse = uvt.Triangle((v.astype(np.int64) & ~0xF).astype(np.int64), vp, "bounded-12-12-12-24")
+    with pytest.raises(uvt.InputError, match=r"not on the 12-fraction-bit grid: t = 0x00000001 has bits below 2\^-12"):
+        coarse.test(0, 0, 1, 0, 0)
 
 
 def test_gen_errors():

@@ -82,8 +82,23 @@ impl Tri {
         let tri = Triangle::new([vert(0), vert(5), vert(10)], [vert(15), vert(20), vert(25)])
             .map_err(|e| TypedError::Input(format!("triangle refused by the core: {e}")))?;
         if grid.tri(&tri) != tri {
+            // The first word with bits below the grid's LSB, named as the record layout names it.
+            const COORD: [&str; 5] = ["x", "y", "z", "w", "coc"];
+            let which =
+                (0..TRI_WORDS)
+                    .find(|&i| off_grid(g(i), grid.pos))
+                    .map_or(String::new(), |i| {
+                        format!(
+                            ": t{}_v{}_{} = 0x{:08x} has bits below 2^-{}",
+                            i / 15,
+                            (i % 15) / 5,
+                            COORD[i % 5],
+                            verts[i],
+                            grid.pos
+                        )
+                    });
             return Err(TypedError::Input(format!(
-                "triangle not on the {}-fraction-bit position grid of {cfg}",
+                "triangle not on the {}-fraction-bit position grid of {cfg}{which}",
                 grid.pos
             )));
         }
@@ -149,8 +164,15 @@ impl Tri {
         )
         .map_err(|e| TypedError::Input(format!("sample refused by the core: {e}")))?;
         if self.grid.sample(&s) != s {
+            let which: Vec<String> = [("t", t), ("u", u), ("v", v)]
+                .iter()
+                .filter(|(_, x)| off_grid(*x, self.grid.tuv))
+                .map(|(n, x)| format!("{n} = 0x{:08x}", *x as u32))
+                .collect();
             return Err(TypedError::Input(format!(
-                "t, u or v not on the {}-fraction-bit grid",
+                "t, u or v not on the {}-fraction-bit grid: {} has bits below 2^-{}",
+                self.grid.tuv,
+                which.join(", "),
                 self.grid.tuv
             )));
         }
@@ -162,4 +184,13 @@ impl Tri {
             e: e.e,
         })
     }
+}
+
+/// Raw 16.16 value `v` has bits below the LSB of a grid of `frac` fraction bits (`frac` ≤ 16;
+/// the mask `2^(16 − frac) − 1` is computed without a shift that could overflow).
+fn off_grid(v: i32, frac: u32) -> bool {
+    let mask = 1u32
+        .checked_shl(16u32.saturating_sub(frac))
+        .map_or(u32::MAX, |b| b - 1);
+    (v as u32) & mask != 0
 }
