@@ -52,7 +52,9 @@ echo "== Python module (py/): wheel built by maturin, installed in target/py-ven
 # of the time of the release build `pip install ./py` makes (maturin's `--profile test` would build
 # the test harness). The tests compare the module with the `uvt` binary and libuvt_ffi.so of the
 # test profile (target/debug; the line below builds them, and `cargo test` reuses them).
-cargo build --locked --profile test -p uvt-ffi -p uvt-host --bin uvt
+# (two commands: `--bin uvt` beside `-p uvt-ffi` would build no library of uvt-ffi)
+cargo build --locked --profile test -p uvt-ffi
+cargo build --locked --profile test -p uvt-host --bin uvt
 venv=target/py-venv
 reqs=(py/requirements.txt py/requirements-campaign.txt vectors/cocotb/requirements.txt)
 if ! cat "${reqs[@]}" | cmp -s - "$venv/uvt-requirements.txt"; then
