@@ -1,6 +1,8 @@
 // uvt_mult18 — one signed 18 × 18 product on an ECP5 MULT18X18D with its input (A, B), pipeline
 // and output registers on CLK0: p = a · b three clocks after a and b (uvt_mul REG = 3, MAP = 1).
-// CE0 high, RST0 low, GSR off; the C input, the shift and cascade chains unused. Simulation needs
+// CE0 high, RST0 low, GSR off; the C input, the shift and cascade chains unused (the shift
+// inputs SRIA/SRIB, CLK1-3, CE1-3 and RST1-3 unconnected, as Yosys's own mapping leaves them:
+// nextpnr cannot route a constant to the shift inputs). Simulation needs
 // a model of the primitive (vectors/rtl/ecp5/MULT18X18D.v; Yosys ships only a black box). A file
 // of its own: only MAP = 1 builds instantiate it (pnr.sh's units; the benches with the model).
 `timescale 1ns / 1ps
@@ -23,18 +25,8 @@ module uvt_mult18 (
         .C0(1'b0), .C1(1'b0), .C2(1'b0), .C3(1'b0), .C4(1'b0), .C5(1'b0), .C6(1'b0), .C7(1'b0),
         .C8(1'b0), .C9(1'b0), .C10(1'b0), .C11(1'b0), .C12(1'b0), .C13(1'b0), .C14(1'b0),
         .C15(1'b0), .C16(1'b0), .C17(1'b0),
-        .SRIA0(1'b0), .SRIA1(1'b0), .SRIA2(1'b0), .SRIA3(1'b0), .SRIA4(1'b0), .SRIA5(1'b0),
-        .SRIA6(1'b0), .SRIA7(1'b0), .SRIA8(1'b0), .SRIA9(1'b0), .SRIA10(1'b0), .SRIA11(1'b0),
-        .SRIA12(1'b0), .SRIA13(1'b0), .SRIA14(1'b0), .SRIA15(1'b0), .SRIA16(1'b0),
-        .SRIA17(1'b0),
-        .SRIB0(1'b0), .SRIB1(1'b0), .SRIB2(1'b0), .SRIB3(1'b0), .SRIB4(1'b0), .SRIB5(1'b0),
-        .SRIB6(1'b0), .SRIB7(1'b0), .SRIB8(1'b0), .SRIB9(1'b0), .SRIB10(1'b0), .SRIB11(1'b0),
-        .SRIB12(1'b0), .SRIB13(1'b0), .SRIB14(1'b0), .SRIB15(1'b0), .SRIB16(1'b0),
-        .SRIB17(1'b0),
         .SIGNEDA(1'b1), .SIGNEDB(1'b1), .SOURCEA(1'b0), .SOURCEB(1'b0),
-        .CLK0(clk), .CLK1(1'b0), .CLK2(1'b0), .CLK3(1'b0),
-        .CE0(1'b1), .CE1(1'b0), .CE2(1'b0), .CE3(1'b0),
-        .RST0(1'b0), .RST1(1'b0), .RST2(1'b0), .RST3(1'b0),
+        .CLK0(clk), .CE0(1'b1), .RST0(1'b0),
         .P0(p[0]), .P1(p[1]), .P2(p[2]), .P3(p[3]), .P4(p[4]), .P5(p[5]), .P6(p[6]), .P7(p[7]),
         .P8(p[8]), .P9(p[9]), .P10(p[10]), .P11(p[11]), .P12(p[12]), .P13(p[13]), .P14(p[14]),
         .P15(p[15]), .P16(p[16]), .P17(p[17]), .P18(p[18]), .P19(p[19]), .P20(p[20]),

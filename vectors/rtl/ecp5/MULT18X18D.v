@@ -9,8 +9,11 @@
 // - the input registers of A and B, the pipeline register and the output register, each on
 //   CLK0 ("CLK0") or absent ("NONE"), enabled by CE0 and reset synchronously by RST0;
 // - SOURCEA = SOURCEB = 0 (parallel inputs), MULT_BYPASS "DISABLED", HIGHSPEED_CLK "NONE".
-// The C input, the shift chains (SRI*/SRO*) and the cascade outputs (RO*) are not modelled: the
-// outputs are X, so a design that used them would fail its bench. SIGNEDP = SIGNEDA | SIGNEDB
+// The C input, the shift chains (SRO*) and the cascade outputs (RO*) are not modelled: the outputs
+// are X, so a design that used them would fail its bench. The inputs CLK1-3, CE1-3, RST1-3 and
+// the shift inputs SRIA/SRIB are left out of the port list (uvt_mult18.v leaves them unconnected,
+// as Yosys's mapping does: nextpnr cannot route a constant to the shift inputs); an instance
+// that connects them does not elaborate with this model. SIGNEDP = SIGNEDA | SIGNEDB
 // of the product. GSR and the *_DIV clock dividers have no effect in this model.
 `timescale 1ns / 1ps
 module MULT18X18D (
@@ -18,13 +21,7 @@ module MULT18X18D (
     input B0, B1, B2, B3, B4, B5, B6, B7, B8, B9, B10, B11, B12, B13, B14, B15, B16, B17,
     input C0, C1, C2, C3, C4, C5, C6, C7, C8, C9, C10, C11, C12, C13, C14, C15, C16, C17,
     input SIGNEDA, SIGNEDB, SOURCEA, SOURCEB,
-    input CLK0, CLK1, CLK2, CLK3,
-    input CE0, CE1, CE2, CE3,
-    input RST0, RST1, RST2, RST3,
-    input SRIA0, SRIA1, SRIA2, SRIA3, SRIA4, SRIA5, SRIA6, SRIA7, SRIA8, SRIA9, SRIA10, SRIA11,
-    SRIA12, SRIA13, SRIA14, SRIA15, SRIA16, SRIA17,
-    input SRIB0, SRIB1, SRIB2, SRIB3, SRIB4, SRIB5, SRIB6, SRIB7, SRIB8, SRIB9, SRIB10, SRIB11,
-    SRIB12, SRIB13, SRIB14, SRIB15, SRIB16, SRIB17,
+    input CLK0, CE0, RST0,
     output SROA0, SROA1, SROA2, SROA3, SROA4, SROA5, SROA6, SROA7, SROA8, SROA9, SROA10, SROA11,
     SROA12, SROA13, SROA14, SROA15, SROA16, SROA17,
     output SROB0, SROB1, SROB2, SROB3, SROB4, SROB5, SROB6, SROB7, SROB8, SROB9, SROB10, SROB11,
