@@ -128,6 +128,8 @@ module uvt_mul #(
     endfunction
 
     localparam C = choose(AW, BW, PA, PB, LW);
+    // Clocks from a and b to p (vectors/rtl/pnr.sh reports it).
+    localparam LATENCY = REG == 3 ? LAT : REG;
     localparam SWAP = C / 4;
     localparam LX = (C % 4) == 1;
     localparam LY = (C % 4) == 2;
