@@ -266,6 +266,20 @@ entry() { # unit
                        steps: ($p | length)},
        harness: $harness, nextpnr_args: $xa, synth_seconds: $ss, pnr_seconds: $ps}' "$work/$u.report.json"
 }
+# A kept entry (-k) written before pnr.json had "latency" and results per second per MULT18X18D:
+# both added, the latency from the unit's RTL (the probe above), the rate from its own figures.
+complete() { # unit entry
+  local u=$1 e=$2 top srcs params rate what files="" f lat
+  if jq -e 'has("latency")' <<<"$e" >/dev/null; then printf '%s\n' "$e"; return; fi
+  IFS='|' read -r top srcs params rate what <<<"$(unit_def "$u")"
+  for f in $srcs; do files="$files vectors/rtl/$f"; done
+  lat=$(latency "$top" "$params" "$files") || { echo "pnr.sh: -k: cannot read the latency of $u" >&2; exit 1; }
+  jq -c --argjson lat "$lat" '. as $u | ($u.resources.MULT18X18D.used) as $m
+    | to_entries | map(if .key == "results_per_second" then ., {key: "latency", value: $lat},
+        {key: "results_per_second_per_mult18x18d",
+         value: (if $m > 0 then ($u.results_per_second / $m | round) else null end)} else . end)
+    | from_entries' <<<"$e"
+}
 ran() { local x; for x in "${units[@]}"; do [ "$x" = "$1" ] && return 0; done; return 1; }
 {
   printf '{\n  "yosys": %s,\n  "nextpnr": %s,\n' \
@@ -281,7 +295,7 @@ ran() { local x; for x in "${units[@]}"; do [ "$x" = "$1" ] && return 0; done; r
     while IFS= read -r e; do
       k=$(jq -r .unit <<<"$e")
       unit_def "$k" >/dev/null || { echo "pnr.sh: -k: $out has a unit '$k' not in the table" >&2; exit 1; }
-      ran "$k" || ent[$k]=$e
+      ran "$k" || ent[$k]=$(complete "$k" "$e")
     done < <(jq -c '.units[]' "$out")
   fi
   sep=""
