@@ -18,8 +18,8 @@
 # has routed on the 85F, docs/rtl.md "Placed and routed speed"), psample* the planar static unit,
 # bounds* the per-tile bounds unit, mul31 a pipelined 31 × 31 product. Each unit is synthesized
 # with Yosys `synth_ecp5` (Debian's yosys) and placed and routed by nextpnr-ecp5 with the fixed
-# seed SEED (default 1), the router router2 and a target of MHZ (default 100; recorded per unit as "target_mhz") for the clock
-# `clk`; --timing-allow-fail, so a unit slower than the target is measured, not rejected. Fmax
+# seed SEED (default 1), the router router2 and a target of MHZ (default 100; recorded per unit
+# as "target_mhz") for the clock `clk`; --timing-allow-fail, so a unit slower than the target is measured, not rejected. Fmax
 # is nextpnr's achieved figure for `clk` after routing; results per second = Fmax × results per
 # clock (1 for every unit).
 # In context (default): the unit inside the harness below (three pins; `clk` on the global clock
