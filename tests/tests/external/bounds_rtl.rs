@@ -149,6 +149,65 @@ fn rtl_bounds_unit_pipe1_passes_the_committed_records() {
     }
 }
 
+/// The `PIPE = 2` build (every product `REG = 3` inside `uvt_mul.v`, every wide carry chain in
+/// a clock of its own, latency 34) with the ECP5 tiling, behavioural (`MAP = 0`) or on
+/// instantiated MULT18X18D primitives (`MAP = 1`, their model `ecp5/MULT18X18D.v`), passes
+/// every record of the unit, frame_a and frame_b sets with bubbles (`UVT_EXTENSIVE=1`: with
+/// unknowns on the data ports during them too, and `unit_exact/`).
+fn pipe2_passes_every_committed_record(map: u32) {
+    let dir = tempfile::tempdir().unwrap();
+    let mut params = format_params(&committed().join("unit"));
+    params.extend([
+        ("tb_bounds.DSP_A", "18".to_string()),
+        ("tb_bounds.PIPE", "2".to_string()),
+        ("tb_bounds.MAP", map.to_string()),
+    ]);
+    let srcs: &[&str] = if map == 1 {
+        &[
+            "uvt_mul.v",
+            "uvt_mult18.v",
+            "ecp5/MULT18X18D.v",
+            "uvt_bounds.v",
+            "tb_bounds.v",
+        ]
+    } else {
+        &SOURCES
+    };
+    let tb = icarus::compile(
+        &dir.path().join(format!("tb-pipe2-map{map}.vvp")),
+        &params,
+        srcs,
+    );
+    let (sets, extra): (&[&str], &[&str]) = if extensive() {
+        (
+            &["unit", "unit_exact", "frame_a", "frame_b"],
+            &["+JUNK=1", "+BUBBLES=50", "+SEED=5"],
+        )
+    } else {
+        (&["unit", "frame_a", "frame_b"], &["+BUBBLES=10"])
+    };
+    for set in sets {
+        let path = committed().join(set);
+        let n = records(&path);
+        let out = run(&tb, &path, extra);
+        assert!(
+            out.lines()
+                .any(|l| l.starts_with(&format!("PASS {n} records ("))),
+            "PIPE = 2, MAP = {map}, {set}: {out}"
+        );
+    }
+}
+
+#[test]
+fn rtl_bounds_unit_pipe2_passes_every_committed_record() {
+    pipe2_passes_every_committed_record(0);
+}
+
+#[test]
+fn rtl_bounds_unit_pipe2_on_mult18x18d_passes_every_committed_record() {
+    pipe2_passes_every_committed_record(1);
+}
+
 /// `UVT_EXTENSIVE=1`: the unit with the ECP5 tiling passes every set (`unit_exact/` too: the
 /// exact configuration's tiles, the same per-tile arithmetic), and every set passes with unknowns
 /// on the data ports during half the clocks (`+JUNK=1 +BUBBLES=50`).
