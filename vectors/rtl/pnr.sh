@@ -55,7 +55,7 @@ unit_def() {
     bsample-lut17-pipe1) echo "uvt_bsample|uvt_mul.v uvt_bsample.v|POS=16 TUV=16 OFF=20 DSP_A=18 DSP_B=18 LUTW=17 PIPE=1|1|sample test" ;;
     psample) echo "uvt_psample|uvt_mul.v uvt_psample.v|DSP_A=18 DSP_B=18|1|sample test" ;;
     psample-pipe1) echo "uvt_psample|uvt_mul.v uvt_psample.v|DSP_A=18 DSP_B=18 PIPE=1|1|sample test" ;;
-    psample-pipe2) echo "uvt_psample|uvt_mul.v uvt_psample.v|DSP_A=18 DSP_B=18 LUTW=0 PIPE=2 MAP=1|1|sample test" ;;
+    psample-pipe2) echo "uvt_psample|uvt_mul.v uvt_mult18.v uvt_psample.v|DSP_A=18 DSP_B=18 LUTW=0 PIPE=2 MAP=1|1|sample test" ;;
     bounds) echo "uvt_bounds|uvt_mul.v uvt_bounds.v|BND=16 TUV=16 DSP_A=18 DSP_B=18|1|tile" ;;
     bounds-pipe1) echo "uvt_bounds|uvt_mul.v uvt_bounds.v|BND=16 TUV=16 DSP_A=18 DSP_B=18 PIPE=1|1|tile" ;;
     mul31) echo "uvt_mul|uvt_mul.v|AW=31 BW=31 PA=18 PB=18 LW=0 REG=2|1|product" ;;

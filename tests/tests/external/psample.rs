@@ -251,7 +251,7 @@ fn rtl_pipelined_planar_unit_passes_committed_records_with_its_latency() {
 /// and one wide carry chain per clock) is bit-identical on every committed planar record: at
 /// the DSP48E1 tiling, and at the ECP5 tiling with `LUTW = 0` (`vectors/rtl/pnr.sh`'s
 /// `psample-pipe2`) both behavioural (`MAP = 0`) and with every hard piece an instantiated
-/// `MULT18X18D` (`MAP = 1`, simulated with `vectors/rtl/ecp5/MULT18X18D.v`); latency 8 + L2 +
+/// `MULT18X18D` (`MAP = 1`: `uvt_mult18.v`, simulated with `vectors/rtl/ecp5/MULT18X18D.v`); latency 8 + L2 +
 /// L3, the products' clocks (3 + clog2 of their terms).
 #[test]
 fn rtl_planar_unit_pipe2_passes_every_committed_record() {
@@ -267,7 +267,7 @@ fn rtl_planar_unit_pipe2_passes_every_committed_record() {
     ] {
         let mut src = vec!["uvt_mul.v", "uvt_psample.v", "tb_psample.v"];
         if map == 1 {
-            src.push("ecp5/MULT18X18D.v");
+            src.extend(["uvt_mult18.v", "ecp5/MULT18X18D.v"]);
         }
         let tb = icarus::compile(
             &dir.path().join(format!(
