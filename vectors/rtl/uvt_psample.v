@@ -226,14 +226,18 @@ module uvt_psample #(
                                             (f2_az[k] && !f2_bn[k] && !f2_bz[k]));
                 end
             end
+            // f + 33 in [0, 96] (f2_in), above 96 (f2_over)
+            wire f2_over = !f2_amt9[8] &&
+                           (f2_amt9[7] || (f2_amt9[6] && f2_amt9[5] && |f2_amt9[4:0]));
+            wire f2_in = !f2_amt9[8] && !f2_over;
             always @(posedge clk) begin
                 f2_neg <= s1_neg;
                 f3_neg <= f2_neg;
                 f2_amt9 <= s1_f + 9'sd33;
-                // no compare (a carry chain): f + 33 < 0 by its sign, > 96 = 0b1100000 by bits
-                f3_amt <= f2_amt9[8] ? 7'd0
-                        : (f2_amt9[7] || (f2_amt9[6] && f2_amt9[5] && |f2_amt9[4:0])) ? 7'd96
-                        : f2_amt9[6:0];
+                // no compare (a carry chain): f + 33 < 0 by its sign, > 96 = 0b1100000 by bits;
+                // AND/OR, not a multiplexer to a constant (no sync-reset flip-flops, whose
+                // LSR net was the critical route of a run)
+                f3_amt <= (f2_amt9[6:0] & {7{f2_in}}) | ({7{f2_over}} & 7'd96);
             end
             wire [6:0] sd_amt;                      // at clock T5 − 1
             wire [2:0] sd_fill;
