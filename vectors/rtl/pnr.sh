@@ -53,6 +53,7 @@ unit_def() {
     bsample-pipe0) echo "uvt_bsample|uvt_mul.v uvt_bsample.v|POS=16 TUV=16 OFF=20 DSP_A=18 DSP_B=18 PIPE=0|1|sample test" ;;
     bsample-lut17) echo "uvt_bsample|uvt_mul.v uvt_bsample.v|POS=16 TUV=16 OFF=20 DSP_A=18 DSP_B=18 LUTW=17 PIPE=0|1|sample test" ;;
     bsample-lut17-pipe1) echo "uvt_bsample|uvt_mul.v uvt_bsample.v|POS=16 TUV=16 OFF=20 DSP_A=18 DSP_B=18 LUTW=17 PIPE=1|1|sample test" ;;
+    bsample-pipe2) echo "uvt_bsample|uvt_mul.v uvt_mult18.v uvt_bsample.v|POS=16 TUV=16 OFF=20 DSP_A=18 DSP_B=18 LUTW=8 PIPE=2 MAP=1|1|sample test" ;;
     psample) echo "uvt_psample|uvt_mul.v uvt_psample.v|DSP_A=18 DSP_B=18|1|sample test" ;;
     psample-pipe1) echo "uvt_psample|uvt_mul.v uvt_psample.v|DSP_A=18 DSP_B=18 PIPE=1|1|sample test" ;;
     bounds) echo "uvt_bounds|uvt_mul.v uvt_bounds.v|BND=16 TUV=16 DSP_A=18 DSP_B=18|1|tile" ;;
@@ -61,7 +62,7 @@ unit_def() {
     *) return 1 ;;
   esac
 }
-known="psample psample-pipe1 bounds bounds-pipe1 bsample-lut17 bsample-lut17-pipe1 bsample-pipe0 bsample bsample-static mul31"
+known="psample psample-pipe1 bounds bounds-pipe1 bsample-lut17 bsample-lut17-pipe1 bsample-pipe0 bsample bsample-static bsample-pipe2 mul31"
 defaults="psample bounds"
 # The configuration each unit is built at (the precision sweep's names).
 config_of() {
