@@ -26,7 +26,9 @@
 //   e[64*k +: 64]     E'_k (words 8..13)
 //   det_sign, covered (word 0), with edge_valid, LAT_EDGE = 11 clocks after in_valid
 //   depth (word 1; 0 when not covered) with out_valid and out_covered, LAT = 46 clocks after
-// Latency: LAT_EDGE = 11, LAT = 46 (13 stages to num/den, 1 prepare, 31 divider, 1 select).
+// Latency: LAT_EDGE = 11, LAT = 46 (13 stages to num/den, 1 prepare, 31 divider, 1 select);
+// PIPE = 1: 23, 63; PIPE = 2: from the products' tiling (localparams below; pnr.sh's
+// bsample-pipe2 build, ECP5 18 × 18 ports, LUTW = 8: 39, 85; with KARA = 1: 40, 86).
 // The depth divider is a pipelined restoring (radix-2) divider: one quotient bit per stage,
 // 31 stages, plus an overflow compare for saturation.
 `timescale 1ns / 1ps
@@ -57,7 +59,10 @@ module uvt_bsample #(
     parameter MAP = 0,
     // PIPE = 2 only: the LUT chunk limit of the edge products a'·b' and of E'·w (LUTW: the rest),
     // -1: LUTW for these too
-    parameter LUTWE = -1
+    parameter LUTWE = -1,
+    // PIPE = 2 only: 1 = each edge product a'·b' on three hard multipliers (Karatsuba) instead
+    // of four
+    parameter KARA = 0
 ) (
     input  wire               clk,
     input  wire               in_valid,
@@ -96,8 +101,15 @@ module uvt_bsample #(
     localparam M1 = P2 ? mlat(TW, DW, LUTW) : MR;                                // lerp
     localparam M2 = P2 ? mlat(TW, 31, LUTW) : MR;                                // lens
     localparam M3 = P2 ? max2(mlat(13, 32, LUTW), mlat(22, 31, LUTW)) : MR;      // A, B
-    localparam M4 = P2 ? mlat(AW, AW, LWE) : MR;                                 // E'
-    localparam M5 = P2 ? mlat(EW, 31, LWE) : MR;                                 // E'·w
+    // KARA (PIPE = 2, AW <= 33): E' = a'·b' − a'·b' on three 18 × 18 hard multipliers per
+    // product instead of four (uvt_bsample_kdet: 7 clocks = M4 + 1)
+    localparam KE = P2 && KARA && AW <= 33 && AW > 16;
+    localparam M4 = KE ? 6 : P2 ? mlat(AW, AW, LWE) : MR;                        // E'
+    // KARA (PIPE = 2, 17 <= EW − 31 <= 33): E'·w = E'_H·w·2^31 + E'_L·w, each on three 18 × 18
+    // hard multipliers (uvt_bsample_kprod: 6 clocks), then their sum: 7 clocks, 6 multipliers
+    // instead of 8.
+    localparam KK = P2 && KARA && EW - 31 >= 17 && EW - 31 <= 33;
+    localparam M5 = KK ? 7 : P2 ? mlat(EW, 31, LWE) : MR;                        // E'·w
     localparam M6 = P2 ? mlat(25, 31, LUTW) : MR;                                // depth
     localparam LAT_EDGE = 11 + 2 * P1 + P2 + M1 + M2 + M3 + M4 + M5;
     localparam LAT = LAT_EDGE + 35 + M6 + 3 * P1 + P2;
@@ -370,17 +382,24 @@ module uvt_bsample #(
             wire signed [AW-1:0] bi = s7_b[AW*((i+1)%3) +: AW];
             wire signed [AW-1:0] aj = s7_a[AW*((i+2)%3) +: AW];
             wire signed [AW-1:0] bj = s7_b[AW*((i+2)%3) +: AW];
-            reg signed [EW-1:0] p1, p2;
-            wire signed [EW-1:0] q1, q2;
-            uvt_mul #(.AW(AW), .BW(AW), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(RG), .LAT(M4),
-                      .MAP(MAP)) m_1 (ai, bj, q1, clk);
-            uvt_mul #(.AW(AW), .BW(AW), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(RG), .LAT(M4),
-                      .MAP(MAP)) m_2 (aj, bi, q2, clk);
-            always @(posedge clk) begin
-                p1 <= q1;
-                p2 <= q2;
+            if (KE) begin : g_kara
+                wire signed [EW-1:0] ek;
+                uvt_bsample_kdet #(.AW(AW), .PA(DSP_A), .PB(DSP_B), .MAP(MAP)) m_k (
+                    .clk(clk), .ai(ai), .bj(bj), .aj(aj), .bi(bi), .e(ek));
+                always @(posedge clk) s9_e[EW*i +: EW] <= ek;
+            end else begin : g_mul
+                reg signed [EW-1:0] p1, p2;
+                wire signed [EW-1:0] q1, q2;
+                uvt_mul #(.AW(AW), .BW(AW), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(RG),
+                          .LAT(M4), .MAP(MAP)) m_1 (ai, bj, q1, clk);
+                uvt_mul #(.AW(AW), .BW(AW), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(RG),
+                          .LAT(M4), .MAP(MAP)) m_2 (aj, bi, q2, clk);
+                always @(posedge clk) begin
+                    p1 <= q1;
+                    p2 <= q2;
+                end
+                always @(posedge clk) s9_e[EW*i +: EW] <= p1 - p2;
             end
-            always @(posedge clk) s9_e[EW*i +: EW] <= p1 - p2;
         end
     endgenerate
     wire [6*AW+6*31-1:0] ab7d, ab9d;
@@ -411,8 +430,20 @@ module uvt_bsample #(
             wire signed [EW-1:0] ek = s9_e[EW*i +: EW];
             wire signed [30:0] wk = s9_wt[31*i +: 31];
             wire signed [EW+30:0] qk;
-            uvt_mul #(.AW(EW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(RG), .LAT(M5),
-                      .MAP(MAP)) m_q (ek, wk, qk, clk);
+            if (KK) begin : g_kara
+                wire signed [EW-1:0] ph;       // E'_H·w, E'_H = E' >> 31 (signed)
+                wire signed [62:0] pl;         // E'_L·w, E'_L = E' mod 2^31 (unsigned)
+                uvt_bsample_kprod #(.XW(EW - 31), .XU(0), .PA(DSP_A), .PB(DSP_B), .MAP(MAP))
+                    m_h (.clk(clk), .x(ek[EW-1:31]), .y(wk), .p(ph));
+                uvt_bsample_kprod #(.XW(31), .XU(1), .PA(DSP_A), .PB(DSP_B), .MAP(MAP))
+                    m_l (.clk(clk), .x(ek[30:0]), .y(wk), .p(pl));
+                reg signed [EW+30:0] q7;
+                always @(posedge clk) q7 <= (ph <<< 31) + pl;   // clock 7
+                assign qk = q7;
+            end else begin : g_mul
+                uvt_mul #(.AW(EW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(RG),
+                          .LAT(M5), .MAP(MAP)) m_q (ek, wk, qk, clk);
+            end
             assign e_mag[EW*i +: EW] = ek[EW-1] ? -ek : ek;
             // tie key κ = cmp((b', a', w)_{k+1}, (b', a', w)_{k+2}), lexicographic, signed
             wire signed [AW-1:0] ai = s9_a[AW*((i+1)%3) +: AW];
@@ -660,4 +691,95 @@ module uvt_bsample #(
     end
     assign depth = r_depth;
     assign out_covered = r_cov;
+endmodule
+
+// uvt_bsample_kdet — e = ai·bj − aj·bi (AW-bit signed operands, 16 < AW <= 33) on six 18 × 18
+// products instead of eight: with x = xH·2^16 + xL (xL = x mod 2^16, xH = x >> 16 signed),
+// x·y = xH·yH·2^32 + ((xH + xL)(yH + yL) − xH·yH − xL·yL)·2^16 + xL·yL (Karatsuba), and
+// xH + xL lies in [−2^(AW−17), 2^16 + 2^(AW−17)), 18 bits signed. Each product is uvt_mul
+// REG = 3 (3 clocks; the operand sums are formed before its input registers), then the three
+// differences (clock 4), DM − DH and DH·2^32 + DL (clock 5), minus DL (clock 6), the sum
+// (clock 7): one adder a clock, e seven clocks after the inputs. Arithmetic modulo 2^(2·AW),
+// exact as |e| < 2^(2·AW−1).
+module uvt_bsample_kdet #(
+    parameter AW = 31,
+    parameter PA = 18,
+    parameter PB = 18,
+    parameter MAP = 0
+) (
+    input  wire                   clk,
+    input  wire signed [AW-1:0]   ai,
+    input  wire signed [AW-1:0]   bj,
+    input  wire signed [AW-1:0]   aj,
+    input  wire signed [AW-1:0]   bi,
+    output wire signed [2*AW-1:0] e
+);
+    localparam EW = 2 * AW;
+    wire signed [17:0] aiH = ai >>> 16, bjH = bj >>> 16, ajH = aj >>> 16, biH = bi >>> 16;
+    wire signed [17:0] aiL = {2'b0, ai[15:0]}, bjL = {2'b0, bj[15:0]};
+    wire signed [17:0] ajL = {2'b0, aj[15:0]}, biL = {2'b0, bi[15:0]};
+    wire signed [17:0] aiS = aiH + aiL, bjS = bjH + bjL, ajS = ajH + ajL, biS = biH + biL;
+    wire signed [35:0] hh1, ll1, mm1, hh2, ll2, mm2;
+    uvt_mul #(.AW(18), .BW(18), .PA(PA), .PB(PB), .LW(0), .REG(3), .LAT(3), .MAP(MAP))
+        m_hh1 (aiH, bjH, hh1, clk), m_ll1 (aiL, bjL, ll1, clk), m_mm1 (aiS, bjS, mm1, clk),
+        m_hh2 (ajH, biH, hh2, clk), m_ll2 (ajL, biL, ll2, clk), m_mm2 (ajS, biS, mm2, clk);
+    reg signed [36:0] dh, dl, dm;
+    reg signed [EW-1:0] m1, a1, dl5, mp, a6, s7;
+    always @(posedge clk) begin
+        dh <= hh1 - hh2;                                   // clock 4
+        dl <= ll1 - ll2;
+        dm <= mm1 - mm2;
+        m1 <= dm - dh;                                     // clock 5
+        a1 <= (dh <<< 32) + dl;
+        dl5 <= dl;
+        mp <= m1 - dl5;                                    // clock 6
+        a6 <= a1;
+        s7 <= a6 + (mp <<< 16);                            // clock 7
+    end
+    assign e = s7;
+endmodule
+
+// uvt_bsample_kprod — p = x·y, x XW bits (17 <= XW <= 33; unsigned if XU, else signed), y 31
+// bits signed, on three 18 × 18 products (Karatsuba, as uvt_bsample_kdet: x = xH·2^16 + xL,
+// x·y = xH·yH·2^32 + ((xH + xL)(yH + yL) − xH·yH − xL·yL)·2^16 + xL·yL, each operand sum 18
+// bits signed). uvt_mul REG = 3 (3 clocks), then MM − HH and HH·2^32 + LL (clock 4), minus LL
+// (clock 5), the sum (clock 6): p six clocks after x and y, exact (modulo 2^(XW+31+XU), which
+// holds the product).
+module uvt_bsample_kprod #(
+    parameter XW = 31,
+    parameter XU = 0,
+    parameter PA = 18,
+    parameter PB = 18,
+    parameter MAP = 0
+) (
+    input  wire                      clk,
+    input  wire [XW-1:0]             x,
+    input  wire signed [30:0]        y,
+    output wire signed [XW+XU+30:0]  p
+);
+    localparam QW = XW + XU + 31;
+    wire signed [XW+XU-1:0] xs;        // x as a signed value
+    generate
+        if (XU) begin : g_u
+            assign xs = {1'b0, x};
+        end else begin : g_s
+            assign xs = x;
+        end
+    endgenerate
+    wire signed [17:0] xH = xs >>> 16, yH = y >>> 16;
+    wire signed [17:0] xL = {2'b0, x[15:0]}, yL = {2'b0, y[15:0]};
+    wire signed [17:0] xS = xH + xL, yS = yH + yL;
+    wire signed [35:0] hh, ll, mm;
+    uvt_mul #(.AW(18), .BW(18), .PA(PA), .PB(PB), .LW(0), .REG(3), .LAT(3), .MAP(MAP))
+        m_hh (xH, yH, hh, clk), m_ll (xL, yL, ll, clk), m_mm (xS, yS, mm, clk);
+    reg signed [QW-1:0] m1, a1, ll4, mp, a5, s6;
+    always @(posedge clk) begin
+        m1 <= mm - hh;                                     // clock 4
+        a1 <= (hh <<< 32) + ll;
+        ll4 <= ll;
+        mp <= m1 - ll4;                                    // clock 5
+        a5 <= a1;
+        s6 <= a5 + (mp <<< 16);                            // clock 6
+    end
+    assign p = s6;
 endmodule
