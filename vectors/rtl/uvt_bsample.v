@@ -476,12 +476,9 @@ module uvt_bsample #(
         for (k = 0; k < EW; k = k + 1)
             if (e_or_d[k]) blen = k + 1;
     end
-    // PIPE = 2: the bit length registered before its compare and subtraction.
-    wire [6:0] blen_d;
-    uvt_dly #(.W(7), .N(P2)) dl_blen (clk, blen, blen_d);
-    wire [5:0] sh_n = (blen_d > 24) ? blen_d - 7'd24 : 6'd0;
+    wire [5:0] sh_n = (blen > 24) ? blen - 7'd24 : 6'd0;
     wire [5:0] sh_d;
-    uvt_dly #(.W(6), .N(M5 - P1 - P2)) dl_sh (clk, sh_n, sh_d);
+    uvt_dly #(.W(6), .N(M5 - P1)) dl_sh (clk, sh_n, sh_d);
     always @(posedge clk) begin
         {s10_e, s10_pos, s10_neg, s10_gt, s10_lt, s10_wpos} <= key_d;
         s10_sh <= sh_d;
