@@ -3,6 +3,7 @@
 # nextpnr's default) and write their clock rate and resources to host/report/pnr.json:
 #   {"yosys": …, "nextpnr": …, "device": …, "seed": …, "target_mhz": …, "units": [{"unit", "top",
 #    "config", "params", "fmax_mhz", "results_per_clock", "result", "results_per_second",
+#    "latency" (clocks, the RTL's LAT), "results_per_second_per_mult18x18d" (null without one),
 #    "resources": {"MULT18X18D": {"used", "available"}, "TRELLIS_COMB": …, "TRELLIS_FF": …, …},
 #    "critical_path": {"from", "to", "from_net", "to_net", "ns", "logic_ns", "routing_ns"},
 #    "harness": {"input_bits", "output_bits", "TRELLIS_FF"} or null, "nextpnr_args",
@@ -59,10 +60,11 @@ unit_def() {
     bounds) echo "uvt_bounds|uvt_mul.v uvt_bounds.v|BND=16 TUV=16 DSP_A=18 DSP_B=18|1|tile" ;;
     bounds-pipe1) echo "uvt_bounds|uvt_mul.v uvt_bounds.v|BND=16 TUV=16 DSP_A=18 DSP_B=18 PIPE=1|1|tile" ;;
     mul31) echo "uvt_mul|uvt_mul.v|AW=31 BW=31 PA=18 PB=18 LW=0 REG=2|1|product" ;;
+    mul31-pipe2) echo "uvt_mul|uvt_mul.v uvt_mult18.v|AW=31 BW=31 PA=18 PB=18 LW=0 REG=3 LAT=5 MAP=1|1|product" ;;
     *) return 1 ;;
   esac
 }
-known="psample psample-pipe1 bounds bounds-pipe1 bsample-lut17 bsample-lut17-pipe1 bsample-pipe0 bsample bsample-static bsample-pipe2 mul31"
+known="psample psample-pipe1 bounds bounds-pipe1 bsample-lut17 bsample-lut17-pipe1 bsample-pipe0 bsample bsample-static bsample-pipe2 mul31 mul31-pipe2"
 defaults="psample bounds"
 # The configuration each unit is built at (the precision sweep's names).
 config_of() {
@@ -144,6 +146,8 @@ build() { # unit
   fi
   echo $((SECONDS - t0)) > "$work/$u.synth.secs"
   echo "pnr.sh: $u synthesized in $((SECONDS - t0)) s" >&2
+  latency "$top" "$params" "$files" > "$work/$u.latency" ||
+    { echo "pnr.sh: cannot read the latency of $u (iverilog; see $work/$u.latency)" >&2; return 1; }
   t0=$SECONDS
   # nextpnr (WebAssembly) sees only its working folder: run it in $work with relative paths.
   # shellcheck disable=SC2086
@@ -155,6 +159,25 @@ build() { # unit
   fi
   echo $((SECONDS - t0)) > "$work/$u.pnr.secs"
   echo "pnr.sh: $u placed and routed in $((SECONDS - t0)) s" >&2
+}
+
+# The unit's latency in clocks, as its RTL defines it (`LAT` of a unit; uvt_mul's `LATENCY`):
+# a probe module elaborated by Icarus with the unit's parameters prints it.
+latency() { # top "P=V …" " files"
+  local top=$1 params=$2 files=$3 pv="" p name=LAT d
+  d=$(mktemp -d)
+  [ "$top" != uvt_mul ] || name=LATENCY
+  # MAP = 1 builds: the primitive's model beside its instance.
+  [[ "$files" != *uvt_mult18.v* ]] || files="$files vectors/rtl/ecp5/MULT18X18D.v"
+  for p in $params; do pv="$pv${pv:+, }.${p%%=*}(${p#*=})"; done
+  printf 'module uvt_lat_probe;\n  %s #(%s) u ();\n  initial $display("%%0d", u.%s);\nendmodule\n' \
+    "$top" "$pv" "$name" > "$d/probe.v"
+  # shellcheck disable=SC2086
+  iverilog -g2005 -s uvt_lat_probe -o "$d/probe.vvp" "$d/probe.v" $files >/dev/null 2>&1 &&
+    vvp -n "$d/probe.vvp" | grep -E '^[0-9]+$'
+  local rc=$?
+  rm -rf "$d"
+  return $rc
 }
 
 # The in-context harness (default): the unit with every input bit driven by a register of one
@@ -201,7 +224,7 @@ if [ -z "$reuse" ]; then
   for u in "${units[@]}"; do build "$u" || { echo "pnr.sh: nothing written" >&2; exit 1; }; done
 fi
 for u in "${units[@]}"; do
-  for f in report.json synth.secs pnr.secs pnr.log; do
+  for f in report.json synth.secs pnr.secs pnr.log latency; do
     [ -s "$work/$u.$f" ] || { echo "pnr.sh: no $work/$u.$f; nothing written" >&2; exit 1; }
   done
 done
@@ -223,14 +246,16 @@ entry() { # unit
     hj="{\"input_bits\": $ni, \"output_bits\": $no, \"TRELLIS_FF\": $((ni + no))}"
   fi
   jq -c --arg unit "$u" --arg top "$top" --arg config "$(config_of "$u")" --argjson params "$pj" --argjson harness "$hj" --arg xa "$xargs_" \
-     --argjson rate "$rate" --arg what "$what" \
+     --argjson rate "$rate" --arg what "$what" --argjson lat "$(cat "$work/$u.latency")" \
      --argjson ss "$(cat "$work/$u.synth.secs")" --argjson ps "$(cat "$work/$u.pnr.secs")" '
     (.fmax | to_entries | map(select(.key | test("clk"))) | .[0].value) as $f
     | (.critical_paths | map(select(.from | test("clk"))) | .[0].path) as $p
     | ($f.achieved * 100 | round / 100) as $fmax
     | {unit: $unit, top: $top, config: $config, params: $params,
        fmax_mhz: $fmax, results_per_clock: $rate, result: $what,
-       results_per_second: ($fmax * 1e6 * $rate | round),
+       results_per_second: ($fmax * 1e6 * $rate | round), latency: $lat,
+       results_per_second_per_mult18x18d: (.utilization.MULT18X18D.used as $m
+         | if $m > 0 then ($fmax * 1e6 * $rate / $m | round) else null end),
        resources: (.utilization | with_entries(select(.key == "MULT18X18D" or .key == "TRELLIS_COMB"
                     or .key == "TRELLIS_FF" or .key == "DP16KD" or .key == "ALU54B"))),
        critical_path: {from: $p[0].from.cell, to: $p[-1].to.cell,
@@ -241,6 +266,20 @@ entry() { # unit
                        routing_ns: ([$p[] | select(.type == "routing") | .delay] | add * 1000 | round / 1000),
                        steps: ($p | length)},
        harness: $harness, nextpnr_args: $xa, synth_seconds: $ss, pnr_seconds: $ps}' "$work/$u.report.json"
+}
+# A kept entry (-k) written before pnr.json had "latency" and results per second per MULT18X18D:
+# both added, the latency from the unit's RTL (the probe above), the rate from its own figures.
+complete() { # unit entry
+  local u=$1 e=$2 top srcs params rate what files="" f lat
+  if jq -e 'has("latency")' <<<"$e" >/dev/null; then printf '%s\n' "$e"; return; fi
+  IFS='|' read -r top srcs params rate what <<<"$(unit_def "$u")"
+  for f in $srcs; do files="$files vectors/rtl/$f"; done
+  lat=$(latency "$top" "$params" "$files") || { echo "pnr.sh: -k: cannot read the latency of $u" >&2; exit 1; }
+  jq -c --argjson lat "$lat" '. as $u | ($u.resources.MULT18X18D.used) as $m
+    | to_entries | map(if .key == "results_per_second" then ., {key: "latency", value: $lat},
+        {key: "results_per_second_per_mult18x18d",
+         value: (if $m > 0 then ($u.results_per_second / $m | round) else null end)} else . end)
+    | from_entries' <<<"$e"
 }
 ran() { local x; for x in "${units[@]}"; do [ "$x" = "$1" ] && return 0; done; return 1; }
 {
@@ -257,7 +296,7 @@ ran() { local x; for x in "${units[@]}"; do [ "$x" = "$1" ] && return 0; done; r
     while IFS= read -r e; do
       k=$(jq -r .unit <<<"$e")
       unit_def "$k" >/dev/null || { echo "pnr.sh: -k: $out has a unit '$k' not in the table" >&2; exit 1; }
-      ran "$k" || ent[$k]=$e
+      ran "$k" || ent[$k]=$(complete "$k" "$e")
     done < <(jq -c '.units[]' "$out")
   fi
   sep=""

@@ -1,10 +1,13 @@
 // tb_mul — uvt_mul against the plain `*` for one operand-width pair: every corner pair
 // (−2^(n−1), −2^(n−1)+1, −1, 0, 1, 2^(n−1)−1 of each operand) and NR seeded random pairs.
-// REG > 0 (the pipelined forms): each pair is held for REG clocks before p is compared.
+// REG = 1, 2 (the pipelined forms): each pair is held for REG clocks before p is compared.
+// REG = 3 (LAT clocks, MAP 0 or 1): streamed, a new pair on every clock, p compared with the
+// product of the pair LAT clocks earlier (so the registers are checked as a pipeline).
 // Prints "PASS n products AWxBW: h hard multipliers, l LUT bits (layout)" or each mismatch with operands, expected and observed,
 // and a FAIL line that ends with `$fatal`: vvp exits 1 (0 on PASS).
 //   iverilog -g2005 -Ptb_mul.AW=18 -Ptb_mul.BW=32 [-Ptb_mul.PA=25 -Ptb_mul.PB=18 -Ptb_mul.LW=8
 //     -Ptb_mul.REG=0] uvt_mul.v tb_mul.v
+//   REG = 3: -Ptb_mul.REG=3 -Ptb_mul.LAT=n [-Ptb_mul.MAP=1 uvt_mult18.v ecp5/MULT18X18D.v]
 //   vvp -n a.out [+SEED=n] [+NR=n]
 `timescale 1ns / 1ps
 module tb_mul;
@@ -14,17 +17,23 @@ module tb_mul;
     parameter PB = 18;
     parameter LW = 8;
     parameter REG = 0;
+    parameter LAT = 0;
+    parameter MAP = 0;
+    localparam H = 64;                 // history of the streamed pairs (LAT < H)
     reg clk = 1'b0;
     reg  signed [AW-1:0] a;
     reg  signed [BW-1:0] b;
     wire signed [AW+BW-1:0] p;
-    uvt_mul #(.AW(AW), .BW(BW), .PA(PA), .PB(PB), .LW(LW), .REG(REG)) dut (.a(a), .b(b), .p(p), .clk(clk));
+    uvt_mul #(.AW(AW), .BW(BW), .PA(PA), .PB(PB), .LW(LW), .REG(REG), .LAT(LAT), .MAP(MAP)) dut (.a(a), .b(b), .p(p), .clk(clk));
     reg signed [AW+BW-1:0] want;
     reg signed [AW-1:0] ca [0:5];
     reg signed [BW-1:0] cb [0:5];
-    integer seed, nr, i, j, k, n, bad;
+    integer seed, nr, i, j, k, n, bad, fed;
+    reg signed [AW-1:0] ha [0:H-1];
+    reg signed [BW-1:0] hb [0:H-1];
     task check;
-        begin
+        if (REG == 3) stream;
+        else begin
             #1;
             repeat (REG) begin
                 clk = 1'b1;
@@ -41,11 +50,36 @@ module tb_mul;
             end
         end
     endtask
+    // REG = 3: one clock per pair; p after the clock is the product of the pair fed LAT clocks
+    // before it (pair fed − LAT, counting from 0).
+    task stream;
+        begin
+            ha[fed % H] = a;
+            hb[fed % H] = b;
+            #1 clk = 1'b1;
+            #1 clk = 1'b0;
+            fed = fed + 1;
+            if (fed >= LAT) begin
+                #1;
+                want = ha[(fed - LAT) % H] * hb[(fed - LAT) % H];
+                n = n + 1;
+                if (p !== want) begin
+                    bad = bad + 1;
+                    if (bad <= 10)
+                        $display("MISMATCH %0d×%0d a=%0d (%h) b=%0d (%h): expected %0d (%h) observed %0d (%h)",
+                                 AW, BW, ha[(fed - LAT) % H], ha[(fed - LAT) % H],
+                                 hb[(fed - LAT) % H], hb[(fed - LAT) % H], want, want, p, p);
+                end
+            end
+        end
+    endtask
     initial begin
         if (!$value$plusargs("SEED=%d", seed)) seed = 7;
         if (!$value$plusargs("NR=%d", nr)) nr = 2000;
         n = 0;
         bad = 0;
+        fed = 0;
+        if (REG == 3 && LAT >= H) $fatal(1, "tb_mul: LAT = %0d, at most %0d", LAT, H - 1);
         ca[0] = {1'b1, {(AW-1){1'b0}}}; ca[1] = ca[0] + 1; ca[2] = -1; ca[3] = 0; ca[4] = 1; ca[5] = ~ca[0];
         cb[0] = {1'b1, {(BW-1){1'b0}}}; cb[1] = cb[0] + 1; cb[2] = -1; cb[3] = 0; cb[4] = 1; cb[5] = ~cb[0];
         for (i = 0; i < 6; i = i + 1)
@@ -59,6 +93,8 @@ module tb_mul;
             b = {$random(seed), $random(seed), $random(seed), $random(seed)};
             check;
         end
+        // REG = 3: LAT − 1 more clocks (the last pair fed again) bring out the last products.
+        if (REG == 3) repeat (LAT - 1) check;
         if (bad == 0)
             $display("PASS %0d products %0dx%0d: %0d hard multipliers, %0d LUT bits (swap %0d, lut-x %0d, lut-y %0d)",
                      n, AW, BW, dut.XN * dut.YN,

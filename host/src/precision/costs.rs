@@ -128,7 +128,7 @@ impl Costs {
             return String::new();
         };
         let mut s = format!(
-            "\nPlaced and routed for a Lattice ECP5 ({}; `{}`, {}, seed {}, target {} MHz; from `{}`):\n\n| unit | top | configuration | Fmax MHz | results/s | MULT18X18D | TRELLIS_COMB (LUT4, carry) | TRELLIS_FF | of them the harness's | critical path (from → to) | nextpnr options |\n|---|---|---|---|---|---|---|---|---|---|---|\n",
+            "\nPlaced and routed for a Lattice ECP5 ({}; `{}`, {}, seed {}, target {} MHz; from `{}`):\n\n| unit | top | configuration | Fmax MHz | latency (clocks) | results/s | results/s per MULT18X18D | MULT18X18D | TRELLIS_COMB (LUT4, carry) | TRELLIS_FF | of them the harness's | critical path (from → to) | nextpnr options |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
             v["device"].as_str().unwrap_or("?"),
             v["script"].as_str().unwrap_or("?"),
             v["nextpnr"].as_str().unwrap_or("?"),
@@ -142,13 +142,19 @@ impl Costs {
         };
         for u in v["units"].as_array().into_iter().flatten() {
             s += &format!(
-                "| {} | `{}` | {} | {:.1} | {:.1} M ({}) | {} | {} | {} | {} | `{}` → `{}` ({:.2} ns) | {} |\n",
+                "| {} | `{}` | {} | {:.1} | {} | {:.1} M ({}) | {} | {} | {} | {} | {} | `{}` → `{}` ({:.2} ns) | {} |\n",
                 u["unit"].as_str().unwrap_or("?"),
                 u["top"].as_str().unwrap_or("?"),
                 u["config"].as_str().unwrap_or("?"),
                 u["fmax_mhz"].as_f64().unwrap_or(f64::NAN),
+                u["latency"]
+                    .as_u64()
+                    .map_or("?".to_string(), |n| n.to_string()),
                 u["results_per_second"].as_f64().unwrap_or(f64::NAN) / 1e6,
                 u["result"].as_str().unwrap_or("results"),
+                u["results_per_second_per_mult18x18d"]
+                    .as_f64()
+                    .map_or("–".to_string(), |r| format!("{:.2} M", r / 1e6)),
                 used(u, "MULT18X18D"),
                 used(u, "TRELLIS_COMB"),
                 used(u, "TRELLIS_FF"),

@@ -10,6 +10,7 @@ mod cocotb;
 mod dpi;
 mod ffi_c;
 mod m4_qemu;
+mod mul;
 mod pnr;
 mod psample;
 mod reports;

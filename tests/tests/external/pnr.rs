@@ -59,6 +59,24 @@ fn check_entry(u: &Value) {
     for cell in ["MULT18X18D", "TRELLIS_COMB", "TRELLIS_FF"] {
         assert!(u["resources"][cell]["used"].is_u64(), "{name}: no {cell}");
     }
+    // The latency the RTL defines (at least one clock), and results per second per
+    // MULT18X18D = results per second ÷ the multipliers used (rounded; null without one).
+    assert!(
+        u["latency"].as_u64().is_some_and(|l| l >= 1),
+        "{name}: latency {}",
+        u["latency"]
+    );
+    let mult = u["resources"]["MULT18X18D"]["used"].as_u64().unwrap_or(0);
+    let per = &u["results_per_second_per_mult18x18d"];
+    if mult == 0 {
+        assert!(per.is_null(), "{name}: {per} per MULT18X18D without one");
+    } else {
+        assert_eq!(
+            per.as_f64(),
+            Some((rps / mult as f64).round()),
+            "{name}: {u}"
+        );
+    }
     let cp = &u["critical_path"];
     for k in ["from", "to", "from_net", "to_net"] {
         assert!(
@@ -196,16 +214,18 @@ fn committed_pnr_report_is_consistent() {
     }
 }
 
-/// A pnr.json with a results-per-second figure that is not Fmax × rate fails the check.
+/// A pnr.json with a results-per-second figure that is not Fmax × rate, or a per-multiplier
+/// figure that is not results per second ÷ MULT18X18D, fails the check.
 #[test]
 fn a_wrong_rate_in_pnr_json_is_caught() {
-    let mut j = load(&root().join("host/report/pnr.json"));
-    let u = &mut j["units"][0];
-    let rps = u["results_per_second"].as_f64().unwrap();
-    u["results_per_second"] = serde_json::json!(rps + 1000.0);
-    let bad = u.clone();
-    let r = std::panic::catch_unwind(|| check_entry(&bad));
-    assert!(r.is_err(), "a changed results_per_second passed");
+    let j = load(&root().join("host/report/pnr.json"));
+    for key in ["results_per_second", "results_per_second_per_mult18x18d"] {
+        let mut bad = j["units"][0].clone();
+        let v = bad[key].as_f64().unwrap();
+        bad[key] = serde_json::json!(v + 1000.0);
+        let r = std::panic::catch_unwind(|| check_entry(&bad));
+        assert!(r.is_err(), "a changed {key} passed");
+    }
 }
 
 /// Bad input to pnr.sh: an unknown unit, a bad seed, an unknown option: a message naming it and
@@ -231,7 +251,8 @@ fn pnr_script_rejects_bad_input_by_name() {
 }
 
 /// `UVT_EXTENSIVE=1`: pnr.sh places and routes the pipelined 31 × 31 multiplier (`uvt_mul.v`,
-/// REG = 2, 18 × 18 tiling) and writes a well-formed entry with the 4 MULT18X18D of its tiling.
+/// 18 × 18 tiling; REG = 2, and REG = 3 on MULT18X18D primitives) and writes well-formed entries
+/// with the 4 MULT18X18D of its tiling and the latency of each form.
 #[test]
 fn pnr_script_places_and_routes_a_small_unit() {
     if !extensive() {
@@ -244,7 +265,7 @@ fn pnr_script_places_and_routes_a_small_unit() {
         .arg(root().join("vectors/rtl/pnr.sh"))
         .arg("-o")
         .arg(&out_json)
-        .arg("mul31")
+        .args(["mul31", "mul31-pipe2"])
         .output()
         .unwrap();
     assert!(
@@ -256,6 +277,12 @@ fn pnr_script_places_and_routes_a_small_unit() {
     let u = unit(&j, "mul31");
     check_entry(u);
     assert_eq!(u["resources"]["MULT18X18D"]["used"], 4, "{u}");
+    assert_eq!(u["latency"], 2, "{u}");
+    // REG = 3 on MULT18X18D primitives (MAP = 1): the same 4 multipliers, 5 clocks.
+    let u = unit(&j, "mul31-pipe2");
+    check_entry(u);
+    assert_eq!(u["resources"]["MULT18X18D"]["used"], 4, "{u}");
+    assert_eq!(u["latency"], 5, "{u}");
 }
 
 /// `uvt precision` reads pnr.json from synth.json's folder: the table of the placed-and-routed
