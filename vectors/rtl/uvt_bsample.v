@@ -476,9 +476,43 @@ module uvt_bsample #(
         for (k = 0; k < EW; k = k + 1)
             if (e_or_d[k]) blen = k + 1;
     end
-    wire [5:0] sh_n = (blen > 24) ? blen - 7'd24 : 6'd0;
+    wire [5:0] sh_n;
+    generate
+        if (P2) begin : g_lz
+            // PIPE = 2: sh = 0 if bits EW−1..24 of the OR are 0, else 1 + the index of the
+            // highest set one among them: a two-level leading-one tree over groups of four bits
+            // (each group's OR and top index registered, then the top group and its index).
+            wire [63:0] v = {{(88-EW){1'b0}}, e_or_d[EW-1:24]};
+            wire [15:0] ga;                // group g has a set bit
+            wire [31:0] gp;                // the index of its top set bit
+            for (i = 0; i < 16; i = i + 1) begin : g_grp
+                wire [3:0] q = v[4*i +: 4];
+                assign ga[i] = |q;
+                assign gp[2*i +: 2] = q[3] ? 2'd3 : q[2] ? 2'd2 : q[1] ? 2'd1 : 2'd0;
+            end
+            reg [15:0] ra;
+            reg [31:0] rp;
+            always @(posedge clk) begin
+                ra <= ga;
+                rp <= gp;
+            end
+            wire [3:0] ha;                 // some group of the quad set
+            wire [7:0] hg;                 // the top such group of the quad
+            for (i = 0; i < 4; i = i + 1) begin : g_quad
+                wire [3:0] q = ra[4*i +: 4];
+                assign ha[i] = |q;
+                assign hg[2*i +: 2] = q[3] ? 2'd3 : q[2] ? 2'd2 : q[1] ? 2'd1 : 2'd0;
+            end
+            wire [1:0] h = ha[3] ? 2'd3 : ha[2] ? 2'd2 : ha[1] ? 2'd1 : 2'd0;
+            wire [3:0] g = {h, hg[2*h +: 2]};
+            wire [5:0] idx = {g, rp[2*g +: 2]};
+            assign sh_n = (|ha) ? idx + 6'd1 : 6'd0;
+        end else begin : g_blen
+            assign sh_n = (blen > 24) ? blen - 7'd24 : 6'd0;
+        end
+    endgenerate
     wire [5:0] sh_d;
-    uvt_dly #(.W(6), .N(M5 - P1)) dl_sh (clk, sh_n, sh_d);
+    uvt_dly #(.W(6), .N(M5 - P1 - P2)) dl_sh (clk, sh_n, sh_d);
     always @(posedge clk) begin
         {s10_e, s10_pos, s10_neg, s10_gt, s10_lt, s10_wpos} <= key_d;
         s10_sh <= sh_d;

@@ -459,15 +459,16 @@ fn rtl_pipelined_unit_passes_committed_records_with_its_latency() {
     }
 }
 
-/// The LUT chunk limits of the `PIPE = 2` build that `vectors/rtl/pnr.sh bsample-pipe2` places
-/// and routes (`LUTW`, and `LUTWE` for the edge products and E'·w; -1: `LUTW`).
-const PIPE2_LUTW: (i32, i32) = (8, -1);
+/// The tiling of the `PIPE = 2` build that `vectors/rtl/pnr.sh bsample-pipe2` places and routes:
+/// `LUTW`, `LUTWE` (the LUT chunk limit of the edge products and E'·w; -1: `LUTW`) and `KARA`
+/// (1: those products by Karatsuba on 18 × 18 products).
+const PIPE2_TILING: (i32, i32, i32) = (8, -1, 1);
 /// Its latency: "edge E depth D" (the bench's LATENCY line).
-const PIPE2_LATENCY: &str = "edge 39 depth 85";
+const PIPE2_LATENCY: &str = "edge 41 depth 87";
 
 /// The build that closes timing (`PIPE = 2`: every product `uvt_mul.v` `REG = 3`, at most one
-/// wide carry chain between registers; ECP5 18 × 18 ports and the LUT chunk limits of
-/// `pnr.sh bsample-pipe2`) reproduces every committed record with its latency, both in
+/// wide carry chain between registers; ECP5 18 × 18 ports and the tiling (LUT chunk limits,
+/// Karatsuba) of `pnr.sh bsample-pipe2`) reproduces every committed record with its latency, in
 /// behavioural form (`MAP = 0`) and with every hard piece an instantiated MULT18X18D (`MAP = 1`,
 /// simulated with the primitive's model `vectors/rtl/ecp5/MULT18X18D.v`). The six runs (two
 /// builds, three sets) go in parallel.
@@ -487,8 +488,9 @@ fn rtl_pipe2_unit_passes_every_committed_record() {
                 &[
                     p("tb_bsample.DSP_A", 18),
                     p("tb_bsample.DSP_B", 18),
-                    p("tb_bsample.LUTW", PIPE2_LUTW.0),
-                    p("tb_bsample.LUTWE", PIPE2_LUTW.1),
+                    p("tb_bsample.LUTW", PIPE2_TILING.0),
+                    p("tb_bsample.LUTWE", PIPE2_TILING.1),
+                    p("tb_bsample.KARA", PIPE2_TILING.2),
                     p("tb_bsample.PIPE", 2),
                     p("tb_bsample.MAP", map as i32),
                 ],
