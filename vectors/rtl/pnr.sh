@@ -15,7 +15,9 @@
 # sample test at the default configuration (bsample-pipe0 the default build, bsample PIPE = 1,
 # bsample-static PIPE = 1 without motion and defocus; bsample-lut17 and bsample-lut17-pipe1
 # the same with top chunks up to 17 bits in LUTs, PIPE = 0 and 1: of these only bsample-lut17
-# has routed on the 85F, docs/rtl.md "Placed and routed speed"), psample* the planar static unit,
+# has routed on the 85F, docs/rtl.md "Placed and routed speed"; bsample-pipe2 PIPE = 2 with
+# MULT18X18D instances, LUTW = 8 and the edge products by Karatsuba, KARA = 1: routes),
+# psample* the planar static unit,
 # bounds* the per-tile bounds unit, mul31 a pipelined 31 × 31 product. Each unit is synthesized
 # with Yosys `synth_ecp5` (Debian's yosys) and placed and routed by nextpnr-ecp5 with the fixed
 # seed SEED (default 1), the router router2 and a target of MHZ (default 100) for the clock
