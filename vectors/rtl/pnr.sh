@@ -15,7 +15,9 @@
 # sample test at the default configuration (bsample-pipe0 the default build, bsample PIPE = 1,
 # bsample-static PIPE = 1 without motion and defocus; bsample-lut17 and bsample-lut17-pipe1
 # the same with top chunks up to 17 bits in LUTs, PIPE = 0 and 1: of these only bsample-lut17
-# has routed on the 85F, docs/rtl.md "Placed and routed speed"), psample* the planar static unit,
+# has routed on the 85F, docs/rtl.md "Placed and routed speed"; bsample-pipe2 PIPE = 2 with
+# MULT18X18D instances, LUTW = 8 and the edge products by Karatsuba, KARA = 1: routes),
+# psample* the planar static unit,
 # bounds* the per-tile bounds unit, mul31 a pipelined 31 × 31 product. Each unit is synthesized
 # with Yosys `synth_ecp5` (Debian's yosys) and placed and routed by nextpnr-ecp5 with the fixed
 # seed SEED (default 1), the router router2 and a target of MHZ (default 100; recorded per unit
@@ -54,6 +56,7 @@ unit_def() {
     bsample-pipe0) echo "uvt_bsample|uvt_mul.v uvt_bsample.v|POS=16 TUV=16 OFF=20 DSP_A=18 DSP_B=18 PIPE=0|1|sample test" ;;
     bsample-lut17) echo "uvt_bsample|uvt_mul.v uvt_bsample.v|POS=16 TUV=16 OFF=20 DSP_A=18 DSP_B=18 LUTW=17 PIPE=0|1|sample test" ;;
     bsample-lut17-pipe1) echo "uvt_bsample|uvt_mul.v uvt_bsample.v|POS=16 TUV=16 OFF=20 DSP_A=18 DSP_B=18 LUTW=17 PIPE=1|1|sample test" ;;
+    bsample-pipe2) echo "uvt_bsample|uvt_mul.v uvt_mult18.v uvt_bsample.v|POS=16 TUV=16 OFF=20 DSP_A=18 DSP_B=18 LUTW=8 KARA=1 PIPE=2 MAP=1|1|sample test" ;;
     psample) echo "uvt_psample|uvt_mul.v uvt_psample.v|DSP_A=18 DSP_B=18|1|sample test" ;;
     psample-pipe1) echo "uvt_psample|uvt_mul.v uvt_psample.v|DSP_A=18 DSP_B=18 PIPE=1|1|sample test" ;;
     psample-pipe2) echo "uvt_psample|uvt_mul.v uvt_mult18.v uvt_psample.v|DSP_A=18 DSP_B=18 LUTW=0 PIPE=2 MAP=1|1|sample test" ;;
@@ -65,7 +68,7 @@ unit_def() {
     *) return 1 ;;
   esac
 }
-known="psample psample-pipe1 psample-pipe2 bounds bounds-pipe1 bounds-pipe2 bsample-lut17 bsample-lut17-pipe1 bsample-pipe0 bsample bsample-static mul31 mul31-pipe2"
+known="psample psample-pipe1 psample-pipe2 bounds bounds-pipe1 bounds-pipe2 bsample-lut17 bsample-lut17-pipe1 bsample-pipe0 bsample bsample-static bsample-pipe2 mul31 mul31-pipe2"
 defaults="psample bounds"
 # The configuration each unit is built at (the precision sweep's names).
 config_of() {
