@@ -11,17 +11,21 @@
 #
 #   bash vectors/rtl/pnr.sh [-o OUT.json] [-r WORKDIR] [-s SEED] [-f MHZ] [-a ARGS] [-O] [-k] [UNIT …]
 #
-# UNIT is a name of the table below (default: psample bounds): bsample* the bounded
-# sample test at the default configuration (bsample-pipe0 the default build, bsample PIPE = 1,
-# bsample-static PIPE = 1 without motion and defocus; bsample-lut17 and bsample-lut17-pipe1
-# the same with top chunks up to 17 bits in LUTs, PIPE = 0 and 1: of these only bsample-lut17
-# has routed on the 85F, docs/rtl.md "Placed and routed speed"; bsample-pipe2 PIPE = 2 with
-# MULT18X18D instances, LUTW = 8 and the edge products by Karatsuba, KARA = 1: routes),
-# psample* the planar static unit,
-# bounds* the per-tile bounds unit, mul31 a pipelined 31 × 31 product. Each unit is synthesized
-# with Yosys `synth_ecp5` (Debian's yosys) and placed and routed by nextpnr-ecp5 with the fixed
-# seed SEED (default 1), the router router2 and a target of MHZ (default 100; recorded per unit
-# as "target_mhz") for the clock `clk`; --timing-allow-fail, so a unit slower than the target is measured, not rejected. Fmax
+# UNIT is a name of the table below (default: psample bounds). The builds of each unit: the
+# default (`PIPE = 0`, the unit the benches describe), `-pipe1` (PIPE = 1: registers inside the
+# products and some wide sums) and `-pipe2` (PIPE = 2: every product on MULT18X18D instances with
+# their input, pipeline and output registers, MAP = 1, and at most one carry chain per clock).
+# psample* the planar static unit; bounds* the per-tile bounds unit; bsample* the bounded sample
+# test at the default configuration: bsample-pipe0 the default build, bsample PIPE = 1,
+# bsample-static PIPE = 1 without motion and defocus, bsample-lut17 and bsample-lut17-pipe1 with
+# top chunks up to 17 bits in LUTs (PIPE = 0 and 1), bsample-pipe2 PIPE = 2 with LUTW = 8 and the
+# edge products by Karatsuba (KARA = 1); of these bsample-lut17 and bsample-pipe2 have routed
+# on the 85F (docs/rtl.md "Placed and routed speed"); mul31 a 31 × 31 product (REG = 2), and
+# mul31-pipe2 the same with REG = 3 on MULT18X18D instances. Each unit is synthesized with Yosys
+# `synth_ecp5` (Debian's yosys) and placed and routed by nextpnr-ecp5 with the fixed seed SEED
+# (default 1), the router router2 and a target of MHZ (default 100; recorded per unit as
+# "target_mhz") for the clock `clk`; --timing-allow-fail, so a unit slower than the target is
+# measured, not rejected. Fmax
 # is nextpnr's achieved figure for `clk` after routing; results per second = Fmax × results per
 # clock (1 for every unit).
 # In context (default): the unit inside the harness below (three pins; `clk` on the global clock
