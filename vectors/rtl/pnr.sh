@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Place and route the reference RTL units for a Lattice ECP5 LFE5U-85F (CABGA381, speed grade 6,
 # nextpnr's default) and write their clock rate and resources to host/report/pnr.json:
-#   {"yosys": …, "nextpnr": …, "device": …, "seed": …, "target_mhz": …, "units": [{"unit", "top",
+#   {"yosys": …, "nextpnr": …, "device": …, "seed": …, "units": [{"unit", "top", "target_mhz",
 #    "config", "params", "fmax_mhz", "results_per_clock", "result", "results_per_second",
 #    "latency" (clocks, the RTL's LAT), "results_per_second_per_mult18x18d" (null without one),
 #    "resources": {"MULT18X18D": {"used", "available"}, "TRELLIS_COMB": …, "TRELLIS_FF": …, …},
@@ -18,8 +18,8 @@
 # has routed on the 85F, docs/rtl.md "Placed and routed speed"), psample* the planar static unit,
 # bounds* the per-tile bounds unit, mul31 a pipelined 31 × 31 product. Each unit is synthesized
 # with Yosys `synth_ecp5` (Debian's yosys) and placed and routed by nextpnr-ecp5 with the fixed
-# seed SEED (default 1), the router router2 and a target of MHZ (default 100) for the clock
-# `clk`; --timing-allow-fail, so a unit slower than the target is measured, not rejected. Fmax
+# seed SEED (default 1), the router router2 and a target of MHZ (default 100; recorded per unit
+# as "target_mhz") for the clock `clk`; --timing-allow-fail, so a unit slower than the target is measured, not rejected. Fmax
 # is nextpnr's achieved figure for `clk` after routing; results per second = Fmax × results per
 # clock (1 for every unit).
 # In context (default): the unit inside the harness below (three pins; `clk` on the global clock
@@ -245,13 +245,13 @@ entry() { # unit
     hj="{\"input_bits\": $ni, \"output_bits\": $no, \"TRELLIS_FF\": $((ni + no))}"
   fi
   jq -c --arg unit "$u" --arg top "$top" --arg config "$(config_of "$u")" --argjson params "$pj" --argjson harness "$hj" --arg xa "$xargs_" \
-     --argjson rate "$rate" --arg what "$what" --argjson lat "$(cat "$work/$u.latency")" \
+     --argjson rate "$rate" --arg what "$what" --argjson target "$mhz" --argjson lat "$(cat "$work/$u.latency")" \
      --argjson ss "$(cat "$work/$u.synth.secs")" --argjson ps "$(cat "$work/$u.pnr.secs")" '
     (.fmax | to_entries | map(select(.key | test("clk"))) | .[0].value) as $f
     | (.critical_paths | map(select(.from | test("clk"))) | .[0].path) as $p
     | ($f.achieved * 100 | round / 100) as $fmax
     | {unit: $unit, top: $top, config: $config, params: $params,
-       fmax_mhz: $fmax, results_per_clock: $rate, result: $what,
+       target_mhz: $target, fmax_mhz: $fmax, results_per_clock: $rate, result: $what,
        results_per_second: ($fmax * 1e6 * $rate | round), latency: $lat,
        results_per_second_per_mult18x18d: (.utilization.MULT18X18D.used as $m
          | if $m > 0 then ($fmax * 1e6 * $rate / $m | round) else null end),
@@ -266,16 +266,19 @@ entry() { # unit
                        steps: ($p | length)},
        harness: $harness, nextpnr_args: $xa, synth_seconds: $ss, pnr_seconds: $ps}' "$work/$u.report.json"
 }
-# A kept entry (-k) written before pnr.json had "latency" and results per second per MULT18X18D:
-# both added, the latency from the unit's RTL (the probe above), the rate from its own figures.
+# A kept entry (-k) written before pnr.json had "latency", results per second per MULT18X18D and a
+# target per unit: the latency from the unit's RTL (the probe above), the rate from its own
+# figures, the target that file's run had (its top-level "target_mhz").
 complete() { # unit entry
   local u=$1 e=$2 top srcs params rate what files="" f lat
-  if jq -e 'has("latency")' <<<"$e" >/dev/null; then printf '%s\n' "$e"; return; fi
+  if jq -e 'has("latency") and has("target_mhz")' <<<"$e" >/dev/null; then printf '%s\n' "$e"; return; fi
   IFS='|' read -r top srcs params rate what <<<"$(unit_def "$u")"
   for f in $srcs; do files="$files vectors/rtl/$f"; done
   lat=$(latency "$top" "$params" "$files") || { echo "pnr.sh: -k: cannot read the latency of $u" >&2; exit 1; }
-  jq -c --argjson lat "$lat" '. as $u | ($u.resources.MULT18X18D.used) as $m
-    | to_entries | map(if .key == "results_per_second" then ., {key: "latency", value: $lat},
+  jq -c --argjson lat "$lat" --argjson target "$(jq '.target_mhz' "$out")" '. as $u
+    | ($u.resources.MULT18X18D.used) as $m
+    | to_entries | map(if .key == "unit" then ., {key: "target_mhz", value: $target}
+      elif .key == "results_per_second" then ., {key: "latency", value: $lat},
         {key: "results_per_second_per_mult18x18d",
          value: (if $m > 0 then ($u.results_per_second / $m | round) else null end)} else . end)
     | from_entries' <<<"$e"
@@ -287,7 +290,7 @@ ran() { local x; for x in "${units[@]}"; do [ "$x" = "$1" ] && return 0; done; r
     "$(jq -Rs 'rtrimstr("\n") | split("\n") | join(", PyPI ")' "$work/nextpnr.version")"
   if [ -n "$ooc" ]; then ctx="out of context"; else ctx="in context (pnr.sh's harness: a shift chain into every input, a signature register on every output)"; fi
   printf '  "device": "LFE5U-85F CABGA381 speed 6, %s",\n' "$ctx"
-  printf '  "script": "bash vectors/rtl/pnr.sh",\n  "seed": %s,\n  "target_mhz": %s,\n  "units": [' "$seed" "$mhz"
+  printf '  "script": "bash vectors/rtl/pnr.sh",\n  "seed": %s,\n  "units": [' "$seed"
   # The entries in the order of the unit table (`known`), kept ones (-k) among them.
   declare -A ent=()
   for u in "${units[@]}"; do ent[$u]=$(entry "$u"); done

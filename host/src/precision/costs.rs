@@ -128,12 +128,11 @@ impl Costs {
             return String::new();
         };
         let mut s = format!(
-            "\nPlaced and routed for a Lattice ECP5 ({}; `{}`, {}, seed {}, target {} MHz; from `{}`):\n\n| unit | top | configuration | Fmax MHz | latency (clocks) | results/s | results/s per MULT18X18D | MULT18X18D | TRELLIS_COMB (LUT4, carry) | TRELLIS_FF | of them the harness's | critical path (from → to) | nextpnr options |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+            "\nPlaced and routed for a Lattice ECP5 ({}; `{}`, {}, seed {}; from `{}`):\n\n| unit | top | configuration | target MHz | Fmax MHz | latency (clocks) | results/s | results/s per MULT18X18D | MULT18X18D | TRELLIS_COMB (LUT4, carry) | TRELLIS_FF | of them the harness's | critical path (from → to) | nextpnr options |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
             v["device"].as_str().unwrap_or("?"),
             v["script"].as_str().unwrap_or("?"),
             v["nextpnr"].as_str().unwrap_or("?"),
             v["seed"],
-            v["target_mhz"],
             p.display()
         );
         let used = |u: &serde_json::Value, c: &str| {
@@ -142,10 +141,11 @@ impl Costs {
         };
         for u in v["units"].as_array().into_iter().flatten() {
             s += &format!(
-                "| {} | `{}` | {} | {:.1} | {} | {:.1} M ({}) | {} | {} | {} | {} | {} | `{}` → `{}` ({:.2} ns) | {} |\n",
+                "| {} | `{}` | {} | {} | {:.1} | {} | {:.1} M ({}) | {} | {} | {} | {} | {} | `{}` → `{}` ({:.2} ns) | {} |\n",
                 u["unit"].as_str().unwrap_or("?"),
                 u["top"].as_str().unwrap_or("?"),
                 u["config"].as_str().unwrap_or("?"),
+                u["target_mhz"],
                 u["fmax_mhz"].as_f64().unwrap_or(f64::NAN),
                 u["latency"]
                     .as_u64()

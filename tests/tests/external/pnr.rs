@@ -42,6 +42,10 @@ fn check_entry(u: &Value) {
     let fmax = u["fmax_mhz"]
         .as_f64()
         .unwrap_or_else(|| panic!("{name}: no fmax_mhz"));
+    assert!(
+        u["target_mhz"].as_f64().is_some_and(|t| t > 0.0),
+        "{name}: no target_mhz"
+    );
     assert!(fmax > 0.0 && fmax < 1000.0, "{name}: fmax {fmax}");
     let rate = u["results_per_clock"].as_u64().expect("results_per_clock");
     assert!(rate >= 1, "{name}");
