@@ -57,7 +57,7 @@ steps=(
   "m4-zmax;qemu;about 13 min (README.md);host/report/m4_zmax.json;bash demo/m4_report.sh --zmax"
   "auto-rule;-;25 s (docs/bounds.md);core/src/bounds/auto/rule.rs;uvt auto-rule --out core/src/bounds/auto/rule.rs"
   "synth;yosys;the committed entries took 5413 s (four configurations), 2076 s (four units at -j 2), 67 s (planar) and 781 s + 217 s (bounds unit): about 2 h 20 min (docs/rtl.md);host/report/synth.json;bash vectors/rtl/synth.sh -j 2"
-  "pnr;yosys nextpnr;psample 180 s, bounds 1875 s and bsample-lut17 2131 s with synthesis (README.md), psample-pipe1 250 s and bounds-pipe1 1513 s of P&R (docs/rtl.md): about 1 h 40 min;host/report/pnr.json;bash vectors/rtl/pnr.sh psample psample-pipe1 bounds bounds-pipe1 bsample-lut17"
+  "pnr;yosys nextpnr;the committed entries took from 8 s (mul31) to 2860 s (bounds-pipe2) each with synthesis, 3 h 11 min in all (docs/rtl.md);host/report/pnr.json;bash vectors/rtl/pnr.sh psample psample-pipe1 bounds bounds-pipe1 bounds-pipe2 bsample-lut17 bsample-pipe2 mul31 mul31-pipe2, then bash vectors/rtl/pnr.sh -k -f 150 -a '--placer sa' psample-pipe2"
   "precision;-;30 s after the release build (docs/precision.md);host/report/precision-quick/precision.{md,json,svg};uvt precision --quick --out host/report/precision-quick"
   "bench-ste-quick;-;6m46s (docs/bounds.md);host/report/bench-ste-quick.{md,json};uvt bench-ste --quick --tile-sweep --json host/report/bench-ste-quick.json > host/report/bench-ste-quick.md"
   "bench-ste-full;-;20m29s (docs/bounds.md);host/report/bench-ste-full.{md,json};uvt bench-ste --no-limit --json host/report/bench-ste-full.json > host/report/bench-ste-full.md"
@@ -220,7 +220,13 @@ step_auto-rule() {
   fi
 }
 step_synth() { run bash vectors/rtl/synth.sh -j 2 >&2; }
-step_pnr() { run bash vectors/rtl/pnr.sh psample psample-pipe1 bounds bounds-pipe1 bsample-lut17 >&2; }
+# Every unit at the default target, then the planar PIPE = 2 build at its own (150 MHz, with
+# nextpnr's simulated-annealing placer), kept beside the others (-k).
+step_pnr() {
+  run bash vectors/rtl/pnr.sh psample psample-pipe1 bounds bounds-pipe1 bounds-pipe2 bsample-lut17 \
+    bsample-pipe2 mul31 mul31-pipe2 >&2
+  run bash vectors/rtl/pnr.sh -k -f 150 -a "--placer sa" psample-pipe2 >&2
+}
 # The fit example of docs/units.md: fit.md of a static stress scene, its headings at level 4 (as
 # host/tests/cli/fit_cli.rs's check of the block reads it).
 step_fit-example() {

@@ -11,15 +11,21 @@
 #
 #   bash vectors/rtl/pnr.sh [-o OUT.json] [-r WORKDIR] [-s SEED] [-f MHZ] [-a ARGS] [-O] [-k] [UNIT …]
 #
-# UNIT is a name of the table below (default: psample bounds): bsample* the bounded
-# sample test at the default configuration (bsample-pipe0 the default build, bsample PIPE = 1,
-# bsample-static PIPE = 1 without motion and defocus; bsample-lut17 and bsample-lut17-pipe1
-# the same with top chunks up to 17 bits in LUTs, PIPE = 0 and 1: of these only bsample-lut17
-# has routed on the 85F, docs/rtl.md "Placed and routed speed"), psample* the planar static unit,
-# bounds* the per-tile bounds unit, mul31 a pipelined 31 × 31 product. Each unit is synthesized
-# with Yosys `synth_ecp5` (Debian's yosys) and placed and routed by nextpnr-ecp5 with the fixed
-# seed SEED (default 1), the router router2 and a target of MHZ (default 100; recorded per unit
-# as "target_mhz") for the clock `clk`; --timing-allow-fail, so a unit slower than the target is measured, not rejected. Fmax
+# UNIT is a name of the table below (default: psample bounds). The builds of each unit: the
+# default (`PIPE = 0`, the unit the benches describe), `-pipe1` (PIPE = 1: registers inside the
+# products and some wide sums) and `-pipe2` (PIPE = 2: every product on MULT18X18D instances with
+# their input, pipeline and output registers, MAP = 1, and at most one carry chain per clock).
+# psample* the planar static unit; bounds* the per-tile bounds unit; bsample* the bounded sample
+# test at the default configuration: bsample-pipe0 the default build, bsample PIPE = 1,
+# bsample-static PIPE = 1 without motion and defocus, bsample-lut17 and bsample-lut17-pipe1 with
+# top chunks up to 17 bits in LUTs (PIPE = 0 and 1), bsample-pipe2 PIPE = 2 with LUTW = 8 and the
+# edge products by Karatsuba (KARA = 1); of these bsample-lut17 and bsample-pipe2 have routed
+# on the 85F (docs/rtl.md "Placed and routed speed"); mul31 a 31 × 31 product (REG = 2), and
+# mul31-pipe2 the same with REG = 3 on MULT18X18D instances. Each unit is synthesized with Yosys
+# `synth_ecp5` (Debian's yosys) and placed and routed by nextpnr-ecp5 with the fixed seed SEED
+# (default 1), the router router2 and a target of MHZ (default 100; recorded per unit as
+# "target_mhz") for the clock `clk`; --timing-allow-fail, so a unit slower than the target is
+# measured, not rejected. Fmax
 # is nextpnr's achieved figure for `clk` after routing; results per second = Fmax × results per
 # clock (1 for every unit).
 # In context (default): the unit inside the harness below (three pins; `clk` on the global clock
@@ -54,16 +60,19 @@ unit_def() {
     bsample-pipe0) echo "uvt_bsample|uvt_mul.v uvt_bsample.v|POS=16 TUV=16 OFF=20 DSP_A=18 DSP_B=18 PIPE=0|1|sample test" ;;
     bsample-lut17) echo "uvt_bsample|uvt_mul.v uvt_bsample.v|POS=16 TUV=16 OFF=20 DSP_A=18 DSP_B=18 LUTW=17 PIPE=0|1|sample test" ;;
     bsample-lut17-pipe1) echo "uvt_bsample|uvt_mul.v uvt_bsample.v|POS=16 TUV=16 OFF=20 DSP_A=18 DSP_B=18 LUTW=17 PIPE=1|1|sample test" ;;
+    bsample-pipe2) echo "uvt_bsample|uvt_mul.v uvt_mult18.v uvt_bsample.v|POS=16 TUV=16 OFF=20 DSP_A=18 DSP_B=18 LUTW=8 KARA=1 PIPE=2 MAP=1|1|sample test" ;;
     psample) echo "uvt_psample|uvt_mul.v uvt_psample.v|DSP_A=18 DSP_B=18|1|sample test" ;;
     psample-pipe1) echo "uvt_psample|uvt_mul.v uvt_psample.v|DSP_A=18 DSP_B=18 PIPE=1|1|sample test" ;;
+    psample-pipe2) echo "uvt_psample|uvt_mul.v uvt_mult18.v uvt_psample.v|DSP_A=18 DSP_B=18 LUTW=0 PIPE=2 MAP=1|1|sample test" ;;
     bounds) echo "uvt_bounds|uvt_mul.v uvt_bounds.v|BND=16 TUV=16 DSP_A=18 DSP_B=18|1|tile" ;;
     bounds-pipe1) echo "uvt_bounds|uvt_mul.v uvt_bounds.v|BND=16 TUV=16 DSP_A=18 DSP_B=18 PIPE=1|1|tile" ;;
+    bounds-pipe2) echo "uvt_bounds|uvt_mul.v uvt_mult18.v uvt_bounds.v|BND=16 TUV=16 DSP_A=18 DSP_B=18 PIPE=2 MAP=1|1|tile" ;;
     mul31) echo "uvt_mul|uvt_mul.v|AW=31 BW=31 PA=18 PB=18 LW=0 REG=2|1|product" ;;
     mul31-pipe2) echo "uvt_mul|uvt_mul.v uvt_mult18.v|AW=31 BW=31 PA=18 PB=18 LW=0 REG=3 LAT=5 MAP=1|1|product" ;;
     *) return 1 ;;
   esac
 }
-known="psample psample-pipe1 bounds bounds-pipe1 bsample-lut17 bsample-lut17-pipe1 bsample-pipe0 bsample bsample-static mul31 mul31-pipe2"
+known="psample psample-pipe1 psample-pipe2 bounds bounds-pipe1 bounds-pipe2 bsample-lut17 bsample-lut17-pipe1 bsample-pipe0 bsample bsample-static bsample-pipe2 mul31 mul31-pipe2"
 defaults="psample bounds"
 # The configuration each unit is built at (the precision sweep's names).
 config_of() {

@@ -6,7 +6,8 @@
 //   +SEED=<n>      the bubble pattern's seed (default 1); +BUBBLES=<percent> (default 25)
 //   +DRAIN=<k>     clocks to wait for the last results (default 200)
 //   +JUNK=1        unknowns (x) on every data port during bubbles (slower: ~5x under Icarus)
-// Parameters (iverilog -P tb_bounds.X=…): BND, TUV, DSP_A, DSP_B, PIPE the unit's (uvt_bounds.v);
+// Parameters (iverilog -P tb_bounds.X=…): BND, TUV, DSP_A, DSP_B, PIPE, MAP the unit's
+// (uvt_bounds.v; MAP = 1 needs uvt_mult18.v and the primitive's model ecp5/MULT18X18D.v);
 // SW, LENS_AT, DUAL_AT the setup_out format: words per record and first word of the lens and
 // dual coefficient blocks (format version 4, the default: 108, 24, 72; version 3, without
 // eps_x, eps_y, eps_w at words 21..23: 105, 21, 69). A setup_out.hex whose lines are not SW
@@ -28,6 +29,7 @@ module tb_bounds;
     parameter DSP_A = 25;
     parameter DSP_B = 18;
     parameter PIPE = 0;
+    parameter MAP = 0;
     parameter SW = 108;
     parameter LENS_AT = 24;
     parameter DUAL_AT = 72;
@@ -55,7 +57,7 @@ module tb_bounds;
     wire signed [31:0] u_lo, u_hi, v_lo, v_hi, t_lo, t_hi;
 
 `ifdef UVT_DUT_IS_REFERENCE
-    `UVT_DUT #(.BND(BND), .TUV(TUV), .DSP_A(DSP_A), .DSP_B(DSP_B), .PIPE(PIPE)) dut (
+    `UVT_DUT #(.BND(BND), .TUV(TUV), .DSP_A(DSP_A), .DSP_B(DSP_B), .PIPE(PIPE), .MAP(MAP)) dut (
 `else
     `UVT_DUT dut (
 `endif

@@ -31,6 +31,9 @@ module tb_bsample;
     parameter MOTION = 1;              // the unit variant (uvt_bsample.v)
     parameter DEFOCUS = 1;
     parameter PIPE = 0;                // the unit's pipelining (uvt_bsample.v; latency only)
+    parameter MAP = 0;                 // PIPE = 2: MULT18X18D instances (needs their model)
+    parameter LUTWE = -1;              // PIPE = 2: LUT chunk limit of a'·b' and E'·w
+    parameter KARA = 0;                // PIPE = 2: a'·b' on three hard multipliers (Karatsuba)
     localparam NT = MOTION ? 30 : 15;  // trin words: key frame 1 only with MOTION
     localparam WI = 37, WO = 14, MAXREC = 16384;
     reg [31:0] in_mem  [0:MAXREC*WI-1];
@@ -58,7 +61,8 @@ module tb_bsample;
     assign {ab, e, det_sign, covered} = 0;
 `else
     `UVT_DUT #(.POS(POS), .TUV(TUV), .OFF(OFF), .DSP_A(DSP_A), .DSP_B(DSP_B),
-               .MOTION(MOTION), .DEFOCUS(DEFOCUS), .PIPE(PIPE), .LUTW(LUTW)) dut (
+               .MOTION(MOTION), .DEFOCUS(DEFOCUS), .PIPE(PIPE), .LUTW(LUTW), .MAP(MAP),
+               .LUTWE(LUTWE), .KARA(KARA)) dut (
         .clk(clk), .in_valid(in_valid), .trin(trin), .vp_w(vp_w), .vp_h(vp_h), .xs(xs), .ys(ys),
         .t(t), .u(u), .v(v), .edge_valid(edge_valid), .ab(ab), .e(e), .det_sign(det_sign),
         .covered(covered), .out_valid(out_valid), .out_covered(out_covered), .depth(depth)

@@ -21,7 +21,8 @@ module tb_psample;
     parameter DSP_B = 18;
     parameter LUTW = 8;
     parameter PIPE = 0;                // the unit's pipelining (uvt_psample.v; latency only)
-    localparam WI = 28, WO = 8, MAXREC = 16384, LAT = 9;   // the longest: PIPE = 1
+    parameter MAP = 0;                 // PIPE = 2: hard pieces as ECP5 MULT18X18D (uvt_mul.v)
+    localparam WI = 28, WO = 8, MAXREC = 16384, LAT = 24;  // at least the unit's (PIPE = 2: 16-19)
     reg [31:0] in_mem  [0:MAXREC*WI-1];
     reg [31:0] out_mem [0:MAXREC*WO-1];
     reg [8*1024-1:0] in_file, out_file;
@@ -45,7 +46,7 @@ module tb_psample;
     );
     assign e = 0;                      // the internal edge values are not checked
 `else
-    `UVT_DUT #(.DSP_A(DSP_A), .DSP_B(DSP_B), .LUTW(LUTW), .PIPE(PIPE)) dut (
+    `UVT_DUT #(.DSP_A(DSP_A), .DSP_B(DSP_B), .LUTW(LUTW), .PIPE(PIPE), .MAP(MAP)) dut (
         .clk(clk), .in_valid(in_valid), .n(nn), .sigma(sigma), .f(f), .g(g), .vp_w(vp_w),
         .vp_h(vp_h), .xs(xs), .ys(ys), .out_valid(out_valid), .covered(covered),
         .depth(depth), .e(e)

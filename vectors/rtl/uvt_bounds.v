@@ -12,7 +12,14 @@
 //   PIPE 0 (default): LAT = 26; 1: LAT = 27, the same results one clock later: the lens
 //        products registered inside uvt_mul (REG = 2: the lens path then ends at stage 9, still
 //        ahead of the dual path) and stage 26 split in two (docs/rtl.md "Placed and routed
-//        speed" for what each gives)
+//        speed" for what each gives); 2: LAT = 34, at most one wide carry chain or one
+//        multiplier between registers: every product REG = 3 inside uvt_mul (the lens products
+//        8 clocks, the dual line products 5, in place of the stage-4 register), the lens
+//        clamp (5), the lens u = 2s − 1 (7) and the dual meet (25) each before a register of
+//        their own, |n| > |d| of negative n, d compared as n < d (no negation before it), and
+//        stage 26 four clocks (span ∩ t_x, ∩ t_y, the test tl ≤ th, the outputs)
+//   MAP  0 (default): behavioural products; 1 (PIPE = 2, 18 × 18 ports only): every hard piece
+//        an instantiated ECP5 MULT18X18D (uvt_mul.v); the same bits and latency
 // The default configuration bounded-16-16-16-20 (and the exact one) is BND = TUV = 16, the only
 // values the committed records exercise (tests/tests/external/bounds_rtl.rs); others are untested.
 //
@@ -29,7 +36,7 @@
 //   dual_delta[64(8a+4m+2t+e) +: 64]  δmin (m = 0) / δmax (m = 1) at time t, footprint end e
 //   nonempty, u_lo, u_hi, v_lo, v_hi, t_lo, t_hi   bounds_out words 0..6 (the box; all zero
 //                       when the tile is empty), with out_valid, LAT = 26 + PIPE clocks after
-//                       in_valid
+//                       in_valid (PIPE = 2: 34)
 // The unit reads the bits the model's ranges allow (core/src/bounds/laine.rs and the width table,
 // `uvt widths`, core/README.md): |base| < 2^58, |d| ≤ 3·2^56 (so |n| < 2^58 where it is
 // multiplied, and n·r < 2^81), r ≤ 2^80 (81 bits), |δ| < 2^44 (45 bits), ξ < 2^16; every line
@@ -62,6 +69,11 @@
 //   26     t = span ∩ the present axes' t intervals; nonempty unless a present lens axis or
 //          dual axis is empty or t is; the outputs registered (zero when empty). With PIPE = 1
 //          the meet is registered in 26 and the emptiness test and the outputs are stage 27.
+// PIPE = 2 (the stage numbers above move): lens 4–11 the product (8 clocks), 12 its register,
+//   13 q, 14 the clamp and the side's interval, 15 the meet of the sides, 16 2s − 1 and the
+//   axis's emptiness, 17 round_out; dual 4–8 the products (5 clocks), 9 the line values, 10 the
+//   operands, 11 the cases, 12–27 the divider, 28 the intervals, 29 their meet, 30 round_out and
+//   the emptiness; 31 span ∩ t_x, 32 ∩ t_y, 33 the test tl ≤ th, 34 the outputs.
 // No reset: hold in_valid low for LAT clocks after power-up (the valid pipeline fills with 0).
 `timescale 1ns / 1ps
 module uvt_bounds #(
@@ -70,7 +82,8 @@ module uvt_bounds #(
     parameter DSP_A = 25,
     parameter DSP_B = 18,
     parameter LUTW = 8,
-    parameter PIPE = 0
+    parameter PIPE = 0,
+    parameter MAP = 0
 ) (
     input  wire               clk,
     input  wire               in_valid,
@@ -97,8 +110,16 @@ module uvt_bounds #(
     output reg signed [31:0]  t_lo,
     output reg signed [31:0]  t_hi
 );
-    localparam LAT = 26 + PIPE;
-    localparam MR = 2 * PIPE;  // clocks inside the lens products (uvt_mul REG)
+    localparam P2 = PIPE == 2 ? 1 : 0;
+    localparam LL = 8;         // PIPE = 2: clocks of the lens products (uvt_mul REG = 3: 3 +
+                               // clog2(terms), 23 terms at 18 × 18, 20 at 25 × 18)
+    localparam LD = 5;         // PIPE = 2: clocks of the dual line products (3 or 2 terms)
+    localparam MR = P2 ? LL : 2 * PIPE;  // clocks inside the lens products (uvt_mul REG)
+    localparam DS = P2 ? LD - 1 : 0;     // the dual path's stages 5–25 move by DS
+    localparam S25 = 25 + DS + P2;       // the stage of the time intervals (s25_*)
+    localparam LAT = S25 + (P2 ? 4 : 1 + PIPE);
+    localparam UD = S25 - (7 + MR + 2 * P2);   // the lens results' delay to stage S25
+    localparam XD = S25 - 1;                   // span and flags: stage 1 → S25
     localparam signed [17:0] ONE = 18'sd65536;     // 1.0 in t/u/v raw units
     localparam signed [17:0] STEP = 18'sd1 <<< (16 - TUV);   // the TUV grid's step
     localparam NW = 66;        // n = ±(x·2^BND − base), signed
@@ -178,9 +199,12 @@ module uvt_bounds #(
             wire dneg = s2_d[NW-1];
             wire signed [NW:0] an = nneg ? -s2_n : s2_n;
             wire signed [NW:0] ad = dneg ? -s2_d : s2_d;
+            // |n| > |d| where both are negative; PIPE = 2: as n < d (one carry chain, not a
+            // negation followed by a compare)
+            wire nbig = P2 ? s2_n < s2_d : an > ad;
             wire [1:0] code = !s2_on ? 2'd0
                             : s2_up ? (nneg ? 2'd1 : s2_n >= s2_d ? 2'd0 : 2'd2)
-                            : dneg  ? (!nneg ? 2'd0 : an > ad ? 2'd1 : 2'd2)
+                            : dneg  ? (!nneg ? 2'd0 : nbig ? 2'd1 : 2'd2)
                             :         (nneg ? 2'd1 : 2'd0);
             reg [1:0] s3_code;
             reg s3_up;
@@ -195,7 +219,8 @@ module uvt_bounds #(
             // stage 4: n·r (exact: < 2^81)
             wire signed [MW+RW+1:0] p;
             // With PIPE the product takes MR more clocks; its case code and d's sign wait for it.
-            uvt_mul #(.AW(MW+1), .BW(RW+1), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(MR)) m_nr (
+            uvt_mul #(.AW(MW+1), .BW(RW+1), .PA(DSP_A), .PB(DSP_B), .LW(LUTW),
+                      .REG(P2 ? 3 : MR), .LAT(P2 ? LL : 0), .MAP(MAP)) m_nr (
                 $signed({1'b0, s3_m}), $signed({1'b0, s3_r}), p, clk);
             wire [1:0] s3_code_d;
             wire s3_up_d;
@@ -208,18 +233,24 @@ module uvt_bounds #(
                 s4_code <= s3_code_d;
                 s4_up <= s3_up_d;
             end
-            // stage 5: ÷2^64, ceil for d > 0, clamp to 1
+            // stage 5: ÷2^64, ceil for d > 0, clamp to 1 (PIPE = 2: the sum registered before
+            // the clamp)
             wire [PW-64:0] q = s4_p[PW-1:64] + (s4_up && s4_p[63:0] != 64'd0);
-            wire signed [17:0] qc = q > ONE ? ONE : $signed({1'b0, q[16:0]});
+            wire [PW-64:0] q5;
+            wire [1:0] c5;
+            wire up5;
+            uvt_dly #(.W(PW-64+4), .N(P2)) dl_q (clk, {q, s4_code, s4_up}, {q5, c5, up5});
+            wire signed [17:0] qc = q5 > ONE ? ONE : $signed({1'b0, q5[16:0]});
             always @(posedge clk) begin
-                s5_e[i] <= s4_code == 2'd1;
-                s5_lo[18*i +: 18] <= (s4_code == 2'd2 && !s4_up) ? qc : 18'sd0;
-                s5_hi[18*i +: 18] <= (s4_code == 2'd2 && s4_up) ? qc : ONE;
+                s5_e[i] <= c5 == 2'd1;
+                s5_lo[18*i +: 18] <= (c5 == 2'd2 && !up5) ? qc : 18'sd0;
+                s5_hi[18*i +: 18] <= (c5 == 2'd2 && up5) ? qc : ONE;
             end
         end
     endgenerate
     // stages 6, 7 per axis: meet of the sides, then u = 2s − 1 (s ≥ 0 here, so the model's
-    // clamp at −1 never acts) rounded outward.
+    // clamp at −1 never acts) rounded outward (PIPE = 2: 2s − 1 and the emptiness registered
+    // before the rounding).
     reg [2*18-1:0] s7_lo, s7_hi;
     reg [1:0] s7_e;
     generate
@@ -233,10 +264,14 @@ module uvt_bounds #(
                 s6_hi <= ha < hb ? ha : hb;
                 s6_e <= s5_e[2*i] | s5_e[2*i+1];
             end
+            wire signed [17:0] ul = 2 * s6_lo - ONE, uh = 2 * s6_hi - ONE;
+            wire signed [17:0] ul7, uh7;
+            wire ue7;
+            uvt_dly #(.W(37), .N(P2)) dl_u (clk, {ul, uh, s6_e | (s6_lo > s6_hi)}, {ul7, uh7, ue7});
             always @(posedge clk) begin
-                s7_lo[18*i +: 18] <= rnd_lo(2 * s6_lo - ONE);
-                s7_hi[18*i +: 18] <= rnd_hi(2 * s6_hi - ONE);
-                s7_e[i] <= s6_e | (s6_lo > s6_hi);
+                s7_lo[18*i +: 18] <= rnd_lo(ul7);
+                s7_hi[18*i +: 18] <= rnd_hi(uh7);
+                s7_e[i] <= ue7;
             end
         end
     endgenerate
@@ -278,14 +313,22 @@ module uvt_bounds #(
                 end
                 wire signed [DW+16:0] p0;
                 wire signed [DW+17:0] p1;
-                uvt_mul #(.AW(DW), .BW(17), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_v0 (s3_v0, s3_span, p0, clk);
-                uvt_mul #(.AW(DW+1), .BW(17), .PA(DSP_A), .PB(DSP_B), .LW(LUTW)) m_sl (s3_sl, s3_dx, p1, clk);
-                reg signed [DW+16:0] s4_p0;
-                reg signed [DW+17:0] s4_p1;
-                always @(posedge clk) begin
-                    s4_p0 <= p0;
-                    s4_p1 <= p1;
-                    s5_line[LW*(4*i+k) +: LW] <= s4_p0 + s4_p1;
+                // PIPE = 2: products of LD clocks (uvt_mul REG = 3) in place of the stage-4
+                // register; the line value one clock after them (stage 5 + DS)
+                uvt_mul #(.AW(DW), .BW(17), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(3 * P2),
+                          .LAT(P2 ? LD : 0), .MAP(MAP)) m_v0 (s3_v0, s3_span, p0, clk);
+                uvt_mul #(.AW(DW+1), .BW(17), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(3 * P2),
+                          .LAT(P2 ? LD : 0), .MAP(MAP)) m_sl (s3_sl, s3_dx, p1, clk);
+                if (P2) begin : g_p2
+                    always @(posedge clk) s5_line[LW*(4*i+k) +: LW] <= p0 + p1;
+                end else begin : g_p01
+                    reg signed [DW+16:0] s4_p0;
+                    reg signed [DW+17:0] s4_p1;
+                    always @(posedge clk) begin
+                        s4_p0 <= p0;
+                        s4_p1 <= p1;
+                        s5_line[LW*(4*i+k) +: LW] <= s4_p0 + s4_p1;
+                    end
                 end
             end
             // stage 6: (d, n) of (1−t)·lo0 + t·lo1 ≤ 0 and (1−t)·hi0 + t·hi1 ≥ 0
@@ -303,8 +346,11 @@ module uvt_bounds #(
                 wire signed [LW:0] d = s6_d[(LW+1)*k +: LW+1], n = s6_n[(LW+1)*k +: LW+1];
                 wire dpos = !d[LW] && d != 0, dneg = d[LW], nneg = n[LW];
                 wire [LW:0] ad = dneg ? -d : d, an = nneg ? -n : n;
+                // |n| > |d|, |n| = |d| where both are negative; PIPE = 2: n < d, n = d (no
+                // negation before the compare)
+                wire nbig = P2 ? n < d : an > ad, neq = P2 ? n == d : an == ad;
                 wire [1:0] code = dpos ? (nneg ? 2'd1 : n >= d ? 2'd0 : 2'd3)
-                                : dneg ? (!nneg ? 2'd0 : an > ad ? 2'd1 : an == ad ? 2'd2 : 2'd3)
+                                : dneg ? (!nneg ? 2'd0 : nbig ? 2'd1 : neq ? 2'd2 : 2'd3)
                                 :        (nneg ? 2'd1 : 2'd0);
                 // stages 7–23: the divider; per stage st the slice st − 7 of each vector
                 // (rem < den: num < den ≤ 2^63)
@@ -345,7 +391,8 @@ module uvt_bounds #(
             end
         end
     endgenerate
-    // stage 25 per axis: meet of the two solves, then round_out
+    // stage 25 per axis: meet of the two solves, then round_out (PIPE = 2: the meet registered
+    // before the rounding and the emptiness test, stage S25 = 30)
     reg [2*18-1:0] s25_lo, s25_hi;
     reg [1:0] s25_e;
     generate
@@ -353,23 +400,27 @@ module uvt_bounds #(
             wire signed [17:0] la = s24_lo[18*(2*i) +: 18], lb = s24_lo[18*(2*i+1) +: 18];
             wire signed [17:0] ha = s24_hi[18*(2*i) +: 18], hb = s24_hi[18*(2*i+1) +: 18];
             wire signed [17:0] lo = la > lb ? la : lb, hi = ha < hb ? ha : hb;
+            wire signed [17:0] lo_m, hi_m;
+            wire e_m;
+            uvt_dly #(.W(37), .N(P2)) dl_m (clk, {lo, hi, s24_e[2*i] | s24_e[2*i+1]},
+                                            {lo_m, hi_m, e_m});
             always @(posedge clk) begin
-                s25_lo[18*i +: 18] <= rnd_lo(lo);
-                s25_hi[18*i +: 18] <= rnd_hi(hi);
-                s25_e[i] <= s24_e[2*i] | s24_e[2*i+1] | (lo > hi);
+                s25_lo[18*i +: 18] <= rnd_lo(lo_m);
+                s25_hi[18*i +: 18] <= rnd_hi(hi_m);
+                s25_e[i] <= e_m | (lo_m > hi_m);
             end
         end
     endgenerate
 
-    // ---- delays to stage 25: the lens results (from 7), span and flags (from 1) -------------
-    localparam UW = 2 * 18 * 2 + 2;    // u, v: lo, hi, empty (stage 7 + MR → 25: 18 − MR registers)
-    localparam UD = 18 - MR;
-    localparam XW = 64 + 2;            // span, dual_on (stage 1 → 25: 24 registers)
+    // ---- delays to stage 25 (S25): the lens results (from 7 + MR + 2·P2), span and flags
+    // (from 1) -----------------------------------------------------------------------------------
+    localparam UW = 2 * 18 * 2 + 2;    // u, v: lo, hi, empty (UD registers: 18 − MR; PIPE = 2: 13)
+    localparam XW = 64 + 2;            // span, dual_on (XD registers: 24; PIPE = 2: 29)
     reg [UD*UW-1:0] u_d;
-    reg [24*XW-1:0] x_d;
+    reg [XD*XW-1:0] x_d;
     always @(posedge clk) begin
         u_d <= {u_d[(UD-1)*UW-1:0], s7_lo, s7_hi, s7_e};
-        x_d <= {x_d[23*XW-1:0], s1_slo, s1_shi, s1_don};
+        x_d <= {x_d[(XD-1)*XW-1:0], s1_slo, s1_shi, s1_don};
     end
 
     // ---- stage 26: t = span ∩ t_x ∩ t_y, emptiness, outputs ----------------------------------
@@ -377,7 +428,7 @@ module uvt_bounds #(
     wire [1:0] ue, don;
     wire signed [31:0] slo, shi;
     assign {ul, uh, ue} = u_d[(UD-1)*UW +: UW];
-    assign {slo, shi, don} = x_d[23*XW +: XW];
+    assign {slo, shi, don} = x_d[(XD-1)*XW +: XW];
     wire signed [31:0] txl = don[0] ? $signed(s25_lo[0 +: 18]) : -32'sd65536;
     wire signed [31:0] txh = don[0] ? $signed(s25_hi[0 +: 18]) : 32'sd65536;
     wire signed [31:0] tyl = don[1] ? $signed(s25_lo[18 +: 18]) : -32'sd65536;
@@ -390,16 +441,41 @@ module uvt_bounds #(
     wire signed [31:0] tl_p, th_p;
     wire bad_p;
     wire [2*18-1:0] ul_p, uh_p;
-    uvt_dly #(.W(2 * 32 + 1 + 4 * 18), .N(PIPE)) dl_meet (clk, {tl, th, bad, ul, uh},
+    uvt_dly #(.W(2 * 32 + 1 + 4 * 18), .N(P2 ? 0 : PIPE)) dl_meet (clk, {tl, th, bad, ul, uh},
                                                         {tl_p, th_p, bad_p, ul_p, uh_p});
     wire ok = !bad_p && tl_p <= th_p;
+    // The output stage's operands: the emptiness test and the values it selects.
+    wire ok_o;
+    wire signed [31:0] tl_o, th_o;
+    wire [2*18-1:0] ul_o, uh_o;
+    generate
+        if (P2) begin : g_tail2
+            // PIPE = 2: each compare-and-select level of the meet in a clock of its own (stages
+            // S25 + 1: span ∩ t_x, S25 + 2: ∩ t_y), then the test tl ≤ th (S25 + 3), then the
+            // outputs (S25 + 4 = LAT).
+            reg signed [31:0] a_l, a_h, a_yl, a_yh, b_l, b_h, c_l, c_h;
+            reg a_bad, b_bad, c_ok;
+            reg [2*18-1:0] a_ul, a_uh, b_ul, b_uh, c_ul, c_uh;
+            always @(posedge clk) begin
+                {a_l, a_h, a_yl, a_yh, a_bad, a_ul, a_uh} <= {m1, m2, tyl, tyh, bad, ul, uh};
+                b_l <= a_l > a_yl ? a_l : a_yl;
+                b_h <= a_h < a_yh ? a_h : a_yh;
+                {b_bad, b_ul, b_uh} <= {a_bad, a_ul, a_uh};
+                c_ok <= !b_bad && b_l <= b_h;
+                {c_l, c_h, c_ul, c_uh} <= {b_l, b_h, b_ul, b_uh};
+            end
+            assign {ok_o, tl_o, th_o, ul_o, uh_o} = {c_ok, c_l, c_h, c_ul, c_uh};
+        end else begin : g_tail
+            assign {ok_o, tl_o, th_o, ul_o, uh_o} = {ok, tl_p, th_p, ul_p, uh_p};
+        end
+    endgenerate
     always @(posedge clk) begin
-        nonempty <= ok;
-        u_lo <= ok ? $signed(ul_p[0 +: 18]) : 32'sd0;
-        u_hi <= ok ? $signed(uh_p[0 +: 18]) : 32'sd0;
-        v_lo <= ok ? $signed(ul_p[18 +: 18]) : 32'sd0;
-        v_hi <= ok ? $signed(uh_p[18 +: 18]) : 32'sd0;
-        t_lo <= ok ? tl_p : 32'sd0;
-        t_hi <= ok ? th_p : 32'sd0;
+        nonempty <= ok_o;
+        u_lo <= ok_o ? $signed(ul_o[0 +: 18]) : 32'sd0;
+        u_hi <= ok_o ? $signed(uh_o[0 +: 18]) : 32'sd0;
+        v_lo <= ok_o ? $signed(ul_o[18 +: 18]) : 32'sd0;
+        v_hi <= ok_o ? $signed(uh_o[18 +: 18]) : 32'sd0;
+        t_lo <= ok_o ? tl_o : 32'sd0;
+        t_hi <= ok_o ? th_o : 32'sd0;
     end
 endmodule

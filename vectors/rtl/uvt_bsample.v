@@ -26,7 +26,9 @@
 //   e[64*k +: 64]     E'_k (words 8..13)
 //   det_sign, covered (word 0), with edge_valid, LAT_EDGE = 11 clocks after in_valid
 //   depth (word 1; 0 when not covered) with out_valid and out_covered, LAT = 46 clocks after
-// Latency: LAT_EDGE = 11, LAT = 46 (13 stages to num/den, 1 prepare, 31 divider, 1 select).
+// Latency: LAT_EDGE = 11, LAT = 46 (13 stages to num/den, 1 prepare, 31 divider, 1 select);
+// PIPE = 1: 23, 63; PIPE = 2: from the products' tiling (localparams below; pnr.sh's
+// bsample-pipe2 build, ECP5 18 × 18 ports, LUTW = 8: 39, 85; with KARA = 1: 40, 86).
 // The depth divider is a pipelined restoring (radix-2) divider: one quotient bit per stage,
 // 31 stages, plus an overflow compare for saturation.
 `timescale 1ns / 1ps
@@ -46,8 +48,21 @@ module uvt_bsample #(
     parameter LUTW = 8,
     // PIPE = 1: registers inside every multiplier (uvt_mul REG = 2: the partial products, LUT
     // chunks as sums of four rows, and the sums of four) and in the wide adder stages, for a
-    // faster clock: LAT_EDGE = 23, LAT = 63 instead of 11, 46 (same results)
-    parameter PIPE = 0
+    // faster clock: LAT_EDGE = 23, LAT = 63 instead of 11, 46 (same results).
+    // PIPE = 2: every product uvt_mul REG = 3 (registered hard pieces and LUT rows, a registered
+    // two-input adder tree: LAT = 3 + clog2(terms) clocks, the same for the products of one
+    // stage) and at most one wide carry chain between registers everywhere else (same results;
+    // LAT_EDGE and LAT below).
+    parameter PIPE = 0,
+    // MAP = 1 (PIPE = 2, 18 × 18 ports): every hard piece an instantiated ECP5 MULT18X18D with
+    // its three register stages on (uvt_mul MAP); same bits and latency as MAP = 0.
+    parameter MAP = 0,
+    // PIPE = 2 only: the LUT chunk limit of the edge products a'·b' and of E'·w (LUTW: the rest),
+    // -1: LUTW for these too
+    parameter LUTWE = -1,
+    // PIPE = 2 only: 1 = each edge product a'·b' on three hard multipliers (Karatsuba) instead
+    // of four
+    parameter KARA = 0
 ) (
     input  wire               clk,
     input  wire               in_valid,
@@ -76,10 +91,93 @@ module uvt_bsample #(
     localparam AW = 51 - OFF;          // |a'| < 2^(50-OFF)
     localparam EW = 2 * AW;            // |E'| < 2^(2·AW-1)
     localparam RW = EW + 32;           // E'·w, sums of three
-    localparam MR = PIPE ? 2 : 0;      // clocks inside each multiplier (uvt_mul REG)
+    localparam P2 = PIPE == 2 ? 1 : 0; // PIPE = 2: one more register where a sum is split
+    localparam MR = PIPE ? 2 : 0;      // clocks inside each multiplier (uvt_mul REG), PIPE <= 1
+    localparam RG = P2 ? 3 : MR;       // uvt_mul REG
     localparam P1 = PIPE ? 1 : 0;      // one more register where a wide stage is split
-    localparam LAT_EDGE = 11 + 2 * P1 + 5 * MR;
-    localparam LAT = LAT_EDGE + 35 + MR + 3 * P1;
+    localparam LWE = (P2 && LUTWE >= 0) ? LUTWE : LUTW;  // LUT chunk limit, edge and E'·w
+    // Clocks inside the products of each stage: MR, or with PIPE = 2 the most any product of
+    // the stage needs (uvt_mul REG = 3: 3 + clog2(terms)).
+    localparam M1 = P2 ? mlat(TW, DW, LUTW) : MR;                                // lerp
+    localparam M2 = P2 ? mlat(TW, 31, LUTW) : MR;                                // lens
+    localparam M3 = P2 ? max2(mlat(13, 32, LUTW), mlat(22, 31, LUTW)) : MR;      // A, B
+    // KARA (PIPE = 2, AW <= 33): E' = a'·b' − a'·b' on three 18 × 18 hard multipliers per
+    // product instead of four (uvt_bsample_kdet: 7 clocks = M4 + 1)
+    localparam KE = P2 && KARA && AW <= 33 && AW > 16;
+    localparam M4 = KE ? 6 : P2 ? mlat(AW, AW, LWE) : MR;                        // E'
+    // KARA (PIPE = 2, 17 <= EW − 31 <= 33): E'·w = E'_H·w·2^31 + E'_L·w, each on three 18 × 18
+    // hard multipliers (uvt_bsample_kprod: 6 clocks), then their sum: 7 clocks, 6 multipliers
+    // instead of 8.
+    localparam KK = P2 && KARA && EW - 31 >= 17 && EW - 31 <= 33;
+    localparam M5 = KK ? 7 : P2 ? mlat(EW, 31, LWE) : MR;                        // E'·w
+    localparam M6 = P2 ? mlat(25, 31, LUTW) : MR;                                // depth
+    localparam LAT_EDGE = 11 + 2 * P1 + P2 + M1 + M2 + M3 + M4 + M5;
+    localparam LAT = LAT_EDGE + 35 + M6 + 3 * P1 + P2;
+
+    // The tiling of uvt_mul.v (its functions, for the latency of REG = 3): unsigned low chunks
+    // and the signed top chunk of an n-bit operand on a p-bit port, and the chosen layout's
+    // hard pieces and LUT rows.
+    function integer max2(input integer x, input integer y);
+        max2 = x > y ? x : y;
+    endfunction
+    function integer nlow(input integer n, input integer pw);
+        nlow = (n <= pw) ? 0 : (n - pw + pw - 2) / (pw - 1);
+    endfunction
+    function integer top(input integer n, input integer pw);
+        top = n - nlow(n, pw) * (pw - 1);
+    endfunction
+    function integer lutable(input integer n, input integer pw, input integer lw);
+        lutable = (nlow(n, pw) > 0 && top(n, pw) <= lw) ? 1 : 0;
+    endfunction
+    // Terms (hard pieces + LUT rows) of x on port px, y on port py, option o (as uvt_mul's
+    // score: 0 none, 1 x's top in LUTs, 2 y's), and its score (a large one when not allowed).
+    function integer terms(input integer x, input integer y, input integer px, input integer py,
+                           input integer o);
+        integer kx, ky;
+        begin
+            kx = nlow(x, px);
+            ky = nlow(y, py);
+            if (o == 0) terms = (kx + 1) * (ky + 1);
+            else if (o == 1) terms = kx * (ky + 1) + top(x, px);
+            else terms = (kx + 1) * ky + top(y, py);
+        end
+    endfunction
+    function integer score(input integer x, input integer y, input integer px, input integer py,
+                           input integer lw, input integer o);
+        integer kx, ky;
+        begin
+            kx = nlow(x, px);
+            ky = nlow(y, py);
+            if (o == 0)
+                score = (kx + 1) * (ky + 1) * 1048576;
+            else if (o == 1)
+                score = lutable(x, px, lw) ? kx * (ky + 1) * 1048576 + top(x, px) * y
+                                           : 32'h7fffffff;
+            else
+                score = lutable(y, py, lw) ? (kx + 1) * ky * 1048576 + top(y, py) * x
+                                           : 32'h7fffffff;
+        end
+    endfunction
+    // 3 + clog2(terms) of uvt_mul's chosen layout of an aw × bw product (DSP_A × DSP_B ports).
+    function integer mlat(input integer aw, input integer bw, input integer lw);
+        integer sw, o, best, c, n, v;
+        begin
+            best = 32'h7fffffff;
+            n = 1;
+            for (sw = 0; sw < 2; sw = sw + 1)
+                for (o = 0; o < 3; o = o + 1) begin
+                    c = sw ? score(bw, aw, DSP_A, DSP_B, lw, o)
+                           : score(aw, bw, DSP_A, DSP_B, lw, o);
+                    if (c < best) begin
+                        best = c;
+                        n = sw ? terms(bw, aw, DSP_A, DSP_B, o) : terms(aw, bw, DSP_A, DSP_B, o);
+                    end
+                end
+            mlat = 3;
+            for (v = 1; v < n; v = v * 2)
+                mlat = mlat + 1;
+        end
+    endfunction
 
     reg [LAT:1] vld;
     always @(posedge clk) vld <= {vld[LAT-1:1], in_valid};
@@ -137,21 +235,26 @@ module uvt_bsample #(
                 wire signed [DW-1:0] dd;
                 wire [FW-1:0] f0d;
                 uvt_dly #(.W(DW), .N(P1)) dl_d (clk, d, dd);
-                uvt_dly #(.W(FW), .N(P1 + MR)) dl_f0 (clk, f0, f0d);
+                uvt_dly #(.W(FW), .N(P1 + M1)) dl_f0 (clk, f0, f0d);
                 wire signed [TW+DW-1:0] p;
-                uvt_mul #(.AW(TW), .BW(DW), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(MR)) m_t (s1_td, dd, p, clk);
+                uvt_mul #(.AW(TW), .BW(DW), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(RG), .LAT(M1),
+                          .MAP(MAP)) m_t (s1_td, dd, p, clk);
                 always @(posedge clk) begin
                     s2_f0[FW*i +: FW] <= f0d;
                     s2_p[(TW+DW)*i +: TW+DW] <= p;
                 end
                 wire signed [FW-1:0] g0 = s2_f0[FW*i +: FW];
                 wire signed [TW+DW-1:0] gp = s2_p[(TW+DW)*i +: TW+DW];
-                wire signed [47:0] sum = (g0 <<< (32 - POS)) + (gp <<< LS) + 48'sd32768;
+                // PIPE = 2: the rounding constant 2^15 ORed into f0's zero low bits (32 − POS >=
+                // 16 of them), one adder.
+                wire signed [47:0] g0s = g0 <<< (32 - POS);
+                wire signed [47:0] sum = P2 ? (g0s | 48'sd32768) + (gp <<< LS)
+                                            : (g0 <<< (32 - POS)) + (gp <<< LS) + 48'sd32768;
                 wire signed [47:0] rnd = sum >>> 16;
                 always @(posedge clk) s3_f[31*i +: 31] <= rnd[30:0];
             end else if (DEFOCUS || i % 5 != 4) begin : g_t0
                 wire [FW-1:0] f0d;
-                uvt_dly #(.W(FW), .N(P1 + MR)) dl_f0 (clk, s1_f0[FW*i +: FW], f0d);
+                uvt_dly #(.W(FW), .N(P1 + M1)) dl_f0 (clk, s1_f0[FW*i +: FW], f0d);
                 always @(posedge clk) s2_f0[FW*i +: FW] <= f0d;
                 wire signed [FW-1:0] g0 = s2_f0[FW*i +: FW];
                 wire signed [30:0] ft = g0 <<< (16 - POS);   // FW + 16 − POS = 31 bits
@@ -165,13 +268,13 @@ module uvt_bsample #(
     generate
         if (DEFOCUS) begin : g_uv
             wire [2*TW-1:0] uvd;
-            uvt_dly #(.W(2*TW), .N(P1 + MR)) dl_uv (clk, {s1_u, s1_v}, uvd);
+            uvt_dly #(.W(2*TW), .N(P1 + M1)) dl_uv (clk, {s1_u, s1_v}, uvd);
             always @(posedge clk) {s2_u, s2_v, s3_u, s3_v} <= {uvd, s2_u, s2_v};
         end
     endgenerate
     wire [69:0] vp1d, vp4d;            // {w, h, gx, gy} through the multipliers of stages 2, 4
-    uvt_dly #(.W(70), .N(P1 + MR)) dl_vp1 (clk, {s1_w, s1_h, s1_gx, s1_gy}, vp1d);
-    uvt_dly #(.W(70), .N(MR)) dl_vp4 (clk, {s4_w, s4_h, s4_gx, s4_gy}, vp4d);
+    uvt_dly #(.W(70), .N(P1 + M1)) dl_vp1 (clk, {s1_w, s1_h, s1_gx, s1_gy}, vp1d);
+    uvt_dly #(.W(70), .N(M2)) dl_vp4 (clk, {s4_w, s4_h, s4_gx, s4_gy}, vp4d);
     always @(posedge clk) begin
         {s2_w, s2_h, s2_gx, s2_gy} <= vp1d;
         {s3_w, s3_h, s3_gx, s3_gy} <= {s2_w, s2_h, s2_gx, s2_gy};
@@ -191,22 +294,28 @@ module uvt_bsample #(
                 wire signed [30:0] c = s3_f[31*(5*i+4) +: 31];
                 reg signed [TW+30:0] pu, pv;
                 wire signed [TW+30:0] mu, mv;
-                uvt_mul #(.AW(TW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(MR)) m_u (s3_u, c, mu, clk);
-                uvt_mul #(.AW(TW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(MR)) m_v (s3_v, c, mv, clk);
+                uvt_mul #(.AW(TW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(RG), .LAT(M2),
+                          .MAP(MAP)) m_u (s3_u, c, mu, clk);
+                uvt_mul #(.AW(TW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(RG), .LAT(M2),
+                          .MAP(MAP)) m_v (s3_v, c, mv, clk);
                 always @(posedge clk) begin
                     pu <= mu;
                     pv <= mv;
                 end
                 wire signed [47:0] lu = ((pu <<< US) + 48'sd32768) >>> 16;
                 wire signed [47:0] lv = ((pv <<< US) + 48'sd32768) >>> 16;
-                assign x = xt + $signed(lu[31:0]);
-                assign y = yt + $signed(lv[31:0]);
+                // PIPE = 2: x = floor((x_t·2^16 + U·c + 2^15) / 2^16), one adder (2^15 ORed
+                // into x_t·2^16's zero low bits); the same value modulo 2^32.
+                wire signed [49:0] xs2 = ($signed({xt, 16'd0}) | 50'sd32768) + (pu <<< US);
+                wire signed [49:0] ys2 = ($signed({yt, 16'd0}) | 50'sd32768) + (pv <<< US);
+                assign x = P2 ? $signed(xs2[47:16]) : xt + $signed(lu[31:0]);
+                assign y = P2 ? $signed(ys2[47:16]) : yt + $signed(lv[31:0]);
             end else begin : g_pin
                 assign x = xt;
                 assign y = yt;
             end
             wire [4*31-1:0] fd;
-            uvt_dly #(.W(4*31), .N(MR)) dl_f (clk, {s3_f[31*(5*i) +: 31],
+            uvt_dly #(.W(4*31), .N(M2)) dl_f (clk, {s3_f[31*(5*i) +: 31],
                 s3_f[31*(5*i+1) +: 31], s3_f[31*(5*i+2) +: 31], s3_f[31*(5*i+3) +: 31]}, fd);
             always @(posedge clk) begin
                 {xt, yt, zt, wt} <= fd;
@@ -229,18 +338,25 @@ module uvt_bsample #(
             reg signed [52:0] mw, mh;      // gx·w, gy·w: |.| <= 2^48
             wire signed [44:0] px, py;
             wire signed [52:0] pw, ph;
-            uvt_mul #(.AW(13), .BW(32), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(MR)) m_x (s5_w, x, px, clk);
-            uvt_mul #(.AW(13), .BW(32), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(MR)) m_y (s5_h, y, py, clk);
-            uvt_mul #(.AW(22), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(MR)) m_w (s5_gx, w, pw, clk);
-            uvt_mul #(.AW(22), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(MR)) m_h (s5_gy, w, ph, clk);
+            uvt_mul #(.AW(13), .BW(32), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(RG), .LAT(M3),
+                      .MAP(MAP)) m_x (s5_w, x, px, clk);
+            uvt_mul #(.AW(13), .BW(32), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(RG), .LAT(M3),
+                      .MAP(MAP)) m_y (s5_h, y, py, clk);
+            uvt_mul #(.AW(22), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(RG), .LAT(M3),
+                      .MAP(MAP)) m_w (s5_gx, w, pw, clk);
+            uvt_mul #(.AW(22), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(RG), .LAT(M3),
+                      .MAP(MAP)) m_h (s5_gy, w, ph, clk);
+            // PIPE = 2: the rounding constant 2^(OFF−1) = 2^(OFF−9)·2^8 added to W·x, H·y in
+            // their own register (an adder each), so that A, B are one subtraction.
+            localparam signed [44:0] RC = P2 ? 45'sd1 <<< (OFF - 9) : 45'sd0;
             always @(posedge clk) begin
-                mx <= px;
-                my <= py;
+                mx <= px + RC;
+                my <= py + RC;
                 mw <= pw;
                 mh <= ph;
             end
-            wire signed [55:0] A = (mx <<< 8) - mw + (56'sd1 <<< (OFF - 1));
-            wire signed [55:0] B = (my <<< 8) - mh + (56'sd1 <<< (OFF - 1));
+            wire signed [55:0] A = P2 ? (mx <<< 8) - mw : (mx <<< 8) - mw + (56'sd1 <<< (OFF - 1));
+            wire signed [55:0] B = P2 ? (my <<< 8) - mh : (my <<< 8) - mh + (56'sd1 <<< (OFF - 1));
             wire signed [55:0] ra = A >>> OFF;
             wire signed [55:0] rb = B >>> OFF;
             always @(posedge clk) begin
@@ -250,7 +366,7 @@ module uvt_bsample #(
         end
     endgenerate
     wire [6*31-1:0] wz5d;
-    uvt_dly #(.W(6*31), .N(MR)) dl_wz5 (clk, {s5_wt, s5_zt}, wz5d);
+    uvt_dly #(.W(6*31), .N(M3)) dl_wz5 (clk, {s5_wt, s5_zt}, wz5d);
     always @(posedge clk) begin
         {s6_wt, s6_zt} <= wz5d;
         {s7_wt, s7_zt} <= {s6_wt, s6_zt};
@@ -266,22 +382,31 @@ module uvt_bsample #(
             wire signed [AW-1:0] bi = s7_b[AW*((i+1)%3) +: AW];
             wire signed [AW-1:0] aj = s7_a[AW*((i+2)%3) +: AW];
             wire signed [AW-1:0] bj = s7_b[AW*((i+2)%3) +: AW];
-            reg signed [EW-1:0] p1, p2;
-            wire signed [EW-1:0] q1, q2;
-            uvt_mul #(.AW(AW), .BW(AW), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(MR)) m_1 (ai, bj, q1, clk);
-            uvt_mul #(.AW(AW), .BW(AW), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(MR)) m_2 (aj, bi, q2, clk);
-            always @(posedge clk) begin
-                p1 <= q1;
-                p2 <= q2;
+            if (KE) begin : g_kara
+                wire signed [EW-1:0] ek;
+                uvt_bsample_kdet #(.AW(AW), .PA(DSP_A), .PB(DSP_B), .MAP(MAP)) m_k (
+                    .clk(clk), .ai(ai), .bj(bj), .aj(aj), .bi(bi), .e(ek));
+                always @(posedge clk) s9_e[EW*i +: EW] <= ek;
+            end else begin : g_mul
+                reg signed [EW-1:0] p1, p2;
+                wire signed [EW-1:0] q1, q2;
+                uvt_mul #(.AW(AW), .BW(AW), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(RG),
+                          .LAT(M4), .MAP(MAP)) m_1 (ai, bj, q1, clk);
+                uvt_mul #(.AW(AW), .BW(AW), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(RG),
+                          .LAT(M4), .MAP(MAP)) m_2 (aj, bi, q2, clk);
+                always @(posedge clk) begin
+                    p1 <= q1;
+                    p2 <= q2;
+                end
+                always @(posedge clk) s9_e[EW*i +: EW] <= p1 - p2;
             end
-            always @(posedge clk) s9_e[EW*i +: EW] <= p1 - p2;
         end
     endgenerate
     wire [6*AW+6*31-1:0] ab7d, ab9d;
     wire [3*31-1:0] zt10d;
-    uvt_dly #(.W(6*AW+6*31), .N(MR)) dl_ab7 (clk, {s7_a, s7_b, s7_wt, s7_zt}, ab7d);
-    uvt_dly #(.W(6*AW+6*31), .N(MR)) dl_ab9 (clk, {s9_a, s9_b, s9_wt, s9_zt}, ab9d);
-    uvt_dly #(.W(3*31), .N(P1)) dl_zt10 (clk, s10_zt, zt10d);
+    uvt_dly #(.W(6*AW+6*31), .N(M4)) dl_ab7 (clk, {s7_a, s7_b, s7_wt, s7_zt}, ab7d);
+    uvt_dly #(.W(6*AW+6*31), .N(M5)) dl_ab9 (clk, {s9_a, s9_b, s9_wt, s9_zt}, ab9d);
+    uvt_dly #(.W(3*31), .N(P1 + P2)) dl_zt10 (clk, s10_zt, zt10d);
     always @(posedge clk) begin
         {s8_a, s8_b, s8_wt, s8_zt} <= ab7d;
         {s9_a, s9_b, s9_wt, s9_zt} <= {s8_a, s8_b, s8_wt, s8_zt};
@@ -305,7 +430,20 @@ module uvt_bsample #(
             wire signed [EW-1:0] ek = s9_e[EW*i +: EW];
             wire signed [30:0] wk = s9_wt[31*i +: 31];
             wire signed [EW+30:0] qk;
-            uvt_mul #(.AW(EW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(MR)) m_q (ek, wk, qk, clk);
+            if (KK) begin : g_kara
+                wire signed [EW-1:0] ph;       // E'_H·w, E'_H = E' >> 31 (signed)
+                wire signed [62:0] pl;         // E'_L·w, E'_L = E' mod 2^31 (unsigned)
+                uvt_bsample_kprod #(.XW(EW - 31), .XU(0), .PA(DSP_A), .PB(DSP_B), .MAP(MAP))
+                    m_h (.clk(clk), .x(ek[EW-1:31]), .y(wk), .p(ph));
+                uvt_bsample_kprod #(.XW(31), .XU(1), .PA(DSP_A), .PB(DSP_B), .MAP(MAP))
+                    m_l (.clk(clk), .x(ek[30:0]), .y(wk), .p(pl));
+                reg signed [EW+30:0] q7;
+                always @(posedge clk) q7 <= (ph <<< 31) + pl;   // clock 7
+                assign qk = q7;
+            end else begin : g_mul
+                uvt_mul #(.AW(EW), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LWE), .REG(RG),
+                          .LAT(M5), .MAP(MAP)) m_q (ek, wk, qk, clk);
+            end
             assign e_mag[EW*i +: EW] = ek[EW-1] ? -ek : ek;
             // tie key κ = cmp((b', a', w)_{k+1}, (b', a', w)_{k+2}), lexicographic, signed
             wire signed [AW-1:0] ai = s9_a[AW*((i+1)%3) +: AW];
@@ -314,17 +452,20 @@ module uvt_bsample #(
             wire signed [AW-1:0] aj = s9_a[AW*((i+2)%3) +: AW];
             wire signed [AW-1:0] bj = s9_b[AW*((i+2)%3) +: AW];
             wire signed [30:0]   wj = s9_wt[31*((i+2)%3) +: 31];
-            assign key_n[9+i] = (ek > 0);
-            assign key_n[6+i] = (ek < 0);
+            // PIPE = 2: the sign tests as the sign bit and an OR (no subtraction)
+            assign key_n[9+i] = P2 ? !ek[EW-1] && (|ek) : (ek > 0);
+            assign key_n[6+i] = P2 ? ek[EW-1] : (ek < 0);
             assign key_n[3+i] = (bi > bj) || (bi == bj && ((ai > aj) || (ai == aj && wi > wj)));
             assign key_n[i] = (bi < bj) || (bi == bj && ((ai < aj) || (ai == aj && wi < wj)));
             always @(posedge clk) s10_q[RW*i +: RW] <= {qk[EW+30], qk};
         end
     endgenerate
-    wire wpos_n = ($signed(s9_wt[30:0]) > 0) && ($signed(s9_wt[61:31]) > 0) &&
-                  ($signed(s9_wt[92:62]) > 0);
+    wire wpos_n = P2 ? !s9_wt[30] && (|s9_wt[29:0]) && !s9_wt[61] && (|s9_wt[60:31]) &&
+                       !s9_wt[92] && (|s9_wt[91:62])
+                     : ($signed(s9_wt[30:0]) > 0) && ($signed(s9_wt[61:31]) > 0) &&
+                       ($signed(s9_wt[92:62]) > 0);
     wire [3*EW+12:0] key_d;
-    uvt_dly #(.W(3*EW+13), .N(MR)) dl_key (clk, {s9_e, key_n, wpos_n}, key_d);
+    uvt_dly #(.W(3*EW+13), .N(M5)) dl_key (clk, {s9_e, key_n, wpos_n}, key_d);
     // sh = max(bit length of max|E'| − 24, 0); bit length of the max = that of the OR.
     wire [EW-1:0] e_or_d;
     uvt_dly #(.W(EW), .N(P1)) dl_or (clk, e_or, e_or_d);
@@ -335,9 +476,43 @@ module uvt_bsample #(
         for (k = 0; k < EW; k = k + 1)
             if (e_or_d[k]) blen = k + 1;
     end
-    wire [5:0] sh_n = (blen > 24) ? blen - 7'd24 : 6'd0;
+    wire [5:0] sh_n;
+    generate
+        if (P2) begin : g_lz
+            // PIPE = 2: sh = 0 if bits EW−1..24 of the OR are 0, else 1 + the index of the
+            // highest set one among them: a two-level leading-one tree over groups of four bits
+            // (each group's OR and top index registered, then the top group and its index).
+            wire [63:0] v = {{(88-EW){1'b0}}, e_or_d[EW-1:24]};
+            wire [15:0] ga;                // group g has a set bit
+            wire [31:0] gp;                // the index of its top set bit
+            for (i = 0; i < 16; i = i + 1) begin : g_grp
+                wire [3:0] q = v[4*i +: 4];
+                assign ga[i] = |q;
+                assign gp[2*i +: 2] = q[3] ? 2'd3 : q[2] ? 2'd2 : q[1] ? 2'd1 : 2'd0;
+            end
+            reg [15:0] ra;
+            reg [31:0] rp;
+            always @(posedge clk) begin
+                ra <= ga;
+                rp <= gp;
+            end
+            wire [3:0] ha;                 // some group of the quad set
+            wire [7:0] hg;                 // the top such group of the quad
+            for (i = 0; i < 4; i = i + 1) begin : g_quad
+                wire [3:0] q = ra[4*i +: 4];
+                assign ha[i] = |q;
+                assign hg[2*i +: 2] = q[3] ? 2'd3 : q[2] ? 2'd2 : q[1] ? 2'd1 : 2'd0;
+            end
+            wire [1:0] h = ha[3] ? 2'd3 : ha[2] ? 2'd2 : ha[1] ? 2'd1 : 2'd0;
+            wire [3:0] g = {h, hg[2*h +: 2]};
+            wire [5:0] idx = {g, rp[2*g +: 2]};
+            assign sh_n = (|ha) ? idx + 6'd1 : 6'd0;
+        end else begin : g_blen
+            assign sh_n = (blen > 24) ? blen - 7'd24 : 6'd0;
+        end
+    endgenerate
     wire [5:0] sh_d;
-    uvt_dly #(.W(6), .N(MR - P1)) dl_sh (clk, sh_n, sh_d);
+    uvt_dly #(.W(6), .N(M5 - P1 - P2)) dl_sh (clk, sh_n, sh_d);
     always @(posedge clk) begin
         {s10_e, s10_pos, s10_neg, s10_gt, s10_lt, s10_wpos} <= key_d;
         s10_sh <= sh_d;
@@ -345,8 +520,23 @@ module uvt_bsample #(
 
     // ---- stage 11: steps 6–7, orientation and coverage; E'' = floor(E' / 2^sh) --------------
     // With PIPE the sum det is registered (P1) before the sign tests; the rest waits for it.
-    wire signed [RW+1:0] det_n = $signed(s10_q[0 +: RW]) + $signed(s10_q[RW +: RW]) +
-                                 $signed(s10_q[2*RW +: RW]);
+    // PIPE = 2: q0 + q1 registered first (and q2 beside it), then det = that + q2, one adder a
+    // clock; the sign tests are the sign bit and an OR.
+    wire signed [RW+1:0] det_n;
+    generate
+        if (P2) begin : g_det2
+            reg signed [RW:0] q01;
+            reg signed [RW-1:0] q2;
+            always @(posedge clk) begin
+                q01 <= $signed(s10_q[0 +: RW]) + $signed(s10_q[RW +: RW]);
+                q2 <= s10_q[2*RW +: RW];
+            end
+            assign det_n = q01 + q2;
+        end else begin : g_det1
+            assign det_n = $signed(s10_q[0 +: RW]) + $signed(s10_q[RW +: RW]) +
+                           $signed(s10_q[2*RW +: RW]);
+        end
+    endgenerate
     wire [3*25-1:0] e2_n;
     generate
         for (i = 0; i < 3; i = i + 1) begin : g_shift
@@ -360,14 +550,16 @@ module uvt_bsample #(
     wire [3*25-1:0] e2_d;
     wire [6*AW+3*EW+3*31-1:0] abe_d;
     uvt_dly #(.W(RW+2), .N(P1)) dl_det (clk, det_n, det);
-    uvt_dly #(.W(13), .N(P1)) dl_key11 (clk, {s10_pos, s10_neg, s10_gt, s10_lt, s10_wpos}, key11);
-    uvt_dly #(.W(75), .N(P1)) dl_e2 (clk, e2_n, e2_d);
-    uvt_dly #(.W(6*AW+3*EW+3*31), .N(P1)) dl_abe (clk, {s10_a, s10_b, s10_e, s10_wt}, abe_d);
+    uvt_dly #(.W(13), .N(P1 + P2)) dl_key11 (clk, {s10_pos, s10_neg, s10_gt, s10_lt, s10_wpos}, key11);
+    uvt_dly #(.W(75), .N(P1 + P2)) dl_e2 (clk, e2_n, e2_d);
+    uvt_dly #(.W(6*AW+3*EW+3*31), .N(P1 + P2)) dl_abe (clk, {s10_a, s10_b, s10_e, s10_wt}, abe_d);
     wire [2:0] k_pos = key11[12:10], k_neg = key11[9:7], k_gt = key11[6:4], k_lt = key11[3:1];
     wire k_wpos = key11[0];
     wire any_pos = |k_pos, any_neg = |k_neg;
-    wire sp = k_wpos ? (any_pos && !any_neg) : (det > 0);
-    wire sn = k_wpos ? (any_neg && !any_pos) : (det < 0);
+    wire det_pos = P2 ? !det[RW+1] && (|det) : (det > 0);
+    wire det_neg = P2 ? det[RW+1] : (det < 0);
+    wire sp = k_wpos ? (any_pos && !any_neg) : det_pos;
+    wire sn = k_wpos ? (any_neg && !any_pos) : det_neg;
     wire [2:0] in_k = sp ? (k_pos | (~k_pos & ~k_neg & k_gt))
                          : (k_neg | (~k_pos & ~k_neg & k_lt));
     reg s11_sp, s11_sn, s11_cov;
@@ -403,8 +595,10 @@ module uvt_bsample #(
             wire signed [30:0] zk = s11_zt[31*i +: 31];
             wire signed [30:0] wk = s11_wt[31*i +: 31];
             wire signed [55:0] pz, pw;
-            uvt_mul #(.AW(25), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(MR)) m_z (e2, zk, pz, clk);
-            uvt_mul #(.AW(25), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(MR)) m_w (e2, wk, pw, clk);
+            uvt_mul #(.AW(25), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(RG), .LAT(M6),
+                      .MAP(MAP)) m_z (e2, zk, pz, clk);
+            uvt_mul #(.AW(25), .BW(31), .PA(DSP_A), .PB(DSP_B), .LW(LUTW), .REG(RG), .LAT(M6),
+                      .MAP(MAP)) m_w (e2, wk, pw, clk);
             always @(posedge clk) begin
                 s12_nz[56*i +: 56] <= pz;
                 s12_nw[56*i +: 56] <= pw;
@@ -412,14 +606,36 @@ module uvt_bsample #(
         end
     endgenerate
     wire [1:0] nc11d;
-    uvt_dly #(.W(2), .N(MR)) dl_nc11 (clk, {s11_sn, s11_cov}, nc11d);
+    uvt_dly #(.W(2), .N(M6)) dl_nc11 (clk, {s11_sn, s11_cov}, nc11d);
     always @(posedge clk) {s12_neg, s12_cov} <= nc11d;
-    wire signed [55:0] nsum_n = $signed(s12_nz[0 +: 56]) + $signed(s12_nz[56 +: 56]) +
-                                $signed(s12_nz[112 +: 56]);
-    wire signed [55:0] dsum_n = $signed(s12_nw[0 +: 56]) + $signed(s12_nw[56 +: 56]) +
-                                $signed(s12_nw[112 +: 56]);
+    // PIPE = 2: the first two terms of each sum registered first (the third and the flags
+    // beside them), then the third added: one adder a clock.
+    wire signed [55:0] nsum_n, dsum_n;
+    wire [1:0] nc12;
+    generate
+        if (P2) begin : g_sum2
+            reg signed [55:0] n01, n2, d01, d2;
+            reg [1:0] f;
+            always @(posedge clk) begin
+                n01 <= $signed(s12_nz[0 +: 56]) + $signed(s12_nz[56 +: 56]);
+                d01 <= $signed(s12_nw[0 +: 56]) + $signed(s12_nw[56 +: 56]);
+                n2 <= s12_nz[112 +: 56];
+                d2 <= s12_nw[112 +: 56];
+                f <= {s12_neg, s12_cov};
+            end
+            assign nsum_n = n01 + n2;
+            assign dsum_n = d01 + d2;
+            assign nc12 = f;
+        end else begin : g_sum1
+            assign nsum_n = $signed(s12_nz[0 +: 56]) + $signed(s12_nz[56 +: 56]) +
+                            $signed(s12_nz[112 +: 56]);
+            assign dsum_n = $signed(s12_nw[0 +: 56]) + $signed(s12_nw[56 +: 56]) +
+                            $signed(s12_nw[112 +: 56]);
+            assign nc12 = {s12_neg, s12_cov};
+        end
+    endgenerate
     wire [113:0] sums_d;
-    uvt_dly #(.W(114), .N(P1)) dl_sums (clk, {nsum_n, dsum_n, s12_neg, s12_cov}, sums_d);
+    uvt_dly #(.W(114), .N(P1)) dl_sums (clk, {nsum_n, dsum_n, nc12}, sums_d);
     wire signed [55:0] nsum = sums_d[113:58], dsum = sums_d[57:2];
     wire s12_negd = sums_d[1], s12_covd = sums_d[0];
     reg signed [55:0] s13_num, s13_den;
@@ -506,4 +722,95 @@ module uvt_bsample #(
     end
     assign depth = r_depth;
     assign out_covered = r_cov;
+endmodule
+
+// uvt_bsample_kdet — e = ai·bj − aj·bi (AW-bit signed operands, 16 < AW <= 33) on six 18 × 18
+// products instead of eight: with x = xH·2^16 + xL (xL = x mod 2^16, xH = x >> 16 signed),
+// x·y = xH·yH·2^32 + ((xH + xL)(yH + yL) − xH·yH − xL·yL)·2^16 + xL·yL (Karatsuba), and
+// xH + xL lies in [−2^(AW−17), 2^16 + 2^(AW−17)), 18 bits signed. Each product is uvt_mul
+// REG = 3 (3 clocks; the operand sums are formed before its input registers), then the three
+// differences (clock 4), DM − DH and DH·2^32 + DL (clock 5), minus DL (clock 6), the sum
+// (clock 7): one adder a clock, e seven clocks after the inputs. Arithmetic modulo 2^(2·AW),
+// exact as |e| < 2^(2·AW−1).
+module uvt_bsample_kdet #(
+    parameter AW = 31,
+    parameter PA = 18,
+    parameter PB = 18,
+    parameter MAP = 0
+) (
+    input  wire                   clk,
+    input  wire signed [AW-1:0]   ai,
+    input  wire signed [AW-1:0]   bj,
+    input  wire signed [AW-1:0]   aj,
+    input  wire signed [AW-1:0]   bi,
+    output wire signed [2*AW-1:0] e
+);
+    localparam EW = 2 * AW;
+    wire signed [17:0] aiH = ai >>> 16, bjH = bj >>> 16, ajH = aj >>> 16, biH = bi >>> 16;
+    wire signed [17:0] aiL = {2'b0, ai[15:0]}, bjL = {2'b0, bj[15:0]};
+    wire signed [17:0] ajL = {2'b0, aj[15:0]}, biL = {2'b0, bi[15:0]};
+    wire signed [17:0] aiS = aiH + aiL, bjS = bjH + bjL, ajS = ajH + ajL, biS = biH + biL;
+    wire signed [35:0] hh1, ll1, mm1, hh2, ll2, mm2;
+    uvt_mul #(.AW(18), .BW(18), .PA(PA), .PB(PB), .LW(0), .REG(3), .LAT(3), .MAP(MAP))
+        m_hh1 (aiH, bjH, hh1, clk), m_ll1 (aiL, bjL, ll1, clk), m_mm1 (aiS, bjS, mm1, clk),
+        m_hh2 (ajH, biH, hh2, clk), m_ll2 (ajL, biL, ll2, clk), m_mm2 (ajS, biS, mm2, clk);
+    reg signed [36:0] dh, dl, dm;
+    reg signed [EW-1:0] m1, a1, dl5, mp, a6, s7;
+    always @(posedge clk) begin
+        dh <= hh1 - hh2;                                   // clock 4
+        dl <= ll1 - ll2;
+        dm <= mm1 - mm2;
+        m1 <= dm - dh;                                     // clock 5
+        a1 <= (dh <<< 32) + dl;
+        dl5 <= dl;
+        mp <= m1 - dl5;                                    // clock 6
+        a6 <= a1;
+        s7 <= a6 + (mp <<< 16);                            // clock 7
+    end
+    assign e = s7;
+endmodule
+
+// uvt_bsample_kprod — p = x·y, x XW bits (17 <= XW <= 33; unsigned if XU, else signed), y 31
+// bits signed, on three 18 × 18 products (Karatsuba, as uvt_bsample_kdet: x = xH·2^16 + xL,
+// x·y = xH·yH·2^32 + ((xH + xL)(yH + yL) − xH·yH − xL·yL)·2^16 + xL·yL, each operand sum 18
+// bits signed). uvt_mul REG = 3 (3 clocks), then MM − HH and HH·2^32 + LL (clock 4), minus LL
+// (clock 5), the sum (clock 6): p six clocks after x and y, exact (modulo 2^(XW+31+XU), which
+// holds the product).
+module uvt_bsample_kprod #(
+    parameter XW = 31,
+    parameter XU = 0,
+    parameter PA = 18,
+    parameter PB = 18,
+    parameter MAP = 0
+) (
+    input  wire                      clk,
+    input  wire [XW-1:0]             x,
+    input  wire signed [30:0]        y,
+    output wire signed [XW+XU+30:0]  p
+);
+    localparam QW = XW + XU + 31;
+    wire signed [XW+XU-1:0] xs;        // x as a signed value
+    generate
+        if (XU) begin : g_u
+            assign xs = {1'b0, x};
+        end else begin : g_s
+            assign xs = x;
+        end
+    endgenerate
+    wire signed [17:0] xH = xs >>> 16, yH = y >>> 16;
+    wire signed [17:0] xL = {2'b0, x[15:0]}, yL = {2'b0, y[15:0]};
+    wire signed [17:0] xS = xH + xL, yS = yH + yL;
+    wire signed [35:0] hh, ll, mm;
+    uvt_mul #(.AW(18), .BW(18), .PA(PA), .PB(PB), .LW(0), .REG(3), .LAT(3), .MAP(MAP))
+        m_hh (xH, yH, hh, clk), m_ll (xL, yL, ll, clk), m_mm (xS, yS, mm, clk);
+    reg signed [QW-1:0] m1, a1, ll4, mp, a5, s6;
+    always @(posedge clk) begin
+        m1 <= mm - hh;                                     // clock 4
+        a1 <= (hh <<< 32) + ll;
+        ll4 <= ll;
+        mp <= m1 - ll4;                                    // clock 5
+        a5 <= a1;
+        s6 <= a5 + (mp <<< 16);                            // clock 6
+    end
+    assign p = s6;
 endmodule

@@ -4,7 +4,8 @@
 //! `setup_out.hex` records; a flipped bit of an expected output is reported with record, field,
 //! expected and observed; mutants of the unit (the lens solve's ceiling bit, the divider's
 //! remainder bit, the bounding line's tile end) fail. The bench's setup_out offsets are taken from
-//! each set's manifest, so the test follows the record format. `UVT_EXTENSIVE=1` adds the ECP5
+//! each set's manifest, so the test follows the record format. The `PIPE = 1` and `PIPE = 2`
+//! builds (the latter at `MAP = 0` and on MULT18X18D primitives, `MAP = 1`) give the same records. `UVT_EXTENSIVE=1` adds the ECP5
 //! tiling (18 × 18) and unknowns on the data ports during bubbles on every set, `unit_exact/`
 //! included (290 s on the loaded 2-core machine; the default run 65 s).
 
@@ -146,6 +147,74 @@ fn rtl_bounds_unit_pipe1_passes_the_committed_records() {
                 .any(|l| l.starts_with(&format!("PASS {n} records ("))),
             "PIPE = 1, {set}: {out}"
         );
+    }
+}
+
+/// The `PIPE = 2` build (every product `REG = 3` inside `uvt_mul.v`, every wide carry chain in
+/// a clock of its own, latency 34) with the ECP5 tiling, behavioural (`MAP = 0`) or on
+/// instantiated MULT18X18D primitives (`MAP = 1`, with their model `ecp5/MULT18X18D.v`), on the
+/// sets `sets` with bubbles, and on frame_a with unknowns on the data ports during bubbles too
+/// when `junk`.
+fn pipe2_passes(map: u32, sets: &[&str], junk: bool) {
+    let dir = tempfile::tempdir().unwrap();
+    let mut params = format_params(&committed().join("unit"));
+    params.extend([
+        ("tb_bounds.DSP_A", "18".to_string()),
+        ("tb_bounds.PIPE", "2".to_string()),
+        ("tb_bounds.MAP", map.to_string()),
+    ]);
+    let srcs: &[&str] = if map == 1 {
+        &[
+            "uvt_mul.v",
+            "uvt_mult18.v",
+            "ecp5/MULT18X18D.v",
+            "uvt_bounds.v",
+            "tb_bounds.v",
+        ]
+    } else {
+        &SOURCES
+    };
+    let tb = icarus::compile(
+        &dir.path().join(format!("tb-pipe2-map{map}.vvp")),
+        &params,
+        srcs,
+    );
+    let mut runs: Vec<(&str, &[&str])> = sets.iter().map(|s| (*s, &["+BUBBLES=10"][..])).collect();
+    if junk {
+        runs.push(("frame_a", &["+JUNK=1", "+BUBBLES=50", "+SEED=5"]));
+    }
+    for (set, extra) in runs {
+        let path = committed().join(set);
+        let n = records(&path);
+        let out = run(&tb, &path, extra);
+        assert!(
+            out.lines()
+                .any(|l| l.starts_with(&format!("PASS {n} records ("))),
+            "PIPE = 2, MAP = {map}, {set} {extra:?}: {out}"
+        );
+    }
+}
+
+/// `PIPE = 2`, `MAP = 0` passes every record of the unit, frame_a and frame_b sets (`unit_exact/`
+/// too and unknowns on the data ports with `UVT_EXTENSIVE=1`).
+#[test]
+fn rtl_bounds_unit_pipe2_passes_every_committed_record() {
+    if extensive() {
+        pipe2_passes(0, &["unit", "unit_exact", "frame_a", "frame_b"], true);
+    } else {
+        pipe2_passes(0, &["unit", "frame_a", "frame_b"], false);
+    }
+}
+
+/// `PIPE = 2`, `MAP = 1` (pnr.sh's `bounds-pipe2`) passes every record of frame_a (a slower
+/// simulation: the 96 primitives' models; `UVT_EXTENSIVE=1`: every set, and unknowns on the
+/// data ports).
+#[test]
+fn rtl_bounds_unit_pipe2_on_mult18x18d_passes_the_committed_records() {
+    if extensive() {
+        pipe2_passes(1, &["unit", "unit_exact", "frame_a", "frame_b"], true);
+    } else {
+        pipe2_passes(1, &["frame_a"], false);
     }
 }
 

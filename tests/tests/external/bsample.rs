@@ -459,6 +459,70 @@ fn rtl_pipelined_unit_passes_committed_records_with_its_latency() {
     }
 }
 
+/// The tiling of the `PIPE = 2` build that `vectors/rtl/pnr.sh bsample-pipe2` places and routes:
+/// `LUTW`, `LUTWE` (the LUT chunk limit of the edge products and E'·w; -1: `LUTW`) and `KARA`
+/// (1: those products by Karatsuba on 18 × 18 products).
+const PIPE2_TILING: (i32, i32, i32) = (8, -1, 1);
+/// Its latency: "edge E depth D" (the bench's LATENCY line).
+const PIPE2_LATENCY: &str = "edge 41 depth 87";
+
+/// The build that closes timing (`PIPE = 2`: every product `uvt_mul.v` `REG = 3`, at most one
+/// wide carry chain between registers; ECP5 18 × 18 ports and the tiling (LUT chunk limits,
+/// Karatsuba) of `pnr.sh bsample-pipe2`) reproduces every committed record with its latency, in
+/// behavioural form (`MAP = 0`) and with every hard piece an instantiated MULT18X18D (`MAP = 1`,
+/// simulated with the primitive's model `vectors/rtl/ecp5/MULT18X18D.v`). The six runs (two
+/// builds, three sets) go in parallel.
+#[test]
+fn rtl_pipe2_unit_passes_every_committed_record() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = |k: &'static str, v: i32| (k, v.to_string());
+    let tbs: Vec<(u32, PathBuf)> = [0, 1]
+        .into_iter()
+        .map(|map| {
+            let mut srcs = vec!["uvt_mul.v", "uvt_bsample.v", "tb_bsample.v"];
+            if map == 1 {
+                srcs.extend(["uvt_mult18.v", "ecp5/MULT18X18D.v"]);
+            }
+            let tb = icarus::compile(
+                &dir.path().join(format!("tb-pipe2-map{map}.vvp")),
+                &[
+                    p("tb_bsample.DSP_A", 18),
+                    p("tb_bsample.DSP_B", 18),
+                    p("tb_bsample.LUTW", PIPE2_TILING.0),
+                    p("tb_bsample.LUTWE", PIPE2_TILING.1),
+                    p("tb_bsample.KARA", PIPE2_TILING.2),
+                    p("tb_bsample.PIPE", 2),
+                    p("tb_bsample.MAP", map as i32),
+                ],
+                &srcs,
+            );
+            (map, tb)
+        })
+        .collect();
+    std::thread::scope(|sc| {
+        let runs: Vec<_> = tbs
+            .iter()
+            .flat_map(|(map, tb)| {
+                ["unit", "frame_a", "frame_b"]
+                    .map(|set| sc.spawn(move || (*map, set, run(tb, &committed().join(set)))))
+            })
+            .collect();
+        for r in runs {
+            let (map, set, out) = r.join().unwrap();
+            let n = coverage(set)["records"].as_u64().unwrap();
+            assert!(
+                out.contains(&format!("PASS {n} records")),
+                "MAP {map} {set}: {out}"
+            );
+            assert!(
+                out.lines()
+                    .any(|l| l == format!("LATENCY {PIPE2_LATENCY} clocks")),
+                "MAP {map} {set}: {out}"
+            );
+        }
+    });
+}
+
 /// Whether the unit with `terms` = (motion, defocus) accepts class index `class` (bit 0
 /// motion, bit 1 defocus: static, motion, defocus, both).
 fn accepts(terms: (bool, bool), class: usize) -> bool {

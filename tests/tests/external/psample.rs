@@ -247,6 +247,55 @@ fn rtl_pipelined_planar_unit_passes_committed_records_with_its_latency() {
     assert!(out.lines().any(|l| l == "LATENCY 6 clocks"), "{out}");
 }
 
+/// The fastest build (`PIPE = 2`: every hard multiplier registered in and out, `uvt_mul` REG = 3,
+/// and one wide carry chain per clock) is bit-identical on every committed planar record: at
+/// the DSP48E1 tiling, and at the ECP5 tiling with `LUTW = 0` (`vectors/rtl/pnr.sh`'s
+/// `psample-pipe2`) both behavioural (`MAP = 0`) and with every hard piece an instantiated
+/// `MULT18X18D` (`MAP = 1`: `uvt_mult18.v`, simulated with `vectors/rtl/ecp5/MULT18X18D.v`); latency 8 + L2 +
+/// L3, the products' clocks (3 + clog2 of their terms).
+#[test]
+fn rtl_planar_unit_pipe2_passes_every_committed_record() {
+    let dir = tempfile::tempdir().unwrap();
+    let p = |k: &'static str, v: u32| (k, v.to_string());
+    // (ports, LUTW, MAP, latency): 25 × 18 at LUTW 8 has a 21 × 13 product of one term (L2 =
+    // 3) and 32 × 32 of two hard pieces and 8 LUT rows (L3 = 7); 18 × 18 at LUTW 0 two and four
+    // hard pieces (L2 = 4, L3 = 5).
+    for (ports, lutw, map, lat) in [
+        ((25, 18), 8, 0, 18),
+        ((18, 18), 0, 0, 17),
+        ((18, 18), 0, 1, 17),
+    ] {
+        let mut src = vec!["uvt_mul.v", "uvt_psample.v", "tb_psample.v"];
+        if map == 1 {
+            src.extend(["uvt_mult18.v", "ecp5/MULT18X18D.v"]);
+        }
+        let tb = icarus::compile(
+            &dir.path().join(format!(
+                "tbp-pipe2-{}x{}-l{lutw}-m{map}.vvp",
+                ports.0, ports.1
+            )),
+            &[
+                p("tb_psample.DSP_A", ports.0),
+                p("tb_psample.DSP_B", ports.1),
+                p("tb_psample.LUTW", lutw),
+                p("tb_psample.PIPE", 2),
+                p("tb_psample.MAP", map),
+            ],
+            &src,
+        );
+        for set in ["unit", "frame_a", "frame_b"] {
+            let what = format!("PIPE = 2, {ports:?}, LUTW = {lutw}, MAP = {map}");
+            let out = passes_set(&tb, set, &what);
+            if set != "frame_b" {
+                assert!(
+                    out.lines().any(|l| l == format!("LATENCY {lat} clocks")),
+                    "{what} {set}: {out}"
+                );
+            }
+        }
+    }
+}
+
 /// A predicate on an (input, output) record pair.
 type Kind = Box<dyn Fn(&[u32], &[u32]) -> bool>;
 
