@@ -28,7 +28,8 @@
 // passed to it (uvt_bsample.v; the defaults are the unit's): DSP_A, DSP_B, LUTW (the
 // multiplier tiling), PIPE (0, 1, 2: the pipelining, latency only), MAP (1: hard pieces as ECP5
 // MULT18X18D, with PIPE = 2 and 18 × 18 ports; the build then needs vectors/rtl/uvt_mult18.v
-// and the primitive's model through vectors/dpi/mult18x18d.sv). The configuration is the
+// and the primitive's model through vectors/dpi/mult18x18d.sv), LUTWE and KARA (PIPE = 2: the
+// edge products' LUT chunk limit, Karatsuba edge products). The configuration is the
 // default one (POS = TUV = 16, OFF = 20, motion and defocus). Every build gives the same
 // records and so prints the same PASS line.
 `timescale 1ns / 1ps
@@ -37,7 +38,9 @@ module tb_dpi_bsample #(
     parameter int DSP_B = 18,
     parameter int LUTW = 8,
     parameter int PIPE = 0,
-    parameter int MAP = 0
+    parameter int MAP = 0,
+    parameter int LUTWE = -1,
+    parameter int KARA = 0
 );
     import uvt_dpi::*;
     localparam int WI = 37, WO = 14, SLOTS = 512;
@@ -72,7 +75,8 @@ module tb_dpi_bsample #(
     wire signed [31:0] depth;
 
     uvt_bsample #(
-        .DSP_A(DSP_A), .DSP_B(DSP_B), .LUTW(LUTW), .PIPE(PIPE), .MAP(MAP)
+        .DSP_A(DSP_A), .DSP_B(DSP_B), .LUTW(LUTW), .PIPE(PIPE), .MAP(MAP),
+        .LUTWE(LUTWE), .KARA(KARA)
     ) dut (
         .clk(clk), .in_valid(in_valid), .trin(trin), .vp_w(vp_w), .vp_h(vp_h), .xs(xs), .ys(ys),
         .t(t), .u(u), .v(v), .edge_valid(edge_valid), .ab(ab), .e(e), .det_sign(det_sign),

@@ -99,6 +99,7 @@ fn pipelined(unit: &str) -> [Params; 2] {
                 ("DSP_A", 18),
                 ("DSP_B", 18),
                 ("LUTW", 8),
+                ("KARA", 1),
                 ("PIPE", 2),
                 ("MAP", 1),
             ],
