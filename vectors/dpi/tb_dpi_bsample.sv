@@ -12,18 +12,38 @@
 // seeded from SEED; every raw t in [0, 2^16], u, v in [-2^16, 2^16] is on this
 // configuration's grid). The model (uvt_bsample through DPI) gives the expected output; the
 // unit is driven with random bubbles (in_valid low on about 1 clock in 4) and its outputs are
-// checked in issue order: the edge results (LAT_EDGE = 11) and the depth (LAT = 46) of a
-// sample are gathered into one bsample_out record and compared word by word; on a difference
+// checked in issue order: the edge results (edge_valid) and the depth (out_valid) of a sample
+// are gathered into one bsample_out record and compared word by word; on a difference
 // uvt_compare names the fields.
 // The first mismatch prints the seed, the sample, every differing field (uvt_last_error),
 // then the input, expected and observed words in hex, and the bench ends with a FAIL line.
-// Success: "PASS <n> samples, <c> covered, <t> ties, <w> w<=0, <r> re-randomised, classes
-// <static>/<motion>/<defocus>/<both>, <b> bubbles" (ties: an expected edge value E'_k = 0;
-// w<=0: a triangle with a vertex at w <= 0 in either key frame).
+// Success: "LATENCY edge <a> depth <b> clocks", then "PASS <n> samples, <c> covered, <t> ties,
+// <w> w<=0, <r> re-randomised, classes <static>/<motion>/<defocus>/<both>, <b> bubbles" (ties:
+// an expected edge value E'_k = 0; w<=0: a triangle with a vertex at w <= 0 in either key
+// frame).
+// Any latency works (below SLOTS - 1 clocks): the bench measures both, clocks from a sample's
+// in_valid to its edge_valid and to its out_valid, and fails if a sample's differ from the first
+// sample's or from the unit's LAT_EDGE and LAT (read at run time: dut.LAT_EDGE, dut.LAT).
+// Parameters (Verilator -G on this top, e.g. -GPIPE=2 -GMAP=1 -GDSP_A=18): the unit's build,
+// passed to it (uvt_bsample.v; the defaults are the unit's): DSP_A, DSP_B, LUTW (the
+// multiplier tiling), PIPE (0, 1, 2: the pipelining, latency only), MAP (1: hard pieces as ECP5
+// MULT18X18D, with PIPE = 2 and 18 × 18 ports; the build then needs vectors/rtl/uvt_mult18.v
+// and the primitive's model through vectors/dpi/mult18x18d.sv), LUTWE and KARA (PIPE = 2: the
+// edge products' LUT chunk limit, Karatsuba edge products). The configuration is the
+// default one (POS = TUV = 16, OFF = 20, motion and defocus). Every build gives the same
+// records and so prints the same PASS line.
 `timescale 1ns / 1ps
-module tb_dpi_bsample;
+module tb_dpi_bsample #(
+    parameter int DSP_A = 25,
+    parameter int DSP_B = 18,
+    parameter int LUTW = 8,
+    parameter int PIPE = 0,
+    parameter int MAP = 0,
+    parameter int LUTWE = -1,
+    parameter int KARA = 0
+);
     import uvt_dpi::*;
-    localparam int WI = 37, WO = 14, SLOTS = 64, LAT = 46;
+    localparam int WI = 37, WO = 14, SLOTS = 512;
     localparam string CONFIG = UVT_BOUNDED_DEFAULT;
 
     longint unsigned seed;
@@ -31,6 +51,8 @@ module tb_dpi_bsample;
     bit failed;  // the first mismatch ends the bench: nothing is checked after it
     int issued, checked, n_cov, n_tie, n_wle0, n_rerand, n_bubble;
     int n_class[4];
+    int lat_e = -1, lat_d = -1;  // the unit's latencies in clocks (the first sample's)
+    longint unsigned clocks;     // rising edges so far
 
     // Scoreboard: records by slot (issue number mod SLOTS > samples in flight), slots in issue
     // order waiting for their edge results, then for their depth.
@@ -38,6 +60,7 @@ module tb_dpi_bsample;
     int unsigned sb_exp[SLOTS][WO];
     int unsigned sb_obs[SLOTS][WO];
     longint unsigned sb_idx[SLOTS];
+    longint unsigned sb_t[SLOTS];  // clocks when the sample was issued
     int q_edge[$];
     int q_depth[$];
 
@@ -51,13 +74,17 @@ module tb_dpi_bsample;
     wire signed [1:0] det_sign;
     wire signed [31:0] depth;
 
-    uvt_bsample dut (
+    uvt_bsample #(
+        .DSP_A(DSP_A), .DSP_B(DSP_B), .LUTW(LUTW), .PIPE(PIPE), .MAP(MAP),
+        .LUTWE(LUTWE), .KARA(KARA)
+    ) dut (
         .clk(clk), .in_valid(in_valid), .trin(trin), .vp_w(vp_w), .vp_h(vp_h), .xs(xs), .ys(ys),
         .t(t), .u(u), .v(v), .edge_valid(edge_valid), .ab(ab), .e(e), .det_sign(det_sign),
         .covered(covered), .out_valid(out_valid), .out_covered(out_covered), .depth(depth)
     );
 
     always #5 clk = ~clk;
+    always @(posedge clk) clocks++;
 
     function automatic void words(string label, int unsigned w[], int len);
         string s = label;
@@ -109,6 +136,18 @@ module tb_dpi_bsample;
         if (!failed) checked++;
     endfunction
 
+    // The sample in slot s gave its edge results (what = "edge_valid", lat = lat_e) or its depth
+    // ("out_valid", lat_d) now: the clocks since its in_valid must be the first sample's.
+    function automatic void latency(int s, string what, inout int lat);
+        int l = int'(clocks - sb_t[s]);
+        if (lat < 0) lat = l;
+        if (l != lat && !failed) begin
+            $display("FAIL seed %0d: sample %0d gave %s %0d clocks after its in_valid, the first sample %0d clocks after",
+                     seed, sb_idx[s], what, l, lat);
+            $finish;
+        end
+    endfunction
+
     // Outputs, on the falling edge, in issue order.
     always @(negedge clk) begin
         int s;
@@ -118,6 +157,7 @@ module tb_dpi_bsample;
                 $finish;
             end
             s = q_edge.pop_front();
+            latency(s, "edge_valid", lat_e);
             sb_obs[s][0] = {29'b0, det_sign, covered};
             for (int k = 0; k < 6; k++) sb_obs[s][2 + k] = ab[32*k +: 32];
             for (int k = 0; k < 3; k++) begin
@@ -132,6 +172,7 @@ module tb_dpi_bsample;
                 $finish;
             end
             s = q_depth.pop_front();
+            latency(s, "out_valid", lat_d);
             sb_obs[s][1] = depth;
             compare(s, out_covered);
         end
@@ -147,7 +188,8 @@ module tb_dpi_bsample;
         if (!$value$plusargs("CORRUPT_WORD=%d", corrupt_word)) corrupt_word = 1;
         if (!$value$plusargs("CORRUPT_BIT=%d", corrupt_bit)) corrupt_bit = 0;
         void'($urandom(seed[31:0] ^ seed[63:32]));
-        repeat (LAT + 4) @(negedge clk);
+        // Idle clocks first: the unit must output nothing (its pipeline starts empty).
+        repeat (SLOTS) @(negedge clk);
         for (longint unsigned i = 0; i < 64'(n); i++) begin
             if (failed) break;
             while ($urandom_range(3) == 0) begin
@@ -171,7 +213,13 @@ module tb_dpi_bsample;
                 n_rerand++;
             end
             rc = uvt_bsample(rec, ex);
+            if (q_edge.size() + q_depth.size() >= SLOTS - 1) begin
+                $display("FAIL seed %0d sample %0d: %0d samples in flight without a result, the bench holds %0d (SLOTS)",
+                         seed, i, q_edge.size() + q_depth.size(), SLOTS - 1);
+                $finish;
+            end
             s = issued % SLOTS;
+            sb_t[s] = clocks;
             sb_idx[s] = i;
             for (int k = 0; k < WI; k++) sb_in[s][k] = rec[k];
             if (rc != UVT_OK) begin
@@ -205,12 +253,20 @@ module tb_dpi_bsample;
         end
         in_valid = 0;
         if (failed) $finish;
-        repeat (LAT + 4) @(negedge clk);
+        // Drain: every result within SLOTS clocks, then nothing more for a latency and a bit.
+        for (int c = 0; c < SLOTS && q_edge.size() + q_depth.size() > 0; c++) @(negedge clk);
+        repeat (lat_d + 4) @(negedge clk);
         if (checked != issued) begin
             $display("FAIL seed %0d: %0d samples issued, %0d results came out", seed, issued,
                      checked);
             $finish;
         end
+        if (checked > 0 && (lat_e != dut.LAT_EDGE || lat_d != dut.LAT)) begin
+            $display("FAIL seed %0d: results came %0d (edge) and %0d (depth) clocks after their in_valid, the unit's LAT_EDGE is %0d, LAT %0d",
+                     seed, lat_e, lat_d, dut.LAT_EDGE, dut.LAT);
+            $finish;
+        end
+        $display("LATENCY edge %0d depth %0d clocks", lat_e, lat_d);
         $display("PASS %0d samples, %0d covered, %0d ties, %0d w<=0, %0d re-randomised, classes %0d/%0d/%0d/%0d, %0d bubbles",
                  checked, n_cov, n_tie, n_wle0, n_rerand, n_class[0], n_class[1], n_class[2],
                  n_class[3], n_bubble);

@@ -11,21 +11,38 @@
 // the bench then draws a new position inside the viewport ($urandom, seeded from SEED; the
 // setup fields do not depend on it). The model (uvt_psample through DPI) gives the expected
 // output; the unit is driven with random bubbles (in_valid low on about 1 clock in 4) and its
-// outputs (LAT = 6) are compared in issue order, word by word; on a difference uvt_compare
-// names the fields. The first mismatch prints the seed, the sample, every differing field
+// outputs are compared in issue order, word by word; on a difference uvt_compare names the
+// fields. The first mismatch prints the seed, the sample, every differing field
 // (uvt_last_error), then the input, expected and observed words in hex, and the bench ends
-// with a FAIL line. Success: "PASS <n> samples, <c> covered, <t> ties, <w> w<=0, <r>
-// re-randomised, <b> bubbles" (ties: an expected edge value E_k = 0; w<=0: a triangle with a
-// vertex at w <= 0).
+// with a FAIL line. Success: "LATENCY <l> clocks", then "PASS <n> samples, <c> covered, <t>
+// ties, <w> w<=0, <r> re-randomised, <b> bubbles" (ties: an expected edge value E_k = 0; w<=0:
+// a triangle with a vertex at w <= 0).
+// Any latency works (below SLOTS - 1 clocks): the bench measures it, clocks from a sample's
+// in_valid to its out_valid, and fails if a sample's differs from the first sample's or from
+// the unit's LAT (read at run time: dut.LAT).
+// Parameters (Verilator -G on this top, e.g. -GPIPE=2 -GMAP=1): the unit's build, passed to it
+// (uvt_psample.v; the defaults are the unit's): DSP_A, DSP_B, LUTW (the multiplier tiling),
+// PIPE (0, 1, 2: the pipelining, latency only), MAP (1: hard pieces as ECP5 MULT18X18D, with
+// PIPE = 2 and 18 × 18 ports; the build then needs vectors/rtl/uvt_mult18.v and the primitive's
+// model through vectors/dpi/mult18x18d.sv). Every build gives the same records and so prints
+// the same PASS line.
 `timescale 1ns / 1ps
-module tb_dpi_psample;
+module tb_dpi_psample #(
+    parameter int DSP_A = 25,
+    parameter int DSP_B = 18,
+    parameter int LUTW = 8,
+    parameter int PIPE = 0,
+    parameter int MAP = 0
+);
     import uvt_dpi::*;
-    localparam int WI = 28, WO = 8, SLOTS = 16, LAT = 6;
+    localparam int WI = 28, WO = 8, SLOTS = 512;
 
     longint unsigned seed;
     int n, corrupt, corrupt_word, corrupt_bit, arch_only;
     bit failed;  // the first mismatch ends the bench: nothing is checked after it
     int issued, checked, n_cov, n_tie, n_wle0, n_rerand, n_bubble;
+    int lat = -1;            // the unit's latency in clocks (the first sample's)
+    longint unsigned clocks; // rising edges so far
 
     // Scoreboard: records by slot (issue number mod SLOTS > samples in flight), slots in issue
     // order.
@@ -33,6 +50,7 @@ module tb_dpi_psample;
     int unsigned sb_exp[SLOTS][WO];
     int unsigned sb_obs[SLOTS][WO];
     longint unsigned sb_idx[SLOTS];
+    longint unsigned sb_t[SLOTS];  // clocks when the sample was issued
     int q[$];
 
     bit clk = 0, in_valid = 0;
@@ -46,13 +64,16 @@ module tb_dpi_psample;
     wire signed [31:0] depth;
     wire [191:0] e;
 
-    uvt_psample dut (
+    uvt_psample #(
+        .DSP_A(DSP_A), .DSP_B(DSP_B), .LUTW(LUTW), .PIPE(PIPE), .MAP(MAP)
+    ) dut (
         .clk(clk), .in_valid(in_valid), .n(nn), .sigma(sigma), .f(f), .g(g), .vp_w(vp_w),
         .vp_h(vp_h), .xs(xs), .ys(ys), .out_valid(out_valid), .covered(covered),
         .depth(depth), .e(e)
     );
 
     always #5 clk = ~clk;
+    always @(posedge clk) clocks++;
 
     function automatic void words(string label, int unsigned w[], int len);
         string s = label;
@@ -102,6 +123,17 @@ module tb_dpi_psample;
         if (!failed) checked++;
     endfunction
 
+    // The sample in slot s came out now: its latency must be the first sample's.
+    function automatic void latency(int s);
+        int l = int'(clocks - sb_t[s]);
+        if (lat < 0) lat = l;
+        if (l != lat && !failed) begin
+            $display("FAIL seed %0d: sample %0d came out %0d clocks after its in_valid, the first sample %0d clocks after",
+                     seed, sb_idx[s], l, lat);
+            $finish;
+        end
+    endfunction
+
     // Outputs, on the falling edge, in issue order.
     always @(negedge clk) begin
         int s;
@@ -111,6 +143,7 @@ module tb_dpi_psample;
                 $finish;
             end
             s = q.pop_front();
+            latency(s);
             sb_obs[s][0] = {31'b0, covered};
             sb_obs[s][1] = depth;
             for (int k = 0; k < 3; k++) begin
@@ -131,7 +164,8 @@ module tb_dpi_psample;
         if (!$value$plusargs("CORRUPT_WORD=%d", corrupt_word)) corrupt_word = 1;
         if (!$value$plusargs("CORRUPT_BIT=%d", corrupt_bit)) corrupt_bit = 0;
         void'($urandom(seed[31:0] ^ seed[63:32]));
-        repeat (2 * LAT) @(negedge clk);
+        // Idle clocks first: the unit must output nothing (its pipeline starts empty).
+        repeat (SLOTS) @(negedge clk);
         for (longint unsigned i = 0; i < 64'(n); i++) begin
             if (failed) break;
             while ($urandom_range(3) == 0) begin
@@ -152,7 +186,13 @@ module tb_dpi_psample;
                 n_rerand++;
             end
             rc = uvt_psample(rec, ex);
+            if (q.size() >= SLOTS - 1) begin
+                $display("FAIL seed %0d sample %0d: %0d samples in flight without a result, the bench holds %0d (SLOTS)",
+                         seed, i, q.size(), SLOTS - 1);
+                $finish;
+            end
             s = issued % SLOTS;
+            sb_t[s] = clocks;
             sb_idx[s] = i;
             for (int k = 0; k < WI; k++) sb_in[s][k] = rec[k];
             if (rc != UVT_OK) begin
@@ -181,12 +221,20 @@ module tb_dpi_psample;
         end
         in_valid = 0;
         if (failed) $finish;
-        repeat (2 * LAT) @(negedge clk);
+        // Drain: every result within SLOTS clocks, then nothing more for a latency and a bit.
+        for (int c = 0; c < SLOTS && q.size() > 0; c++) @(negedge clk);
+        repeat (lat + 4) @(negedge clk);
         if (checked != issued) begin
             $display("FAIL seed %0d: %0d samples issued, %0d results came out", seed, issued,
                      checked);
             $finish;
         end
+        if (checked > 0 && lat != dut.LAT) begin
+            $display("FAIL seed %0d: results came %0d clocks after their in_valid, the unit's LAT is %0d",
+                     seed, lat, dut.LAT);
+            $finish;
+        end
+        $display("LATENCY %0d clocks", lat);
         $display("PASS %0d samples, %0d covered, %0d ties, %0d w<=0, %0d re-randomised, %0d bubbles",
                  checked, n_cov, n_tie, n_wle0, n_rerand, n_bubble);
         $finish;

@@ -7,6 +7,10 @@
 //!   ties and (bounded) triangles with a vertex at w <= 0.
 //! - A flipped bit of the model's expected output (`+CORRUPT=k`) fails, naming the field; with
 //!   `+ARCH_ONLY=1` a corrupted edge value passes (only covered and depth are compared).
+//! - The faster builds of each unit, `PIPE = 1` and `PIPE = 2` with `MAP = 1` (ECP5 MULT18X18D
+//!   instances and their model), at 18 × 18 ports as `vectors/rtl/pnr.sh` builds them: the same
+//!   [`samples`] give the default build's PASS line (every count) after a longer latency, which
+//!   the bench measures and checks against the unit's `LAT`; a flipped bit fails.
 //! - The example output of `vectors/dpi/README.md` (the bounded bench's PASS line, a MISMATCH
 //!   and its FAIL line) is what the commands shown there print.
 //! - A mutated copy of the RTL (the bounded unit's fill-rule tie key reversed, the planar unit's
@@ -78,18 +82,74 @@ fn common(top: &str, mdir: &Path) -> Vec<String> {
     ]
 }
 
+/// A build of a unit: the unit's parameters, set on the bench's top (`-G`), which passes them on.
+type Params = &'static [(&'static str, u32)];
+
+/// The default build (the unit's default parameters).
+const DEFAULT: Params = &[];
+
+/// The faster builds of `unit`, as `vectors/rtl/pnr.sh` places them on the ECP5 (18 × 18
+/// ports): `PIPE = 1` (units psample-pipe1, bsample) and `PIPE = 2` with every hard piece an
+/// instantiated MULT18X18D (`MAP = 1`; units psample-pipe2, bsample-pipe2).
+fn pipelined(unit: &str) -> [Params; 2] {
+    if unit == "bsample" {
+        [
+            &[("DSP_A", 18), ("DSP_B", 18), ("PIPE", 1)],
+            &[
+                ("DSP_A", 18),
+                ("DSP_B", 18),
+                ("LUTW", 8),
+                ("KARA", 1),
+                ("PIPE", 2),
+                ("MAP", 1),
+            ],
+        ]
+    } else {
+        [
+            &[("DSP_A", 18), ("DSP_B", 18), ("PIPE", 1)],
+            &[
+                ("DSP_A", 18),
+                ("DSP_B", 18),
+                ("LUTW", 0),
+                ("PIPE", 2),
+                ("MAP", 1),
+            ],
+        ]
+    }
+}
+
+/// `PIPE=2 MAP=1`, "default" for none.
+fn name(params: Params) -> String {
+    if params.is_empty() {
+        return "default".into();
+    }
+    params
+        .iter()
+        .map(|(k, v)| format!("{k}={v}"))
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
 /// Verilate and build the DPI testbench of `unit` ("bsample", "psample") with the unit's RTL
-/// `rtl` into `dir`; the executable.
-fn build_bench(dir: &Path, unit: &str, rtl: &Path) -> PathBuf {
-    let mdir = dir.join(format!("obj_{unit}"));
+/// `rtl` and the build `params` into `dir` (a folder per build); the executable. `MAP = 1` adds
+/// the MULT18X18D instance (`uvt_mult18.v`) and the primitive's model (`mult18x18d.sv`).
+fn build_bench(dir: &Path, unit: &str, rtl: &Path, params: Params) -> PathBuf {
+    let tag: String = params.iter().map(|(k, v)| format!("_{k}{v}")).collect();
+    let mdir = dir.join(format!("obj_{unit}{tag}"));
     let mut args: Vec<String> = ["--binary", "--timing", "-o", "tb"]
         .map(String::from)
         .to_vec();
     args.extend(common(&format!("tb_dpi_{unit}"), &mdir));
+    args.extend(params.iter().map(|(k, v)| format!("-G{k}={v}")));
     for f in ["uvt_dpi.sv", &format!("tb_dpi_{unit}.sv")] {
         args.push(dpi_dir().join(f).display().to_string());
     }
     args.push(icarus::rtl_dir().join("uvt_mul.v").display().to_string());
+    if params.contains(&("MAP", 1)) {
+        args.push(format!("-I{}", icarus::rtl_dir().join("ecp5").display()));
+        args.push(icarus::rtl_dir().join("uvt_mult18.v").display().to_string());
+        args.push(dpi_dir().join("mult18x18d.sv").display().to_string());
+    }
     args.push(rtl.display().to_string());
     verilate(dir, &args);
     mdir.join("tb")
@@ -121,12 +181,26 @@ fn bench(tb: &Path, extra: &[&str]) -> String {
     run(tb, &args).1
 }
 
+/// The line of `out` that starts with `start` ("PASS ", "LATENCY ").
+fn line<'a>(out: &'a str, start: &str) -> &'a str {
+    out.lines()
+        .find(|l| l.starts_with(start))
+        .unwrap_or_else(|| panic!("no {start}line in:\n{out}"))
+}
+
+/// The depth latency of the LATENCY line ("LATENCY 6 clocks", "LATENCY edge 11 depth 46
+/// clocks"): its last number.
+fn latency(out: &str) -> u32 {
+    let l = line(out, "LATENCY ");
+    l.split(' ')
+        .filter_map(|w| w.parse().ok())
+        .next_back()
+        .unwrap_or_else(|| panic!("no latency in `{l}`"))
+}
+
 /// The count before `what` on the PASS line ("PASS 10 samples, 3 covered, …").
 fn count(out: &str, what: &str) -> u64 {
-    let line = out
-        .lines()
-        .find(|l| l.starts_with("PASS "))
-        .unwrap_or_else(|| panic!("no PASS line in:\n{out}"));
+    let line = line(out, "PASS ");
     line.trim_start_matches("PASS ")
         .split(", ")
         .find_map(|p| p.strip_suffix(&format!(" {what}")))
@@ -165,11 +239,8 @@ fn mutant(dir: &Path, unit: &str, from: &str, to: &str) -> PathBuf {
 
 fn pass_and_corrupt(unit: &str, counts: &[&str]) {
     let dir = tempfile::tempdir().unwrap();
-    let tb = build_bench(
-        dir.path(),
-        unit,
-        &icarus::rtl_dir().join(format!("uvt_{unit}.v")),
-    );
+    let rtl = icarus::rtl_dir().join(format!("uvt_{unit}.v"));
+    let tb = build_bench(dir.path(), unit, &rtl, DEFAULT);
     let n = samples(unit);
     let out = bench(&tb, &[&format!("+N={n}")]);
     assert_eq!(count(&out, "samples"), n, "{out}");
@@ -186,6 +257,27 @@ fn pass_and_corrupt(unit: &str, counts: &[&str]) {
     assert_eq!(count(&bench(&tb, &arch), "samples"), 3000);
     if unit == "bsample" {
         readme_examples(&tb);
+    }
+    // The faster builds: the same samples give the same PASS line (every count: the records are
+    // the same), after a longer latency (the bench checks it against the unit's LAT); a
+    // corrupted expected depth fails.
+    for params in pipelined(unit) {
+        let tb = build_bench(dir.path(), unit, &rtl, params);
+        let p = bench(&tb, &[&format!("+N={n}")]);
+        let build = name(params);
+        assert_eq!(
+            line(&p, "PASS "),
+            line(&out, "PASS "),
+            "{unit} {build}: not the default build's PASS line:\n{p}"
+        );
+        assert!(
+            latency(&p) > latency(&out),
+            "{unit} {build}: latency {} clocks, the default build's {}: the parameters did not \
+             reach the unit",
+            latency(&p),
+            latency(&out)
+        );
+        assert_fail(&bench(&tb, &["+N=3000", "+CORRUPT=1234"]), "depth");
     }
 }
 
@@ -223,17 +315,17 @@ fn readme_examples(tb: &Path) {
 fn mutated(unit: &str, from: &str, to: &str, field: &str) {
     let dir = tempfile::tempdir().unwrap();
     let rtl = mutant(dir.path(), unit, from, to);
-    let tb = build_bench(dir.path(), unit, &rtl);
+    let tb = build_bench(dir.path(), unit, &rtl, DEFAULT);
     assert_fail(&bench(&tb, &[&format!("+N={}", samples(unit))]), field);
 }
 
 #[test]
-fn bsample_dpi_passes_and_catches_a_corrupted_model_output() {
+fn bsample_dpi_passes_at_every_build_and_catches_a_corrupted_model_output() {
     pass_and_corrupt("bsample", &["covered", "ties", "w<=0"]);
 }
 
 #[test]
-fn psample_dpi_passes_and_catches_a_corrupted_model_output() {
+fn psample_dpi_passes_at_every_build_and_catches_a_corrupted_model_output() {
     pass_and_corrupt("psample", &["covered", "ties"]);
 }
 
