@@ -112,3 +112,27 @@ pub fn run_vectors(tb: &Path, set: &Path, stem: &str, extra: &[String]) -> Strin
 pub fn run_vectors_failing(tb: &Path, set: &Path, stem: &str, extra: &[String]) -> String {
     run_failing(tb, &vector_args(set, stem, extra))
 }
+
+/// The build parameters of the unit `name` in `vectors/rtl/pnr.sh`'s unit table (the line
+/// `    NAME) echo "top|sources|P=V …|…"`), in the order written: the one definition of each
+/// placed-and-routed build, which the benches that run the same build read. Panics if the
+/// table has no such unit.
+pub fn pnr_params(name: &str) -> Vec<(String, u32)> {
+    let script = rtl_dir().join("pnr.sh");
+    let text = std::fs::read_to_string(&script).unwrap();
+    let head = format!("    {name}) echo \"");
+    let line = text
+        .lines()
+        .find(|l| l.starts_with(&head))
+        .unwrap_or_else(|| panic!("{}: no unit {name}", script.display()));
+    let fields: Vec<&str> = line[head.len()..].split('|').collect();
+    fields
+        .get(2)
+        .unwrap_or_else(|| panic!("{}: unit {name}: {line}", script.display()))
+        .split_whitespace()
+        .map(|p| {
+            let (k, v) = p.split_once('=').expect("P=V");
+            (k.to_string(), v.parse().expect("a number"))
+        })
+        .collect()
+}

@@ -459,23 +459,25 @@ fn rtl_pipelined_unit_passes_committed_records_with_its_latency() {
     }
 }
 
-/// The tiling of the `PIPE = 2` build that `vectors/rtl/pnr.sh bsample-pipe2` places and routes:
-/// `LUTW`, `LUTWE` (the LUT chunk limit of the edge products and E'·w; -1: `LUTW`) and `KARA`
-/// (1: those products by Karatsuba on 18 × 18 products).
-const PIPE2_TILING: (i32, i32, i32) = (8, -1, 1);
 /// Its latency: "edge E depth D" (the bench's LATENCY line).
 const PIPE2_LATENCY: &str = "edge 41 depth 87";
 
 /// The build that closes timing (`PIPE = 2`: every product `uvt_mul.v` `REG = 3`, at most one
-/// wide carry chain between registers; ECP5 18 × 18 ports and the tiling (LUT chunk limits,
-/// Karatsuba) of `pnr.sh bsample-pipe2`) reproduces every committed record with its latency, in
+/// wide carry chain between registers; the parameters of `pnr.sh bsample-pipe2`: ECP5 18 × 18
+/// ports, its LUT chunk limit and Karatsuba) reproduces every committed record with its latency, in
 /// behavioural form (`MAP = 0`) and with every hard piece an instantiated MULT18X18D (`MAP = 1`,
 /// simulated with the primitive's model `vectors/rtl/ecp5/MULT18X18D.v`). The six runs (two
 /// builds, three sets) go in parallel.
 #[test]
 fn rtl_pipe2_unit_passes_every_committed_record() {
     let dir = tempfile::tempdir().unwrap();
-    let p = |k: &'static str, v: i32| (k, v.to_string());
+    // pnr.sh's unit bsample-pipe2 (its configuration, ports, LUT chunk limit, KARA, PIPE), at
+    // MAP = 0 and 1.
+    let build = icarus::pnr_params("bsample-pipe2");
+    let names: Vec<String> = build
+        .iter()
+        .map(|(k, _)| format!("tb_bsample.{k}"))
+        .collect();
     let tbs: Vec<(u32, PathBuf)> = [0, 1]
         .into_iter()
         .map(|map| {
@@ -485,15 +487,11 @@ fn rtl_pipe2_unit_passes_every_committed_record() {
             }
             let tb = icarus::compile(
                 &dir.path().join(format!("tb-pipe2-map{map}.vvp")),
-                &[
-                    p("tb_bsample.DSP_A", 18),
-                    p("tb_bsample.DSP_B", 18),
-                    p("tb_bsample.LUTW", PIPE2_TILING.0),
-                    p("tb_bsample.LUTWE", PIPE2_TILING.1),
-                    p("tb_bsample.KARA", PIPE2_TILING.2),
-                    p("tb_bsample.PIPE", 2),
-                    p("tb_bsample.MAP", map as i32),
-                ],
+                &names
+                    .iter()
+                    .zip(&build)
+                    .map(|(n, (k, v))| (n.as_str(), if k == "MAP" { map } else { *v }.to_string()))
+                    .collect::<Vec<_>>(),
                 &srcs,
             );
             (map, tb)

@@ -83,43 +83,29 @@ fn common(top: &str, mdir: &Path) -> Vec<String> {
 }
 
 /// A build of a unit: the unit's parameters, set on the bench's top (`-G`), which passes them on.
-type Params = &'static [(&'static str, u32)];
+type Params = Vec<(String, u32)>;
 
-/// The default build (the unit's default parameters).
-const DEFAULT: Params = &[];
-
-/// The faster builds of `unit`, as `vectors/rtl/pnr.sh` places them on the ECP5 (18 × 18
-/// ports): `PIPE = 1` (units psample-pipe1, bsample) and `PIPE = 2` with every hard piece an
-/// instantiated MULT18X18D (`MAP = 1`; units psample-pipe2, bsample-pipe2).
+/// The faster builds of `unit`, those `vectors/rtl/pnr.sh` places on the ECP5 (read from its
+/// unit table): `PIPE = 1` (units psample-pipe1, bsample) and `PIPE = 2` with every hard piece
+/// an instantiated MULT18X18D (`MAP = 1`; units psample-pipe2, bsample-pipe2). The bounded
+/// units' configuration parameters (POS, TUV, OFF: the default configuration, as pnr.rs checks)
+/// are the bench's own and are left out.
 fn pipelined(unit: &str) -> [Params; 2] {
-    if unit == "bsample" {
-        [
-            &[("DSP_A", 18), ("DSP_B", 18), ("PIPE", 1)],
-            &[
-                ("DSP_A", 18),
-                ("DSP_B", 18),
-                ("LUTW", 8),
-                ("KARA", 1),
-                ("PIPE", 2),
-                ("MAP", 1),
-            ],
-        ]
+    let names = if unit == "bsample" {
+        ["bsample", "bsample-pipe2"]
     } else {
-        [
-            &[("DSP_A", 18), ("DSP_B", 18), ("PIPE", 1)],
-            &[
-                ("DSP_A", 18),
-                ("DSP_B", 18),
-                ("LUTW", 0),
-                ("PIPE", 2),
-                ("MAP", 1),
-            ],
-        ]
-    }
+        ["psample-pipe1", "psample-pipe2"]
+    };
+    names.map(|n| {
+        icarus::pnr_params(n)
+            .into_iter()
+            .filter(|(k, _)| !["POS", "TUV", "OFF"].contains(&k.as_str()))
+            .collect()
+    })
 }
 
 /// `PIPE=2 MAP=1`, "default" for none.
-fn name(params: Params) -> String {
+fn name(params: &[(String, u32)]) -> String {
     if params.is_empty() {
         return "default".into();
     }
@@ -133,7 +119,7 @@ fn name(params: Params) -> String {
 /// Verilate and build the DPI testbench of `unit` ("bsample", "psample") with the unit's RTL
 /// `rtl` and the build `params` into `dir` (a folder per build); the executable. `MAP = 1` adds
 /// the MULT18X18D instance (`uvt_mult18.v`) and the primitive's model (`mult18x18d.sv`).
-fn build_bench(dir: &Path, unit: &str, rtl: &Path, params: Params) -> PathBuf {
+fn build_bench(dir: &Path, unit: &str, rtl: &Path, params: &[(String, u32)]) -> PathBuf {
     let tag: String = params.iter().map(|(k, v)| format!("_{k}{v}")).collect();
     let mdir = dir.join(format!("obj_{unit}{tag}"));
     let mut args: Vec<String> = ["--binary", "--timing", "-o", "tb"]
@@ -145,7 +131,7 @@ fn build_bench(dir: &Path, unit: &str, rtl: &Path, params: Params) -> PathBuf {
         args.push(dpi_dir().join(f).display().to_string());
     }
     args.push(icarus::rtl_dir().join("uvt_mul.v").display().to_string());
-    if params.contains(&("MAP", 1)) {
+    if params.iter().any(|(k, v)| k == "MAP" && *v == 1) {
         args.push(format!("-I{}", icarus::rtl_dir().join("ecp5").display()));
         args.push(icarus::rtl_dir().join("uvt_mult18.v").display().to_string());
         args.push(dpi_dir().join("mult18x18d.sv").display().to_string());
@@ -240,7 +226,7 @@ fn mutant(dir: &Path, unit: &str, from: &str, to: &str) -> PathBuf {
 fn pass_and_corrupt(unit: &str, counts: &[&str]) {
     let dir = tempfile::tempdir().unwrap();
     let rtl = icarus::rtl_dir().join(format!("uvt_{unit}.v"));
-    let tb = build_bench(dir.path(), unit, &rtl, DEFAULT);
+    let tb = build_bench(dir.path(), unit, &rtl, &[]);
     let n = samples(unit);
     let out = bench(&tb, &[&format!("+N={n}")]);
     assert_eq!(count(&out, "samples"), n, "{out}");
@@ -262,9 +248,9 @@ fn pass_and_corrupt(unit: &str, counts: &[&str]) {
     // the same), after a longer latency (the bench checks it against the unit's LAT); a
     // corrupted expected depth fails.
     for params in pipelined(unit) {
-        let tb = build_bench(dir.path(), unit, &rtl, params);
+        let tb = build_bench(dir.path(), unit, &rtl, &params);
         let p = bench(&tb, &[&format!("+N={n}")]);
-        let build = name(params);
+        let build = name(&params);
         assert_eq!(
             line(&p, "PASS "),
             line(&out, "PASS "),
@@ -315,7 +301,7 @@ fn readme_examples(tb: &Path) {
 fn mutated(unit: &str, from: &str, to: &str, field: &str) {
     let dir = tempfile::tempdir().unwrap();
     let rtl = mutant(dir.path(), unit, from, to);
-    let tb = build_bench(dir.path(), unit, &rtl, DEFAULT);
+    let tb = build_bench(dir.path(), unit, &rtl, &[]);
     assert_fail(&bench(&tb, &[&format!("+N={}", samples(unit))]), field);
 }
 
