@@ -57,10 +57,16 @@ def build_pipe(out: str, repo: Optional[str] = None, mutant: Optional[str] = Non
         unit = unit.replace(a, b)
     (outp / "uvt_bsample.v").write_text(unit)
     srcs = [dpi / "rtl.vlt", rtl / "uvt_mul.v", outp / "uvt_bsample.v", dpi / "pipe.cpp"]
-    stamp = hashlib.sha256(b"".join(p.read_bytes() for p in srcs)).hexdigest()
+    # The stamp covers the sources' paths and contents: Verilator's makefiles name the sources
+    # by path, so a build from another checkout (or of other sources) is not reused, and a
+    # rebuild starts from an empty folder rather than from another build's objects.
+    stamp = hashlib.sha256(b"".join(str(p).encode() + b"\0" + p.read_bytes()
+                                    for p in srcs)).hexdigest()
     exe = outp / "obj" / "pipe"
     if exe.is_file() and (outp / "stamp").is_file() and (outp / "stamp").read_text() == stamp:
         return exe
+    (outp / "stamp").unlink(missing_ok=True)
+    shutil.rmtree(outp / "obj", ignore_errors=True)
     args = ["verilator", "--cc", "--exe", "--build", "-j", str(jobs), "+1364-2005ext+v",
             "--top-module", "uvt_bsample", "--Mdir", str(outp / "obj"), "-o", "pipe",
             *map(str, srcs)]
