@@ -16,9 +16,10 @@ rustup component add clippy rustfmt >/dev/null 2>&1 || true
 rustc --version
 # Debian packages: qemu-system-arm (the Cortex-M4F and Cortex-M3 runs), iverilog (the RTL testbench),
 # verilator (the DPI-C testbenches and the C++ harness of vectors/dpi), python3-venv (`python3 -m
-# venv` for the cocotb test's venv, tests/tests/external/cocotb.rs; its pip needs PyPI).
+# venv` for the cocotb test's venv, tests/tests/external/cocotb.rs; its pip needs PyPI), yosys (the
+# mutation sample, tests/tests/external/mutation.rs: Yosys `mutate`).
 missing=()
-for pkg in qemu-system-arm iverilog verilator python3-venv; do
+for pkg in qemu-system-arm iverilog verilator python3-venv yosys; do
   dpkg -s "$pkg" >/dev/null 2>&1 || missing+=("$pkg")
 done
 if [ ${#missing[@]} -gt 0 ]; then

@@ -15,6 +15,7 @@
 #   precision                reads m4.json, synth.json, pnr.json
 #   bench-ste-*, bench-zmax-*, converge
 #                            read m4_strategies.json (bench-zmax also m4_zmax.json)
+#   mutation                 Yosys mutate + Verilator: host/report/mutation.{json,md}, mutation/*.jsonl
 #   docs                     `uvt splice`: every `<!-- report:begin FILE#SECTION -->` block of
 #                            README.md and docs/*.md becomes its part of the report
 #
@@ -64,6 +65,7 @@ steps=(
   "bench-zmax-quick;-;12 s (docs/performance.md);host/report/bench-zmax-quick.{md,json};uvt bench-zmax --quick --json host/report/bench-zmax-quick.json > host/report/bench-zmax-quick.md"
   "bench-zmax-full;-;4m49s (docs/performance.md);host/report/bench-zmax-full.{md,json};uvt bench-zmax --json host/report/bench-zmax-full.json > host/report/bench-zmax-full.md"
   "converge;-;15 s (docs/performance.md);host/report/converge/converge.{md,json,svg};uvt converge --out host/report/converge"
+  "mutation;yosys verilator;RECORDED (docs/mutation.md);host/report/mutation.{json,md}, host/report/mutation/*.jsonl;python -m uvt.mutation run, prove, stream, report --markdown (target/py-venv's Python, or UVT_PYTHON)"
   "docs;-;not recorded (under 1 s);README.md, docs/*.md (report blocks);uvt splice"
 )
 
@@ -253,6 +255,19 @@ step_converge() {
   uvt converge --out "$tmp/converge" >/dev/null
   publish host/report/converge "$tmp/converge/converge.md" "$tmp/converge/converge.json" \
     "$tmp/converge/converge.svg"
+}
+# The mutation flow (docs/mutation.md) in the Python module's venv (tests/run.sh makes it; the
+# flow itself needs only yosys and verilator): every stage writes into the temporary folder.
+step_mutation() {
+  local py=${UVT_PYTHON:-target/py-venv/bin/python}
+  local js=$tmp/mutation.json
+  run "$py" -m uvt.mutation run --json "$js" >&2
+  run "$py" -m uvt.mutation prove --json "$js" >&2
+  run "$py" -m uvt.mutation stream --json "$js" >&2
+  run "$py" -m uvt.mutation report --json "$js" --markdown "$tmp/mutation.md" >&2
+  run mkdir -p host/report/mutation
+  publish host/report/mutation "$tmp"/mutation/*.jsonl
+  publish host/report "$js" "$tmp/mutation.md"
 }
 step_docs() { uvt splice; }
 

@@ -5,6 +5,7 @@
 //   +SET=<dir>     the vector set (setup_out.hex, bounds_in.hex, bounds_out.hex; counted here)
 //   +SEED=<n>      the bubble pattern's seed (default 1); +BUBBLES=<percent> (default 25)
 //   +DRAIN=<k>     clocks to wait for the last results (default 200)
+//   +STOP=1      end at the first mismatching field: "STOP record <r> field <name>", exit 1
 //   +JUNK=1        unknowns (x) on every data port during bubbles (slower: ~5x under Icarus)
 // Parameters (iverilog -P tb_bounds.X=…): BND, TUV, DSP_A, DSP_B, PIPE, MAP the unit's
 // (uvt_bounds.v; MAP = 1 needs uvt_mult18.v and the primitive's model ecp5/MULT18X18D.v);
@@ -103,6 +104,8 @@ module tb_bounds;
         end
     endtask
 
+    integer stop_first = 0;          // +STOP=1: end at the first mismatching field
+
     task check(input integer rec, input [8*8-1:0] name, input [31:0] exp, input [31:0] obs);
         begin
             if (exp !== obs) begin
@@ -111,6 +114,10 @@ module tb_bounds;
                     $display("MISMATCH record %0d (line %0d) field %0s: expected %h (%0d) observed %h (%0d)",
                              rec, rec + 1, name, exp, $signed(exp), obs, $signed(obs));
                     show_inputs(rec);
+                end
+                if (stop_first == 1) begin
+                    $display("STOP record %0d field %0s", rec, name);
+                    $fatal(1, "%m: the first mismatch (+STOP=1)");
                 end
             end
         end
@@ -180,6 +187,7 @@ module tb_bounds;
         if (!$value$plusargs("SEED=%d", seed)) seed = 1;
         if (!$value$plusargs("BUBBLES=%d", bubbles)) bubbles = 25;
         if (!$value$plusargs("DRAIN=%d", drain) || drain < 1) drain = 200;
+        if (!$value$plusargs("STOP=%d", stop_first)) stop_first = 0;
         if (!$value$plusargs("JUNK=%d", junk_on)) junk_on = 0;
         $sformat(fname, "%0s/setup_out.hex", dir);
         count_file(fname);

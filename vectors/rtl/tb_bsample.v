@@ -2,6 +2,7 @@
 // compares every output field with bsample_out.hex. Plusargs:
 //   +IN=<bsample_in.hex> +OUT=<bsample_out.hex> +N=<records>
 //   +STRIDE=<k>  test records 0, k, 2k, … (default 1: every record)
+//   +STOP=1      end at the first mismatching field: "STOP record <r> field <name>", exit 1
 // Parameters (iverilog -P tb_bsample.OFF=24 …) set the unit's configuration; a record of
 // another configuration is a failure (its off_shift / pos_frac / tuv_frac fields name it).
 // MOTION, DEFOCUS select the unit variant: a record whose class (word 31 bits 1..0; bit 0
@@ -79,6 +80,8 @@ module tb_bsample;
         end
     endtask
 
+    integer stop_first = 0;          // +STOP=1: end at the first mismatching field
+
     task check(input integer rec, input [8*8-1:0] name, input [63:0] exp, input [63:0] obs);
         begin
             if (exp !== obs) begin
@@ -87,6 +90,10 @@ module tb_bsample;
                     $display("MISMATCH record %0d (line %0d) field %0s: expected %h observed %h",
                              rec, rec + 1, name, exp, obs);
                     show_inputs(rec);
+                end
+                if (stop_first == 1) begin
+                    $display("STOP record %0d field %0s", rec, name);
+                    $fatal(1, "%m: the first mismatch (+STOP=1)");
                 end
             end
         end
@@ -133,6 +140,7 @@ module tb_bsample;
         end
         if (!$value$plusargs("STRIDE=%d", stride) || stride < 1) stride = 1;
         if (!$value$plusargs("DRAIN=%d", drain) || drain < 1) drain = 200;
+        if (!$value$plusargs("STOP=%d", stop_first)) stop_first = 0;
         if (n > MAXREC) begin
             $display("FAIL %0d records exceed MAXREC %0d", n, MAXREC);
             $fatal(1, "tb_bsample: see the FAIL line above");

@@ -8,7 +8,8 @@
 //   iverilog -g2005 -Ptb_mul.AW=18 -Ptb_mul.BW=32 [-Ptb_mul.PA=25 -Ptb_mul.PB=18 -Ptb_mul.LW=8
 //     -Ptb_mul.REG=0] uvt_mul.v tb_mul.v
 //   REG = 3: -Ptb_mul.REG=3 -Ptb_mul.LAT=n [-Ptb_mul.MAP=1 uvt_mult18.v ecp5/MULT18X18D.v]
-//   vvp -n a.out [+SEED=n] [+NR=n]
+//   vvp -n a.out [+SEED=n] [+NR=n] [+STOP=1: end at the first wrong product, "STOP record <n> field p"]
+//   -DUVT_ARCH_ONLY: instantiate uvt_mul without parameters (a unit built elsewhere: a netlist)
 `timescale 1ns / 1ps
 module tb_mul;
     parameter AW = 18;
@@ -24,7 +25,12 @@ module tb_mul;
     reg  signed [AW-1:0] a;
     reg  signed [BW-1:0] b;
     wire signed [AW+BW-1:0] p;
+`ifdef UVT_ARCH_ONLY
+    uvt_mul dut (.a(a), .b(b), .p(p), .clk(clk));  // a unit built elsewhere (no parameter passed)
+`else
     uvt_mul #(.AW(AW), .BW(BW), .PA(PA), .PB(PB), .LW(LW), .REG(REG), .LAT(LAT), .MAP(MAP)) dut (.a(a), .b(b), .p(p), .clk(clk));
+`endif
+    integer stop_first = 0;            // +STOP=1: end at the first wrong product
     reg signed [AW+BW-1:0] want;
     reg signed [AW-1:0] ca [0:5];
     reg signed [BW-1:0] cb [0:5];
@@ -47,6 +53,10 @@ module tb_mul;
                 if (bad <= 10)
                     $display("MISMATCH %0d×%0d a=%0d (%h) b=%0d (%h): expected %0d (%h) observed %0d (%h)",
                              AW, BW, a, a, b, b, want, want, p, p);
+                if (stop_first == 1) begin
+                    $display("STOP record %0d field p", n - 1);
+                    $fatal(1, "tb_mul: the first wrong product (+STOP=1)");
+                end
             end
         end
     endtask
@@ -69,6 +79,10 @@ module tb_mul;
                         $display("MISMATCH %0d×%0d a=%0d (%h) b=%0d (%h): expected %0d (%h) observed %0d (%h)",
                                  AW, BW, ha[(fed - LAT) % H], ha[(fed - LAT) % H],
                                  hb[(fed - LAT) % H], hb[(fed - LAT) % H], want, want, p, p);
+                    if (stop_first == 1) begin
+                        $display("STOP record %0d field p", n - 1);
+                        $fatal(1, "tb_mul: the first wrong product (+STOP=1)");
+                    end
                 end
             end
         end
@@ -76,6 +90,7 @@ module tb_mul;
     initial begin
         if (!$value$plusargs("SEED=%d", seed)) seed = 7;
         if (!$value$plusargs("NR=%d", nr)) nr = 2000;
+        if (!$value$plusargs("STOP=%d", stop_first)) stop_first = 0;
         n = 0;
         bad = 0;
         fed = 0;
@@ -95,11 +110,15 @@ module tb_mul;
         end
         // REG = 3: LAT − 1 more clocks (the last pair fed again) bring out the last products.
         if (REG == 3) repeat (LAT - 1) check;
+`ifdef UVT_ARCH_ONLY
+        if (bad == 0) $display("PASS %0d products %0dx%0d", n, AW, BW);
+`else
         if (bad == 0)
             $display("PASS %0d products %0dx%0d: %0d hard multipliers, %0d LUT bits (swap %0d, lut-x %0d, lut-y %0d)",
                      n, AW, BW, dut.XN * dut.YN,
                      dut.LX ? dut.XH * dut.YW : (dut.LY ? dut.YH * dut.XW : 0),
                      dut.SWAP, dut.LX, dut.LY);
+`endif
         else
             $display("FAIL %0d of %0d products %0dx%0d (SEED=%0d)", bad, n, AW, BW, seed);
         // A failing bench ends with a non-zero exit status of vvp, a passing one with 0.

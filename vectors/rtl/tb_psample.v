@@ -1,6 +1,7 @@
 // Testbench of uvt_psample: streams psample_in.hex records into the unit, one per clock, and
 // compares every output field with psample_out.hex. Plusargs:
 //   +IN=<psample_in.hex> +OUT=<psample_out.hex> +N=<records>
+//   +STOP=1      end at the first mismatching field: "STOP record <r> field <name>", exit 1
 // The unit reads only the setup fields (n, σ, G, f), the viewport and the position of a record;
 // the raw vertices (words 0..11) are for the checker (`uvt vectors check`).
 // Prints "LATENCY <clocks> clocks" (the first sample's), then "PASS <n> records" or "FAIL <errors>
@@ -71,6 +72,8 @@ module tb_psample;
         end
     endtask
 
+    integer stop_first = 0;          // +STOP=1: end at the first mismatching field
+
     task check(input integer rec, input [8*8-1:0] name, input [63:0] exp, input [63:0] obs);
         begin
             if (exp !== obs) begin
@@ -79,6 +82,10 @@ module tb_psample;
                     $display("MISMATCH record %0d (line %0d) field %0s: expected %h observed %h",
                              rec, rec + 1, name, exp, obs);
                     show_inputs(rec);
+                end
+                if (stop_first == 1) begin
+                    $display("STOP record %0d field %0s", rec, name);
+                    $fatal(1, "%m: the first mismatch (+STOP=1)");
                 end
             end
         end
@@ -107,6 +114,7 @@ module tb_psample;
             $fatal(1, "tb_psample: see the FAIL line above");
         end
         if (!$value$plusargs("DRAIN=%d", drain) || drain < 1) drain = 200;
+        if (!$value$plusargs("STOP=%d", stop_first)) stop_first = 0;
         if (n > MAXREC) begin
             $display("FAIL %0d records exceed MAXREC %0d", n, MAXREC);
             $fatal(1, "tb_psample: see the FAIL line above");

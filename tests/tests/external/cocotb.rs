@@ -85,7 +85,7 @@ fn module_sources_hash() -> String {
 
 /// The Python to run the benches with (see the module's comment), after installing what is
 /// missing or out of date.
-fn venv_python() -> PathBuf {
+pub(super) fn venv_python() -> PathBuf {
     static PY: OnceLock<PathBuf> = OnceLock::new();
     PY.get_or_init(|| {
         let target = std::env::var("CARGO_TARGET_DIR")

@@ -11,6 +11,7 @@ mod dpi;
 mod ffi_c;
 mod m4_qemu;
 mod mul;
+mod mutation;
 mod pnr;
 mod psample;
 mod reports;

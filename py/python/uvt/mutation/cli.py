@@ -1,0 +1,206 @@
+"""``python -m uvt.mutation``: mutate the reference units and judge the mutants.
+
+- ``run``: list ``--mutants`` mutations (default 1000, ``--seed`` 1) of every build of
+  :data:`.units.BUILDS` (or ``--builds``) and judge them with the committed vector sets; each
+  build's mutants go to ``host/report/mutation/<build>.jsonl`` as soon as it is done.
+- ``prove``: try to prove each survivor equivalent (Yosys ``sat -tempinduct``, ``--timeout``
+  seconds each).
+- ``stream``: run each survivor still unproven through the seeded stream on Dask
+  (``--records``; units with a stream runner).
+- ``report``: the summary ``host/report/mutation.json`` from the per-build files (every stage
+  writes it too).
+- ``check``: mutants 1..``--sample`` of each default build judged again and compared with the
+  committed per-build files: a mutant the report says a set kills must still be killed by it, at
+  the same record and field.
+
+Exit status 0 on success, 1 when ``check`` finds a difference, 2 on bad input or a failed tool.
+"""
+
+from __future__ import annotations
+
+import argparse
+import subprocess
+import sys
+import time
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+from typing import List, Optional
+
+from . import design, equiv, flow, report, stream, units
+from .errors import MutationError
+
+DEFAULT_BUILDS = ("bsample", "psample", "bounds", "mul31")
+
+
+def _repo(given: Optional[str]) -> Path:
+    for c in ([given] if given else [".", ".."]):
+        p = Path(c).resolve()
+        if (p / "vectors" / "rtl" / "pnr.sh").is_file():
+            return p
+    raise MutationError("no uvt checkout (vectors/rtl/pnr.sh) here: give --repo")
+
+
+def _tool(cmd: List[str]) -> str:
+    try:
+        out = subprocess.run(cmd, capture_output=True, text=True).stdout
+    except FileNotFoundError as e:
+        raise MutationError(f"{cmd[0]} not found (tests/run.sh installs it)") from e
+    return (out.strip().splitlines() or ["?"])[0]
+
+
+def _parser() -> argparse.ArgumentParser:
+    ap = argparse.ArgumentParser(prog="python -m uvt.mutation",
+                                 description=__doc__.split("\n")[0])
+    sub = ap.add_subparsers(dest="cmd", required=True)
+    for name in ("run", "prove", "stream", "report", "check"):
+        p = sub.add_parser(name)
+        p.add_argument("--repo", default=None, help="uvt checkout (default: here)")
+        p.add_argument("--builds", default=None,
+                       help=f"comma-separated builds of pnr.sh's table (default: "
+                            f"{','.join(DEFAULT_BUILDS if name == 'check' else units.BUILDS)})")
+        p.add_argument("--mutants", type=int, default=1000, help="mutants listed per build")
+        p.add_argument("--seed", type=int, default=1, help="mutate -seed")
+        p.add_argument("--jobs", type=int, default=2, help="simulations or proofs at once")
+        p.add_argument("--work", default="target/mutation", help="build folder")
+        p.add_argument("--json", default="host/report/mutation.json", help="the report")
+    sub.choices["report"].add_argument("--markdown", default=None,
+                                       help="also write the docs table to this file")
+    for name in ("run", "prove", "stream", "report"):
+        sub.choices[name].add_argument(
+            "--own", default=None, metavar="LIKE:TOP:FILE[,FILE…]",
+            help="your unit instead (judged by the bench of the reference unit LIKE: "
+                 "bsample, psample, bounds, mul; give --json a report of your own)")
+    sub.choices["check"].add_argument("--sample", type=int, default=50,
+                                      help="mutants 1..N of each build's list")
+    for name, n in (("run", 2), ("check", 1)):
+        sub.choices[name].add_argument(
+            "--cross", type=int, default=n,
+            help=f"killed mutants and survivors each judged again by Icarus (default {n})")
+    sub.choices["prove"].add_argument("--timeout", type=float, default=60.0,
+                                      help="seconds per proof")
+    sub.choices["prove"].add_argument("--depth", type=int, default=120,
+                                      help="largest induction length")
+    sub.choices["stream"].add_argument("--records", type=int, default=10**6,
+                                       help="stream records per survivor")
+    sub.choices["stream"].add_argument("--per-shard", type=int, default=20000)
+    sub.choices["stream"].add_argument("--stream-seed", type=int, default=1)
+    return ap
+
+
+def main(argv: Optional[List[str]] = None) -> int:
+    a = _parser().parse_args(argv)
+    try:
+        repo = _repo(a.repo)
+        names = a.builds.split(",") if a.builds else list(
+            DEFAULT_BUILDS if a.cmd == "check" else units.BUILDS)
+        if a.mutants < 1 or (a.cmd == "check" and not 1 <= a.sample <= a.mutants):
+            raise MutationError(f"--mutants {a.mutants}, --sample: need 1 ≤ sample ≤ mutants")
+        blds = [units.build(repo, n) for n in names]
+        if a.cmd != "check" and a.own:
+            blds = [units.own(a.own)]
+        work = (repo / a.work).resolve()
+        js = repo / a.json
+        per = js.parent / js.stem
+        if a.cmd == "check":
+            return _check(repo, blds, a, work, per)
+        meta = {"version": 1, "seed": a.seed, "mutants_per_build": a.mutants,
+                "command": "bash host/report/regen.sh --only mutation",
+                "yosys": _tool(["yosys", "-V"]), "verilator": _tool(["verilator", "--version"]),
+                "mode": "architectural: each bench's -DUVT_ARCH_ONLY / -DUVT_DUT form",
+                "runs": {}}
+        every = blds if a.cmd != "check" and a.own else [units.build(repo, n) for n in units.BUILDS]
+        for b in blds:
+            if a.cmd == "run":
+                r = flow.run_build(repo, b, a.mutants, a.seed, work / b.name, a.jobs,
+                                   cross=a.cross)
+                report.save(per, b.name, [x.to_json() for x in r.results])
+                meta["runs"][b.name] = {"sets": r.sizes, "seconds": round(r.seconds, 1)}
+            elif a.cmd == "prove":
+                _prove(repo, b, a, work, per)
+            elif a.cmd == "stream":
+                _stream(repo, b, a, work, per)
+            report.write(repo, every, js, per, meta)
+        rep = report.write(repo, every, js, per, meta)
+        if a.cmd == "report" and a.markdown:
+            report.write_atomic(Path(a.markdown), report.markdown(rep))
+        for row in rep["builds"]:
+            print(f"{row['build']:14} {row['mutants']:5} mutants  vectors {row['killed_by_vectors']:5}"
+                  f"  equivalent {row['equivalent']:4}  stream {row['killed_by_stream']:4}"
+                  f"  survivors {row['survivors']:4}")
+        return 0
+    except MutationError as e:
+        print(f"uvt.mutation: {e}", file=sys.stderr)
+        return 2
+
+
+def _prove(repo: Path, b, a, work: Path, per: Path) -> None:
+    rows = report.load(per, b.name)
+    todo = [r for r in rows if report.fate(r) == "survivor" and "equivalent" not in r]
+    if not todo:
+        return
+    net = design.single(repo, b, None, work / f"prove-{b.name}")
+    t0 = time.time()
+
+    def one(r):
+        t = time.time()
+        v = equiv.prove(repo, b, design.from_row(r), net, work / f"prove-{b.name}" / str(r["id"]),
+                        a.depth, a.timeout)
+        r["equivalent"] = v if v else "undecided"
+        r["equiv_seconds"] = round(time.time() - t, 1)
+        return r
+
+    with ThreadPoolExecutor(max_workers=a.jobs) as ex:
+        for i, _ in enumerate(ex.map(one, todo)):
+            if (i + 1) % 20 == 0:
+                report.save(per, b.name, rows)
+    report.save(per, b.name, rows)
+    c = sum(r.get("equivalent") == "proven" for r in todo)
+    print(f"{b.name}: {c} of {len(todo)} survivors proven equivalent ({time.time() - t0:.0f} s)")
+
+
+def _stream(repo: Path, b, a, work: Path, per: Path) -> None:
+    if not stream.has_stream(b):
+        return
+    rows = report.load(per, b.name)
+    todo = [r for r in rows if report.fate(r) == "survivor"]
+    if not todo:
+        return
+    d = work / f"stream-{b.name}"
+    ids = {r["id"] for r in todo}
+    muts = [m for m in design.make(repo, b, a.mutants, a.seed, d) if m.id in ids]
+    exe = stream.build_runner(repo, b, design.netlist(repo, b, muts, a.mutants, d), d, a.jobs)
+    shards = max(1, a.records // a.per_shard)
+    got = stream.kill(b, exe, [r["id"] for r in todo], a.stream_seed, shards, a.per_shard,
+                      a.jobs)
+    for r in todo:
+        v = got.get(r["id"])
+        r["stream"] = v if v is not None else "alive"
+        r["stream_records"] = shards * a.per_shard
+    report.save(per, b.name, rows)
+
+
+def _check(repo: Path, blds, a, work: Path, per: Path) -> int:
+    bad = 0
+    for b in blds:
+        want = {d["id"]: d for d in report.load(per, b.name)}
+        if not want:
+            raise MutationError(f"{per}/{b.name}.jsonl: no committed results of {b.name} "
+                                "(bash host/report/regen.sh --only mutation)")
+        r = flow.run_build(repo, b, a.mutants, a.seed, work / f"check-{b.name}", a.jobs, a.sample,
+                           a.cross)
+        for x in r.results:
+            got, exp = x.to_json(), want.get(x.mutation.id)
+            if exp is None or got["mutate"] != exp.get("mutate"):
+                print(f"{b.name} mutant {x.mutation.id}: the list is not the committed one "
+                      f"(the RTL or yosys changed): bash host/report/regen.sh --only mutation")
+                bad += 1
+                continue
+            keys = ("killed_by", "record", "field")
+            if any(got.get(k) != exp.get(k) for k in keys):
+                print(f"{b.name} mutant {x.mutation.id} ({x.mutation.alone()}): committed "
+                      f"{ {k: exp.get(k) for k in keys} }, now { {k: got.get(k) for k in keys} }")
+                bad += 1
+        print(f"{b.name}: mutants 1..{a.sample}, {sum(x.killed for x in r.results)} killed, "
+              f"{len(r.results)} compared with {b.name}.jsonl")
+    print(f"{'PASS' if bad == 0 else 'FAIL'}: {bad} differences from the committed report")
+    return 0 if bad == 0 else 1

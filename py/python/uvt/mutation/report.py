@@ -1,0 +1,120 @@
+"""The mutation report. Each build's mutants are kept one per line in
+``host/report/mutation/<build>.jsonl`` (what the mutation changes; ``killed_by``: the committed
+set that kills it, with ``record`` and ``field``; ``equivalent``: ``proven`` when Yosys proves it
+equivalent, ``differs`` when Yosys finds free inputs that tell it apart; ``stream``: the seeded
+stream's record and field that kill it, or ``alive`` after ``stream_records``), and the summary
+``host/report/mutation.json`` is made from those files alone. Every file is written whole or not
+at all."""
+
+from __future__ import annotations
+
+import json
+import os
+import statistics
+from collections import Counter
+from pathlib import Path
+from typing import Dict, List
+
+from .units import Build
+
+
+def write_atomic(path: Path, text: str) -> None:
+    """Write ``text`` to ``path`` through a temporary file and a rename."""
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = path.with_suffix(path.suffix + ".tmp")
+    tmp.write_text(text)
+    os.replace(tmp, path)
+
+
+def load(per: Path, name: str) -> List[Dict]:
+    """The mutants of build ``name`` in ``per`` (``[]`` when it has none yet)."""
+    f = per / f"{name}.jsonl"
+    return [json.loads(x) for x in f.read_text().splitlines()] if f.is_file() else []
+
+
+def save(per: Path, name: str, rows: List[Dict]) -> None:
+    """Write build ``name``'s mutants to ``per``."""
+    write_atomic(per / f"{name}.jsonl",
+                 "".join(json.dumps(r, sort_keys=True) + "\n" for r in rows))
+
+
+def fate(r: Dict) -> str:
+    """A mutant's place in the report: ``vectors``, ``equivalent``, ``stream`` or ``survivor``."""
+    if r.get("killed_by"):
+        return "vectors"
+    if r.get("equivalent") == "proven":
+        return "equivalent"
+    if isinstance(r.get("stream"), dict):
+        return "stream"
+    return "survivor"
+
+
+def summary(b: Build, rows: List[Dict], meta: Dict) -> Dict:
+    """The report's row of build ``b`` from its mutants ``rows``."""
+    by = Counter(fate(r) for r in rows)
+    killed = [r for r in rows if r.get("killed_by")]
+    rtk = [r["records_to_kill"] for r in killed]
+    left = [r for r in rows if fate(r) == "survivor"]
+    streamed = [r for r in rows if r.get("stream") is not None]
+    nonequiv = len(rows) - by["equivalent"]
+    return {
+        "build": b.name,
+        "unit": b.top,
+        "params": dict(b.params),
+        "checked": b.bench.checked,
+        "sets": meta.get("sets", {}),
+        "mutants": len(rows),
+        "modes": dict(sorted(Counter(r["mode"] for r in rows).items())),
+        "killed_by_vectors": by["vectors"],
+        "killed_by_set": dict(Counter(r["killed_by"] for r in killed)),
+        "equivalent": by["equivalent"],
+        "killed_by_stream": by["stream"],
+        "stream_records": max((r.get("stream_records", 0) for r in streamed), default=0),
+        "survivors": by["survivor"],
+        "survivors_not_proven": {
+            "differs_on_free_inputs": sum(r.get("equivalent") == "differs" for r in left),
+            "undecided": sum(r.get("equivalent") not in ("differs",) for r in left),
+        },
+        "score_vectors": round(by["vectors"] / nonequiv, 4) if nonequiv else None,
+        "records_to_kill": {"median": statistics.median(rtk) if rtk else None,
+                            "largest": max(rtk) if rtk else None},
+        "seconds": meta.get("seconds"),
+    }
+
+
+def write(repo: Path, builds: List[Build], out_json: Path, per: Path, meta: Dict) -> Dict:
+    """The summary of every build of ``builds`` that has mutants in ``per``, written to
+    ``out_json``; the summary."""
+    rep = dict(meta)
+    old = {}
+    if out_json.is_file():
+        old = {r["build"]: r for r in json.loads(out_json.read_text()).get("builds", [])}
+    runs = meta.get("runs", {})
+    rep.pop("runs", None)
+    rep["builds"] = []
+    for b in builds:
+        rows = load(per, b.name)
+        if rows:
+            m = runs.get(b.name) or {k: old.get(b.name, {}).get(k) for k in ("sets", "seconds")}
+            rep["builds"].append(summary(b, rows, m))
+    write_atomic(out_json, json.dumps(rep, indent=1) + "\n")
+    return rep
+
+
+def markdown(rep: Dict) -> str:
+    """The report as the table of docs/mutation.md."""
+    head = ("| build | unit outputs checked | mutants | killed by the committed sets | "
+            "proven equivalent | killed by the stream | survivors | score (killed ÷ not "
+            "equivalent) | records to kill: median, largest |\n"
+            "|---|---|---|---|---|---|---|---|---|\n")
+    rows = []
+    for r in rep["builds"]:
+        sets = ", ".join(f"{k} {v}" for k, v in r["killed_by_set"].items())
+        stream = (f"{r['killed_by_stream']} (of {r['stream_records']:,} records each)"
+                  if r["stream_records"] else "no stream run")
+        score = f"{100 * r['score_vectors']:.1f}%" if r["score_vectors"] is not None else "–"
+        rtk = r["records_to_kill"]
+        rows.append(f"| {r['build']} | {r['checked']} | {r['mutants']} | "
+                    f"{r['killed_by_vectors']} ({sets}) | {r['equivalent']} | {stream} | "
+                    f"{r['survivors']} | {score} | {rtk['median']}, {rtk['largest']} |")
+    return head + "\n".join(rows) + "\n"
