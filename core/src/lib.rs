@@ -44,6 +44,7 @@ pub mod arith;
 #[macro_use]
 pub mod bounds;
 pub mod config;
+pub mod coverage;
 pub mod error;
 pub mod input;
 pub mod raster;

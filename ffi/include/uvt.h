@@ -214,6 +214,43 @@ uint32_t uvt_version(void);
 uint32_t uvt_format_version(void);
 
 /**
+ * The number of coverage bins (indices 0..this; the counts arrays of [`uvt_coverage`] have
+ * this length).
+ */
+uint32_t uvt_coverage_bins(void);
+
+/**
+ * The name of bin `index` (`kind.what`, a NUL-terminated static string), or null for an index
+ * out of range.
+ */
+const char *uvt_coverage_bin_name(uint32_t index);
+
+/**
+ * The record kind (`UVT_KIND_*`) whose test reports bin `index`, or `UVT_ERR_KIND` for an index
+ * out of range.
+ */
+int32_t uvt_coverage_bin_kind(uint32_t index);
+
+/**
+ * Why no input reaches bin `index` (a NUL-terminated static string), or null for a reachable
+ * bin or an index out of range.
+ */
+const char *uvt_coverage_bin_unreachable(uint32_t index);
+
+/**
+ * Add to `counts` (`counts_len` ≥ [`uvt_coverage_bins`] words, indexed by bin) the bins the
+ * model's test takes deciding the `n_records` input records of kind `kind` (`UVT_KIND_BSAMPLE`
+ * or `UVT_KIND_PSAMPLE`) stored one after the other in `records` (`records_len` = `n_records`
+ * times the kind's input words, at most 2^16 words per call: the counts add up, so a long set
+ * is counted by calls in turn). Returns the number of bins (> 0) or a `UVT_ERR_*` code (a
+ * record the model refuses: `UVT_ERR_INPUT`, naming its index).
+ *
+ * # Safety
+ * `records` points to `records_len` readable `u32`s and `counts` to `counts_len` writable ones.
+ */
+int32_t uvt_coverage(uint32_t kind, const uint32_t *records, size_t records_len, size_t n_records, uint32_t *counts, size_t counts_len);
+
+/**
  * The message of the last call on this thread that failed ("" after a success): what was
  * refused, naming the field. Valid until the next call into the library on this thread.
  */

@@ -12,7 +12,9 @@
 //! - **typed** ([`typed`]): triangle + viewport + configuration → a handle; handle + sample →
 //!   coverage, depth and edge values;
 //! - **streams** ([`stream`]): `uvt_gen`, record `i` of a seeded stream, as `uvt vectors gen`
-//!   writes it.
+//!   writes it;
+//! - **coverage** ([`coverage`]): the model's coverage bins and `uvt_coverage`, the bins its
+//!   tests take on records.
 //!
 //! Every function returns [`UVT_OK`] or a negative `UVT_ERR_*` code; `uvt_last_error()` then
 //! names what was refused (the field, like `uvt vectors check`). **No panic crosses the
@@ -28,6 +30,7 @@
 #![deny(missing_docs)]
 
 pub mod consts;
+pub mod coverage;
 pub mod error;
 pub mod records;
 pub mod stream;

@@ -415,9 +415,12 @@ fn stream_config(kind: &str, config: Option<&str>) -> PyResult<Option<String>> {
 
 /// Input records of the seeded stream (kind, config, seed): indices of shard `shard` = (K, M)
 /// of `count` records (None: all), `spp` samples per resolve record; (n, in_words) uint32.
-/// The same records as `uvt vectors gen --shard K/M` and the C library's `uvt_gen`.
+/// The same records as `uvt vectors gen --shard K/M` and the C library's `uvt_gen`; `target`:
+/// bin names to bias the stream toward (`uvt vectors gen --target-bins`; still seeded and
+/// shard-invariant).
 #[pyfunction]
-#[pyo3(signature = (kind, config, seed, count, shard=None, spp=16))]
+#[pyo3(signature = (kind, config, seed, count, shard=None, spp=16, target=None))]
+#[allow(clippy::too_many_arguments)]
 fn gen<'py>(
     py: Python<'py>,
     kind: &str,
@@ -426,6 +429,7 @@ fn gen<'py>(
     count: u64,
     shard: Option<(u64, u64)>,
     spp: u32,
+    target: Option<Vec<String>>,
 ) -> PyResult<Bound<'py, PyArray2<u32>>> {
     let k = kind_of(kind)?;
     let sh = match shard {
@@ -442,6 +446,9 @@ fn gen<'py>(
             config_err(e)
         }
     })?;
+    let s = s
+        .targeting(target.as_deref().unwrap_or(&[]))
+        .map_err(input_err)?;
     let range = sh.range(count);
     let n = usize::try_from(range.end - range.start)
         .map_err(|_| input_err(format!("count = {count}: too many records")))?;
@@ -532,6 +539,47 @@ fn run<'py>(
     let w = k.words_out() as usize;
     let a = Array2::from_shape_vec((ins.len(), w), out).map_err(|e| input_err(e.to_string()))?;
     Ok(PyArray2::from_owned_array(py, a))
+}
+
+/// The model's coverage bins: (name, record kind, why unreachable or None), every bin of the
+/// registry (`uvt_core::coverage`), or those of `kind`.
+#[pyfunction]
+#[pyo3(signature = (kind=None))]
+fn coverage_bins(
+    kind: Option<&str>,
+) -> PyResult<Vec<(&'static str, &'static str, Option<&'static str>)>> {
+    if let Some(k) = kind {
+        kind_of(k)?;
+    }
+    Ok(uvt_core::coverage::Bin::ALL
+        .iter()
+        .filter(|b| kind.is_none_or(|k| b.kind() == k))
+        .map(|b| (b.name(), b.kind(), b.unreachable()))
+        .collect())
+}
+
+/// The bins the model's test takes deciding input records `inputs` ((n, in_words) uint32) of
+/// `kind` (bsample or psample): {bin name: count} over every bin of the kind (zeros included).
+/// The same counting as `uvt vectors gen|ver --coverage` and the C library's `uvt_coverage`.
+#[pyfunction]
+fn coverage<'py>(
+    py: Python<'py>,
+    kind: &str,
+    inputs: PyReadonlyArray2<'py, u32>,
+) -> PyResult<std::collections::BTreeMap<&'static str, u32>> {
+    let k = kind_of(kind)?;
+    if !uvt_records::coverage::has_bins(k) {
+        return Err(input_err(format!(
+            "records of kind {kind} have no coverage bins"
+        )));
+    }
+    let (ins, _) = rows(&inputs, "inputs")?;
+    let c = py
+        .detach(|| uvt_records::coverage::records(k, ins.iter().copied()))
+        .map_err(input_err)?;
+    Ok(uvt_records::coverage::bins(k)
+        .map(|b| (b.name(), c.get(b)))
+        .collect())
 }
 
 /// A field's exact value as a Python int (fields wider than 128 bits included).
@@ -787,6 +835,8 @@ fn _uvt(m: &Bound<'_, PyModule>) -> PyResult<()> {
         wrap_pyfunction!(shard_range, m)?,
         wrap_pyfunction!(stream_config, m)?,
         wrap_pyfunction!(run, m)?,
+        wrap_pyfunction!(coverage, m)?,
+        wrap_pyfunction!(coverage_bins, m)?,
         wrap_pyfunction!(compare, m)?,
         wrap_pyfunction!(decode, m)?,
         wrap_pyfunction!(render, m)?,

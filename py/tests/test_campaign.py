@@ -49,10 +49,13 @@ def test_small_campaign_passes_on_two_workers(cluster):
     s = run(Campaign(shards=6, per_shard=500, seed=3), cluster, progress=False)
     assert s.passed and s.records == 3000 and s.mismatched == 0 and s.workers == 2
     cov = s.coverage
-    assert sum(cov[f"{c}/records"] for c in ("static", "motion", "defocus", "both")) == 3000
-    for what in ("covered", "ties", "w<=0"):
-        assert sum(v for k, v in cov.items() if k.endswith("/" + what)) > 0, what
-    assert "PASS" in s.table() and "| both" in s.table()
+    assert cov["bsample.records"] == 3000
+    # the model's bins: one class bin per record, a covered or missed bin per record
+    assert sum(cov[f"bsample.class.{c}"] for c in ("static", "motion", "defocus", "both")) == 3000
+    assert cov["bsample.covered"] + cov["bsample.missed"] == 3000
+    for what in ("bsample.covered", "bsample.edge.zero", "bsample.decide.w_le_0"):
+        assert cov[what] > 0, what
+    assert "PASS" in s.table() and "| bsample.class.both" in s.table()
     # two workers did the work
     assert len({r["worker"] for r in s.shards.values()}) == 2
 
@@ -168,7 +171,7 @@ def test_verilator_unit_passes(cluster, pipes):
     good, _ = pipes
     s = run(Campaign(shards=4, per_shard=1500, simulator=str(good)), cluster, progress=False)
     assert s.passed, s.table()
-    assert sum(v for k, v in s.coverage.items() if k.endswith("/ties")) > 0
+    assert s.coverage["bsample.edge.zero"] > 0
 
 
 def test_verilator_reversed_tie_key_is_found(cluster, pipes):

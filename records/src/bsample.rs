@@ -212,11 +212,19 @@ pub fn dec_bsample_in(w: &[u32]) -> Result<BsampleIn, String> {
 
 /// The bounded sample test of an input record: the output record.
 pub fn run_bsample(w: &[u32]) -> Result<(uvt_core::BoundedEval, Rec), String> {
+    run_bsample_probed(w, &mut uvt_core::coverage::NoProbe)
+}
+
+/// [`run_bsample`], the test's decision paths reported to `pr` (`uvt_core::coverage`).
+pub fn run_bsample_probed(
+    w: &[u32],
+    pr: &mut impl uvt_core::coverage::Probe,
+) -> Result<(uvt_core::BoundedEval, Rec), String> {
     let i = dec_bsample_in(w)?;
     // bounded_eval reads the setup's triangle, class and viewport only; the precision type
     // fixes nothing else here (the shift is the record's).
     let s = Setup::unculled::<BoundedPrecision>(&i.tri, i.vp);
-    let e = bounded::eval(&s, i.grid.off, i.pos, &i.sample, &mut Ops::default())
+    let e = bounded::eval_probed(&s, i.grid.off, i.pos, &i.sample, &mut Ops::default(), pr)
         .ok_or("bounded_eval refused the record (position or shift out of range)")?;
     let mut r = Rec::default()
         .packed(&[(e.hit.is_some() as i64, 1), (e.det_sign, 2)])

@@ -9,6 +9,7 @@
 //! - [`bsample`]: the bounded sample-test records (any bounded configuration);
 //! - [`psample`]: the planar sample-test records (the planar static configuration);
 //! - [`kind`]: the record kinds by name and one entry point that runs any of them;
+//! - [`coverage`]: the decision paths (`uvt_core::coverage` bins) that records take, counted;
 //! - [`stream`]: the seeded input-record streams (`uvt vectors gen`, `uvt_gen`), shardable;
 //! - [`typed`]: the typed API (a triangle set up once, its sample test) of the C library and the
 //!   Python module.
@@ -17,6 +18,7 @@
 #![deny(missing_docs)]
 
 pub mod bsample;
+pub mod coverage;
 pub mod format;
 pub mod kind;
 pub mod psample;

@@ -65,6 +65,14 @@ pub fn enc_psample_in(t: &Triangle, vp: Viewport, pl: &PlanarEdges, pos: ScreenP
 /// the output record. The triangle, viewport and position go through the core's checked
 /// constructors; errors name the field.
 pub fn run_psample(w: &[u32]) -> Result<(Rec, PlanarEval, Rec), String> {
+    run_psample_probed(w, &mut uvt_core::coverage::NoProbe)
+}
+
+/// [`run_psample`], the test's decision paths reported to `pr` (`uvt_core::coverage`).
+pub fn run_psample_probed(
+    w: &[u32],
+    pr: &mut impl uvt_core::coverage::Probe,
+) -> Result<(Rec, PlanarEval, Rec), String> {
     let g = |i: usize| w.get(i).copied().unwrap_or(0);
     let vert = |k: usize| {
         let b = 4 * k;
@@ -98,7 +106,7 @@ pub fn run_psample(w: &[u32]) -> Result<(Rec, PlanarEval, Rec), String> {
     let pl = s.planar().ok_or(
         "the planar setup culls this triangle (det P' = 0 after the vertex rounding): a culled triangle has no record",
     )?;
-    let e = planar::eval(&s, pos, &mut Ops::default())
+    let e = planar::eval_probed(&s, pos, &mut Ops::default(), pr)
         .ok_or("planar_eval refused the record (position outside the viewport)")?;
     let out = Rec::default()
         .packed(&[(e.hit.is_some() as i64, 1)])

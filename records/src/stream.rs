@@ -25,6 +25,7 @@ use crate::format::Rec;
 use crate::kind::{Kind, MAX_SPP};
 use crate::psample::{enc_psample_in, static_of};
 use crate::stages::{enc_resolve_in, enc_select_in, enc_setup_in};
+use uvt_core::coverage::{Bin, Counts};
 
 /// The triangle families of a stream, in the order of their codes.
 pub const FAMILIES: [&str; 9] = [
@@ -77,7 +78,12 @@ pub struct Stream {
     setup: Config,
     spp: u32,
     seed: u64,
+    /// the bins the stream is biased toward ([`Stream::targeting`]; none: plain draws)
+    targets: [bool; Bin::COUNT],
 }
+
+/// Candidates drawn per record of a targeting stream before it gives up on its targets.
+pub const TARGET_TRIES: u32 = 64;
 
 impl Stream {
     /// The stream of `kind` at configuration `config` (a registry name; `None`: the kind's
@@ -138,7 +144,38 @@ impl Stream {
             setup: cfg.unwrap_or(registry::DEFAULT),
             spp,
             seed,
+            targets: [false; Bin::COUNT],
         })
+    }
+    /// The stream biased toward the bins named in `bins` (`uvt_core::coverage::Bin` names of
+    /// this kind; empty: the stream itself): record i is the first of up to [`TARGET_TRIES`]
+    /// candidates, drawn in turn from record i's own generator, on which the model's test
+    /// takes one of the bins (the last candidate if none does). Record i still depends only
+    /// on the kind, configuration, seed, i and the target list, so shards concatenate to the
+    /// whole stream. Unknown bins, bins of another kind and unreachable bins are refused.
+    pub fn targeting(mut self, bins: &[String]) -> Result<Stream, String> {
+        for name in bins {
+            let b = Bin::from_name(name).ok_or_else(|| {
+                format!(
+                    "unknown bin `{name}` (`uvt vectors coverage` lists the bins of {})",
+                    self.kind.name()
+                )
+            })?;
+            if b.kind() != self.kind.name() {
+                return Err(format!(
+                    "bin `{name}` is of {} records, not {}",
+                    b.kind(),
+                    self.kind.name()
+                ));
+            }
+            if let Some(why) = b.unreachable() {
+                return Err(format!("bin `{name}` is unreachable: {why}"));
+            }
+            if let Some(t) = self.targets.get_mut(b.index()) {
+                *t = true;
+            }
+        }
+        Ok(self)
     }
     /// The record kind.
     pub fn kind(&self) -> Kind {
@@ -157,8 +194,32 @@ impl Stream {
     /// without one).
     pub fn record(&self, index: u64) -> (Rec, Option<&'static str>) {
         let mut rng = Pcg64::seed_from_u64(mix(self.seed, index));
+        if !self.targets.contains(&true) {
+            return self.draw(&mut rng);
+        }
+        let mut last = self.draw(&mut rng);
+        for _ in 1..TARGET_TRIES {
+            if self.hits_target(&last.0) {
+                break;
+            }
+            last = self.draw(&mut rng);
+        }
+        last
+    }
+    /// Whether the model's test takes one of the target bins on input record `r`.
+    fn hits_target(&self, r: &Rec) -> bool {
+        let mut c = Counts::default();
+        crate::coverage::record(self.kind, &r.0, &mut c).is_ok()
+            && c.n
+                .iter()
+                .zip(self.targets.iter())
+                .any(|(&n, &t)| t && n > 0)
+    }
+    /// One record drawn from `rng` (the plain stream's record i is the first draw of its
+    /// generator).
+    fn draw(&self, rng: &mut Pcg64) -> (Rec, Option<&'static str>) {
         match self.kind {
-            Kind::Select => (select_record(&mut rng), None),
+            Kind::Select => (select_record(rng), None),
             Kind::Resolve => {
                 let colors: Vec<_> = (0..self.spp)
                     .map(|_| uvt_core::Rgb888::new(rng.gen(), rng.gen(), rng.gen()))
@@ -166,14 +227,14 @@ impl Stream {
                 (enc_resolve_in(&colors), None)
             }
             Kind::Setup => {
-                let (fam, t, vp, _) = draw(&mut rng, None, false);
+                let (fam, t, vp, _) = draw(rng, None, false);
                 let t = on_grid(&t, self.setup.pos());
                 (enc_setup_in(&t, vp, self.setup), Some(FAMILIES[fam]))
             }
             Kind::Psample => loop {
                 // A triangle the planar setup culls (det P' = 0) has no record: draw again (the
                 // same generator, so the record stays a function of the index).
-                let (fam, t, vp, pos) = draw(&mut rng, None, true);
+                let (fam, t, vp, pos) = draw(rng, None, true);
                 let t = static_of(&t);
                 if let Some(pl) = Setup::unculled::<PlanarPrecision>(&t, vp).planar() {
                     break (enc_psample_in(&t, vp, &pl, pos), Some(FAMILIES[fam]));
@@ -182,8 +243,8 @@ impl Stream {
             // `new` made a grid for every bounded stream and refused the other kinds.
             _ => {
                 let g = self.grid.unwrap_or(Grid::DEFAULT);
-                let (fam, t, vp, pos) = draw(&mut rng, Some(g), false);
-                let s = g.sample(&tuv(&mut rng));
+                let (fam, t, vp, pos) = draw(rng, Some(g), false);
+                let s = g.sample(&tuv(rng));
                 (enc_bsample_in(&t, vp, g, pos, &s), Some(FAMILIES[fam]))
             }
         }

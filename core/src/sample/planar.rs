@@ -107,6 +107,7 @@
 //! influences coverage.
 
 use crate::config::formats::{DEPTH_FAR, DEPTH_NEAR, SUBPIXEL_BITS};
+use crate::coverage::{on, Bin, NoProbe, Probe};
 use crate::input::Viewport;
 use crate::sample::pos::{Hit, ScreenPos};
 use crate::setup::Setup;
@@ -143,10 +144,37 @@ fn fill(n: &[i32; 3], sigma: i32) -> bool {
     }
 }
 
+/// The coverage bin of a [`fill`] decision `inside` with the normal `n`.
+#[inline]
+fn tie_bin(n: &[i32; 3], inside: bool) -> Bin {
+    let [a, b, _] = *n;
+    match (a != 0, b != 0, inside) {
+        (true, _, true) => Bin::PsTieAInside,
+        (true, _, false) => Bin::PsTieAOutside,
+        (false, true, true) => Bin::PsTieBInside,
+        (false, true, false) => Bin::PsTieBOutside,
+        (false, false, _) => Bin::PsTieNone,
+    }
+}
+
 /// Depth of a hit from the plane `(G, f)` (module docs).
 #[inline(never)]
 #[allow(clippy::arithmetic_side_effects)]
 pub(crate) fn depth(g: &[i32; 3], f: i32, d: &[i32; 3]) -> i32 {
+    depth_in(g, f, d, &mut NoProbe)
+}
+
+/// [`depth`], its paths reported to `pr` (out of line: [`eval_probed`] calls [`depth`] itself,
+/// non-generic, where nobody reads the probe).
+#[inline(never)]
+fn depth_p(g: &[i32; 3], f: i32, d: &[i32; 3], pr: &mut impl Probe) -> i32 {
+    depth_in(g, f, d, pr)
+}
+
+/// The body of [`depth`] and [`depth_p`].
+#[inline(always)]
+#[allow(clippy::arithmetic_side_effects)]
+fn depth_in(g: &[i32; 3], f: i32, d: &[i32; 3], pr: &mut impl Probe) -> i32 {
     // |G| ≤ 2^31, |d| ≤ 2^30: each product ≤ 2^61, the sum < 2^63.
     let acc: i64 = g
         .iter()
@@ -154,18 +182,36 @@ pub(crate) fn depth(g: &[i32; 3], f: i32, d: &[i32; 3]) -> i32 {
         .map(|(&a, &b)| i64::from(a) * i64::from(b))
         .sum();
     let q = if f >= 0 {
+        pr.pick(f >= 63, Bin::PsDepthShiftCap, Bin::PsDepthShift);
         // An arithmetic shift by ≤ 63: the floor (0 or −1 past the magnitude).
         acc >> f.min(63)
     } else if acc == 0 {
+        pr.hit(Bin::PsDepthZero);
         0
     } else {
         let k = f.unsigned_abs();
         match 2i64.checked_pow(k).and_then(|p| acc.checked_mul(p)) {
-            Some(v) => v,
-            None if acc < 0 => i64::MIN,
-            None => i64::MAX,
+            Some(v) => {
+                pr.hit(Bin::PsDepthScale);
+                v
+            }
+            None => {
+                pr.hit(Bin::PsDepthScaleSat);
+                if acc < 0 {
+                    i64::MIN
+                } else {
+                    i64::MAX
+                }
+            }
         }
     };
+    pr.hit(if q < i64::from(DEPTH_NEAR) {
+        Bin::PsDepthNear
+    } else if q > i64::from(DEPTH_FAR) {
+        Bin::PsDepthFar
+    } else {
+        Bin::PsDepthIn
+    });
     // Clamped to [DEPTH_NEAR, DEPTH_FAR]: the conversion is exact.
     i32::try_from(q.clamp(i64::from(DEPTH_NEAR), i64::from(DEPTH_FAR))).unwrap_or(DEPTH_FAR)
 }
@@ -175,6 +221,18 @@ pub(crate) fn depth(g: &[i32; 3], f: i32, d: &[i32; 3]) -> i32 {
 #[inline(always)]
 #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_wrap)]
 pub fn eval(setup: &Setup, pos: ScreenPos, ops: &mut Ops) -> Option<PlanarEval> {
+    eval_probed(setup, pos, ops, &mut NoProbe)
+}
+
+/// [`eval`], every decision path it takes reported to `pr` (`crate::coverage`).
+#[inline(always)]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_wrap)]
+pub fn eval_probed(
+    setup: &Setup,
+    pos: ScreenPos,
+    ops: &mut Ops,
+    pr: &mut impl Probe,
+) -> Option<PlanarEval> {
     let crate::setup::Stored::Planar(pl) = &setup.edges else {
         return None;
     };
@@ -196,7 +254,11 @@ pub fn eval(setup: &Setup, pos: ScreenPos, ops: &mut Ops) -> Option<PlanarEval> 
             .sum::<i64>()
     });
     let [e0, e1, e2] = e;
+    for ek in e {
+        pr.sign(ek, [Bin::PsEdgeNeg, Bin::PsEdgeZero, Bin::PsEdgePos]);
+    }
     let pos_side = pl.sigma > 0;
+    pr.pick(pos_side, Bin::PsOrientPos, Bin::PsOrientNeg);
     let covered = if e0 != 0 && e1 != 0 && e2 != 0 {
         // Every E has the orientation's strict sign.
         if pos_side {
@@ -207,17 +269,26 @@ pub fn eval(setup: &Setup, pos: ScreenPos, ops: &mut Ops) -> Option<PlanarEval> 
     } else {
         e.iter().zip(pl.n.iter()).all(|(&ek, nk)| {
             if ek == 0 {
-                fill(nk, pl.sigma)
+                let inside = fill(nk, pl.sigma);
+                if on(pr) {
+                    pr.hit(tie_bin(nk, inside));
+                }
+                inside
             } else {
                 (ek > 0) == pos_side
             }
         })
     };
     ops.add_sample(9 + 2 + 3);
+    pr.pick(covered, Bin::PsCovered, Bin::PsMissed);
     let hit = covered.then(|| {
         ops.add_sample(4);
         Hit {
-            depth: depth(&pl.g, pl.f, &d),
+            depth: if on(pr) {
+                depth_p(&pl.g, pl.f, &d, pr)
+            } else {
+                depth(&pl.g, pl.f, &d)
+            },
         }
     });
     Some(PlanarEval { e, hit })

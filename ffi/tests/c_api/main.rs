@@ -3,4 +3,5 @@
 //! --test c_api`; one module: `cargo test -p uvt-ffi --test c_api header::`.
 
 mod boundary;
+mod coverage;
 mod header;

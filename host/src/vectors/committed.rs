@@ -18,6 +18,9 @@ use super::export;
 /// Default seed of the committed unit-level set.
 pub const DEFAULT_SEED: u64 = 1;
 
+/// The committed sets with sample-test records, as folders of `vectors/`.
+pub const SETS: [&str; 4] = ["unit", "unit_exact", "frame_a", "frame_b"];
+
 /// Frame-level scene A: static and moving triangles, in focus (32×32, 4 spp, 2×2 bounds tiles).
 pub const FRAME_A: &str = r#"{"format":"uvt-scene","version":1,"viewport":[32,32],"spp":4,"tile":2,
  "samples":{"pattern":"sobol","seed":3},

@@ -11,12 +11,15 @@
 //! - [`export`]: `uvt vectors export`, the unit-level and frame-level sets;
 //! - [`check`]: `uvt vectors check`;
 //! - [`pipe`]: `uvt vectors gen`, `ver` and `decode` (streams and single records);
-//! - [`committed`]: the committed sets and their exports.
+//! - [`committed`]: the committed sets and their exports;
+//! - [`coverage`]: `uvt vectors coverage`, the model's coverage bins over the committed sets and
+//!   seeded streams.
 
 pub mod bsample;
 pub mod cases;
 pub mod check;
 pub mod committed;
+pub mod coverage;
 pub mod export;
 pub mod pipe;
 pub mod planar_cases;

@@ -6,17 +6,32 @@
 use std::io::{BufRead, Write};
 
 use anyhow::{anyhow, bail, Result};
+use uvt_core::coverage::Counts;
+use uvt_records::coverage;
 use uvt_records::format::{parse, to_text};
 use uvt_records::kind::{self, Kind};
 use uvt_records::stream::{Shard, Stream};
 
 /// Write records `shard.range(count)` of `stream` to `out`, one line each; the records written.
-pub fn gen(out: &mut impl Write, stream: &Stream, count: u64, shard: Shard) -> Result<u64> {
+/// With `cov`, the bins the model's test takes on each record are added to it
+/// ([`uvt_records::coverage`]).
+pub fn gen(
+    out: &mut impl Write,
+    stream: &Stream,
+    count: u64,
+    shard: Shard,
+    mut cov: Option<&mut Counts>,
+) -> Result<u64> {
     let r = shard.range(count);
     let n = r.end - r.start;
     let mut buf = String::new();
     for i in r {
-        buf += &to_text(std::slice::from_ref(&stream.record(i).0));
+        let rec = stream.record(i);
+        if let Some(c) = cov.as_deref_mut() {
+            coverage::record(stream.kind(), &rec.0 .0, c)
+                .map_err(|e| anyhow!("record {i}: {e}"))?;
+        }
+        buf += &to_text(std::slice::from_ref(&rec.0));
         if buf.len() > 1 << 16 {
             out.write_all(buf.as_bytes())?;
             buf.clear();
@@ -43,7 +58,14 @@ pub struct Verified {
 /// by one space; `spp` samples per resolve record), run the model on each input and compare
 /// (every field, or the architectural ones with `arch_only`). A malformed line or an input the
 /// model refuses is an error naming the line.
-pub fn ver(input: impl BufRead, kind: Kind, spp: u32, arch_only: bool) -> Result<Verified> {
+/// With `cov`, the bins the model's test takes on each input are added to it.
+pub fn ver(
+    input: impl BufRead,
+    kind: Kind,
+    spp: u32,
+    arch_only: bool,
+    mut cov: Option<&mut Counts>,
+) -> Result<Verified> {
     if kind.needs_setup() {
         bail!(
             "{}_in records name a triangle of a setup_in file: check them with `uvt vectors check`",
@@ -70,6 +92,9 @@ pub fn ver(input: impl BufRead, kind: Kind, spp: u32, arch_only: bool) -> Result
             .remove(0);
         let (inp, obs) = words.split_at(wi);
         let exp = kind::run(kind, inp, None).map_err(|e| anyhow!("{at}: input refused: {e}"))?;
+        if let Some(c) = cov.as_deref_mut() {
+            coverage::record(kind, inp, c).map_err(|e| anyhow!("{at}: {e}"))?;
+        }
         v.pairs += 1;
         let d = kind::diff(&format!("{}_out", kind.name()), &exp.0, obs, only);
         if !d.is_empty() {

@@ -48,6 +48,8 @@ __all__ = [
     "shard_range",
     "stream_config",
     "run",
+    "coverage",
+    "coverage_bins",
     "compare",
     "decode",
     "fields",
@@ -243,12 +245,15 @@ def gen(
     shard: Union[None, str, Tuple[int, int]] = None,
     *,
     spp: int = 16,
+    target: Optional[Sequence[str]] = None,
 ) -> np.ndarray:
     """Input records of the seeded stream of ``kind`` at ``config`` (None: the kind's default)
     with ``seed``: ``count`` records, or with ``shard`` = "K/M" or (K, M) its part K of M
     (indices ⌊count·(K−1)/M⌋ .. ⌊count·K/M⌋). An (n, in_words) uint32 array; the same records as
     ``uvt vectors gen --shard K/M`` and ``uvt_gen``, whatever the sharding. ``spp``: samples per
-    resolve record. Bounds and sample records have no self-contained stream (InputError)."""
+    resolve record. ``target``: coverage bin names (:func:`coverage_bins`) to bias the stream
+    toward, as ``uvt vectors gen --target-bins`` (still seeded and shard-invariant). Bounds and
+    sample records have no self-contained stream (InputError)."""
     k = _kind(kind)
     if config is not None and not isinstance(config, str):
         raise TypeError(f"config: a configuration name or None, not {type(config).__name__}")
@@ -272,7 +277,23 @@ def gen(
             raise TypeError(f"shard: \"K/M\" or (K, M), not {shard!r}")
         if sh[0] < 0 or sh[1] < 0:
             raise InputError(f"shard {sh[0]}/{sh[1]}: need 1 ≤ K ≤ M")
-    return _uvt.gen(k.name, config, int(seed), int(count), sh, int(spp))
+    tg = None if target is None else [str(t) for t in target]
+    return _uvt.gen(k.name, config, int(seed), int(count), sh, int(spp), tg)
+
+
+def coverage(kind: str, inputs: Any) -> Dict[str, int]:
+    """The model's coverage of ``inputs`` ((n, in_words) uint32 input records of ``kind``,
+    bsample or psample): {bin name: count} over every bin of the kind, zeros included — the
+    bins the core's own test reports while deciding the records (``uvt_core::coverage``), the
+    same counting as ``uvt vectors gen|ver --coverage`` and ``uvt_coverage``."""
+    k = _kind(kind)
+    return dict(_uvt.coverage(k.name, _records("inputs", inputs, k)))
+
+
+def coverage_bins(kind: Optional[str] = None) -> List[Tuple[str, str, Optional[str]]]:
+    """The model's coverage bins, (name, record kind, why no input reaches it or None), all or
+    those of ``kind``."""
+    return list(_uvt.coverage_bins(None if kind is None else _kind(kind).name))
 
 
 def shard_range(count: int, k: int, m: int) -> Tuple[int, int]:

@@ -78,9 +78,21 @@ def fields(file: str, spp: int = 16) -> List[Tuple[str, int, int, int, bool, int
     """The layout of a record file: (name, word, bit, width, signed, frac) per field."""
 
 def gen(
-    kind: str, config: Optional[str], seed: int, count: int, shard: Optional[Tuple[int, int]] = None, spp: int = 16
+    kind: str,
+    config: Optional[str],
+    seed: int,
+    count: int,
+    shard: Optional[Tuple[int, int]] = None,
+    spp: int = 16,
+    target: Optional[List[str]] = None,
 ) -> npt.NDArray[np.uint32]:
-    """Input records of a seeded stream (or one shard of it)."""
+    """Input records of a seeded stream (or one shard of it); ``target``: bin names to bias it toward."""
+
+def coverage(kind: str, inputs: npt.NDArray[np.uint32]) -> Dict[str, int]:
+    """The model's coverage bins of the records: {bin name: count} over every bin of the kind."""
+
+def coverage_bins(kind: Optional[str] = None) -> List[Tuple[str, str, Optional[str]]]:
+    """The model's coverage bins: (name, record kind, why unreachable or None)."""
 
 def shard_range(count: int, k: int, m: int) -> Tuple[int, int]:
     """The record indices (start, end) of shard K of M of a stream of ``count`` records."""

@@ -2,6 +2,7 @@
 //! streams. One test binary: `cargo test -p uvt-records --test codec`; one module: `cargo test
 //! -p uvt-records --test codec stream::`.
 
+mod coverage;
 mod layout;
 mod setup;
 mod stream;

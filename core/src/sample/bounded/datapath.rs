@@ -4,10 +4,18 @@
 
 use crate::config::formats::{SUBPIXEL_BITS, TUV_FRAC};
 use crate::config::precision::{OFFSET_SHIFT_MAX, OFFSET_SHIFT_MIN};
+use crate::coverage::{Bin, NoProbe, Probe};
 use crate::input::{Sample, Viewport, C, W, X, Y};
 
 /// 2^16: one t/u/v step.
 const TUV_SCALE: i64 = 1 << TUV_FRAC;
+
+/// The rounding bins (exact, down, up) of step 1, the lerp.
+const LERP: [Bin; 3] = [Bin::BsLerpExact, Bin::BsLerpDown, Bin::BsLerpUp];
+/// The rounding bins of step 2, the lens offset.
+const LENS: [Bin; 3] = [Bin::BsLensExact, Bin::BsLensDown, Bin::BsLensUp];
+/// The rounding bins of step 4, the grid.
+const GRID: [Bin; 3] = [Bin::BsGridExact, Bin::BsGridDown, Bin::BsGridUp];
 
 /// 2^8: one pixel in sample-position units.
 pub(crate) const SUBPIXEL_SCALE: i32 = 1 << SUBPIXEL_BITS;
@@ -38,16 +46,27 @@ pub(crate) struct Ctx {
 #[inline(always)]
 #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
 pub(crate) fn lerp(f0: i32, f1: i32, t: i32) -> i32 {
+    lerp_p(f0, f1, t, &mut NoProbe)
+}
+
+/// [`lerp`], its rounding direction reported to `pr`.
+#[inline(always)]
+#[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
+pub(crate) fn lerp_p(f0: i32, f1: i32, t: i32, pr: &mut impl Probe) -> i32 {
+    let p = i64::from(t) * i64::from(f1 - f0);
+    pr.round(p, TUV_FRAC, LERP);
     // (p + 2^15) >> 16 on i64: an arithmetic shift by a constant, the exact floor.
-    f0 + ((i64::from(t) * i64::from(f1 - f0) + TUV_SCALE / 2) >> TUV_FRAC) as i32
+    f0 + ((p + TUV_SCALE / 2) >> TUV_FRAC) as i32
 }
 
 /// `round(L·c / 2^16)` (nearest, ties toward +∞), the step-2 lens offset: |L| ≤ 2^16, |c| ≤ 2^29,
 /// |L·c| ≤ 2^45 (SMULL), result |.| ≤ 2^29 (exact in i32).
 #[inline(always)]
 #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
-fn lens(l: i32, c: i32) -> i32 {
-    ((i64::from(l) * i64::from(c) + TUV_SCALE / 2) >> TUV_FRAC) as i32
+fn lens(l: i32, c: i32, pr: &mut impl Probe) -> i32 {
+    let p = i64::from(l) * i64::from(c);
+    pr.round(p, TUV_FRAC, LENS);
+    ((p + TUV_SCALE / 2) >> TUV_FRAC) as i32
 }
 
 /// `round((e·p + ng·w) / 2^S)` (nearest, ties toward +∞): steps 3–4 for one axis, `e` = 256W
@@ -58,8 +77,10 @@ fn lens(l: i32, c: i32) -> i32 {
 /// Result |a'| < 2^(50−S) ≤ 2^30.
 #[inline(always)]
 #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_truncation)]
-fn offset(e: i32, p: i32, ng: i32, w: i32, c: &Ctx) -> i32 {
-    let acc = i64::from(e) * i64::from(p) + i64::from(ng) * i64::from(w) + c.half;
+fn offset(e: i32, p: i32, ng: i32, w: i32, c: &Ctx, pr: &mut impl Probe) -> i32 {
+    let acc = i64::from(e) * i64::from(p) + i64::from(ng) * i64::from(w);
+    pr.round(acc, OFFSET_SHIFT_MIN + c.fine, GRID);
+    let acc = acc + c.half;
     // `fine` ≤ 12 < 32 (Ctx): the i32 shift cannot overflow.
     ((acc >> OFFSET_SHIFT_MIN) as i32) >> c.fine
 }
@@ -73,25 +94,30 @@ pub(crate) fn vertex<const MOTION: bool, const DEFOCUS: bool>(
     q: &[i32; 5],
     r: &[i32; 5],
     c: &Ctx,
+    pr: &mut impl Probe,
 ) -> (i32, i32, i32) {
     let (mut x, mut y, w) = if MOTION {
         (
-            lerp(q[X], r[X], c.t),
-            lerp(q[Y], r[Y], c.t),
-            lerp(q[W], r[W], c.t),
+            lerp_p(q[X], r[X], c.t, pr),
+            lerp_p(q[Y], r[Y], c.t, pr),
+            lerp_p(q[W], r[W], c.t, pr),
         )
     } else {
         (q[X], q[Y], q[W])
     };
     if DEFOCUS {
-        let coc = if MOTION { lerp(q[C], r[C], c.t) } else { q[C] };
+        let coc = if MOTION {
+            lerp_p(q[C], r[C], c.t, pr)
+        } else {
+            q[C]
+        };
         // |x_t|, |lens| ≤ 2^29: |x| ≤ 2^30 (i32).
-        x += lens(c.u, coc);
-        y += lens(c.v, coc);
+        x += lens(c.u, coc, pr);
+        y += lens(c.v, coc, pr);
     }
     (
-        offset(c.sw, x, c.ngx, w, c),
-        offset(c.sh, y, c.ngy, w, c),
+        offset(c.sw, x, c.ngx, w, c, pr),
+        offset(c.sh, y, c.ngy, w, c, pr),
         w,
     )
 }
@@ -205,24 +231,32 @@ pub(crate) fn fast_vertex<const MOTION: bool, const DEFOCUS: bool>(
     b: &[i32; 5],
     d: &[i32; 5],
     f: &Fast,
+    pr: &mut impl Probe,
 ) -> (i32, i32, i32) {
-    // |d| ≤ 2^30 (checked triangle, |f| ≤ 2^29; `Setup::dv`).
-    let at = |f0: i32, d: i32| {
+    // Every rounding here is of a product scaled so that its rounding point is 2^32: the low
+    // word is what it discards (the general datapath's remainder times 2^(32 − bits)).
+    let mut at = |f0: i32, d: i32| {
         if MOTION {
+            pr.round(i64::from(f.tq) * i64::from(d), 32, LERP);
             mla_hi(f.tq, d, f0)
         } else {
             f0
         }
     };
+    // |d| ≤ 2^30 (checked triangle, |f| ≤ 2^29; `Setup::dv`).
     let (mut x, mut y, w) = (at(b[X], d[X]), at(b[Y], d[Y]), at(b[W], d[W]));
     if DEFOCUS {
         // |c_t| ≤ 2^29: 2c ≤ 2^30 (i32).
         let c2 = at(b[C], d[C]) * 2;
+        pr.round(i64::from(f.uq) * i64::from(c2), 32, LENS);
         x = mla_hi(f.uq, c2, x);
+        pr.round(i64::from(f.vq) * i64::from(c2), 32, LENS);
         y = mla_hi(f.vq, c2, y);
     }
-    let hi = |e: i32, p: i32, ng: i32| {
-        ((i64::from(e) * i64::from(p) + i64::from(ng) * i64::from(w) + (1 << 31)) >> 32) as i32
+    let mut hi = |e: i32, p: i32, ng: i32| {
+        let acc = i64::from(e) * i64::from(p) + i64::from(ng) * i64::from(w);
+        pr.round(acc, 32, GRID);
+        ((acc + (1 << 31)) >> 32) as i32
     };
     (hi(f.swq, x, f.ngxq), hi(f.shq, y, f.ngyq), w)
 }
@@ -239,5 +273,18 @@ pub(crate) fn fill_rule(v: &[(i32, i32, i32); 3], i: usize, j: usize, s: i64) ->
         core::cmp::Ordering::Greater => s > 0,
         core::cmp::Ordering::Less => s < 0,
         core::cmp::Ordering::Equal => false,
+    }
+}
+
+/// The coverage bin of a [`fill_rule`] decision `inside` on edge (i, j): the key 0 (the two
+/// vertices coincide), else inside or outside.
+#[inline]
+pub(crate) fn tie_bin(v: &[(i32, i32, i32); 3], i: usize, j: usize, inside: bool) -> Bin {
+    if v.get(i) == v.get(j) {
+        Bin::BsTieCoincident
+    } else if inside {
+        Bin::BsTieInside
+    } else {
+        Bin::BsTieOutside
     }
 }

@@ -3,6 +3,7 @@
 
 use crate::arith::div::div64_32;
 use crate::config::formats::{DEPTH_FAR, DEPTH_FRAC, DEPTH_NEAR};
+use crate::coverage::{Bin, Probe};
 
 /// 2^24: the depth quotient's scale.
 const DEPTH_SCALE: i64 = 1 << DEPTH_FRAC;
@@ -130,7 +131,7 @@ pub(crate) fn depth_quotient_32(num: i64, den: i64) -> i64 {
     clippy::cast_possible_truncation,
     clippy::cast_sign_loss
 )]
-pub(crate) fn depth(e: &[i64; 3], wz: &[(i32, i32); 3], sign: i64) -> i32 {
+pub(crate) fn depth(e: &[i64; 3], wz: &[(i32, i32); 3], sign: i64, pr: &mut impl Probe) -> i32 {
     // A covered sample's E' are each 0 or of the orientation's sign, so |E'| = sign·E'
     // (|E'| < 2^61: the negation cannot overflow).
     let big = e.iter().fold(0, |m, &x| m | if sign < 0 { -x } else { x }) as u64;
@@ -146,12 +147,20 @@ pub(crate) fn depth(e: &[i64; 3], wz: &[(i32, i32); 3], sign: i64) -> i32 {
     let (num, den) = if sign < 0 { (-num, -den) } else { (num, den) };
     // 2^7·den < 2^62 (den < 2^55).
     let lim = den * DEPTH_SAT_SCALE;
-    if den <= 0 || num >= lim {
+    if den <= 0 {
+        pr.hit(Bin::BsDepthDen);
+        return DEPTH_FAR;
+    }
+    if num >= lim {
+        pr.hit(Bin::BsDepthFar);
         return DEPTH_FAR;
     }
     if num <= -lim {
+        pr.hit(Bin::BsDepthNear);
         return DEPTH_NEAR;
     }
+    let q = depth_quotient(num, den);
+    pr.pick(q > i64::from(DEPTH_FAR), Bin::BsDepthTop, Bin::BsDepthIn);
     // In [−2^31, 2^31): after the clamp to DEPTH_FAR it fits i32.
-    depth_quotient(num, den).min(i64::from(DEPTH_FAR)) as i32
+    q.min(i64::from(DEPTH_FAR)) as i32
 }

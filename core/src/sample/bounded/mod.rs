@@ -61,9 +61,10 @@ pub(crate) mod depth;
 
 use crate::config::precision::{Precision, OFFSET_SHIFT_MAX, OFFSET_SHIFT_MIN};
 use crate::config::unit::{Full, Unit};
+use crate::coverage::{Bin, NoProbe, Probe};
 use crate::input::{Sample, W, Z};
 use crate::sample::bounded::datapath::{
-    fast_vertex, fill_rule, lerp, mla_hi, vertex, Ctx, Fast, SUBPIXEL_SCALE,
+    fast_vertex, fill_rule, lerp, mla_hi, tie_bin, vertex, Ctx, Fast, SUBPIXEL_SCALE,
 };
 use crate::sample::bounded::depth::depth;
 use crate::sample::pos::{Hit, ScreenPos};
@@ -83,6 +84,9 @@ pub struct BoundedEval {
     /// coverage and depth
     pub hit: Option<Hit>,
 }
+
+/// The edge-sign bins (step 5).
+const EDGE: [Bin; 3] = [Bin::BsEdgeNeg, Bin::BsEdgeZero, Bin::BsEdgePos];
 
 /// Operations counted per sample test of a class (the hardware datapath's count, unchanged by
 /// the software order: the z lerp is counted with the other lerps though it runs on hits only).
@@ -127,17 +131,38 @@ fn det_sign(e: &[i64; 3], w: [i32; 3]) -> i64 {
 #[inline(never)]
 #[allow(clippy::arithmetic_side_effects)]
 pub(crate) fn decide_slow(e: [i64; 3], p: [(i32, i32, i32); 3]) -> (i64, bool, u64) {
+    decide_in(&e, &p, &mut NoProbe)
+}
+
+/// [`decide_slow`], its paths reported to `pr` (a separate out-of-line copy: [`decide_slow`]
+/// itself stays non-generic, compiled once in this crate, where nobody reads the probe).
+#[inline(never)]
+fn decide_slow_p<Pr: Probe>(e: [i64; 3], p: [(i32, i32, i32); 3], pr: &mut Pr) -> (i64, bool, u64) {
+    decide_in(&e, &p, pr)
+}
+
+/// The body of [`decide_slow`] and [`decide_slow_p`].
+#[inline(always)]
+#[allow(clippy::arithmetic_side_effects)]
+fn decide_in<Pr: Probe>(e: &[i64; 3], p: &[(i32, i32, i32); 3], pr: &mut Pr) -> (i64, bool, u64) {
     let (sign, n) = if p.iter().all(|&(_, _, w)| w > 0) {
+        pr.hit(Bin::BsDecideTie);
         let pos = e.iter().any(|&x| x > 0);
         let neg = e.iter().any(|&x| x < 0);
         (i64::from(pos && !neg) - i64::from(neg && !pos), 3)
     } else {
-        (det_sign(&e, p.map(|(_, _, w)| w)), 6)
+        pr.hit(Bin::BsDecideRare);
+        (det_sign(e, p.map(|(_, _, w)| w)), 6)
     };
     let covered = sign != 0
         && e.iter().enumerate().all(|(k, &ek)| {
             if ek == 0 {
-                fill_rule(&p, (k + 1) % 3, (k + 2) % 3, sign)
+                let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+                let inside = fill_rule(p, i, j, sign);
+                if Pr::ON {
+                    pr.hit(tie_bin(p, i, j, inside));
+                }
+                inside
             } else {
                 (ek > 0) == (sign > 0)
             }
@@ -152,11 +177,12 @@ pub(crate) fn decide_slow(e: [i64; 3], p: [(i32, i32, i32); 3]) -> (i64, bool, u
 // |E'| < 2^61 (|a'|, |b'| < 2^30, 32 × 32 → 64 products).
 #[inline(always)]
 #[allow(clippy::arithmetic_side_effects)]
-fn finish<const MOTION: bool, const DEFOCUS: bool>(
+fn finish<const MOTION: bool, const DEFOCUS: bool, Pr: Probe>(
     ab: [(i32, i32); 3],
     wpos: bool,
     wz: impl Fn() -> [(i32, i32); 3],
     ops: &mut Ops,
+    pr: &mut Pr,
 ) -> BoundedEval {
     let [(a0, b0), (a1, b1), (a2, b2)] = ab;
     let m = |x: i32, y: i32| i64::from(x) * i64::from(y);
@@ -167,11 +193,15 @@ fn finish<const MOTION: bool, const DEFOCUS: bool>(
     ];
     let mut n = class_ops(MOTION, DEFOCUS);
     let [e0, e1, e2] = e;
+    pr.sign(e0, EDGE);
+    pr.sign(e1, EDGE);
+    pr.sign(e2, EDGE);
     // Fast path (every w > 0, no E' = 0): the sign bit of `e0 | e1 | e2` is set iff some E' < 0,
     // that of `e0 & e1 & e2` iff every E' < 0. Covered iff all E' share one strict sign, which
     // is then the orientation (module table step 6). Anything else goes to `decide_slow`.
     let (sign, covered) = if wpos && e0 != 0 && e1 != 0 && e2 != 0 {
         n += 3;
+        pr.hit(Bin::BsDecideFast);
         if e0 & e1 & e2 < 0 {
             (-1, true)
         } else if e0 | e1 | e2 >= 0 {
@@ -181,14 +211,24 @@ fn finish<const MOTION: bool, const DEFOCUS: bool>(
         }
     } else {
         let [(w0, _), (w1, _), (w2, _)] = wz();
-        let (sign, covered, k) = decide_slow(e, [(a0, b0, w0), (a1, b1, w1), (a2, b2, w2)]);
+        let v = [(a0, b0, w0), (a1, b1, w1), (a2, b2, w2)];
+        let (sign, covered, k) = if Pr::ON {
+            decide_slow_p(e, v, pr)
+        } else {
+            decide_slow(e, v)
+        };
         n += k;
         (sign, covered)
     };
+    pr.sign(
+        sign,
+        [Bin::BsOrientNeg, Bin::BsOrientZero, Bin::BsOrientPos],
+    );
+    pr.pick(covered, Bin::BsCovered, Bin::BsMissed);
     let hit = covered.then(|| {
         n += 12;
         Hit {
-            depth: depth(&e, &wz(), sign),
+            depth: depth(&e, &wz(), sign, pr),
         }
     });
     ops.add_sample(n);
@@ -212,17 +252,20 @@ fn eval_fast<const MOTION: bool, const DEFOCUS: bool, const G20: bool>(
     ys: i32,
     s: &Sample,
     ops: &mut Ops,
+    pr: &mut impl Probe,
 ) -> BoundedEval {
     let Some(f) = Fast::new::<MOTION, DEFOCUS, G20>(setup.viewport, xs, ys, s, shift) else {
-        return eval_general_at::<MOTION, DEFOCUS>(setup, shift, xs, ys, s, ops);
+        pr.hit(Bin::BsPathGeneral);
+        return eval_general_at::<MOTION, DEFOCUS>(setup, shift, xs, ys, s, ops, pr);
     };
+    pr.hit(Bin::BsPathFast);
     let [v0, v1] = &setup.tri.v;
     // The shutter end nearer to T is the base of every lerp (`fast_vertex`).
     let [b0, b1, b2] = if MOTION && f.late { v1 } else { v0 };
     let [d0, d1, d2] = &setup.dv;
-    let (a0, bb0, w0) = fast_vertex::<MOTION, DEFOCUS>(b0, d0, &f);
-    let (a1, bb1, w1) = fast_vertex::<MOTION, DEFOCUS>(b1, d1, &f);
-    let (a2, bb2, w2) = fast_vertex::<MOTION, DEFOCUS>(b2, d2, &f);
+    let (a0, bb0, w0) = fast_vertex::<MOTION, DEFOCUS>(b0, d0, &f, pr);
+    let (a1, bb1, w1) = fast_vertex::<MOTION, DEFOCUS>(b1, d1, &f, pr);
+    let (a2, bb2, w2) = fast_vertex::<MOTION, DEFOCUS>(b2, d2, &f, pr);
     let wpos = w0 > 0 && w1 > 0 && w2 > 0;
     // Motion classes recompute w and z out of line; the others only load them.
     let wz = || {
@@ -232,7 +275,7 @@ fn eval_fast<const MOTION: bool, const DEFOCUS: bool, const G20: bool>(
             [b0, b1, b2].map(|v| (v[W], v[Z]))
         }
     };
-    finish::<MOTION, DEFOCUS>([(a0, bb0), (a1, bb1), (a2, bb2)], wpos, wz, ops)
+    finish::<MOTION, DEFOCUS, _>([(a0, bb0), (a1, bb1), (a2, bb2)], wpos, wz, ops, pr)
 }
 
 /// The step-1 (w, z) of every vertex on the fast datapath, as in [`fast_vertex`] (|f1 − f0| ≤
@@ -267,17 +310,18 @@ fn eval_general<const MOTION: bool, const DEFOCUS: bool>(
     setup: &Setup,
     c: &Ctx,
     ops: &mut Ops,
+    pr: &mut impl Probe,
 ) -> BoundedEval {
     let [v0, v1] = &setup.tri.v;
     let [q0, q1, q2] = v0;
     let [r0, r1, r2] = v1;
-    let (a0, b0, w0) = vertex::<MOTION, DEFOCUS>(q0, r0, c);
-    let (a1, b1, w1) = vertex::<MOTION, DEFOCUS>(q1, r1, c);
-    let (a2, b2, w2) = vertex::<MOTION, DEFOCUS>(q2, r2, c);
+    let (a0, b0, w0) = vertex::<MOTION, DEFOCUS>(q0, r0, c, pr);
+    let (a1, b1, w1) = vertex::<MOTION, DEFOCUS>(q1, r1, c, pr);
+    let (a2, b2, w2) = vertex::<MOTION, DEFOCUS>(q2, r2, c, pr);
     let z = |q: &[i32; 5], r: &[i32; 5]| if MOTION { lerp(q[Z], r[Z], c.t) } else { q[Z] };
     let wz = || [(w0, z(q0, r0)), (w1, z(q1, r1)), (w2, z(q2, r2))];
     let wpos = w0 > 0 && w1 > 0 && w2 > 0;
-    finish::<MOTION, DEFOCUS>([(a0, b0), (a1, b1), (a2, b2)], wpos, wz, ops)
+    finish::<MOTION, DEFOCUS, _>([(a0, b0), (a1, b1), (a2, b2)], wpos, wz, ops, pr)
 }
 
 /// [`eval_general`] of one class: out of line, it serves only rare inputs. `xs`, `ys`
@@ -293,6 +337,7 @@ fn eval_general_at<const MOTION: bool, const DEFOCUS: bool>(
     ys: i32,
     s: &Sample,
     ops: &mut Ops,
+    pr: &mut impl Probe,
 ) -> BoundedEval {
     let vp = setup.viewport;
     let sw = SUBPIXEL_SCALE * i32::from(vp.w);
@@ -309,7 +354,7 @@ fn eval_general_at<const MOTION: bool, const DEFOCUS: bool>(
         half: (1i64 << 31) >> (OFFSET_SHIFT_MAX - shift),
         fine: shift - OFFSET_SHIFT_MIN,
     };
-    eval_general::<MOTION, DEFOCUS>(setup, &c, ops)
+    eval_general::<MOTION, DEFOCUS>(setup, &c, ops, pr)
 }
 
 /// The bounded sample test with its intermediates, offsets on the grid `2^shift`. Counts its
@@ -329,10 +374,23 @@ pub fn eval(
     s: &Sample,
     ops: &mut Ops,
 ) -> Option<BoundedEval> {
+    eval_probed(setup, shift, pos, s, ops, &mut NoProbe)
+}
+
+/// [`eval`], every decision path it takes reported to `pr` (`crate::coverage`).
+#[inline]
+pub fn eval_probed(
+    setup: &Setup,
+    shift: u32,
+    pos: ScreenPos,
+    s: &Sample,
+    ops: &mut Ops,
+    pr: &mut impl Probe,
+) -> Option<BoundedEval> {
     if !(OFFSET_SHIFT_MIN..=OFFSET_SHIFT_MAX).contains(&shift) {
         return None;
     }
-    eval_at::<Full>(setup, shift, pos, s, ops)
+    eval_at::<Full>(setup, shift, pos, s, ops, pr)
 }
 
 /// [`eval`] for a `shift` ∈ [`OFFSET_SHIFT_MIN`]..=[`OFFSET_SHIFT_MAX`] (the caller's
@@ -350,6 +408,7 @@ fn eval_at<U: Unit>(
     pos: ScreenPos,
     s: &Sample,
     ops: &mut Ops,
+    pr: &mut impl Probe,
 ) -> Option<BoundedEval> {
     let vp = setup.viewport;
     let sw = SUBPIXEL_SCALE * i32::from(vp.w);
@@ -366,16 +425,22 @@ fn eval_at<U: Unit>(
     }
     let m = U::MOTION && setup.class.motion();
     let d = U::DEFOCUS && setup.class.defocus();
+    pr.hit(match (m, d) {
+        (false, false) => Bin::BsClassStatic,
+        (true, false) => Bin::BsClassMotion,
+        (false, true) => Bin::BsClassDefocus,
+        (true, true) => Bin::BsClassBoth,
+    });
     // The default grid 2^20 gets its own copy with the scaling constants folded in.
     Some(match (m, d, shift == OFFSET_SHIFT_MIN) {
-        (false, false, true) => eval_fast::<false, false, true>(setup, shift, xs, ys, s, ops),
-        (true, false, true) => eval_fast::<true, false, true>(setup, shift, xs, ys, s, ops),
-        (false, true, true) => eval_fast::<false, true, true>(setup, shift, xs, ys, s, ops),
-        (true, true, true) => eval_fast::<true, true, true>(setup, shift, xs, ys, s, ops),
-        (false, false, false) => eval_fast::<false, false, false>(setup, shift, xs, ys, s, ops),
-        (true, false, false) => eval_fast::<true, false, false>(setup, shift, xs, ys, s, ops),
-        (false, true, false) => eval_fast::<false, true, false>(setup, shift, xs, ys, s, ops),
-        (true, true, false) => eval_fast::<true, true, false>(setup, shift, xs, ys, s, ops),
+        (false, false, true) => eval_fast::<false, false, true>(setup, shift, xs, ys, s, ops, pr),
+        (true, false, true) => eval_fast::<true, false, true>(setup, shift, xs, ys, s, ops, pr),
+        (false, true, true) => eval_fast::<false, true, true>(setup, shift, xs, ys, s, ops, pr),
+        (true, true, true) => eval_fast::<true, true, true>(setup, shift, xs, ys, s, ops, pr),
+        (false, false, false) => eval_fast::<false, false, false>(setup, shift, xs, ys, s, ops, pr),
+        (true, false, false) => eval_fast::<true, false, false>(setup, shift, xs, ys, s, ops, pr),
+        (false, true, false) => eval_fast::<false, true, false>(setup, shift, xs, ys, s, ops, pr),
+        (true, true, false) => eval_fast::<true, true, false>(setup, shift, xs, ys, s, ops, pr),
     })
 }
 
@@ -393,5 +458,5 @@ pub fn test<P: Precision, U: Unit>(
     ops: &mut Ops,
 ) -> Option<Hit> {
     let shift = P::OFFSET_SHIFT.unwrap_or(OFFSET_SHIFT_MIN);
-    eval_at::<U>(setup, shift, pos, s, ops)?.hit
+    eval_at::<U>(setup, shift, pos, s, ops, &mut NoProbe)?.hit
 }

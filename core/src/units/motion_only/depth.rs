@@ -145,7 +145,8 @@ mod tests {
         let mut rng = Rng(seed);
         let ends: [i32; 7] = [1 << 29, -(1 << 29), 1, -1, 0, 12345, -(1 << 28) + 7];
         let check = |e: [i64; 3], wz: [(i32, i32); 3], sign: i64| {
-            let want = crate::sample::bounded::depth::depth(&e, &wz, sign);
+            let want =
+                crate::sample::bounded::depth::depth(&e, &wz, sign, &mut crate::coverage::NoProbe);
             let got = depth(&e, &wz, sign);
             assert_eq!(
                 got, want,

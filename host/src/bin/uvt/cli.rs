@@ -364,6 +364,14 @@ pub enum VecCmd {
         /// samples per resolve record
         #[arg(long, default_value_t = 16)]
         spp: u32,
+        /// also write the model's coverage bins of the written records (bsample, psample) to
+        /// this JSON file (`uvt vectors coverage` lists the bins)
+        #[arg(long)]
+        coverage: Option<PathBuf>,
+        /// bias the stream toward these bins (comma-separated bin names; `uvt vectors coverage`
+        /// lists them): still seeded and shard-invariant
+        #[arg(long, value_delimiter = ',')]
+        target_bins: Vec<String>,
     },
     /// Read input+output record pairs of KIND from stdin (one pair per line: the input words,
     /// then the output words) and compare each output with the model's; non-zero exit on any
@@ -383,6 +391,27 @@ pub enum VecCmd {
         /// samples per resolve record
         #[arg(long, default_value_t = 16)]
         spp: u32,
+        /// also write the model's coverage bins of the checked inputs (bsample, psample) to
+        /// this JSON file
+        #[arg(long)]
+        coverage: Option<PathBuf>,
+    },
+    /// Coverage per kind from the model's own bins (`uvt_core::coverage`): every bin, its
+    /// count over the committed sets (unit/, unit_exact/, frame_a/, frame_b/) and over a seeded
+    /// stream; unreachable bins apart with their reasons.
+    Coverage {
+        /// the folder of the committed sets
+        #[arg(long, default_value = "vectors")]
+        vectors: PathBuf,
+        /// stream records per kind
+        #[arg(long, default_value_t = 1_000_000)]
+        count: u64,
+        /// stream seed
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// write the report as JSON to this file
+        #[arg(long)]
+        json: Option<PathBuf>,
     },
     /// Decode one record field by field (hex and value) and show the model's output for an
     /// input record; given input and output words, the fields that differ from the model's

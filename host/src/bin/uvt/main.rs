@@ -559,21 +559,36 @@ fn run(cli: Cli) -> Result<()> {
             count,
             shard,
             spp,
+            coverage,
+            target_bins,
         }) => {
             use uvt_records::{kind::Kind, stream};
             let k = Kind::parse(&kind).map_err(|e| anyhow!(e))?;
-            let s = stream::Stream::new(k, config.as_deref(), seed, spp).map_err(|e| anyhow!(e))?;
+            let s = stream::Stream::new(k, config.as_deref(), seed, spp)
+                .and_then(|s| s.targeting(&target_bins))
+                .map_err(|e| anyhow!(e))?;
             let shard = stream::Shard::parse(&shard).map_err(|e| anyhow!(e))?;
-            uvt_host::vectors::pipe::gen(&mut std::io::stdout().lock(), &s, count, shard)?;
+            let mut cov = uvt_core::coverage::Counts::default();
+            let want = coverage.is_some().then_some(&mut cov);
+            uvt_host::vectors::pipe::gen(&mut std::io::stdout().lock(), &s, count, shard, want)?;
+            if let Some(path) = coverage {
+                std::fs::write(&path, uvt_records::coverage::json(k, &cov) + "\n")?;
+            }
         }
         Cmd::Vectors(VecCmd::Ver {
             kind,
             arch_only,
             count,
             spp,
+            coverage,
         }) => {
             let k = uvt_records::kind::Kind::parse(&kind).map_err(|e| anyhow!(e))?;
-            let v = uvt_host::vectors::pipe::ver(std::io::stdin().lock(), k, spp, arch_only)?;
+            let mut cov = uvt_core::coverage::Counts::default();
+            let want = coverage.is_some().then_some(&mut cov);
+            let v = uvt_host::vectors::pipe::ver(std::io::stdin().lock(), k, spp, arch_only, want)?;
+            if let Some(path) = &coverage {
+                std::fs::write(path, uvt_records::coverage::json(k, &cov) + "\n")?;
+            }
             for m in &v.msgs {
                 say(&format!("MISMATCH {m}\n"))?;
             }
@@ -586,6 +601,18 @@ fn run(cli: Cli) -> Result<()> {
             }
             uvt_host::vectors::pipe::check_count(v.pairs, count, &kind)?;
             say(&format!("PASS {} {kind} pairs match the model\n", v.pairs))?;
+        }
+        Cmd::Vectors(VecCmd::Coverage {
+            vectors,
+            count,
+            seed,
+            json,
+        }) => {
+            let r = uvt_host::vectors::coverage::report(&vectors, count, seed)?;
+            say(&r.text)?;
+            if let Some(path) = json {
+                std::fs::write(&path, r.json)?;
+            }
         }
         Cmd::Vectors(VecCmd::Decode { kind, words }) => {
             let d = uvt_host::vectors::pipe::decode(&kind, &words)?;

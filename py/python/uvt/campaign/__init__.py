@@ -4,7 +4,7 @@ A campaign (:class:`Campaign`) runs ``shards`` × ``per_shard`` records of a see
 (``uvt.gen``: record *i* is the same whatever the sharding) through a simulator — the model
 itself, or a command such as the Verilator runner of ``vectors/dpi/pipe.cpp`` — and checks every
 output against the model (``uvt.run``, ``uvt.compare``). Each shard is one Dask task
-(:func:`run_shard`) returning counts, coverage by triangle class and the first failing record
+(:func:`run_shard`) returning counts, the model's coverage bins and the first failing record
 decoded with reproducer commands; :func:`run` reduces them in shard order, so the summary is the
 same for any number of workers, records finished shards in a state file so that a restarted
 campaign resumes, and can stop at the first failure. It runs on a ``LocalCluster``, or on any

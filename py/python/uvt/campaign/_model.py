@@ -76,8 +76,14 @@ class Model:
         self.configs = uvt.CONFIGS
         self.kinds = tuple(uvt.KINDS)
 
-    def gen(self, kind, config, seed, count, shard):
-        return uvt.gen(kind, config, seed, count, shard=shard)
+    def gen(self, kind, config, seed, count, shard, target=()):
+        return uvt.gen(kind, config, seed, count, shard=shard, target=list(target) or None)
+
+    def coverage(self, kind, inputs):
+        return uvt.coverage(kind, inputs)
+
+    def coverage_bins(self, kind=None):
+        return uvt.coverage_bins(kind)
 
     def run(self, kind, inputs):
         return uvt.run(kind, inputs)

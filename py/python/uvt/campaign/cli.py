@@ -42,6 +42,8 @@ def _parser() -> argparse.ArgumentParser:
     r.add_argument("--corrupt", type=int, default=None,
                    help="model simulator: flip bit 0 of word 1 of this record's output")
     r.add_argument("--timeout", type=float, default=None, help="seconds per shard's simulator")
+    r.add_argument("--target-bins", default="",
+                   help="coverage bins to bias the stream toward (comma-separated names)")
     g = r.add_mutually_exclusive_group()
     g.add_argument("--workers", type=int, default=1, help="LocalCluster worker processes")
     g.add_argument("--scheduler", default=None, help="address of a running Dask scheduler")
@@ -102,7 +104,8 @@ def main(argv: Optional[List[str]] = None) -> int:
             return 0
         spec = Campaign(kind=a.kind, config=a.config, seed=a.seed, shards=a.shards,
                         per_shard=a.per_shard, simulator=a.sim, architectural=a.arch_only,
-                        corrupt=a.corrupt, timeout=a.timeout).validate()
+                        corrupt=a.corrupt, timeout=a.timeout,
+                        target=tuple(t for t in a.target_bins.split(",") if t)).validate()
         if a.only_shard is not None:
             from .task import only_shard  # noqa: PLC0415
 

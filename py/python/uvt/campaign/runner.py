@@ -7,8 +7,8 @@ import uuid
 from dataclasses import dataclass, field
 from typing import Dict, List, Optional
 
-from ._model import CampaignError
-from .coverage import CLASSES, add
+from ._model import CampaignError, load
+from .coverage import add, table
 from .spec import Campaign
 from .state import StateFile
 from .task import run_shard
@@ -96,25 +96,14 @@ class Summary:
         return d
 
     def table(self) -> str:
-        """The summary table (text): per triangle class its records and what they exercised,
+        """The summary table (text): the model's coverage bins of the records (``.coverage``),
         totals, and the first failure decoded with its reproducer commands."""
         c = self.campaign
-        cov = self.coverage
-        cols = ["records", "covered", "ties", "ties_covered", "w<=0", "corner", "visible"]
-        cols = [x for x in cols if any(k.endswith("/" + x) for k in cov)]
-        rows = [x for x in (*CLASSES, "all") if f"{x}/records" in cov]
         out = [f"campaign {c.kind} at {c.stream_config or '-'}, seed {c.seed}: {c.shards} shards "
                f"× {c.per_shard} records, simulator {c.simulator}"
-               + (" (architectural fields)" if c.architectural else "")]
-        w = [max(8, len(x)) for x in cols]
-        out.append("| class    | " + " | ".join(x.rjust(n) for x, n in zip(cols, w)) + " |")
-        out.append("|----------|" + "|".join("-" * (n + 2) for n in w) + "|")
-        for r in rows:
-            out.append(f"| {r:<8} | " + " | ".join(
-                str(cov.get(f"{r}/{x}", 0)).rjust(n) for x, n in zip(cols, w)) + " |")
-        tot = {x: sum(cov.get(f"{r}/{x}", 0) for r in rows) for x in cols}
-        out.append("| total    | " + " | ".join(str(tot[x]).rjust(n) for x, n in zip(cols, w))
-                   + " |")
+               + (" (architectural fields)" if c.architectural else "")
+               + (f", directed at {', '.join(c.target)}" if c.target else "")]
+        out.extend(table(load(), c.kind, self.coverage))
         out.append(f"shards: {len(self.shards)} of {c.shards} finished ({self.ran} run now, "
                    f"{self.resumed} from the state file, {self.cancelled} cancelled); "
                    f"{self.records} records checked, {self.mismatched} mismatched; "

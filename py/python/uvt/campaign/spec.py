@@ -8,7 +8,7 @@ import os
 import shlex
 import shutil
 from dataclasses import asdict, dataclass
-from typing import Optional
+from typing import Optional, Tuple
 
 from ._model import CampaignError, config_for, load, stream_kinds
 
@@ -31,7 +31,8 @@ class Campaign:
     file holding them); it writes to standard output unless it names ``{out}``. ``{seed}``,
     ``{shard}`` (K) and ``{shards}`` (M) are replaced too. ``architectural`` compares only the
     architectural fields (a sample test's ``covered`` and ``depth``). ``timeout`` (seconds) ends
-    a simulator that hangs.
+    a simulator that hangs. ``target``: coverage bin names (``uvt.coverage_bins``) the stream is
+    biased toward (``uvt vectors gen --target-bins``; still seeded and shard-invariant).
     """
 
     kind: str = "bsample"
@@ -45,6 +46,7 @@ class Campaign:
     corrupt_word: int = 1
     corrupt_bit: int = 0
     timeout: Optional[float] = None
+    target: Tuple[str, ...] = ()
 
     @property
     def count(self) -> int:
@@ -62,6 +64,7 @@ class Campaign:
         d = asdict(self)
         d.pop("timeout")
         d["config"] = self.stream_config
+        d["target"] = list(self.target)  # as JSON holds it (the state file compares)
         return d
 
     def key(self) -> str:
@@ -103,7 +106,7 @@ class Campaign:
         # The stream itself says which configurations a kind is made at (uvt.stream_config).
         cfg = self.stream_config
         try:
-            load().gen(self.kind, cfg, self.seed, 1, (1, 1))
+            load().gen(self.kind, cfg, self.seed, 1, (1, 1), self.target)
         except Exception as e:  # the model names what it refuses
             raise CampaignError(f"{self.kind} records at {cfg}: {e}") from e
 

@@ -138,6 +138,8 @@ def gen_command(spec: Campaign, k: int) -> str:
     c = f"uvt vectors gen {spec.kind}"
     if cfg is not None and spec.kind != "psample":
         c += f" --config {cfg}"
+    if spec.target:
+        c += " --target-bins " + ",".join(spec.target)
     return c + f" --seed {spec.seed} --count {spec.count} --shard {k}/{spec.shards}"
 
 
@@ -177,9 +179,10 @@ def run_shard(spec: Campaign, k: int) -> dict:
     r = shard_range(spec.count, k, spec.shards)
     res = {"shard": k, "records": len(r), "first_record": r.start, "mismatched": 0,
            "coverage": {}, "failure": None, "error": None}
-    inputs = model.gen(spec.kind, spec.stream_config, spec.seed, spec.count, (k, spec.shards))
+    inputs = model.gen(spec.kind, spec.stream_config, spec.seed, spec.count, (k, spec.shards),
+                       spec.target)
     expected = model.run(spec.kind, inputs)
-    res["coverage"] = classify(spec.kind, inputs, expected)
+    res["coverage"] = classify(model, spec.kind, inputs)
     try:
         observed = simulate(spec, k, inputs, expected)
     except CampaignError as e:
