@@ -20,7 +20,8 @@ def test_summary_and_table_are_made_from_the_per_build_files():
     for row in rep["builds"]:
         b = units.build(ROOT, row["build"])
         rows = report.load(per, b.name)
-        again = report.summary(b, rows, {"sets": row["sets"], "seconds": row["seconds"]})
+        again = report.summary(b, rows, {k: row[k] for k in ("sets", "seconds",
+                                                               "icarus_confirmed")})
         assert again == row, b.name
         assert row["mutants"] == rep["mutants_per_build"] == len({r["id"] for r in rows})
         for r in rows:

@@ -72,12 +72,13 @@ def _parser() -> argparse.ArgumentParser:
                  "bsample, psample, bounds, mul; give --json a report of your own)")
     sub.choices["check"].add_argument("--sample", type=int, default=50,
                                       help="mutants 1..N of each build's list")
-    for name, n in (("run", 2), ("check", 1)):
+    for name, n in (("run", "2,0"), ("check", "1,0")):
         sub.choices[name].add_argument(
-            "--cross", type=int, default=n,
-            help=f"killed mutants and survivors each judged again by Icarus (default {n})")
-    sub.choices["prove"].add_argument("--timeout", type=float, default=60.0,
-                                      help="seconds per proof")
+            "--cross", default=n, metavar="K,S",
+            help=f"the first K killed mutants and S survivors judged again by Icarus, each on "
+                 f"its own netlist (default {n})")
+    sub.choices["prove"].add_argument("--timeout", type=float, default=20.0,
+                                      help="seconds of solving per proof (sat -timeout)")
     sub.choices["prove"].add_argument("--depth", type=int, default=120,
                                       help="largest induction length")
     sub.choices["stream"].add_argument("--records", type=int, default=10**6,
@@ -112,9 +113,10 @@ def main(argv: Optional[List[str]] = None) -> int:
         for b in blds:
             if a.cmd == "run":
                 r = flow.run_build(repo, b, a.mutants, a.seed, work / b.name, a.jobs,
-                                   cross=a.cross)
+                                   cross=_pair(a.cross))
                 report.save(per, b.name, [x.to_json() for x in r.results])
-                meta["runs"][b.name] = {"sets": r.sizes, "seconds": round(r.seconds, 1)}
+                meta["runs"][b.name] = {"sets": r.sizes, "seconds": round(r.seconds, 1),
+                                        "icarus_confirmed": r.confirmed}
             elif a.cmd == "prove":
                 _prove(repo, b, a, work, per)
             elif a.cmd == "stream":
@@ -133,27 +135,37 @@ def main(argv: Optional[List[str]] = None) -> int:
         return 2
 
 
+def _pair(s: str):
+    try:
+        k, v = (int(x) for x in s.split(","))
+    except ValueError as e:
+        raise MutationError(f"--cross {s!r}: K,S (two counts)") from e
+    return (k, v)
+
+
 def _prove(repo: Path, b, a, work: Path, per: Path) -> None:
     rows = report.load(per, b.name)
     todo = [r for r in rows if report.fate(r) == "survivor" and "equivalent" not in r]
     if not todo:
         return
-    net = design.single(repo, b, None, work / f"prove-{b.name}")
+    d = work / f"prove-{b.name}"
+    net = design.single(repo, b, None, d)
     t0 = time.time()
+    # One Yosys process per part (each reads the unit once), ``jobs`` parts at a time; the
+    # file is saved after each part, so an interrupted run keeps what it proved.
+    size = 25
+    parts = [todo[k:k + size] for k in range(0, len(todo), size)]
 
-    def one(r):
-        t = time.time()
-        v = equiv.prove(repo, b, design.from_row(r), net, work / f"prove-{b.name}" / str(r["id"]),
-                        a.depth, a.timeout)
-        r["equivalent"] = v if v else "undecided"
-        r["equiv_seconds"] = round(time.time() - t, 1)
-        return r
+    def one(part):
+        got = equiv.prove_many(repo, b, [design.from_row(r) for r in part], net,
+                               d / f"p{part[0]['id']}", a.depth, a.timeout)
+        for r in part:
+            r["equivalent"] = got[r["id"]]
+        return part
 
     with ThreadPoolExecutor(max_workers=a.jobs) as ex:
-        for i, _ in enumerate(ex.map(one, todo)):
-            if (i + 1) % 20 == 0:
-                report.save(per, b.name, rows)
-    report.save(per, b.name, rows)
+        for _ in ex.map(one, parts):
+            report.save(per, b.name, rows)
     c = sum(r.get("equivalent") == "proven" for r in todo)
     print(f"{b.name}: {c} of {len(todo)} survivors proven equivalent ({time.time() - t0:.0f} s)")
 
@@ -162,14 +174,17 @@ def _stream(repo: Path, b, a, work: Path, per: Path) -> None:
     if not stream.has_stream(b):
         return
     rows = report.load(per, b.name)
-    todo = [r for r in rows if report.fate(r) == "survivor"]
+    shards = max(1, a.records // a.per_shard)
+    # Survivors not yet streamed this far (a survivor alive after as many records is not run
+    # again: a longer stream runs the survivors alive after a shorter one).
+    todo = [r for r in rows if report.fate(r) == "survivor"
+            and r.get("stream_records", 0) < shards * a.per_shard]
     if not todo:
         return
     d = work / f"stream-{b.name}"
     ids = {r["id"] for r in todo}
     muts = [m for m in design.make(repo, b, a.mutants, a.seed, d) if m.id in ids]
     exe = stream.build_runner(repo, b, design.netlist(repo, b, muts, a.mutants, d), d, a.jobs)
-    shards = max(1, a.records // a.per_shard)
     got = stream.kill(b, exe, [r["id"] for r in todo], a.stream_seed, shards, a.per_shard,
                       a.jobs)
     for r in todo:
@@ -187,7 +202,7 @@ def _check(repo: Path, blds, a, work: Path, per: Path) -> int:
             raise MutationError(f"{per}/{b.name}.jsonl: no committed results of {b.name} "
                                 "(bash host/report/regen.sh --only mutation)")
         r = flow.run_build(repo, b, a.mutants, a.seed, work / f"check-{b.name}", a.jobs, a.sample,
-                           a.cross)
+                           _pair(a.cross))
         for x in r.results:
             got, exp = x.to_json(), want.get(x.mutation.id)
             if exp is None or got["mutate"] != exp.get("mutate"):

@@ -8,7 +8,7 @@ import time
 from concurrent.futures import ThreadPoolExecutor
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Dict, List, Optional
+from typing import Dict, List, Optional, Tuple
 
 from . import bench, design
 from .errors import MutationError
@@ -66,6 +66,8 @@ class Run:
     sizes: Dict[str, int]
     results: List[Result] = field(default_factory=list)
     seconds: float = 0.0
+    #: verdicts judged again by Icarus on single-mutant netlists, all agreeing
+    confirmed: int = 0
 
 
 #: Mutants per simulator build. Verilator 5.006 mis-simulates some large select-input designs
@@ -76,11 +78,12 @@ CHUNK = 250
 
 
 def run_build(repo: Path, b: Build, count: int, seed: int, work: Path, jobs: int = 2,
-              upto: Optional[int] = None, cross: int = 0, log=print) -> Run:
+              upto: Optional[int] = None, cross: Tuple[int, int] = (0, 0), log=print) -> Run:
     """Mutate build ``b`` (``count`` mutants, ``seed``), build its simulators in ``work`` and
     judge every mutant (``upto``: mutants 1..upto of the list alone) against the committed sets;
     ``cross``: that many killed mutants and that many survivors judged again by Icarus on their
-    own single-mutant netlists, which must agree."""
+    own single-mutant netlists, which must agree (a survivor under Icarus runs every set:
+    minutes for the bounds unit)."""
     t0 = time.time()
     muts = design.make(repo, b, count, seed, work)
     todo = [m for m in muts if upto is None or m.id <= upto]
@@ -121,8 +124,8 @@ def run_build(repo: Path, b: Build, count: int, seed: int, work: Path, jobs: int
             for r in ex.map(judge, g):
                 results[r.mutation.id] = r
     out = [results[m.id] for m in todo]
-    checked = _cross(repo, b, out, names, args, work, cross) if cross else 0
-    r = Run(b, seed, names, sizes, out, time.time() - t0)
+    checked = _cross(repo, b, out, names, args, work, cross)
+    r = Run(b, seed, names, sizes, out, time.time() - t0, checked)
     k = sum(x.killed for x in out)
     log(f"{b.name}: {k} of {len(out)} killed by the committed sets ({built} simulator builds, "
         f"{checked} verdicts confirmed by Icarus, {r.seconds:.0f} s)")
@@ -130,11 +133,11 @@ def run_build(repo: Path, b: Build, count: int, seed: int, work: Path, jobs: int
 
 
 def _cross(repo: Path, b: Build, out: List[Result], names: List[str], args: Dict, work: Path,
-           n: int) -> int:
-    """Judge the first ``n`` killed mutants and the first ``n`` survivors of ``out`` again under
-    Icarus, each on its own single-mutant netlist (no select input); a verdict that differs is
-    an error. The number confirmed."""
-    pick = [x for x in out if x.killed][:n] + [x for x in out if not x.killed][:n]
+           n: Tuple[int, int]) -> int:
+    """Judge the first ``n[0]`` killed mutants and the first ``n[1]`` survivors of ``out`` again
+    under Icarus, each on its own single-mutant netlist (no select input); a verdict that
+    differs is an error. The number confirmed."""
+    pick = [x for x in out if x.killed][:n[0]] + [x for x in out if not x.killed][:n[1]]
     for x in pick:
         d = work / "icarus"
         cmd = bench.icarus(repo, b, design.single(repo, b, x.mutation, d), d)

@@ -15,7 +15,7 @@ from collections import Counter
 from pathlib import Path
 from typing import Dict, List
 
-from .units import Build
+from .units import SETS, Build
 
 
 def write_atomic(path: Path, text: str) -> None:
@@ -66,7 +66,8 @@ def summary(b: Build, rows: List[Dict], meta: Dict) -> Dict:
         "mutants": len(rows),
         "modes": dict(sorted(Counter(r["mode"] for r in rows).items())),
         "killed_by_vectors": by["vectors"],
-        "killed_by_set": dict(Counter(r["killed_by"] for r in killed)),
+        "killed_by_set": {s: n for s in (*SETS, "pairs")
+                          for n in [sum(r["killed_by"] == s for r in killed)] if n},
         "equivalent": by["equivalent"],
         "killed_by_stream": by["stream"],
         "stream_records": max((r.get("stream_records", 0) for r in streamed), default=0),
@@ -79,6 +80,7 @@ def summary(b: Build, rows: List[Dict], meta: Dict) -> Dict:
         "records_to_kill": {"median": statistics.median(rtk) if rtk else None,
                             "largest": max(rtk) if rtk else None},
         "seconds": meta.get("seconds"),
+        "icarus_confirmed": meta.get("icarus_confirmed"),
     }
 
 
@@ -95,7 +97,8 @@ def write(repo: Path, builds: List[Build], out_json: Path, per: Path, meta: Dict
     for b in builds:
         rows = load(per, b.name)
         if rows:
-            m = runs.get(b.name) or {k: old.get(b.name, {}).get(k) for k in ("sets", "seconds")}
+            m = runs.get(b.name) or {k: old.get(b.name, {}).get(k)
+                                     for k in ("sets", "seconds", "icarus_confirmed")}
             rep["builds"].append(summary(b, rows, m))
     write_atomic(out_json, json.dumps(rep, indent=1) + "\n")
     return rep
@@ -113,7 +116,7 @@ def markdown(rep: Dict) -> str:
         stream = (f"{r['killed_by_stream']} (of {r['stream_records']:,} records each)"
                   if r["stream_records"] else "no stream run")
         score = f"{100 * r['score_vectors']:.1f}%" if r["score_vectors"] is not None else "–"
-        rtk = r["records_to_kill"]
+        rtk = {k: (f"{v:g}" if v is not None else "–") for k, v in r["records_to_kill"].items()}
         rows.append(f"| {r['build']} | {r['checked']} | {r['mutants']} | "
                     f"{r['killed_by_vectors']} ({sets}) | {r['equivalent']} | {stream} | "
                     f"{r['survivors']} | {score} | {rtk['median']}, {rtk['largest']} |")

@@ -24,6 +24,12 @@ from .units import Build
 RUNNERS = {"uvt_bsample": ("bsample", "pipe.cpp"), "uvt_psample": ("psample", "pipe_psample.cpp")}
 
 
+#: Seconds a shard's runner may take: a mutant that never gives a record's result (its valid
+#: logic broken by the stream's bubbles) hangs the runner, and the campaign reports the shard's
+#: runner as failed (10^4 records take under a second).
+HANG = 120.0
+
+
 def has_stream(b: Build) -> bool:
     """Whether build ``b``'s unit has a stream runner (a team's unit: that of the reference unit
     it stands for, whose ports it has)."""
@@ -71,7 +77,8 @@ def kill(b: Build, exe: Path, ids: List[int], seed: int, shards: int, per_shard:
     try:
         for k in [0, *ids]:
             spec = Campaign(kind=kind, seed=seed, shards=shards, per_shard=per_shard,
-                            simulator=f"{exe} 1 +MUTSEL={k}", architectural=True)
+                            simulator=f"{exe} 1 +MUTSEL={k}", architectural=True,
+                            timeout=HANG)
             s = run(spec, client, stop_on_failure=True, progress=False)
             f = s.first_failure
             if f is None:
