@@ -47,7 +47,10 @@ fn a_weakened_vector_set_fails_the_sample() {
     let root = ffi::root();
     let rtl = repo.path().join("vectors/rtl");
     std::fs::create_dir_all(&rtl).unwrap();
-    for e in std::fs::read_dir(root.join("vectors/rtl")).unwrap().flatten() {
+    for e in std::fs::read_dir(root.join("vectors/rtl"))
+        .unwrap()
+        .flatten()
+    {
         if e.path().is_file() {
             std::fs::copy(e.path(), rtl.join(e.file_name())).unwrap();
         }
