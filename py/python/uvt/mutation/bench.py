@@ -54,20 +54,16 @@ def sets(repo: Path, b: Build) -> List[str]:
             and (vec / s / f"{stem}_out.hex").stat().st_size > 0]
 
 
-def verilate(repo: Path, b: Build, netlist: Path, out: Path, jobs: int = 2) -> Path:
-    """Build the bench with ``netlist`` under Verilator (``--binary --timing``) into ``out``
-    (kept: rebuilt only when the bench, the netlist or the options change); the executable."""
+def verilator_build(args: List[str], sources: List[Path], exe: Path, out: Path) -> Path:
+    """Run the Verilator command ``args`` that builds ``exe`` under ``out/obj``, unless a build
+    from the same command and the same ``sources`` (their contents) is there already; the
+    executable."""
     if shutil.which("verilator") is None:
         raise MutationError("verilator not found (Debian package verilator; tests/run.sh "
                             "installs it)")
     out.mkdir(parents=True, exist_ok=True)
-    tb = rtl_dir(repo) / f"{b.bench.tb}.v"
-    args = ["verilator", "--binary", "--timing", "-j", str(jobs), "-Wno-fatal", "-Wno-lint",
-            "-Wno-style", *_defines(b), *_params(b), "--top-module", b.bench.tb,
-            "--Mdir", str(out / "obj"), "-o", "sim", str(tb), str(netlist)]
-    stamp = hashlib.sha256(json.dumps(args).encode() + tb.read_bytes()
-                           + netlist.read_bytes()).hexdigest()
-    exe = out / "obj" / "sim"
+    stamp = hashlib.sha256(json.dumps(args).encode()
+                           + b"".join(s.read_bytes() for s in sources)).hexdigest()
     if exe.is_file() and (out / "stamp").is_file() and (out / "stamp").read_text() == stamp:
         return exe
     shutil.rmtree(out / "obj", ignore_errors=True)
@@ -77,6 +73,16 @@ def verilate(repo: Path, b: Build, netlist: Path, out: Path, jobs: int = 2) -> P
                             f"{p.stderr[-3000:]}")
     (out / "stamp").write_text(stamp)
     return exe
+
+
+def verilate(repo: Path, b: Build, netlist: Path, out: Path, jobs: int = 2) -> Path:
+    """Build the bench with ``netlist`` under Verilator (``--binary --timing``) into ``out``
+    (kept: rebuilt only when the bench, the netlist or the options change); the executable."""
+    tb = rtl_dir(repo) / f"{b.bench.tb}.v"
+    args = ["verilator", "--binary", "--timing", "-j", str(jobs), "-Wno-fatal", "-Wno-lint",
+            "-Wno-style", *_defines(b), *_params(b), "--top-module", b.bench.tb,
+            "--Mdir", str(out / "obj"), "-o", "sim", str(tb), str(netlist)]
+    return verilator_build(args, [tb, netlist], out / "obj" / "sim", out)
 
 
 def icarus(repo: Path, b: Build, netlist: Path, out: Path) -> List[str]:

@@ -10,13 +10,10 @@ it has no stream."""
 
 from __future__ import annotations
 
-import hashlib
-import json
-import shutil
-import subprocess
 from pathlib import Path
 from typing import Dict, List, Optional
 
+from .bench import verilator_build
 from .errors import MutationError
 from .units import Build
 
@@ -39,25 +36,11 @@ def has_stream(b: Build) -> bool:
 def build_runner(repo: Path, b: Build, netlist: Path, out: Path, jobs: int = 2) -> Path:
     """Verilate ``vectors/dpi/<runner>`` with the mutated ``netlist`` into ``out`` (kept when the
     sources are unchanged); the executable."""
-    if shutil.which("verilator") is None:
-        raise MutationError("verilator not found (Debian package verilator)")
     src = repo / "vectors" / "dpi" / RUNNERS[b.like or b.top][1]
     args = ["verilator", "--cc", "--exe", "--build", "-j", str(jobs), "-Wno-fatal", "-Wno-lint",
             "-Wno-style", "--top-module", b.top, "--prefix", f"V{b.like or b.top}",
-            "--Mdir", str(out / "obj"), "-o", "pipe",
-            str(netlist), str(src)]
-    stamp = hashlib.sha256(json.dumps(args).encode() + src.read_bytes()
-                           + netlist.read_bytes()).hexdigest()
-    exe = out / "obj" / "pipe"
-    if exe.is_file() and (out / "stamp").is_file() and (out / "stamp").read_text() == stamp:
-        return exe
-    shutil.rmtree(out / "obj", ignore_errors=True)
-    p = subprocess.run(args, capture_output=True, text=True)
-    if p.returncode != 0 or not exe.is_file():
-        raise MutationError(f"verilator failed ({' '.join(args)}):\n{p.stdout[-3000:]}"
-                            f"{p.stderr[-3000:]}")
-    (out / "stamp").write_text(stamp)
-    return exe
+            "--Mdir", str(out / "obj"), "-o", "pipe", str(netlist), str(src)]
+    return verilator_build(args, [src, netlist], out / "obj" / "pipe", out)
 
 
 def kill(b: Build, exe: Path, ids: List[int], seed: int, shards: int, per_shard: int,
