@@ -43,6 +43,23 @@ def build_runner(repo: Path, b: Build, netlist: Path, out: Path, jobs: int = 2) 
     return verilator_build(args, [src, netlist], out / "obj" / "pipe", out)
 
 
+def _first(spec, client, s) -> Optional[dict]:
+    """The stream's first failure: the lowest failing shard's, after running the lower shards
+    that stopping at the first failing shard to finish cancelled (so the record is the first
+    failing one of the stream, whichever shard finished first)."""
+    from ..campaign import run_shard  # noqa: PLC0415
+
+    f = s.first_failure
+    if f is None:
+        return None
+    lower = [j for j in range(1, f["shard"]) if j not in s.shards]
+    for j, r in zip(lower, client.gather([client.submit(run_shard, spec, j, pure=False)
+                                          for j in lower])):
+        if r["mismatched"] or r.get("error"):
+            return {"shard": j, "failure": r.get("failure"), "error": r.get("error")}
+    return f
+
+
 def kill(b: Build, exe: Path, ids: List[int], seed: int, shards: int, per_shard: int,
          workers: int = 2, log=print) -> Dict[int, Optional[dict]]:
     """Run each mutant of ``ids`` (0: the unmutated unit, which must pass) through a campaign of
@@ -63,7 +80,7 @@ def kill(b: Build, exe: Path, ids: List[int], seed: int, shards: int, per_shard:
                             simulator=f"{exe} 1 +MUTSEL={k}", architectural=True,
                             timeout=HANG)
             s = run(spec, client, stop_on_failure=True, progress=False)
-            f = s.first_failure
+            f = _first(spec, client, s)
             if f is None:
                 if not s.passed:
                     raise MutationError(f"{b.name} mutant {k}: the campaign did not finish")
