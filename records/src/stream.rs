@@ -9,7 +9,8 @@
 //! consumer. The triangles come in named families ([`FAMILIES`]), drawn per record: the four
 //! classes, camera-plane crossers, a vertex at w = 0, slivers, fill-rule ties (a static triangle
 //! with a vertical edge through a sample position, so that an edge value is 0 in exact
-//! arithmetic) and domain-size coordinates. Viewports are drawn from 1×1 to 2048×2048; a sample
+//! arithmetic) and domain-size coordinates; a targeting stream adds directed families
+//! ([`DIRECTED`]). Viewports are drawn from 1×1 to 2048×2048; a sample
 //! lies inside the triangle's projected box half the time, anywhere in the viewport (its corners
 //! included) otherwise; t, u and v reach their extremes.
 
@@ -31,6 +32,25 @@ use uvt_core::coverage::{Bin, Counts};
 pub const FAMILIES: [&str; 9] = [
     "static", "motion", "defocus", "both", "crosser", "w_zero", "sliver", "tie", "huge",
 ];
+
+/// The families a targeting stream ([`Stream::targeting`]) draws besides [`FAMILIES`], coded
+/// after them: cases built for a decision the plain families reach too rarely. `tie_horizontal`:
+/// a static triangle with a horizontal edge through the sample (an edge value 0 with a = 0, the
+/// planar fill rule decided by b). `depth_extreme`: a static triangle whose depth plane has an
+/// extreme exponent: a large triangle with depths of a few LSB (the planar depth's shift capped
+/// at 63), or a sliver with depths up to ±8000 (negative exponents: the scaled depth, zero and
+/// saturated).
+pub const DIRECTED: [&str; 2] = ["tie_horizontal", "depth_extreme"];
+
+/// The name of family code `fam` ([`FAMILIES`], then [`DIRECTED`]).
+fn family_name(fam: usize) -> &'static str {
+    FAMILIES
+        .iter()
+        .chain(DIRECTED.iter())
+        .nth(fam)
+        .copied()
+        .unwrap_or("static")
+}
 
 /// A contiguous part `k` of `m` (1 ≤ k ≤ m) of a stream: of `count` records, indices
 /// `⌊count·(k−1)/m⌋ .. ⌊count·k/m⌋`. Fields private; [`Shard::new`] and [`Shard::parse`] check.
@@ -149,8 +169,9 @@ impl Stream {
     }
     /// The stream biased toward the bins named in `bins` (`uvt_core::coverage::Bin` names of
     /// this kind; empty: the stream itself): record i is the first of up to [`TARGET_TRIES`]
-    /// candidates, drawn in turn from record i's own generator, on which the model's test
-    /// takes one of the bins (the last candidate if none does). Record i still depends only
+    /// candidates, drawn in turn from record i's own generator (its families [`FAMILIES`] and
+    /// [`DIRECTED`]), on which the model's test takes one of the bins (the last candidate if
+    /// none does). Record i still depends only
     /// on the kind, configuration, seed, i and the target list, so shards concatenate to the
     /// whole stream. Unknown bins, bins of another kind and unreachable bins are refused.
     pub fn targeting(mut self, bins: &[String]) -> Result<Stream, String> {
@@ -218,6 +239,7 @@ impl Stream {
     /// One record drawn from `rng` (the plain stream's record i is the first draw of its
     /// generator).
     fn draw(&self, rng: &mut Pcg64) -> (Rec, Option<&'static str>) {
+        let directed = self.targets.contains(&true);
         match self.kind {
             Kind::Select => (select_record(rng), None),
             Kind::Resolve => {
@@ -227,25 +249,25 @@ impl Stream {
                 (enc_resolve_in(&colors), None)
             }
             Kind::Setup => {
-                let (fam, t, vp, _) = draw(rng, None, false);
+                let (fam, t, vp, _) = draw(rng, None, false, directed);
                 let t = on_grid(&t, self.setup.pos());
-                (enc_setup_in(&t, vp, self.setup), Some(FAMILIES[fam]))
+                (enc_setup_in(&t, vp, self.setup), Some(family_name(fam)))
             }
             Kind::Psample => loop {
                 // A triangle the planar setup culls (det P' = 0) has no record: draw again (the
                 // same generator, so the record stays a function of the index).
-                let (fam, t, vp, pos) = draw(rng, None, true);
+                let (fam, t, vp, pos) = draw(rng, None, true, directed);
                 let t = static_of(&t);
                 if let Some(pl) = Setup::unculled::<PlanarPrecision>(&t, vp).planar() {
-                    break (enc_psample_in(&t, vp, &pl, pos), Some(FAMILIES[fam]));
+                    break (enc_psample_in(&t, vp, &pl, pos), Some(family_name(fam)));
                 }
             },
             // `new` made a grid for every bounded stream and refused the other kinds.
             _ => {
                 let g = self.grid.unwrap_or(Grid::DEFAULT);
-                let (fam, t, vp, pos) = draw(rng, Some(g), false);
+                let (fam, t, vp, pos) = draw(rng, Some(g), false, directed);
                 let s = g.sample(&tuv(rng));
-                (enc_bsample_in(&t, vp, g, pos, &s), Some(FAMILIES[fam]))
+                (enc_bsample_in(&t, vp, g, pos, &s), Some(family_name(fam)))
             }
         }
     }
@@ -303,10 +325,16 @@ fn tuv(rng: &mut Pcg64) -> Sample {
 
 /// A family, a triangle (on `grid` when given; static when `stat`), its viewport and a
 /// sample position.
-fn draw(rng: &mut Pcg64, grid: Option<Grid>, stat: bool) -> (usize, Triangle, Viewport, ScreenPos) {
+fn draw(
+    rng: &mut Pcg64,
+    grid: Option<Grid>,
+    stat: bool,
+    directed: bool,
+) -> (usize, Triangle, Viewport, ScreenPos) {
+    let families = FAMILIES.len() + if directed { DIRECTED.len() } else { 0 };
     loop {
         let vp = viewport(rng);
-        let fam = rng.gen_range(0..FAMILIES.len());
+        let fam = rng.gen_range(0..families);
         let (ends, tie) = family(rng, fam, vp, stat);
         let q = |e: [[f64; 5]; 3]| e.map(|v| Vertex::from_bits(v.map(raw)));
         let Ok(t) = Triangle::new(q(ends[0]), q(ends[1])) else {
@@ -337,7 +365,7 @@ fn family(
         _ => (false, false),
     };
     let (motion, defocus) = (motion && !stat, defocus && !stat);
-    match FAMILIES[fam] {
+    match family_name(fam) {
         "crosser" => {
             let mut p = || {
                 let w = r(-3.0, 3.0);
@@ -377,6 +405,53 @@ fn family(
             });
             return ([t0, t0], pos);
         }
+        "tie_horizontal" => {
+            // w = 1: the screen y of clip y = 512·k/65536 is (128 − k)·H in 1/256 px from the
+            // top, exact; the sample on that row, its x inside the edge's span.
+            let k = r(-100.0, 100.0).round();
+            let ya = 512.0 * k / 65536.0;
+            let (xa, xb) = (r(-0.9, 0.0), r(0.05, 0.9));
+            let yc = ya + if r(0.0, 1.0) < 0.5 { -1.0 } else { 1.0 } * r(0.05, 0.9);
+            let xc = r(-0.9, 0.9);
+            let mut v = |x: f64, y: f64| [x, y, r(0.0, 1.0), 1.0, 0.0];
+            let t0 = [v(xa, ya), v(xb, ya), v(xc, yc)];
+            let h = i64::from(vp.height());
+            let ys = (128 - k as i64) * h;
+            let xn = r(xa, xb);
+            let xs = ((1.0 + xn) * 128.0 * f64::from(vp.width())).floor() as i64;
+            let ok = |v: i64, lim: u16| (0..256 * i64::from(lim)).contains(&v);
+            let pos = (ok(xs, vp.width()) && ok(ys, vp.height())).then_some(ScreenPos {
+                xs: xs as u32,
+                ys: ys as u32,
+            });
+            return ([t0, t0], pos);
+        }
+        "depth_extreme" => {
+            let t0 = if r(0.0, 1.0) < 0.5 {
+                // large (w up to 8000, the vertices rounded by up to 15 bits), depths of a few
+                // LSB of either sign: D large, Zv small
+                let w = r(2000.0, 8000.0);
+                let mut v = || {
+                    let z = r(-3.0, 3.0) / 65536.0;
+                    [r(-0.95, 0.95) * w, r(-0.95, 0.95) * w, z, w, 0.0]
+                };
+                [v(), v(), v()]
+            } else {
+                // a sliver (w = 1), its third vertex a few LSB off the line of the other two,
+                // |z| from 4000 to 8000 of either sign: D small, Zv large
+                let (x0, y0) = (r(-0.9, 0.9), r(-0.9, 0.9));
+                let (dx, dy) = (r(-0.05, 0.05), r(-0.05, 0.05));
+                let l = r(-0.5, 1.5);
+                let off = r(-4.0, 4.0) / 65536.0;
+                let mut z = || r(4000.0, 8000.0) * if r(0.0, 1.0) < 0.5 { -1.0 } else { 1.0 };
+                [
+                    [x0, y0, z(), 1.0, 0.0],
+                    [x0 + dx, y0 + dy, z(), 1.0, 0.0],
+                    [x0 + l * dx + off, y0 + l * dy, z(), 1.0, 0.0],
+                ]
+            };
+            return ([t0, t0], None);
+        }
         _ => {}
     }
     let (cx, cy, w, s) = (r(-1.2, 1.2), r(-1.2, 1.2), r(0.5, 6.0), r(0.05, 0.8));
@@ -398,7 +473,7 @@ fn family(
             zc + zs * r(-1.0, 1.0),
         ];
     }
-    if FAMILIES[fam] == "sliver" {
+    if family_name(fam) == "sliver" {
         // vertex 2 on the line of 0 and 1, moved off it by a few LSB
         let l = r(-0.5, 1.5);
         let (p0, p1) = (pts[0], pts[1]);
@@ -415,7 +490,7 @@ fn family(
             ends[0][k]
         };
     }
-    if FAMILIES[fam] == "w_zero" {
+    if family_name(fam) == "w_zero" {
         let k = rng.gen_range(0..3);
         ends[0][k][3] = 0.0;
         if !motion {
