@@ -3,8 +3,9 @@
 - ``run``: list ``--mutants`` mutations (default 1000, ``--seed`` 1) of every build of
   :data:`.units.BUILDS` (or ``--builds``) and judge them with the committed vector sets; each
   build's mutants go to ``host/report/mutation/<build>.jsonl`` as soon as it is done.
-- ``prove``: try to prove each survivor equivalent (Yosys ``sat -tempinduct``, ``--timeout``
-  seconds each).
+- ``prove``: try to prove each survivor equivalent (``--engine abc``: ABC's ``dprove`` on one
+  miter per build Yosys maps; ``sat``: Yosys's ``sat -tempinduct`` on one miter per mutant;
+  ``--timeout`` seconds each).
 - ``stream``: run each survivor still unproven through the seeded stream on Dask
   (``--records``; units with a stream runner).
 - ``report``: the summary ``host/report/mutation.json`` from the per-build files (every stage
@@ -22,6 +23,7 @@ import argparse
 import subprocess
 import sys
 import time
+from collections import Counter
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 from typing import List, Optional
@@ -77,14 +79,24 @@ def _parser() -> argparse.ArgumentParser:
             "--cross", default=n, metavar="K,S",
             help=f"the first K killed mutants and S survivors judged again by Icarus, each on "
                  f"its own netlist (default {n})")
-    sub.choices["prove"].add_argument("--timeout", type=float, default=20.0,
-                                      help="seconds of solving per proof (sat -timeout)")
+    sub.choices["prove"].add_argument("--timeout", type=float, default=12.0,
+                                      help="seconds per proof (one ABC dprove; sat: per SAT call)")
+    sub.choices["prove"].add_argument("--engine", choices=("abc", "sat"), default="abc",
+                                      help="abc: one miter per build, ABC's dprove per mutant; "
+                                           "sat: one miter per mutant, Yosys's sat -tempinduct")
     sub.choices["prove"].add_argument("--depth", type=int, default=120,
-                                      help="largest induction length")
+                                      help="largest induction length (--engine sat)")
+    sub.choices["prove"].add_argument("--retry", action="store_true",
+                                      help="prove the undecided again (e.g. with a longer "
+                                           "--timeout)")
     sub.choices["stream"].add_argument("--records", type=int, default=10**6,
                                        help="stream records per survivor")
     sub.choices["stream"].add_argument("--per-shard", type=int, default=20000)
     sub.choices["stream"].add_argument("--stream-seed", type=int, default=1)
+    sub.choices["stream"].add_argument(
+        "--target-bins", default="", metavar="BIN,BIN",
+        help="the stream directed at these coverage bins (uvt.coverage_bins; docs/coverage.md): "
+             "a survivor alive after the plain stream meets the directed one")
     return ap
 
 
@@ -145,29 +157,44 @@ def _pair(s: str):
 
 def _prove(repo: Path, b, a, work: Path, per: Path) -> None:
     rows = report.load(per, b.name)
-    todo = [r for r in rows if report.fate(r) == "survivor" and "equivalent" not in r]
+    done = ("proven", "differs") if a.retry else ("proven", "differs", "undecided")
+    todo = [r for r in rows if report.fate(r) == "survivor" and r.get("equivalent") not in done]
     if not todo:
         return
     d = work / f"prove-{b.name}"
     net = design.single(repo, b, None, d)
     t0 = time.time()
-    # One Yosys process per part (each reads the unit once), ``jobs`` parts at a time; the
-    # file is saved after each part, so an interrupted run keeps what it proved.
-    size = 25
-    parts = [todo[k:k + size] for k in range(0, len(todo), size)]
-
-    def one(part):
-        got = equiv.prove_many(repo, b, [design.from_row(r) for r in part], net,
-                               d / f"p{part[0]['id']}", a.depth, a.timeout)
-        for r in part:
-            r["equivalent"] = got[r["id"]]
-        return part
-
-    with ThreadPoolExecutor(max_workers=a.jobs) as ex:
-        for _ in ex.map(one, parts):
-            report.save(per, b.name, rows)
-    c = sum(r.get("equivalent") == "proven" for r in todo)
-    print(f"{b.name}: {c} of {len(todo)} survivors proven equivalent ({time.time() - t0:.0f} s)")
+    byid = {r["id"]: r for r in todo}
+    muts = [design.from_row(r) for r in todo]
+    if a.engine == "sat":
+        # One Yosys process per part of 25 mutants (each reads the unit once), ``jobs`` at a
+        # time; the file is saved after each part.
+        parts = [muts[k:k + 25] for k in range(0, len(muts), 25)]
+        with ThreadPoolExecutor(max_workers=a.jobs) as ex:
+            for got in ex.map(lambda p: equiv.prove_sat(repo, b, p, net, d / f"p{p[0].id}",
+                                                        a.depth, a.timeout), parts):
+                for k, v in got.items():
+                    byid[k]["equivalent"] = v
+                report.save(per, b.name, rows)
+    else:
+        # The miter holds every mutant the sets leave alive (not only those proven now), so a
+        # later run (--retry, a longer --timeout) finds it built.
+        alive = [design.from_row(r) for r in rows if not r.get("killed_by")]
+        try:
+            # The file is saved every 20 verdicts, so an interrupted run keeps what it decided.
+            for n, (k, v) in enumerate(equiv.prove(repo, b, alive, muts, a.mutants, net, d,
+                                                   a.timeout, a.jobs)):
+                byid[k]["equivalent"] = v
+                if n % 20 == 19:
+                    report.save(per, b.name, rows)
+        except equiv.Unprovable as e:
+            print(f"{e}: its survivors are left as they were (--engine sat proves one miter "
+                  "per mutant)")
+            return
+    report.save(per, b.name, rows)
+    c = Counter(r["equivalent"] for r in todo)
+    print(f"{b.name}: of {len(todo)} survivors {c['proven']} proven equivalent, {c['differs']} "
+          f"differ on free inputs, {c['undecided']} undecided ({time.time() - t0:.0f} s)")
 
 
 def _stream(repo: Path, b, a, work: Path, per: Path) -> None:
@@ -175,10 +202,16 @@ def _stream(repo: Path, b, a, work: Path, per: Path) -> None:
         return
     rows = report.load(per, b.name)
     shards = max(1, a.records // a.per_shard)
+    target = tuple(t for t in a.target_bins.split(",") if t)
     # Survivors not yet streamed this far (a survivor alive after as many records is not run
-    # again: a longer stream runs the survivors alive after a shorter one).
+    # again: a longer stream runs the survivors alive after a shorter one); a directed stream
+    # is kept apart (``stream_directed``), after the plain one, for survivors not proven
+    # equivalent.
+    key, n = ("stream_directed", "stream_directed_records") if target else ("stream",
+                                                                           "stream_records")
     todo = [r for r in rows if report.fate(r) == "survivor"
-            and r.get("stream_records", 0) < shards * a.per_shard]
+            and r.get(n, 0) < shards * a.per_shard
+            and not (target and r.get("equivalent") == "proven")]
     if not todo:
         return
     d = work / f"stream-{b.name}"
@@ -186,11 +219,13 @@ def _stream(repo: Path, b, a, work: Path, per: Path) -> None:
     muts = [m for m in design.make(repo, b, a.mutants, a.seed, d) if m.id in ids]
     exe = stream.build_runner(repo, b, design.netlist(repo, b, muts, a.mutants, d), d, a.jobs)
     got = stream.kill(b, exe, [r["id"] for r in todo], a.stream_seed, shards, a.per_shard,
-                      a.jobs)
+                      a.jobs, target=target)
     for r in todo:
         v = got.get(r["id"])
-        r["stream"] = v if v is not None else "alive"
-        r["stream_records"] = shards * a.per_shard
+        r[key] = v if v is not None else "alive"
+        r[n] = shards * a.per_shard
+        if target:
+            r["stream_target"] = list(target)
     report.save(per, b.name, rows)
 
 

@@ -41,6 +41,12 @@ class Mutation:
         """The Yosys command applying this mutation unconditionally (no select input)."""
         return re.sub(r"-ctrl mutsel \d+ \d+ ", "", self.line)
 
+    def selected(self, width: int) -> str:
+        """The Yosys command applying this mutation behind a ``width``-bit select input
+        ``mutsel`` (active when it holds the mutant's number), as ``mutate -list -ctrl``
+        lists it."""
+        return self.alone().replace("mutate ", f"mutate -ctrl mutsel {width} {self.id} ", 1)
+
 
 def _opt(words: List[str], key: str, default: str = "") -> str:
     vals = [words[i + 1] for i, w in enumerate(words[:-1]) if w == key]

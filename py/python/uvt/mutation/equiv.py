@@ -1,24 +1,31 @@
-"""Equivalence of a surviving mutant, proven by Yosys. Gold is the unit, gate the unit with the
-one mutation; each is wrapped in its architectural view (the unit's inputs; its valid output and
-the architectural data outputs, each forced to 0 while the valid is low: what the bench
-compares), both go in a miter (``miter -equiv``) whose shared logic is merged
-(``opt_merge -share_all``: only the mutation's fan-out cone stays twice), then
-``sat -tempinduct``: outputs equal for k clocks from any state imply equal outputs the next
-clock, and from the all-zero state they are equal for k clocks. A unit without feedback (each
-reference unit: its registers carry records down the pipeline) proves at a k of its latency
-when the mutant is equivalent. The inputs are free (no record domain is assumed), so a
-counterexample may lie outside the records' domains: ``differs`` means "not proven", and the
-mutant stays to be killed or argued. A run that does not end within ``timeout`` seconds proves
-nothing either."""
+"""Equivalence of a surviving mutant, decided by ABC (``yosys-abc``, shipped with Yosys). Gold is
+the unit, gate the unit with the mutations behind their select input; each is wrapped in its
+architectural view (the unit's inputs; its valid output and the architectural data outputs, each
+forced to 0 while the valid is low: what the bench compares), both go in a miter (``miter
+-equiv``) whose shared logic is merged, mapped to gates once per build and written as AIGER with
+every register starting at 0. Per mutant the select input is tied to its number (:func:`tie`, on
+the AIGER text: no second Yosys run) and ABC's ``dprove`` decides it: bounded model checking from
+the all-zero state, then sequential simplification (signal correspondence: registers and nodes
+of the two copies proven equal by induction, so the logic the mutation cannot reach merges), then
+induction, interpolation and property-directed reachability on what is left.
+
+``proven``: no input sequence from the all-zero state makes the architectural outputs differ;
+no record can catch the mutant. ``differs``: ABC found inputs that tell them apart, with every
+input free (no record domain is assumed), so such inputs may lie outside every record's domain:
+the mutant stays to be killed or argued. ``undecided``: no verdict within ``timeout`` seconds.
+Before any mutant, the unit against itself (the select input at 0) must prove."""
 
 from __future__ import annotations
 
+import hashlib
 import re
+import shutil
 import subprocess
+from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
-from typing import Dict, List, Tuple
+from typing import Dict, Iterator, List, Tuple
 
-from .design import Mutation, _read
+from .design import Mutation, _read, sel_width
 from .errors import MutationError
 from .units import Build
 
@@ -55,10 +62,159 @@ def wrapper(b: Build, pts: List[Tuple[str, str, int]], unit: str, name: str) -> 
     return f"module {name} (\n" + ",\n".join(decl) + "\n);\n" + "\n".join(body) + "\nendmodule\n"
 
 
-def prove_many(repo: Path, b: Build, muts: List[Mutation], netlist: Path, work: Path,
+def _aigs(repo: Path, b: Build, muts: List[Mutation], count: int, netlist: Path,
+          work: Path) -> Tuple[str, List[int]]:
+    """The miter of the unit and every mutation of ``muts`` (of a list of ``count``) as ASCII
+    AIGER, from one Yosys process: the unit with the mutations behind its select input (MCY's
+    way) and the unit itself, each in its architectural view, in a miter (``miter -equiv``),
+    mapped to gates, every register starting at 0. Returns the file's text and the AIGER
+    literal of each select bit (LSB first): :func:`tie` fixes them to one mutant."""
+    work.mkdir(parents=True, exist_ok=True)
+    top = b.top
+    pts = ports(netlist, top)
+    w = sel_width(count)
+    sel = f"    input wire [{w - 1}:0] mutsel,\n"
+    (work / "gold.v").write_text(wrapper(b, pts, "gold_u", "gold").replace("(\n", "(\n" + sel, 1))
+    (work / "gate.v").write_text(wrapper(b, pts, "gate_u", "gate").replace("(\n", "(\n" + sel, 1)
+                                 .replace(" unit_i (", " unit_i (.mutsel(mutsel), ", 1))
+    (work / "apply.txt").write_text("".join(m.selected(w) + "\n" for m in muts))
+    aag, amap = work / "miter.aag", work / "miter.map"
+    script = [_read(b), f"script {work / 'apply.txt'}\nopt_clean\nrename {top} gate_u\n"
+              f"read_verilog {work / 'gate.v'}\ndesign -stash gate\n", _read(b),
+              f"rename {top} gold_u\nread_verilog {work / 'gold.v'}\n"
+              "design -copy-from gate gate gate_u\n"
+              "miter -equiv -flatten gold gate miter\nhierarchy -top miter\n"
+              "opt_clean\nopt_merge -share_all\nopt_clean\ntechmap\nopt -fast\n"
+              "setundef -zero -init\ndffunmap\naigmap\nopt_clean\n"
+              f"write_aiger -ascii -zinit -map {amap} {aag}\n"]
+    ys = work / "aig.ys"
+    ys.write_text("".join(script))
+    # Kept while the script, the wrappers and the sources are unchanged (minutes per build).
+    stamp = hashlib.sha256("".join(script).encode() + b"".join(
+        f.read_bytes() for f in [work / "gold.v", work / "gate.v", work / "apply.txt",
+                                 *(repo / s for s in b.source_paths())])).hexdigest()
+    st = work / "aig.stamp"
+    if not (aag.is_file() and amap.is_file() and st.is_file() and st.read_text() == stamp):
+        st.unlink(missing_ok=True)
+        p = subprocess.run(["yosys", "-q", "-s", str(ys)], cwd=repo, capture_output=True,
+                           text=True)
+        if p.returncode != 0 or not aag.is_file():
+            raise MutationError(f"{b.name}: yosys {ys} failed:\n{p.stdout[-2000:]}"
+                                f"{p.stderr[-2000:]}")
+        st.write_text(stamp)
+    # The map names input k (the k-th input line) "input k bit name".
+    text = aag.read_text()
+    lines = text.split("\n", 1 + int(text.split()[2]))
+    lits = [0] * w
+    for row in amap.read_text().splitlines():
+        f = row.split()
+        if f[0] == "input" and f[3] == "in_mutsel":
+            lits[int(f[2])] = int(lines[1 + int(f[1])])
+    if 0 in lits:
+        raise MutationError(f"{b.name}: {amap} does not name every bit of in_mutsel")
+    return text, lits
+
+
+def tie(aag: str, lits: List[int], k: int) -> bytes:
+    """The ASCII AIGER ``aag`` as binary AIGER (what ABC reads) with the input literals
+    ``lits`` (LSB first) tied to the bits of ``k``: every use of one (in a latch's next state,
+    an output or an AND) becomes the constant. The inputs stay declared, unused. Yosys numbers
+    the ASCII file as the binary format needs (inputs, latches, then ANDs in order), so the
+    ANDs are written as deltas after the substitution, each pair of operands sorted."""
+    sub = {}
+    for i, lit in enumerate(lits):
+        bit = (k >> i) & 1
+        sub[lit], sub[lit ^ 1] = bit, bit ^ 1
+    rows = aag.split("\n")
+    m, ni, nl, no, na = (int(x) for x in rows[0].split()[1:6])
+    out = bytearray(f"aig {m} {ni} {nl} {no} {na}\n".encode())
+    at = 1 + ni
+    for row in rows[at:at + nl + no]:
+        f = row.split()
+        cut = 1 if len(f) >= 2 else 0        # a latch: its own literal is implicit in binary
+        out += (" ".join(str(sub.get(int(x), x)) for x in f[cut:]) + "\n").encode()
+    at += nl + no
+    lhs_first = 2 * (ni + nl + 1)
+    for n, row in enumerate(rows[at:at + na]):
+        lhs, a, c = (int(x) for x in row.split())
+        if lhs != lhs_first + 2 * n:
+            raise MutationError(f"AIGER AND {n} defines {lhs}, not {lhs_first + 2 * n}")
+        a, c = sub.get(a, a), sub.get(c, c)
+        if a < c:
+            a, c = c, a
+        for d in (lhs - a, a - c):
+            while d >= 0x80:
+                out.append((d & 0x7F) | 0x80)
+                d >>= 7
+            out.append(d)
+    return bytes(out)
+
+
+class Unprovable(MutationError):
+    """ABC's flow gives no verdict on a build: the unit against itself does not prove in time
+    (its miter's two copies differ in structure where the mutations sit, and the multipliers
+    there are beyond SAT sweeping in a minute)."""
+
+
+def verdict(text: str) -> str:
+    """ABC's ``dprove`` verdict in the report's words. It ends with "Networks are equivalent"
+    (or "UNSATISFIABLE" when the miter's output, once its registers are simplified away, can
+    never be 1), "... not equivalent" with the frame a difference shows, or neither."""
+    words = re.findall(r"[A-Za-z]+", text)
+    if "Networks are equivalent" in text or "UNSATISFIABLE" in words:
+        return "proven"
+    if "was asserted in frame" in text or "SATISFIABLE" in words:
+        return "differs"
+    return "undecided"
+
+
+def prove(repo: Path, b: Build, held: List[Mutation], muts: List[Mutation], count: int,
+          netlist: Path, work: Path, timeout: float, jobs: int) -> Iterator[Tuple[int, str]]:
+    """Per mutant of ``muts`` (of a list of ``count``; ``netlist``: a netlist of the build,
+    read for the port list), as each ends: ABC's ``dprove`` on its miter (:func:`_aigs` of the
+    mutants ``held``, which include ``muts``; :func:`tie`): ``"proven"`` (sequentially equivalent from the all-zero state: bounded model
+    checking, signal correspondence, induction), ``"differs"`` (free inputs found that tell
+    them apart) or ``"undecided"`` (no verdict within ``timeout`` seconds). ``jobs`` ABC
+    processes at a time."""
+    if shutil.which("yosys-abc") is None:
+        raise MutationError("yosys-abc not found (Debian package yosys; tests/run.sh installs it)")
+    ids = {m.id for m in held}
+    if any(m.id not in ids for m in muts):
+        raise MutationError(f"{b.name}: a mutant to prove is not in the miter")
+    aag, lits = _aigs(repo, b, held, count, netlist, work)
+
+    def one(m: Mutation) -> Tuple[int, str]:
+        return m.id, _dprove(work / f"m{m.id}.aig", tie(aag, lits, m.id), timeout)
+
+    # The unit against itself (the select input at 0) must prove, or no verdict means anything.
+    if _dprove(work / "m0.aig", tie(aag, lits, 0), max(timeout, 60.0)) != "proven":
+        raise Unprovable(f"{b.name}: ABC does not prove the unit equivalent to itself (the miter "
+                         f"with the select input at 0) in {max(timeout, 60.0):.0f} s ({work})")
+    with ThreadPoolExecutor(max_workers=jobs) as ex:
+        yield from ex.map(one, muts)
+
+
+def _dprove(f: Path, aig: bytes, timeout: float) -> str:
+    """ABC's verdict on the miter ``aig`` (written to ``f`` for the run, then removed)."""
+    f.write_bytes(aig)
+    try:
+        p = subprocess.run(["yosys-abc", "-c", f"read_aiger {f}; strash; dprove"],
+                           capture_output=True, text=True, timeout=timeout)
+        got = verdict(p.stdout)
+    except subprocess.TimeoutExpired:
+        got = "undecided"
+    f.unlink()
+    return got
+
+
+def prove_sat(repo: Path, b: Build, muts: List[Mutation], netlist: Path, work: Path,
                depth: int, timeout: float) -> Dict[int, str]:
-    """Per mutant of ``muts`` of build ``b``: ``"proven"`` when Yosys proves it equivalent to the
-    unit in its architectural view (``netlist``: a netlist of the build, read for the port
+    """The second engine, for a miter too large for ABC's flow (the unit against itself does not
+    prove: :class:`Unprovable`): per mutant its own miter, the select input gone before the
+    shared logic of unit and mutant is merged (``opt_merge -share_all``: only the mutation's
+    fan-out cone stays twice), then Yosys's ``sat -tempinduct`` from the all-zero state (a unit
+    without feedback proves at a depth of about its latency). Per mutant of ``muts`` of build
+    ``b``: ``"proven"`` when Yosys proves it equivalent to the unit in its architectural view (``netlist``: a netlist of the build, read for the port
     list), ``"differs"`` when it finds inputs that tell them apart, ``"undecided"`` when the
     proof ran out of ``depth`` clocks or of ``timeout`` seconds of solving (``sat
     -timeout``). One Yosys process reads and elaborates the unit once for all of ``muts``."""

@@ -1,8 +1,11 @@
 """The mutation report. Each build's mutants are kept one per line in
 ``host/report/mutation/<build>.jsonl`` (what the mutation changes; ``killed_by``: the committed
-set that kills it, with ``record`` and ``field``; ``equivalent``: ``proven`` when Yosys proves it
-equivalent, ``differs`` when Yosys finds free inputs that tell it apart; ``stream``: the seeded
-stream's record and field that kill it, or ``alive`` after ``stream_records``), and the summary
+set that kills it, with ``record`` and ``field``; ``equivalent``: ``proven`` when ABC proves it
+equivalent, ``differs`` when ABC finds free inputs that tell it apart, ``undecided`` when it gives
+no verdict in the time allowed; ``stream``: the seeded
+stream's record and field that kill it, or ``alive`` after ``stream_records``;
+``stream_directed``: the same for the stream directed at the bins ``stream_target``), and the
+summary
 ``host/report/mutation.json`` is made from those files alone. Every file is written whole or not
 at all."""
 
@@ -44,7 +47,7 @@ def fate(r: Dict) -> str:
         return "vectors"
     if r.get("equivalent") == "proven":
         return "equivalent"
-    if isinstance(r.get("stream"), dict):
+    if isinstance(r.get("stream"), dict) or isinstance(r.get("stream_directed"), dict):
         return "stream"
     return "survivor"
 
@@ -69,12 +72,18 @@ def summary(b: Build, rows: List[Dict], meta: Dict) -> Dict:
         "killed_by_set": {s: n for s in (*SETS, "pairs")
                           for n in [sum(r["killed_by"] == s for r in killed)] if n},
         "equivalent": by["equivalent"],
-        "killed_by_stream": by["stream"],
+        "killed_by_stream": sum(isinstance(r.get("stream"), dict) for r in rows
+                                if fate(r) == "stream"),
+        "killed_by_directed_stream": sum(not isinstance(r.get("stream"), dict) for r in rows
+                                         if fate(r) == "stream"),
+        "directed_stream_records": max((r.get("stream_directed_records", 0) for r in rows),
+                                       default=0),
         "stream_records": max((r.get("stream_records", 0) for r in streamed), default=0),
         "survivors": by["survivor"],
         "survivors_not_proven": {
             "differs_on_free_inputs": sum(r.get("equivalent") == "differs" for r in left),
-            "undecided": sum(r.get("equivalent") not in ("differs",) for r in left),
+            "undecided": sum(r.get("equivalent") == "undecided" for r in left),
+            "not_tried": sum(r.get("equivalent") is None for r in left),
         },
         "score_vectors": round(by["vectors"] / nonequiv, 4) if nonequiv else None,
         "records_to_kill": {"median": statistics.median(rtk) if rtk else None,
@@ -107,17 +116,23 @@ def write(repo: Path, builds: List[Build], out_json: Path, per: Path, meta: Dict
 def markdown(rep: Dict) -> str:
     """The report as the table of docs/mutation.md."""
     head = ("| build | unit outputs checked | mutants | killed by the committed sets | "
-            "proven equivalent | killed by the stream | survivors | score (killed ÷ not "
-            "equivalent) | records to kill: median, largest |\n"
+            "proven equivalent | killed by the stream | survivors: differ on free inputs, "
+            "undecided, not tried | score (killed ÷ not equivalent) | records to kill: median, "
+            "largest |\n"
             "|---|---|---|---|---|---|---|---|---|\n")
     rows = []
     for r in rep["builds"]:
         sets = ", ".join(f"{k} {v}" for k, v in r["killed_by_set"].items())
         stream = (f"{r['killed_by_stream']} (of {r['stream_records']:,} records each)"
                   if r["stream_records"] else "no stream run")
+        if r["directed_stream_records"]:
+            stream += (f"; directed: {r['killed_by_directed_stream']} (of "
+                       f"{r['directed_stream_records']:,})")
         score = f"{100 * r['score_vectors']:.1f}%" if r["score_vectors"] is not None else "–"
         rtk = {k: (f"{v:g}" if v is not None else "–") for k, v in r["records_to_kill"].items()}
+        left = r["survivors_not_proven"]
         rows.append(f"| {r['build']} | {r['checked']} | {r['mutants']} | "
                     f"{r['killed_by_vectors']} ({sets}) | {r['equivalent']} | {stream} | "
-                    f"{r['survivors']} | {score} | {rtk['median']}, {rtk['largest']} |")
+                    f"{r['survivors']}: {left['differs_on_free_inputs']}, {left['undecided']}, "
+                    f"{left['not_tried']} | {score} | {rtk['median']}, {rtk['largest']} |")
     return head + "\n".join(rows) + "\n"

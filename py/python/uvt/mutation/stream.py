@@ -11,7 +11,7 @@ it has no stream."""
 from __future__ import annotations
 
 from pathlib import Path
-from typing import Dict, List, Optional
+from typing import Dict, List, Optional, Tuple
 
 from .bench import verilator_build
 from .errors import MutationError
@@ -61,10 +61,11 @@ def _first(spec, client, s) -> Optional[dict]:
 
 
 def kill(b: Build, exe: Path, ids: List[int], seed: int, shards: int, per_shard: int,
-         workers: int = 2, log=print) -> Dict[int, Optional[dict]]:
+         workers: int = 2, log=print, target: Tuple[str, ...] = ()) -> Dict[int, Optional[dict]]:
     """Run each mutant of ``ids`` (0: the unmutated unit, which must pass) through a campaign of
-    ``shards`` × ``per_shard`` records; per id ``None`` (alive after them all) or
-    ``{"record", "field"}`` of the first failure."""
+    ``shards`` × ``per_shard`` records (the stream directed at the coverage bins ``target``,
+    if any); per id ``None`` (alive after them all) or ``{"record", "field"}`` of the first
+    failure."""
     from distributed import Client, LocalCluster  # noqa: PLC0415
 
     from ..campaign import Campaign, run  # noqa: PLC0415
@@ -78,7 +79,7 @@ def kill(b: Build, exe: Path, ids: List[int], seed: int, shards: int, per_shard:
         for k in [0, *ids]:
             spec = Campaign(kind=kind, seed=seed, shards=shards, per_shard=per_shard,
                             simulator=f"{exe} 1 +MUTSEL={k}", architectural=True,
-                            timeout=HANG)
+                            timeout=HANG, target=target)
             s = run(spec, client, stop_on_failure=True, progress=False)
             f = _first(spec, client, s)
             if f is None:
