@@ -398,12 +398,7 @@ fn family(
             // y on the edge: the record's y is in 1/256 px from the top
             let yn = r(ya, yb);
             let ys = ((1.0 - yn) * 128.0 * f64::from(vp.height())).floor() as i64;
-            let ok = |v: i64, lim: u16| (0..256 * i64::from(lim)).contains(&v);
-            let pos = (ok(xs, vp.width()) && ok(ys, vp.height())).then_some(ScreenPos {
-                xs: xs as u32,
-                ys: ys as u32,
-            });
-            return ([t0, t0], pos);
+            return ([t0, t0], on_screen(xs, ys, vp));
         }
         "tie_horizontal" => {
             // w = 1: the screen y of clip y = 512·k/65536 is (128 − k)·H in 1/256 px from the
@@ -419,12 +414,7 @@ fn family(
             let ys = (128 - k as i64) * h;
             let xn = r(xa, xb);
             let xs = ((1.0 + xn) * 128.0 * f64::from(vp.width())).floor() as i64;
-            let ok = |v: i64, lim: u16| (0..256 * i64::from(lim)).contains(&v);
-            let pos = (ok(xs, vp.width()) && ok(ys, vp.height())).then_some(ScreenPos {
-                xs: xs as u32,
-                ys: ys as u32,
-            });
-            return ([t0, t0], pos);
+            return ([t0, t0], on_screen(xs, ys, vp));
         }
         "depth_extreme" => {
             let t0 = if r(0.0, 1.0) < 0.5 {
@@ -498,6 +488,17 @@ fn family(
         }
     }
     (ends, None)
+}
+
+/// The sample position (`xs`, `ys`) in 1/256 px, if it lies in `vp` (a tie family's sample on
+/// its edge; `None`: the record takes a drawn position instead).
+fn on_screen(xs: i64, ys: i64, vp: Viewport) -> Option<ScreenPos> {
+    let ok = |v: i64, lim: u16| (0..256 * i64::from(lim)).contains(&v);
+    // In 0..256·2048: both fit u32.
+    (ok(xs, vp.width()) && ok(ys, vp.height())).then_some(ScreenPos {
+        xs: xs as u32,
+        ys: ys as u32,
+    })
 }
 
 /// A sample position: inside the projected box of the t0 vertices (all w > 0) half the time,
