@@ -262,13 +262,13 @@ step_mutation() {
   local py=${UVT_PYTHON:-target/py-venv/bin/python}
   local js=$tmp/mutation.json
   run "$py" -m uvt.mutation run --json "$js" >&2
-  # The stream stage at 2×10^4 records per survivor; ABC's proofs of what survives, 12 s each,
-  # on the builds whose miter ABC proves equal to itself (measured: not bounds, nor the PIPE = 2
-  # builds), and Yosys's for the pipelined multiplier; then the planar survivors not proven
-  # through the stream directed at its edge-tie bins (docs/mutation.md).
+  # The stream stage at 2×10^4 records per survivor; ABC's proofs of what survives
+  # (register correspondence, then dprove; 12 s each; docs/mutation.md says which builds are
+  # not proven and why); then the planar survivors not proven through the stream directed at
+  # its edge-tie bins.
   run "$py" -m uvt.mutation stream --records 20000 --per-shard 10000 --json "$js" >&2
-  run "$py" -m uvt.mutation prove --timeout 12 --builds psample,bsample,mul31 --json "$js" >&2
-  run "$py" -m uvt.mutation prove --engine sat --builds mul31-pipe2 --json "$js" >&2
+  run "$py" -m uvt.mutation prove --timeout 12 \
+    --builds psample,psample-pipe2,bounds,mul31,mul31-pipe2 --json "$js" >&2
   run "$py" -m uvt.mutation stream --builds psample --records 20000 --per-shard 10000 \
     --target-bins psample.edge.zero,psample.tie.a_inside,psample.tie.a_outside,psample.tie.b_inside,psample.tie.b_outside \
     --json "$js" >&2

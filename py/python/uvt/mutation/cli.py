@@ -3,9 +3,9 @@
 - ``run``: list ``--mutants`` mutations (default 1000, ``--seed`` 1) of every build of
   :data:`.units.BUILDS` (or ``--builds``) and judge them with the committed vector sets; each
   build's mutants go to ``host/report/mutation/<build>.jsonl`` as soon as it is done.
-- ``prove``: try to prove each survivor equivalent (``--engine abc``: ABC's ``dprove`` on one
-  miter per build Yosys maps; ``sat``: Yosys's ``sat -tempinduct`` on one miter per mutant;
-  ``--timeout`` seconds each).
+- ``prove``: try to prove each survivor equivalent (``--engine abc``: on one miter per build
+  Yosys maps, register correspondence by ABC's ``iprove``, then ABC's ``dprove``; ``sat``:
+  Yosys's ``sat -tempinduct`` on one miter per mutant; ``--timeout`` seconds each).
 - ``stream``: run each survivor still unproven through the seeded stream on Dask
   (``--records``; units with a stream runner).
 - ``report``: the summary ``host/report/mutation.json`` from the per-build files (every stage
@@ -82,7 +82,8 @@ def _parser() -> argparse.ArgumentParser:
     sub.choices["prove"].add_argument("--timeout", type=float, default=12.0,
                                       help="seconds per proof (one ABC dprove; sat: per SAT call)")
     sub.choices["prove"].add_argument("--engine", choices=("abc", "sat"), default="abc",
-                                      help="abc: one miter per build, ABC's dprove per mutant; "
+                                      help="abc: one miter per build; per mutant register "
+                                           "correspondence (ABC's iprove), then ABC's dprove; "
                                            "sat: one miter per mutant, Yosys's sat -tempinduct")
     sub.choices["prove"].add_argument("--depth", type=int, default=120,
                                       help="largest induction length (--engine sat)")

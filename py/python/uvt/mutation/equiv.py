@@ -1,19 +1,26 @@
-"""Equivalence of a surviving mutant, decided by ABC (``yosys-abc``, shipped with Yosys). Gold is
-the unit, gate the unit with the mutations behind their select input; each is wrapped in its
-architectural view (the unit's inputs; its valid output and the architectural data outputs, each
-forced to 0 while the valid is low: what the bench compares), both go in a miter (``miter
--equiv``) whose shared logic is merged, mapped to gates once per build and written as AIGER with
-every register starting at 0. Per mutant the select input is tied to its number (:func:`tie`, on
-the AIGER text: no second Yosys run) and ABC's ``dprove`` decides it: bounded model checking from
-the all-zero state, then sequential simplification (signal correspondence: registers and nodes
-of the two copies proven equal by induction, so the logic the mutation cannot reach merges), then
-induction, interpolation and property-directed reachability on what is left.
+"""Equivalence of a surviving mutant, decided by ABC (``yosys-abc``, shipped with Yosys). The unit
+with the mutations behind their select input is mapped to gates once per build and instantiated
+twice, each copy in its architectural view (the unit's inputs; its valid output and the
+architectural data outputs, each forced to 0 while the valid is low: what the bench compares):
+gold with the select input tied to 0 (the unit itself, by ``mutate -ctrl``'s construction; the
+run stage checks it on every set), gate with the select input free. Both go in a miter (``miter
+-equiv``) written as AIGER with every register starting at 0. Mapping once and copying keeps the
+two copies the same gates (two mappings of one multiplier can sum its partial products in
+different orders, which no SAT sweep undoes in time). Per mutant the select input is tied to its
+number (:func:`tie`, on the AIGER text: no second Yosys run), then:
+
+1. register correspondence (:mod:`.corr`): the registers of the two copies paired by structure,
+   the miter made combinational, one ABC ``iprove``: unsatisfiable means equivalent;
+2. otherwise ABC's ``dprove``: bounded model checking from the all-zero state, then sequential
+   simplification (signal correspondence), induction, interpolation and property-directed
+   reachability.
 
 ``proven``: no input sequence from the all-zero state makes the architectural outputs differ;
 no record can catch the mutant. ``differs``: ABC found inputs that tell them apart, with every
 input free (no record domain is assumed), so such inputs may lie outside every record's domain:
 the mutant stays to be killed or argued. ``undecided``: no verdict within ``timeout`` seconds.
-Before any mutant, the unit against itself (the select input at 0) must prove."""
+Before any mutant, mutant 0 (the unit against itself) must prove by one of the two steps; a step
+that cannot prove it is not used for the build."""
 
 from __future__ import annotations
 
@@ -25,6 +32,7 @@ from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 from typing import Dict, Iterator, List, Tuple
 
+from . import corr
 from .design import Mutation, _read, sel_width
 from .errors import MutationError
 from .units import Build
@@ -65,27 +73,28 @@ def wrapper(b: Build, pts: List[Tuple[str, str, int]], unit: str, name: str) -> 
 def _aigs(repo: Path, b: Build, muts: List[Mutation], count: int, netlist: Path,
           work: Path) -> Tuple[str, List[int]]:
     """The miter of the unit and every mutation of ``muts`` (of a list of ``count``) as ASCII
-    AIGER, from one Yosys process: the unit with the mutations behind its select input (MCY's
-    way) and the unit itself, each in its architectural view, in a miter (``miter -equiv``),
-    mapped to gates, every register starting at 0. Returns the file's text and the AIGER
-    literal of each select bit (LSB first): :func:`tie` fixes them to one mutant."""
+    AIGER, from one Yosys process (module docs): the unit with the mutations behind its select
+    input (MCY's way) mapped to gates, one copy with the select input at 0 (gold) and one with
+    it free (gate), each in its architectural view, in a miter (``miter -equiv``), every
+    register starting at 0. Returns the file's text and the AIGER literal of each select bit
+    (LSB first): :func:`tie` fixes them to one mutant."""
     work.mkdir(parents=True, exist_ok=True)
     top = b.top
     pts = ports(netlist, top)
     w = sel_width(count)
     sel = f"    input wire [{w - 1}:0] mutsel,\n"
-    (work / "gold.v").write_text(wrapper(b, pts, "gold_u", "gold").replace("(\n", "(\n" + sel, 1))
-    (work / "gate.v").write_text(wrapper(b, pts, "gate_u", "gate").replace("(\n", "(\n" + sel, 1)
+    (work / "gold.v").write_text(wrapper(b, pts, "mut_u", "gold").replace("(\n", "(\n" + sel, 1)
+                                 .replace(" unit_i (", f" unit_i (.mutsel({w}'d0), ", 1))
+    (work / "gate.v").write_text(wrapper(b, pts, "mut_u", "gate").replace("(\n", "(\n" + sel, 1)
                                  .replace(" unit_i (", " unit_i (.mutsel(mutsel), ", 1))
     (work / "apply.txt").write_text("".join(m.selected(w) + "\n" for m in muts))
     aag, amap = work / "miter.aag", work / "miter.map"
-    script = [_read(b), f"script {work / 'apply.txt'}\nopt_clean\nrename {top} gate_u\n"
-              f"read_verilog {work / 'gate.v'}\ndesign -stash gate\n", _read(b),
-              f"rename {top} gold_u\nread_verilog {work / 'gold.v'}\n"
-              "design -copy-from gate gate gate_u\n"
-              "miter -equiv -flatten gold gate miter\nhierarchy -top miter\n"
-              "opt_clean\nopt_merge -share_all\nopt_clean\ntechmap\nopt -fast\n"
-              "setundef -zero -init\ndffunmap\naigmap\nopt_clean\n"
+    # The second techmap maps the miter's own compare cells; the copies are gates already.
+    script = [_read(b), f"script {work / 'apply.txt'}\nopt_clean\ntechmap\nopt_clean\n"
+              f"rename {top} mut_u\nread_verilog {work / 'gold.v'}\n"
+              f"read_verilog {work / 'gate.v'}\nflatten gold gate\n"
+              "miter -equiv gold gate miter\nhierarchy -top miter\nflatten\ntechmap\n"
+              "opt_clean\nsetundef -zero -init\ndffunmap\naigmap\nopt_clean\n"
               f"write_aiger -ascii -zinit -map {amap} {aag}\n"]
     ys = work / "aig.ys"
     ys.write_text("".join(script))
@@ -117,14 +126,20 @@ def _aigs(repo: Path, b: Build, muts: List[Mutation], count: int, netlist: Path,
 
 def tie(aag: str, lits: List[int], k: int) -> bytes:
     """The ASCII AIGER ``aag`` as binary AIGER (what ABC reads) with the input literals
-    ``lits`` (LSB first) tied to the bits of ``k``: every use of one (in a latch's next state,
-    an output or an AND) becomes the constant. The inputs stay declared, unused. Yosys numbers
-    the ASCII file as the binary format needs (inputs, latches, then ANDs in order), so the
-    ANDs are written as deltas after the substitution, each pair of operands sorted."""
+    ``lits`` (LSB first) tied to the bits of ``k`` (:func:`binary`)."""
     sub = {}
     for i, lit in enumerate(lits):
         bit = (k >> i) & 1
         sub[lit], sub[lit ^ 1] = bit, bit ^ 1
+    return binary(aag, sub)
+
+
+def binary(aag: str, sub: Dict[int, int]) -> bytes:
+    """The ASCII AIGER ``aag`` as binary AIGER, every use of a literal of ``sub`` (in a latch's
+    next state, an output or an AND) replaced by its value there; the inputs stay declared.
+    Yosys numbers the ASCII file as the binary format needs (inputs, latches, then ANDs in
+    order), so the ANDs are written as deltas after the substitution, each pair of operands
+    sorted."""
     rows = aag.split("\n")
     m, ni, nl, no, na = (int(x) for x in rows[0].split()[1:6])
     out = bytearray(f"aig {m} {ni} {nl} {no} {na}\n".encode())
@@ -151,9 +166,8 @@ def tie(aag: str, lits: List[int], k: int) -> bytes:
 
 
 class Unprovable(MutationError):
-    """ABC's flow gives no verdict on a build: the unit against itself does not prove in time
-    (its miter's two copies differ in structure where the mutations sit, and the multipliers
-    there are beyond SAT sweeping in a minute)."""
+    """Neither step proves mutant 0 (the unit against itself) on a build in time: no verdict on
+    it would mean anything."""
 
 
 def verdict(text: str) -> str:
@@ -171,25 +185,36 @@ def verdict(text: str) -> str:
 def prove(repo: Path, b: Build, held: List[Mutation], muts: List[Mutation], count: int,
           netlist: Path, work: Path, timeout: float, jobs: int) -> Iterator[Tuple[int, str]]:
     """Per mutant of ``muts`` (of a list of ``count``; ``netlist``: a netlist of the build,
-    read for the port list), as each ends: ABC's ``dprove`` on its miter (:func:`_aigs` of the
-    mutants ``held``, which include ``muts``; :func:`tie`): ``"proven"`` (sequentially equivalent from the all-zero state: bounded model
-    checking, signal correspondence, induction), ``"differs"`` (free inputs found that tell
-    them apart) or ``"undecided"`` (no verdict within ``timeout`` seconds). ``jobs`` ABC
-    processes at a time."""
+    read for the port list), as each ends: the verdict on its miter (:func:`_aigs` of the
+    mutants ``held``, which include ``muts``; :func:`tie`), first by register correspondence,
+    then by ABC's ``dprove`` (module docs): ``"proven"``, ``"differs"`` (free inputs found that
+    tell them apart) or ``"undecided"`` (no verdict within ``timeout`` seconds per step).
+    ``jobs`` ABC processes at a time."""
     if shutil.which("yosys-abc") is None:
         raise MutationError("yosys-abc not found (Debian package yosys; tests/run.sh installs it)")
     ids = {m.id for m in held}
     if any(m.id not in ids for m in muts):
         raise MutationError(f"{b.name}: a mutant to prove is not in the miter")
     aag, lits = _aigs(repo, b, held, count, netlist, work)
+    first = max(timeout, 60.0)
+    # Mutant 0 (the unit against itself) must prove by a step, or that step's verdicts mean
+    # nothing on this build.
+    cr = corr.classes(corr.Aig(aag), lits, work, binary, first)
+    check = cr.text() if cr is not None else None
+    seq = _dprove(work / "m0.aig", tie(aag, lits, 0), first) == "proven"
+    if check is None and not seq:
+        raise Unprovable(f"{b.name}: neither register correspondence nor ABC's dprove proves "
+                         f"the unit equivalent to itself (the select input at 0) in {first:.0f} "
+                         f"s ({work})")
 
     def one(m: Mutation) -> Tuple[int, str]:
+        if cr is not None and check is not None and corr.iprove(
+                binary(check, cr.ties(m.id)), work / f"c{m.id}.aig", timeout) is True:
+            return m.id, "proven"
+        if not seq:
+            return m.id, "undecided"
         return m.id, _dprove(work / f"m{m.id}.aig", tie(aag, lits, m.id), timeout)
 
-    # The unit against itself (the select input at 0) must prove, or no verdict means anything.
-    if _dprove(work / "m0.aig", tie(aag, lits, 0), max(timeout, 60.0)) != "proven":
-        raise Unprovable(f"{b.name}: ABC does not prove the unit equivalent to itself (the miter "
-                         f"with the select input at 0) in {max(timeout, 60.0):.0f} s ({work})")
     with ThreadPoolExecutor(max_workers=jobs) as ex:
         yield from ex.map(one, muts)
 
