@@ -34,6 +34,16 @@ from .errors import MutationError
 _ROUNDS = 50
 
 
+def select(lits: Sequence[int], k: int) -> Dict[int, int]:
+    """Literal substitutions tying the select input's literals ``lits`` (LSB first) to the bits
+    of ``k``."""
+    sub: Dict[int, int] = {}
+    for i, lit in enumerate(lits):
+        bit = (k >> i) & 1
+        sub[lit], sub[lit ^ 1] = bit, bit ^ 1
+    return sub
+
+
 class Aig:
     """An ASCII AIGER miter as Yosys writes it (inputs, latches, then ANDs in order)."""
 
@@ -172,12 +182,10 @@ class Corr:
         """Literal substitutions for mutant ``k``: the select input's bits, and 0 for every
         register the select input alone drives whose next value is 0 for ``k``."""
         g = self.aig
-        sub: Dict[int, int] = {}
+        sub = select(self.sel, k)
         val = [0] * (g.m + 1)
-        for i, lit in enumerate(self.sel):
-            bit = (k >> i) & 1
-            sub[lit], sub[lit ^ 1] = bit, bit ^ 1
-            val[lit >> 1] = bit
+        for lit in self.sel:
+            val[lit >> 1] = sub[lit]
         if self.selonly:
             g.eval(val)
             for j in self.selonly:

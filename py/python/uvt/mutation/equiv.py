@@ -127,11 +127,7 @@ def _aigs(repo: Path, b: Build, muts: List[Mutation], count: int, netlist: Path,
 def tie(aag: str, lits: List[int], k: int) -> bytes:
     """The ASCII AIGER ``aag`` as binary AIGER (what ABC reads) with the input literals
     ``lits`` (LSB first) tied to the bits of ``k`` (:func:`binary`)."""
-    sub = {}
-    for i, lit in enumerate(lits):
-        bit = (k >> i) & 1
-        sub[lit], sub[lit ^ 1] = bit, bit ^ 1
-    return binary(aag, sub)
+    return binary(aag, corr.select(lits, k))
 
 
 def binary(aag: str, sub: Dict[int, int]) -> bytes:
