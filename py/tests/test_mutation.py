@@ -4,6 +4,8 @@ and every mutant line is whole. The flow itself runs in tests/tests/external/mut
 
 import json
 
+import pytest
+
 from uvt.mutation import report, units
 from uvt.mutation.errors import MutationError
 
@@ -39,3 +41,22 @@ def test_a_build_outside_the_table_is_refused_by_name():
         assert "bsample-nonesuch" in str(e)
     else:
         raise AssertionError("no error")
+
+
+def test_a_new_run_keeps_later_verdicts_of_mutants_that_survive_again():
+    """``report.carry``: a survivor keeps its proof and stream verdicts when the same mutation
+    survives the new vectors; a mutant they now kill drops them; another mutation under the
+    same id keeps nothing; a proven mutant that the vectors kill is an error."""
+    old = [{"id": 1, "mutate": "m1", "killed_by": None, "equivalent": "undecided",
+            "stream": "alive", "stream_records": 20000},
+           {"id": 2, "mutate": "m2", "killed_by": None, "equivalent": "differs"},
+           {"id": 3, "mutate": "m3", "killed_by": None, "equivalent": "undecided"}]
+    new = [{"id": 1, "mutate": "m1", "killed_by": None},
+           {"id": 2, "mutate": "m2", "killed_by": "unit", "record": 9},
+           {"id": 3, "mutate": "other", "killed_by": None}]
+    assert report.carry(old, new) == 1
+    assert new[0]["equivalent"] == "undecided" and new[0]["stream_records"] == 20000
+    assert "equivalent" not in new[1] and "equivalent" not in new[2]
+    proven = [{"id": 4, "mutate": "m4", "killed_by": None, "equivalent": "proven"}]
+    with pytest.raises(ValueError, match="mutant 4 was proven equivalent"):
+        report.carry(proven, [{"id": 4, "mutate": "m4", "killed_by": "unit", "record": 0}])

@@ -28,7 +28,7 @@ use super::cases::{base_tri, named_cases, tri};
 use super::format::{layout, sha256, to_text, Rec, FORMAT_VERSION, STAGES};
 use super::psample::{PCase, PCoverage, PSet};
 use super::stages::*;
-use super::{bsample, planar_cases, psample};
+use super::{bsample, planar_cases, psample, psample_directed};
 /// Samples per pixel of the unit-level resolve records.
 pub const UNIT_RESOLVE_SPP: u32 = 16;
 /// A named range of setup records.
@@ -327,6 +327,28 @@ pub fn unit(seed: u64, cfg: Config) -> Result<Set> {
     pset.cases.push(PCase {
         name: "found by search: unclamped depth at 2^31 − 2, 2^31 − 1, −2^31, −2^31 − 1; f ≥ 63 with |acc| ≥ 2^62".into(),
         triangles: 0,
+        records: [first, pset.inp.len()],
+    });
+    let first = pset.inp.len();
+    psample_directed::single_bit_edges(&mut pset, &mut prng);
+    pset.cases.push(PCase {
+        name: "single-bit edges: a or b (a = 0) = ±2^j, j = 0..29, exact vertices; samples on the edge (E = 0) and 2^q steps off it; E = ±2^t, t = 1..58".into(),
+        triangles: psample_directed::EDGE_CASES as usize * psample_directed::BITS.count()
+            + psample_directed::E_CASES as usize * psample_directed::E_BITS.count(),
+        records: [first, pset.inp.len()],
+    });
+    let first = pset.inp.len();
+    psample_directed::depth_boundaries(&mut pset, &mut prng);
+    pset.cases.push(PCase {
+        name: "depth at the range's ends at every shift f + 33 = 20..62: exact planes z/w = c + s·x/w, the accumulator one bit at the range test's mask boundary, c·2^24 = 2^31, −2^32, 2^32".into(),
+        triangles: psample_directed::SHIFTS.count() * psample_directed::BOUNDARY_DEPTHS.len(),
+        records: [first, pset.inp.len()],
+    });
+    let first = pset.inp.len();
+    psample_directed::saturated_depth(&mut pset, &mut prng);
+    pset.cases.push(PCase {
+        name: "depth exponent below −33 (the scaled depth saturated): det 1, normals near 2^28, a vertex at w = 0, the centre sample on vertex 2 (fill rule)".into(),
+        triangles: psample_directed::SATURATED,
         records: [first, pset.inp.len()],
     });
     set.planar(pset);

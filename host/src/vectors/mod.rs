@@ -8,6 +8,8 @@
 //! - [`bsample`]: the bounded sample-test records;
 //! - [`planar_cases`]: the planar records' own triangles;
 //! - [`psample`]: the planar sample-test records;
+//! - [`psample_directed`]: planar records directed at single decisions (single-bit edges, the
+//!   depth exponent below −33);
 //! - [`export`]: `uvt vectors export`, the unit-level and frame-level sets;
 //! - [`check`]: `uvt vectors check`;
 //! - [`pipe`]: `uvt vectors gen`, `ver` and `decode` (streams and single records);
@@ -24,4 +26,5 @@ pub mod export;
 pub mod pipe;
 pub mod planar_cases;
 pub mod psample;
+pub mod psample_directed;
 pub use uvt_records::{format, stages};

@@ -297,6 +297,81 @@ fn rtl_planar_unit_pipe2_passes_every_committed_record() {
 }
 
 /// A predicate on an (input, output) record pair.
+/// The directed groups (`host/src/vectors/psample_directed.rs`) are in the committed unit set:
+/// for every j = 0..29 and both signs, a tie (E_k = 0) on an edge whose a is ±2^j and one on an
+/// edge with a = 0 and b = ±2^j, covered for each sign; for every t = 1..58 an edge value
+/// E_k = +2^t and one −2^t; covered samples whose depth exponent is below −33, saturated at
+/// both ends; depths clamped at both ends at every shift f + 33 = 20..62 (near: ..61). A unit's one-bit-off zero and sign tests of E, a and b meet these (docs/mutation.md).
+#[test]
+fn committed_planar_records_hold_the_directed_cases() {
+    let set = committed().join("unit");
+    let ins = records(&set, "psample_in.hex");
+    let outs = records(&set, "psample_out.hex");
+    let mut tie_a = std::collections::BTreeSet::new();
+    let mut tie_b = std::collections::BTreeSet::new();
+    let mut e_bits = std::collections::BTreeSet::new();
+    let mut saturated = std::collections::BTreeSet::new();
+    let mut clamped = std::collections::BTreeSet::new();
+    for (i, o) in ins.iter().zip(&outs) {
+        let covered = o[0] & 1 == 1;
+        for k in 0..3 {
+            let (a, b) = (i[13 + 3 * k] as i32, i[14 + 3 * k] as i32);
+            let e = e_of(o, k);
+            if e == 0 && a != 0 && a.unsigned_abs().is_power_of_two() {
+                tie_a.insert((a.unsigned_abs().trailing_zeros(), a > 0, covered));
+            }
+            if e == 0 && a == 0 && b.unsigned_abs().is_power_of_two() {
+                tie_b.insert((b.unsigned_abs().trailing_zeros(), b > 0, covered));
+            }
+            if e != 0 && e.unsigned_abs().is_power_of_two() {
+                e_bits.insert((e.unsigned_abs().trailing_zeros(), e > 0));
+            }
+        }
+        let f = (((i[22] >> 2) & 0xff) as u8) as i8;
+        if covered && f < -33 {
+            saturated.insert(o[1]);
+        }
+        if covered && [0x7fff_fffe, 0x8000_0000].contains(&o[1]) {
+            clamped.insert((i32::from(f) + 33, o[1]));
+        }
+    }
+    for j in 0..=29u32 {
+        for sign in [false, true] {
+            for (name, got) in [("a", &tie_a), ("b (a = 0)", &tie_b)] {
+                assert!(
+                    got.contains(&(j, sign, true)),
+                    "no covered tie on an edge whose {name} is {}2^{j}",
+                    if sign { "+" } else { "-" }
+                );
+            }
+        }
+    }
+    for t in 1..=58u32 {
+        for sign in [false, true] {
+            assert!(
+                e_bits.contains(&(t, sign)),
+                "no record with an edge value E = {}2^{t}",
+                if sign { "+" } else { "-" }
+            );
+        }
+    }
+    assert!(
+        saturated.contains(&0x7fff_fffe) && saturated.contains(&0x8000_0000),
+        "covered samples with f < -33 and their depths: {saturated:x?}"
+    );
+    for amt in 20..=62 {
+        for d in [0x7fff_fffe, 0x8000_0000] {
+            if d == 0x8000_0000 && amt == 62 {
+                continue; // c = −2^8 needs the slope 2^σ ≥ 2^8: amt ≤ 61
+            }
+            assert!(
+                clamped.contains(&(amt, d)),
+                "no covered sample clamped to {d:#x} at the depth shift f + 33 = {amt}"
+            );
+        }
+    }
+}
+
 type Kind = Box<dyn Fn(&[u32], &[u32]) -> bool>;
 
 fn e_of(out: &[u32], k: usize) -> i64 {

@@ -2,7 +2,8 @@
 
 - ``run``: list ``--mutants`` mutations (default 1000, ``--seed`` 1) of every build of
   :data:`.units.BUILDS` (or ``--builds``) and judge them with the committed vector sets; each
-  build's mutants go to ``host/report/mutation/<build>.jsonl`` as soon as it is done.
+  build's mutants go to ``host/report/mutation/<build>.jsonl`` as soon as it is done (a mutant
+  that survives again keeps the ``prove`` and ``stream`` verdicts of the file it replaces).
 - ``prove``: try to prove each survivor equivalent (``--engine abc``: on one miter per build
   Yosys maps, register correspondence by ABC's ``iprove``, then ABC's ``dprove``; ``sat``:
   Yosys's ``sat -tempinduct`` on one miter per mutant; ``--timeout`` seconds each).
@@ -127,7 +128,13 @@ def main(argv: Optional[List[str]] = None) -> int:
             if a.cmd == "run":
                 r = flow.run_build(repo, b, a.mutants, a.seed, work / b.name, a.jobs,
                                    cross=_pair(a.cross))
-                report.save(per, b.name, [x.to_json() for x in r.results])
+                rows = [x.to_json() for x in r.results]
+                try:
+                    kept = report.carry(report.load(per, b.name), rows)
+                except ValueError as e:
+                    raise MutationError(f"{b.name}: {e}") from e
+                print(f"{b.name}: later verdicts kept for {kept} survivors")
+                report.save(per, b.name, rows)
                 meta["runs"][b.name] = {"sets": r.sizes, "seconds": round(r.seconds, 1),
                                         "icarus_confirmed": r.confirmed}
             elif a.cmd == "prove":

@@ -41,6 +41,33 @@ def save(per: Path, name: str, rows: List[Dict]) -> None:
                  "".join(json.dumps(r, sort_keys=True) + "\n" for r in rows))
 
 
+#: The keys the later stages (``prove``, ``stream``) add to a mutant's line.
+LATER = ("equivalent", "stream", "stream_records", "stream_directed", "stream_directed_records",
+         "stream_target")
+
+
+def carry(old: List[Dict], new: List[Dict]) -> int:
+    """Keep the later stages' verdicts of ``old`` for the mutants of ``new`` that survive the
+    committed sets again with the same mutation (a new run after the vectors changed: a proof or
+    a stream verdict does not depend on them); a mutant the sets now kill drops them. How many
+    mutants kept verdicts. A mutant proven equivalent that the sets now kill is an error: the
+    proof or the bench is wrong."""
+    by = {r["id"]: r for r in old}
+    kept = 0
+    for r in new:
+        o = by.get(r["id"])
+        if o is None or o.get("mutate") != r.get("mutate"):
+            continue
+        if r.get("killed_by") and o.get("equivalent") == "proven":
+            raise ValueError(f"mutant {r['id']} was proven equivalent, and set "
+                             f"{r['killed_by']} kills it at record {r['record']}")
+        if not r.get("killed_by"):
+            got = {k: o[k] for k in LATER if k in o}
+            r.update(got)
+            kept += bool(got)
+    return kept
+
+
 def fate(r: Dict) -> str:
     """A mutant's place in the report: ``vectors``, ``equivalent``, ``stream`` or ``survivor``."""
     if r.get("killed_by"):
