@@ -60,3 +60,47 @@ def test_a_new_run_keeps_later_verdicts_of_mutants_that_survive_again():
     proven = [{"id": 4, "mutate": "m4", "killed_by": None, "equivalent": "proven"}]
     with pytest.raises(ValueError, match="mutant 4 was proven equivalent"):
         report.carry(proven, [{"id": 4, "mutate": "m4", "killed_by": "unit", "record": 0}])
+
+
+def test_the_planar_proof_domain_keeps_records_and_maps_the_rest_inside(tmp_path):
+    """``Bench.domain`` of the planar unit, simulated by Icarus: an input of the record domain
+    passes unchanged (f at −62 and 68, the viewport's sides at 1 and 2048, the sample at its
+    last position, σ = ±1, a nonzero normal), one outside it is mapped inside (f 69 and −63 to
+    the ends, a side of 0 or 4095, a sample past the viewport, σ = 0 or −2, a zero normal)."""
+    import shutil
+    import subprocess
+
+    if shutil.which("iverilog") is None:
+        pytest.skip("iverilog not installed (tests/run.sh installs it)")
+    dom = units.BENCHES["uvt_psample"].domain
+    width = {"f": 8, "vp_w": 12, "vp_h": 12, "xs": 20, "ys": 20, "sigma": 2, "n": 288}
+    assert [n for n, _ in dom] == list(width)
+    decl = "".join(f"    reg [{w - 1}:0] {n};\n" for n, w in width.items())
+    decl += "".join(f"    wire [{width[n] - 1}:0] d_{n} = {e};\n" for n, e in dom)
+    cases = [  # inputs, then the expected d_ values (f as 8-bit two's complement)
+        ({"f": 68, "vp_w": 1, "vp_h": 2048, "xs": 255, "ys": 2048 * 256 - 1, "sigma": 1,
+          "n": 5 | 5 << 160 | 1 << 287}, {"f": 68, "vp_w": 1, "vp_h": 2048, "xs": 255,
+                                         "ys": 2048 * 256 - 1, "sigma": 1,
+                                         "n": 5 | 5 << 160 | 1 << 287}),
+        ({"f": 0xc2, "vp_w": 7, "vp_h": 9, "xs": 0, "ys": 0, "sigma": 3, "n": (1 << 288) - 1},
+         {"f": 0xc2, "vp_w": 7, "vp_h": 9, "xs": 0, "ys": 0, "sigma": 3, "n": (1 << 288) - 1}),
+        ({"f": 69, "vp_w": 0, "vp_h": 4095, "xs": 300, "ys": (1 << 20) - 1, "sigma": 0, "n": 0},
+         {"f": 68, "vp_w": 1, "vp_h": 2048, "xs": 255, "ys": 2048 * 256 - 1, "sigma": 1,
+          "n": 1 | 1 << 96 | 1 << 192}),
+        ({"f": 0xc1, "vp_w": 2, "vp_h": 2, "xs": 512, "ys": 600, "sigma": 2, "n": 7 << 200},
+         {"f": 0xc2, "vp_w": 2, "vp_h": 2, "xs": 511, "ys": 511, "sigma": 1,
+          "n": 7 << 200 | 1 | 1 << 96}),
+    ]
+    body = ""
+    for ins, want in cases:
+        body += "".join(f"        {n} = {width[n]}'h{v:x};\n" for n, v in ins.items())
+        body += "        #1;\n"
+        body += "".join(f"        if (d_{n} !== {width[n]}'h{v:x}) begin $display(\"BAD {n} %h\", "
+                        f"d_{n}); end\n" for n, v in want.items())
+    src = tmp_path / "dom.v"
+    src.write_text(f"module t;\n{decl}    initial begin\n{body}        $display(\"DONE\");\n"
+                   "    end\nendmodule\n")
+    exe = tmp_path / "dom.vvp"
+    subprocess.run(["iverilog", "-g2005", "-o", str(exe), str(src)], check=True)
+    out = subprocess.run(["vvp", "-n", str(exe)], capture_output=True, text=True).stdout
+    assert "DONE" in out and "BAD" not in out, out

@@ -164,7 +164,10 @@ fn floor_div32(z: i64, d32: i64) -> i32 {
 /// The depth plane `(G, f)` from the exact `Zv` (< 2^77) and `D ≠ 0` (|D| < 2^93), module
 /// docs; the three divisions by [`floor_div_d32`] (`DIV32` picks its form, same bits).
 // bitlen(D) ≤ 93: rd = bitlen(D) − 32 ∈ [−23, 61] (D ≥ 256), rz = bitlen(max|Zv|) − 62 ∈
-// [−61, 15]; every shifted value has ≤ 32 bits (D) or ≤ 62 bits (Zv); f ∈ [−62, 98].
+// [−61, 15]; every shifted value has ≤ 32 bits (D) or ≤ 62 bits (Zv); f ∈ [−62, 98]. For the
+// Zv and D of a triangle (planar_setup) f ≤ 68: P'·Zv = det·ζ with ζ_k = z_k·2^(S − s_k)
+// integers, so Zv ≠ 0 has max|Zv_i| ≥ |det|/(3·(2^15 − 1)), D/max|Zv| < 2^S·256·W·H·3·2^15
+// < 2^61.6 and f = bitlen(D) − bitlen(max|Zv|) + 6 ≤ 68 (tests/tests/model/planar_exponent.rs).
 #[inline(never)]
 #[allow(clippy::arithmetic_side_effects, clippy::cast_possible_wrap)]
 fn depth_plane<const DIV32: bool>(zv: [i128; 3], d: i128) -> Option<([i32; 3], i32)> {

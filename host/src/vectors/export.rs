@@ -28,7 +28,7 @@ use super::cases::{base_tri, named_cases, tri};
 use super::format::{layout, sha256, to_text, Rec, FORMAT_VERSION, STAGES};
 use super::psample::{PCase, PCoverage, PSet};
 use super::stages::*;
-use super::{bsample, planar_cases, psample, psample_directed};
+use super::{bsample, bsample_directed, planar_cases, psample, psample_directed};
 /// Samples per pixel of the unit-level resolve records.
 pub const UNIT_RESOLVE_SPP: u32 = 16;
 /// A named range of setup records.
@@ -270,11 +270,12 @@ pub fn unit(seed: u64, cfg: Config) -> Result<Set> {
         btris.push((tri(big, big), vp32));
     }
     if !exact {
-        set.bounded(bsample::unit(
-            &btris,
-            seed,
-            Grid::from_config(cfg).map_err(|e| anyhow!(e))?,
-        ));
+        let g = Grid::from_config(cfg).map_err(|e| anyhow!(e))?;
+        let mut b = bsample::unit(&btris, seed, g);
+        // then the tie-key records (their own stream, after the set above)
+        let mut trng = rand_pcg::Pcg64::seed_from_u64(seed ^ 0x7e1e_0003);
+        bsample_directed::tie_keys(&mut b, &mut trng, g);
+        set.bounded(b);
     }
     // Resolve: random colors, and the rounding edges (all 0, all 255, exact halves).
     let colors = |rng: &mut rand_pcg::Pcg64| {

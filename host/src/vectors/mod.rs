@@ -6,6 +6,7 @@
 //!   the host, the vectors and the C library `uvt-ffi`);
 //! - [`cases`]: the named edge cases of the unit-level set;
 //! - [`bsample`]: the bounded sample-test records;
+//! - [`bsample_directed`]: bounded records directed at the fill rule's tie key;
 //! - [`planar_cases`]: the planar records' own triangles;
 //! - [`psample`]: the planar sample-test records;
 //! - [`psample_directed`]: planar records directed at single decisions (single-bit edges, the
@@ -18,6 +19,7 @@
 //!   seeded streams.
 
 pub mod bsample;
+pub mod bsample_directed;
 pub mod cases;
 pub mod check;
 pub mod committed;

@@ -109,6 +109,73 @@ fn committed_bounded_records_cover_the_edge_cases() {
     assert!(frames >= 1000, "{frames}");
 }
 
+/// The tie-key group (`host/src/vectors/bsample_directed.rs`) is in the committed unit set: per
+/// edge index, ties (E'_k = 0) whose key compares the ends' b' (a' = 0 at both: a column), their
+/// a' (b' = 0 at both: a row) and a vertex on the sample (a' = b' = 0), each both covered and
+/// not, under both orientations; and ties the rounding makes (a' = 0 at both ends of an edge
+/// whose exact x differs). The fill rule's key meets them all (docs/mutation.md).
+#[test]
+fn committed_bounded_records_hold_the_tie_keys() {
+    let set = committed().join("unit");
+    let read = |f: &str| -> Vec<Vec<u32>> {
+        std::fs::read_to_string(set.join(f))
+            .unwrap()
+            .lines()
+            .map(|l| {
+                l.split_whitespace()
+                    .map(|w| u32::from_str_radix(w, 16).unwrap())
+                    .collect()
+            })
+            .collect()
+    };
+    let (ins, outs) = (read("bsample_in.hex"), read("bsample_out.hex"));
+    let mut seen = std::collections::BTreeSet::new();
+    let mut rounded = 0;
+    for (i, o) in ins.iter().zip(&outs) {
+        let e = |k: usize| (u64::from(o[8 + 2 * k]) << 32) | u64::from(o[9 + 2 * k]);
+        let (a, b) = (
+            |k: usize| o[2 + 2 * k] as i32,
+            |k: usize| o[3 + 2 * k] as i32,
+        );
+        let (covered, sign) = (o[0] & 1, (o[0] >> 1) & 3);
+        for k in 0..3 {
+            if e(k) != 0 {
+                continue;
+            }
+            let (p, q) = ((k + 1) % 3, (k + 2) % 3);
+            let kind = if (a(p), b(p)) == (0, 0) || (a(q), b(q)) == (0, 0) {
+                "vertex"
+            } else if a(p) == 0 && a(q) == 0 {
+                // the ends' exact x/w differ (t0 frame: x at words 0, 5, 10, w at 3, 8, 13)
+                let x = |v: usize, u: usize| {
+                    i64::from(i[5 * v] as i32) * i64::from(i[5 * u + 3] as i32)
+                        != i64::from(i[5 * u] as i32) * i64::from(i[5 * v + 3] as i32)
+                };
+                rounded += x(p, q) as u32;
+                "column"
+            } else if b(p) == 0 && b(q) == 0 {
+                "row"
+            } else {
+                continue;
+            };
+            seen.insert((kind, k, covered, sign));
+        }
+    }
+    for kind in ["column", "row", "vertex"] {
+        for k in 0..3 {
+            for covered in [0, 1] {
+                for sign in [1, 3] {
+                    assert!(
+                        seen.contains(&(kind, k, covered, sign)),
+                        "no {kind} tie on edge {k} with covered = {covered}, det sign {sign}"
+                    );
+                }
+            }
+        }
+    }
+    assert!(rounded >= 20, "ties the rounding makes: {rounded}");
+}
+
 fn copy_set(from: &Path, to: &Path) {
     std::fs::create_dir_all(to).unwrap();
     for e in std::fs::read_dir(from).unwrap() {

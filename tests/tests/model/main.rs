@@ -18,6 +18,7 @@ mod imports;
 mod limit;
 mod motion_unit;
 mod planar;
+mod planar_exponent;
 mod precision;
 mod quant_check;
 mod report_copies;

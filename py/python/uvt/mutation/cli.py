@@ -202,7 +202,7 @@ def _prove(repo: Path, b, a, work: Path, per: Path) -> None:
     report.save(per, b.name, rows)
     c = Counter(r["equivalent"] for r in todo)
     print(f"{b.name}: of {len(todo)} survivors {c['proven']} proven equivalent, {c['differs']} "
-          f"differ on free inputs, {c['undecided']} undecided ({time.time() - t0:.0f} s)")
+          f"differ on the domain's inputs, {c['undecided']} undecided ({time.time() - t0:.0f} s)")
 
 
 def _stream(repo: Path, b, a, work: Path, per: Path) -> None:

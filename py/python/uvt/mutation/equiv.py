@@ -15,10 +15,14 @@ number (:func:`tie`, on the AIGER text: no second Yosys run), then:
    simplification (signal correspondence), induction, interpolation and property-directed
    reachability.
 
-``proven``: no input sequence from the all-zero state makes the architectural outputs differ;
-no record can catch the mutant. ``differs``: ABC found inputs that tell them apart, with every
-input free (no record domain is assumed), so such inputs may lie outside every record's domain:
-the mutant stays to be killed or argued. ``undecided``: no verdict within ``timeout`` seconds.
+Both copies see the unit's inputs through the record domain of its bench (``Bench.domain``:
+for the planar unit the depth exponent's reachable range, the viewport's sides, the sample
+inside the viewport, σ = ±1, no zero normal; other units state none yet, so their inputs are
+free). ``proven``: no input sequence of that domain from the all-zero state makes the
+architectural outputs differ; no record can catch the mutant. ``differs``: ABC found inputs of
+that domain that tell them apart (for a unit with no stated domain they may lie outside every
+record's): the mutant stays to be killed or argued. ``undecided``: no verdict within
+``timeout`` seconds.
 Before any mutant, mutant 0 (the unit against itself) must prove by one of the two steps; a step
 that cannot prove it is not used for the build."""
 
@@ -52,15 +56,20 @@ def ports(netlist: Path, top: str) -> List[Tuple[str, str, int]]:
 
 
 def wrapper(b: Build, pts: List[Tuple[str, str, int]], unit: str, name: str) -> str:
-    """Verilog of module ``name``: ``unit`` seen through its architectural outputs."""
+    """Verilog of module ``name``: ``unit`` seen through its architectural outputs, its inputs
+    through the record domain of its bench (``Bench.domain``: every input value outside it
+    mapped to one inside)."""
     bench = b.bench
     ins = [(n, w) for d, n, w in pts if d == "input"]
     outs = [n for n in ([bench.valid] if bench.valid else []) + list(bench.outputs)]
     width = {n: w for _, n, w in pts}
     decl = [f"    input wire [{w - 1}:0] {n}" for n, w in ins]
     decl += [f"    output wire [{width[n] - 1}:0] o_{n}" for n in outs]
-    conns = [f".{n}({n})" for n, _ in ins] + [f".{n}(w_{n})" for n in outs]
-    body = [f"    wire [{width[n] - 1}:0] w_{n};" for n in outs]
+    dom = dict(bench.domain)
+    conns = [f".{n}({'d_' if n in dom else ''}{n})" for n, _ in ins]
+    conns += [f".{n}(w_{n})" for n in outs]
+    body = [f"    wire [{width[n] - 1}:0] d_{n} = {e};" for n, e in bench.domain]
+    body += [f"    wire [{width[n] - 1}:0] w_{n};" for n in outs]
     body.append(f"    {unit} unit_i ({', '.join(conns)});")
     for n in outs:
         if bench.valid and n != bench.valid:

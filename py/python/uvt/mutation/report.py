@@ -1,8 +1,9 @@
 """The mutation report. Each build's mutants are kept one per line in
 ``host/report/mutation/<build>.jsonl`` (what the mutation changes; ``killed_by``: the committed
 set that kills it, with ``record`` and ``field``; ``equivalent``: ``proven`` when ABC proves it
-equivalent, ``differs`` when ABC finds free inputs that tell it apart, ``undecided`` when it gives
-no verdict in the time allowed; ``stream``: the seeded
+equivalent, ``differs`` when ABC finds inputs of the unit's record domain (free inputs where it
+states none) that tell it apart, ``undecided`` when it gives no verdict in the time allowed;
+``stream``: the seeded
 stream's record and field that kill it, or ``alive`` after ``stream_records``;
 ``stream_directed``: the same for the stream directed at the bins ``stream_target``), and the
 summary
@@ -108,7 +109,7 @@ def summary(b: Build, rows: List[Dict], meta: Dict) -> Dict:
         "stream_records": max((r.get("stream_records", 0) for r in streamed), default=0),
         "survivors": by["survivor"],
         "survivors_not_proven": {
-            "differs_on_free_inputs": sum(r.get("equivalent") == "differs" for r in left),
+            "differs_on_domain_inputs": sum(r.get("equivalent") == "differs" for r in left),
             "undecided": sum(r.get("equivalent") == "undecided" for r in left),
             "not_tried": sum(r.get("equivalent") is None for r in left),
         },
@@ -143,7 +144,7 @@ def write(repo: Path, builds: List[Build], out_json: Path, per: Path, meta: Dict
 def markdown(rep: Dict) -> str:
     """The report as the table of docs/mutation.md."""
     head = ("| build | unit outputs checked | mutants | killed by the committed sets | "
-            "proven equivalent | killed by the stream | survivors: differ on free inputs, "
+            "proven equivalent | killed by the stream | survivors: differ on the domain's inputs, "
             "undecided, not tried | score (killed ÷ not equivalent) | records to kill: median, "
             "largest |\n"
             "|---|---|---|---|---|---|---|---|---|\n")
@@ -160,6 +161,6 @@ def markdown(rep: Dict) -> str:
         left = r["survivors_not_proven"]
         rows.append(f"| {r['build']} | {r['checked']} | {r['mutants']} | "
                     f"{r['killed_by_vectors']} ({sets}) | {r['equivalent']} | {stream} | "
-                    f"{r['survivors']}: {left['differs_on_free_inputs']}, {left['undecided']}, "
+                    f"{r['survivors']}: {left['differs_on_domain_inputs']}, {left['undecided']}, "
                     f"{left['not_tried']} | {score} | {rtk['median']}, {rtk['largest']} |")
     return head + "\n".join(rows) + "\n"

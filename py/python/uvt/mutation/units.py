@@ -41,14 +41,33 @@ class Bench:
     #: architectural data outputs it qualifies: the equivalence proofs compare these alone
     valid: object = None
     outputs: Tuple[str, ...] = ()
+    #: the record domain the equivalence proofs assume: per input, a Verilog expression over the
+    #: raw inputs (and the other inputs' ``d_NAME``) that is the input itself inside the domain
+    #: and a value inside it elsewhere; the unit sees ``d_NAME`` (docs/mutation.md)
+    domain: Tuple[Tuple[str, str], ...] = ()
 
+
+#: The planar unit's record domain (vectors/README.md, `psample_in` fields): the depth
+#: exponent f of a reachable triangle in [−62, 68] (`core/src/setup/planar.rs`,
+#: tests/tests/model/planar_exponent.rs), the viewport 1..2048 a side, the sample inside it
+#: (xs < 256·W, ys < 256·H), σ = ±1, and no edge normal 0 (a degenerate triangle, culled).
+PSAMPLE_DOMAIN = (
+    ("f", "($signed(f) > 8'sd68) ? 8'sd68 : ($signed(f) < -8'sd62) ? -8'sd62 : f"),
+    ("vp_w", "(vp_w == 12'd0) ? 12'd1 : (vp_w > 12'd2048) ? 12'd2048 : vp_w"),
+    ("vp_h", "(vp_h == 12'd0) ? 12'd1 : (vp_h > 12'd2048) ? 12'd2048 : vp_h"),
+    ("xs", "(xs >= {d_vp_w, 8'd0}) ? {d_vp_w, 8'd0} - 20'd1 : xs"),
+    ("ys", "(ys >= {d_vp_h, 8'd0}) ? {d_vp_h, 8'd0} - 20'd1 : ys"),
+    ("sigma", "(sigma == 2'b01 || sigma == 2'b11) ? sigma : 2'b01"),
+    ("n", "{" + ", ".join(f"(n[{96 * k} +: 96] == 96'd0) ? 96'd1 : n[{96 * k} +: 96]"
+                          for k in (2, 1, 0)) + "}"),
+)
 
 BENCHES: Dict[str, Bench] = {
     "uvt_bsample": Bench("tb_bsample", "bsample", ("UVT_ARCH_ONLY",),
                          ("POS", "TUV", "OFF", "MOTION", "DEFOCUS"), "out_covered, depth",
                          "out_valid", ("out_covered", "depth")),
     "uvt_psample": Bench("tb_psample", "psample", ("UVT_ARCH_ONLY",), (), "covered, depth",
-                         "out_valid", ("covered", "depth")),
+                         "out_valid", ("covered", "depth"), PSAMPLE_DOMAIN),
     "uvt_bounds": Bench("tb_bounds", "bounds", ("UVT_DUT=uvt_bounds",), ("BND", "TUV"),
                         "nonempty, u, v, t intervals", "out_valid",
                         ("nonempty", "u_lo", "u_hi", "v_lo", "v_hi", "t_lo", "t_hi")),
@@ -78,7 +97,7 @@ class Build:
         ref = BENCHES[self.like]
         defines = tuple(d for d in ref.defines if not d.startswith("UVT_DUT="))
         return Bench(ref.tb, ref.stem, (*defines, f"UVT_DUT={self.top}"), ref.tb_params,
-                     ref.checked, ref.valid, ref.outputs)
+                     ref.checked, ref.valid, ref.outputs, ref.domain)
 
     def source_paths(self) -> List[str]:
         """The sources as Yosys reads them: ``vectors/rtl/…`` for a reference unit (relative, so
