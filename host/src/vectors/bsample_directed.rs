@@ -11,7 +11,11 @@
 //! - **vertex**: one vertex on the sample (`a' = b' = 0`): two ties at once, each key comparing
 //!   `(0, 0, w)` with the other vertex's;
 //! - **rounded**: a column edge with one end a raw step off the column: `A` below 2^(OFF−1), so
-//!   `a'` still rounds to 0 and the bounded test ties where the exact one does not.
+//!   `a'` still rounds to 0 and the bounded test ties where the exact one does not;
+//! - **bits**: a vertex on the sample and the other two ±2^p (1/128 clip) away along both axes,
+//!   the viewport's sides and the weights powers of two: the other vertices' `a'` and `b'` are
+//!   single bits (`b' = 2^(17 + log H + log m + q − OFF)` for `v − v_s = 2^q`, rounded where
+//!   the exponent is negative), so a key compare that drops or adds one bit changes the key.
 //!
 //! Vertices are static, `w` a whole number of clip units (`2^16` raw) per vertex (1 to 4, so
 //! the keys' `w` differ), the sample's column `x/w = k/128` (`xs = 128·W + k·W`, exact) and row
@@ -24,7 +28,7 @@ use uvt_core::{Lens, Sample, ScreenPos, SubPixel, Time, Triangle, Vertex, Viewpo
 
 use super::bsample::{BSet, Grid};
 
-/// Triangles of [`tie_keys`] per kind (column, row, vertex, rounded).
+/// Triangles of [`tie_keys`] per kind (column, row, vertex, rounded, bits).
 pub const PER_KIND: usize = 150;
 
 /// Raw clip units per clip unit.
@@ -33,7 +37,7 @@ const ONE: i64 = 1 << 16;
 /// Records whose every sample ties (the module's header): [`PER_KIND`] triangles of each kind,
 /// one record each (a triangle whose sample falls outside its viewport is skipped).
 pub fn tie_keys(set: &mut BSet, rng: &mut Pcg64, g: Grid) {
-    for kind in 0..4 {
+    for kind in 0..5 {
         for _ in 0..PER_KIND {
             one(set, rng, g, kind);
         }
@@ -47,7 +51,13 @@ fn one(set: &mut BSet, rng: &mut Pcg64, g: Grid, kind: u32) {
             _ => rng.gen_range(1..=2048),
         }
     };
-    let Ok(vp) = Viewport::new(side(rng), side(rng)) else {
+    let pow2 = |rng: &mut Pcg64| -> u16 { 1 << rng.gen_range(0..=11) };
+    let vp = if kind == 4 {
+        Viewport::new(pow2(rng), pow2(rng))
+    } else {
+        Viewport::new(side(rng), side(rng))
+    };
+    let Ok(vp) = vp else {
         return;
     };
     let (w, h) = (i64::from(vp.width()), i64::from(vp.height()));
@@ -61,7 +71,13 @@ fn one(set: &mut BSet, rng: &mut Pcg64, g: Grid, kind: u32) {
         let c = |p: i64| (p * m * ONE / 128) as i32;
         Vertex::from_bits([c(u), c(v), z as i32, (m * ONE) as i32, 0])
     };
-    let mut m = || rng.gen_range(1..=4i64);
+    let mut m = || {
+        if kind == 4 {
+            1 << rng.gen_range(0..=2)
+        } else {
+            rng.gen_range(1..=4i64)
+        }
+    };
     let (m1, m2, m3) = (m(), m(), m());
     // along the edge: the two ends d1 > 0 and −d2 < 0 away from the sample (in 1/128 clip)
     let d1 = rng.gen_range(1..=200i64);
@@ -92,6 +108,24 @@ fn one(set: &mut BSet, rng: &mut Pcg64, g: Grid, kind: u32) {
             at(kx - d2, ky, m2, z(rng)),
             at(kx, ky + far, m3, z(rng)),
         ),
+        // vertex on the sample; the other two a power of two away along the column and the
+        // row (with power-of-two sides and weights, their a' and b' single bits)
+        4 => {
+            let mut p2 = || {
+                let e = 1i64 << rng.gen_range(0..=7);
+                if rng.gen() {
+                    e
+                } else {
+                    -e
+                }
+            };
+            let (u1, v1, u2, v2) = (p2(), p2(), p2(), p2());
+            (
+                at(kx, ky, m1, z(rng)),
+                at(kx + u1, ky + v1, m2, z(rng)),
+                at(kx + u2, ky + v2, m3, z(rng)),
+            )
+        }
         // vertex on the sample; the other two around it
         _ => (
             at(kx, ky, m1, z(rng)),

@@ -112,8 +112,8 @@ fn committed_bounded_records_cover_the_edge_cases() {
 /// The tie-key group (`host/src/vectors/bsample_directed.rs`) is in the committed unit set: per
 /// edge index, ties (E'_k = 0) whose key compares the ends' b' (a' = 0 at both: a column), their
 /// a' (b' = 0 at both: a row) and a vertex on the sample (a' = b' = 0), each both covered and
-/// not, under both orientations; and ties the rounding makes (a' = 0 at both ends of an edge
-/// whose exact x differs). The fill rule's key meets them all (docs/mutation.md).
+/// not, under both orientations; ties the rounding makes (a' = 0 at both ends of an edge whose
+/// exact x differs); and vertex ties against an end whose b' is ±2^j for j = 2..13. The fill rule's key meets them all (docs/mutation.md).
 #[test]
 fn committed_bounded_records_hold_the_tie_keys() {
     let set = committed().join("unit");
@@ -130,6 +130,7 @@ fn committed_bounded_records_hold_the_tie_keys() {
     };
     let (ins, outs) = (read("bsample_in.hex"), read("bsample_out.hex"));
     let mut seen = std::collections::BTreeSet::new();
+    let mut bits = std::collections::BTreeSet::new();
     let mut rounded = 0;
     for (i, o) in ins.iter().zip(&outs) {
         let e = |k: usize| (u64::from(o[8 + 2 * k]) << 32) | u64::from(o[9 + 2 * k]);
@@ -144,6 +145,11 @@ fn committed_bounded_records_hold_the_tie_keys() {
             }
             let (p, q) = ((k + 1) % 3, (k + 2) % 3);
             let kind = if (a(p), b(p)) == (0, 0) || (a(q), b(q)) == (0, 0) {
+                // the other end's b' a single bit (the bits kind)
+                let other = if (a(p), b(p)) == (0, 0) { q } else { p };
+                if b(other).unsigned_abs().is_power_of_two() {
+                    bits.insert((b(other).unsigned_abs().trailing_zeros(), b(other) > 0));
+                }
                 "vertex"
             } else if a(p) == 0 && a(q) == 0 {
                 // the ends' exact x/w differ (t0 frame: x at words 0, 5, 10, w at 3, 8, 13)
@@ -174,6 +180,15 @@ fn committed_bounded_records_hold_the_tie_keys() {
         }
     }
     assert!(rounded >= 20, "ties the rounding makes: {rounded}");
+    for j in 2..=13 {
+        for sign in [false, true] {
+            assert!(
+                bits.contains(&(j, sign)),
+                "no tie at a vertex on the sample against an end whose b' is {}2^{j}",
+                if sign { "+" } else { "-" }
+            );
+        }
+    }
 }
 
 fn copy_set(from: &Path, to: &Path) {
