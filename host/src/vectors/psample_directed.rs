@@ -308,16 +308,16 @@ pub fn depth_boundaries(set: &mut PSet, rng: &mut Pcg64) {
             let Ok(t) = Triangle::new_static(v) else {
                 continue;
             };
-            let (w, h) = (u32::from(vp.width()), u32::from(vp.height()));
-            set.push(
-                &t,
-                vp,
-                ScreenPos {
-                    xs: 128 * w,
-                    ys: 128 * h,
-                },
-            );
+            set.push(&t, vp, centre(vp));
         }
+    }
+}
+
+/// The sample at the viewport's centre: `d = (0, 0, 256·W·H)`, the ray through `x/w = y/w = 0`.
+fn centre(vp: Viewport) -> ScreenPos {
+    ScreenPos {
+        xs: 128 * u32::from(vp.width()),
+        ys: 128 * u32::from(vp.height()),
     }
 }
 
@@ -347,15 +347,8 @@ pub fn saturated_depth(set: &mut PSet, rng: &mut Pcg64) {
         let Ok(vp) = Viewport::new(rng.gen_range(1..=16), rng.gen_range(1..=16)) else {
             continue;
         };
+        set.push(&t, vp, centre(vp));
         let (w, h) = (u32::from(vp.width()), u32::from(vp.height()));
-        set.push(
-            &t,
-            vp,
-            ScreenPos {
-                xs: 128 * w,
-                ys: 128 * h,
-            },
-        );
         let (xs, ys) = (rng.gen_range(0..256 * w), rng.gen_range(0..256 * h));
         set.push(&t, vp, ScreenPos { xs, ys });
     }
