@@ -104,3 +104,28 @@ def test_the_planar_proof_domain_keeps_records_and_maps_the_rest_inside(tmp_path
     subprocess.run(["iverilog", "-g2005", "-o", str(exe), str(src)], check=True)
     out = subprocess.run(["vvp", "-n", str(exe)], capture_output=True, text=True).stdout
     assert "DONE" in out and "BAD" not in out, out
+
+
+def test_a_miter_built_for_more_mutants_serves_fewer(tmp_path):
+    """``equiv._aigs`` (the prover's miter, minutes of Yosys on a datapath unit) is kept for a
+    later proof of fewer mutants (the sets killed some since) and built again for a mutant it
+    does not hold; the select literals and the register pairs are the same either way."""
+    import shutil
+
+    from uvt.mutation import design, equiv
+
+    if shutil.which("yosys") is None:
+        pytest.skip("yosys not installed (tests/run.sh installs it)")
+    b = units.build(ROOT, "mul31")
+    muts = design.make(ROOT, b, 1000, 1, tmp_path / "list")[:4]
+    net = design.single(ROOT, b, None, tmp_path / "p")
+    aag = tmp_path / "p" / "miter.aag"
+    first = equiv._aigs(ROOT, b, muts[:3], 1000, net, tmp_path / "p")
+    built = aag.stat().st_mtime_ns
+    again = equiv._aigs(ROOT, b, muts[1:3], 1000, net, tmp_path / "p")
+    assert aag.stat().st_mtime_ns == built, "a miter holding every mutant asked for was rebuilt"
+    assert again[1:] == first[1:] and again[2], "select literals or register pairs differ"
+    equiv._aigs(ROOT, b, muts[2:4], 1000, net, tmp_path / "p")
+    assert aag.stat().st_mtime_ns != built, "a miter without mutant 4 was kept"
+    held = (tmp_path / "p" / "apply.txt").read_text().splitlines()
+    assert held == [m.selected(design.sel_width(1000)) for m in muts[2:4]]

@@ -42,3 +42,20 @@ def test_a_wrong_class_is_split_by_the_counterexample(tmp_path):
     assert got is False and cex.is_file()
     assert c.refine(corr._cex(cex)) > 0
     assert c.rep != [0, 0, 0, 0]
+
+
+def test_registers_named_alike_start_in_one_class(tmp_path):
+    # the map's pairs (gate latch -> gold latch) seed the classes before any structural round
+    c = corr.Corr(corr.Aig(ABSORB), [6], {2: 0, 3: 1})
+    assert c.rep == [0, 1, 0, 1], c.rep
+    got = corr.iprove(equiv.binary(c.text(), c.ties(1)), tmp_path / "k.aig", 30.0)
+    assert got is True
+
+
+def test_a_wrong_pair_is_split_before_any_verdict(tmp_path):
+    # gate r1 paired with gold r2 and gate r2 with gold r1: the check of mutant 0 fails, the
+    # counterexample splits the pairs, and the verdicts are those of the right classes
+    c = corr.classes(corr.Aig(INVERT), [6], tmp_path, equiv.binary, 30.0, {2: 1, 3: 0})
+    assert c is not None, "mutant 0 (the unit against itself) must prove"
+    assert c.rep[2] != 1 and c.rep[3] != 0, c.rep
+    assert corr.iprove(equiv.binary(c.text(), c.ties(1)), tmp_path / "k.aig", 30.0) is False

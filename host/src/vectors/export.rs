@@ -167,6 +167,93 @@ fn random_sample(rng: &mut rand_pcg::Pcg64, b: Option<&UvtBox>) -> Sample {
     )
     .expect("drawn inside the domain or a core box")
 }
+/// Seeded random triangles of the unit set on large viewports: their dual-space lines and the
+/// bounds unit's divider operands reach the high bits (`uvt_bounds.v`'s restoring divider), which
+/// the small viewports' leave at 0 (docs/mutation.md).
+pub const LARGE_VIEWPORT_TRIANGLES: u32 = 480;
+
+/// The viewport sides (width; the height 3 less) of [`LARGE_VIEWPORT_TRIANGLES`].
+pub const LARGE_SIDES: [u16; 2] = [1024, 2045];
+
+/// The kinds (`random_tri`) of [`LARGE_VIEWPORT_TRIANGLES`]: moving, moving and defocused, huge.
+pub const LARGE_KINDS: [u32; 3] = [1, 3, 5];
+
+/// `n` seeded random triangles (`random_tri`), triangle `i` of kind and on the viewport
+/// `shape(i) = (width, height, kind)`, rounded onto the configuration's position grid, as the
+/// named case `name`.
+fn random_group(
+    set: &mut Set,
+    rng: &mut rand_pcg::Pcg64,
+    n: u32,
+    shape: impl Fn(u32) -> (u16, u16, u32),
+    name: String,
+) -> Result<()> {
+    let first = set.setups.len();
+    for i in 0..n {
+        let (w, h, kind) = shape(i);
+        let vp = Viewport::new(w, h).map_err(|e| anyhow!("{e}"))?;
+        let t = random_tri(rng, kind)
+            .to_core()
+            .map_err(|e| anyhow!("{e}"))?;
+        set.tri(&on_grid(&t, set.config.pos()), vp)?;
+    }
+    set.cases.push(Case {
+        name,
+        setup_records: [first, set.setups.len() - 1],
+    });
+    Ok(())
+}
+
+/// Per visible triangle of `tris` (setup record indices): every tile size, `per` tiles inside
+/// its footprint; per non-empty tile four interval checks and, at an exact configuration with
+/// `samples`, three sample tests inside the box.
+fn tiles(
+    set: &mut Set,
+    tris: core::ops::Range<u32>,
+    rng: &mut rand_pcg::Pcg64,
+    per: usize,
+    samples: bool,
+) -> Result<()> {
+    let exact = samples && set.config.off().is_none();
+    for i in tris {
+        let Some((s, _)) = set.setups[i as usize] else {
+            continue;
+        };
+        let fp = s.footprint();
+        for bt in [1u16, 2, 4, 8] {
+            for _ in 0..per {
+                let x = rng.gen_range(fp.x0..fp.x1);
+                let y = rng.gen_range(fp.y0..fp.y1);
+                let cell = PixelRect {
+                    x0: x - x % bt,
+                    y0: y - y % bt,
+                    x1: x - x % bt + bt,
+                    y1: y - y % bt + bt,
+                }
+                .intersect(&fp);
+                let Some(b) = set.bounds(i, cell)? else {
+                    continue;
+                };
+                for k in 0..4 {
+                    let smp = random_sample(rng, if k % 2 == 0 { Some(&b) } else { None });
+                    set.select(&b, &smp);
+                }
+                for _ in 0..3 {
+                    let smp = random_sample(rng, Some(&b));
+                    let (px, py) = (
+                        rng.gen_range(cell.x0..cell.x1),
+                        rng.gen_range(cell.y0..cell.y1),
+                    );
+                    if exact {
+                        set.sample(i, px, py, &smp)?;
+                    }
+                }
+            }
+        }
+    }
+    Ok(())
+}
+
 /// The unit-level set at configuration `cfg`: setup, bounds and interval-check records of its
 /// setups (triangles rounded down onto its position grid); the exact sample test's records at an
 /// exact configuration; at a bounded or planar one its bounded test's records (`bsample_*`) and
@@ -187,59 +274,20 @@ pub fn unit(seed: u64, cfg: Config) -> Result<Set> {
             setup_records: [first, set.setups.len() - 1],
         });
     }
-    let first = start(&set);
-    for i in 0..180u32 {
-        let side = [8u16, 17, 32, 61][i as usize % 4];
-        let vp = Viewport::new(side, side + 3).map_err(|e| anyhow!("{e}"))?;
-        let t = random_tri(&mut rng, i % 6)
-            .to_core()
-            .map_err(|e| anyhow!("{e}"))?;
-        set.tri(&on_grid(&t, cfg.pos()), vp)?;
-    }
-    set.cases.push(Case {
-        name: format!(
-            "seeded random (seed {seed}): static, moving, defocused, both, crossing, huge"
-        ),
-        setup_records: [first, set.setups.len() - 1],
-    });
+    random_group(
+        &mut set,
+        &mut rng,
+        180,
+        |i| {
+            let side = [8u16, 17, 32, 61][i as usize % 4];
+            (side, side + 3, i % 6)
+        },
+        format!("seeded random (seed {seed}): static, moving, defocused, both, crossing, huge"),
+    )?;
     // Per visible triangle: every tile size, a few tiles; per non-empty tile, interval checks and
     // sample tests inside the box.
-    for i in 0..set.setups.len() as u32 {
-        let Some((s, _)) = set.setups[i as usize] else {
-            continue;
-        };
-        let fp = s.footprint();
-        for bt in [1u16, 2, 4, 8] {
-            for _ in 0..3 {
-                let x = rng.gen_range(fp.x0..fp.x1);
-                let y = rng.gen_range(fp.y0..fp.y1);
-                let cell = PixelRect {
-                    x0: x - x % bt,
-                    y0: y - y % bt,
-                    x1: x - x % bt + bt,
-                    y1: y - y % bt + bt,
-                }
-                .intersect(&fp);
-                let Some(b) = set.bounds(i, cell)? else {
-                    continue;
-                };
-                for k in 0..4 {
-                    let smp = random_sample(&mut rng, if k % 2 == 0 { Some(&b) } else { None });
-                    set.select(&b, &smp);
-                }
-                for _ in 0..3 {
-                    let smp = random_sample(&mut rng, Some(&b));
-                    let (px, py) = (
-                        rng.gen_range(cell.x0..cell.x1),
-                        rng.gen_range(cell.y0..cell.y1),
-                    );
-                    if exact {
-                        set.sample(i, px, py, &smp)?;
-                    }
-                }
-            }
-        }
-    }
+    let n = set.setups.len() as u32;
+    tiles(&mut set, 0..n, &mut rng, 3, true)?;
     // Ties: samples exactly on the shared edge x = 0 (column 16, sub-pixel 0) for both triangles.
     let tie = set
         .cases
@@ -262,8 +310,28 @@ pub fn unit(seed: u64, cfg: Config) -> Result<Set> {
             }
         }
     }
-    // Bounded sample-test records: every triangle above, plus depth saturation at both ends.
-    let mut btris = set.tris.clone();
+    // Triangles on large viewports and their tiles (their own stream, after everything above:
+    // the records before them stay as they were).
+    let before = set.tris.len();
+    let first = start(&set);
+    let mut lrng = rand_pcg::Pcg64::seed_from_u64(seed ^ 0x1a7e_0004);
+    random_group(
+        &mut set,
+        &mut lrng,
+        LARGE_VIEWPORT_TRIANGLES,
+        |i| {
+            let side = LARGE_SIDES[i as usize % LARGE_SIDES.len()];
+            (side, side - 3, LARGE_KINDS[i as usize % LARGE_KINDS.len()])
+        },
+        format!(
+            "seeded random on large viewports (sides {LARGE_SIDES:?}, seed {seed} ^ 0x1a7e_0004): moving, moving and defocused, huge; one tile of each size, without sample tests"
+        ),
+    )?;
+    let n = set.setups.len() as u32;
+    tiles(&mut set, first as u32..n, &mut lrng, 1, false)?;
+    // Bounded sample-test records: every triangle above but those on large viewports, plus depth
+    // saturation at both ends.
+    let mut btris = set.tris[..before].to_vec();
     let vp32 = Viewport::new(32, 32).map_err(|e| anyhow!("{e}"))?;
     for z in [8000.0, -8000.0, 200.0, -129.0] {
         let big = base_tri().map(|v| [v[0], v[1], z, v[3], v[4]]);
@@ -350,6 +418,13 @@ pub fn unit(seed: u64, cfg: Config) -> Result<Set> {
     pset.cases.push(PCase {
         name: "depth exponent below −33 (the scaled depth saturated): det 1, normals near 2^28, a vertex at w = 0, the centre sample on vertex 2 (fill rule)".into(),
         triangles: psample_directed::SATURATED,
+        records: [first, pset.inp.len()],
+    });
+    let first = pset.inp.len();
+    psample_directed::zero_depth(&mut pset, &mut prng);
+    pset.cases.push(PCase {
+        name: "depth exactly 0 at every shift f + 33 = 4..19 (the range test's mask on the accumulator's low bits): det 1, z_2 = 0, the centre sample on vertex 2".into(),
+        triangles: psample_directed::SMALL_SHIFTS.count() * psample_directed::ZERO_PER_SHIFT,
         records: [first, pset.inp.len()],
     });
     set.planar(pset);

@@ -353,3 +353,51 @@ pub fn saturated_depth(set: &mut PSet, rng: &mut Pcg64) {
         set.push(&t, vp, ScreenPos { xs, ys });
     }
 }
+
+/// The depth shifts `f + 33` below [`SHIFTS`] that [`zero_depth`] reaches.
+pub const SMALL_SHIFTS: core::ops::RangeInclusive<i32> = 4..=19;
+
+/// Triangles of [`zero_depth`] per shift of [`SMALL_SHIFTS`].
+pub const ZERO_PER_SHIFT: usize = 4;
+
+/// Covered samples whose depth is exactly 0 at every shift of [`SMALL_SHIFTS`], where the range
+/// test's mask reaches the accumulator's low bits (`j ≥ amt − 2`): the rows of
+/// [`saturated_depth`] with `z_2 = 0`, so `Zv = (z_0 + K·z_1, z_1, 0)`, `G_w = 0` and the
+/// centre sample (vertex 2) has `acc = 0`. On a 1×1 viewport `D = 256` and `f = 15 − B` for
+/// `B = bitlen(z_0 + K·z_1)`: `K·z_1` is drawn in `[2^(B−1), 2^(B−1) + 2^(B−2))` and `z_0` of
+/// its sign below `min(2^(B−3), 2^29)`, so `B = 48 − amt` exactly (`K ≤ 2^15 − 1`, `|z_1| ≤
+/// 2^29`: `B ≤ 44`, `amt ≥ 4`). Per triangle the centre sample and one anywhere in the pixel.
+pub fn zero_depth(set: &mut PSet, rng: &mut Pcg64) {
+    let lim = 1i64 << 29;
+    for amt in SMALL_SHIFTS {
+        let b = 48 - amt; // 29..=44
+        let lo = 1i64 << (b - 1);
+        for _ in 0..ZERO_PER_SHIFT {
+            set.cov.triangles += 1;
+            // K·|z_1| ≥ 2^(B−1) with |z_1| ≤ 2^29 needs K ≥ 2^(B−1−29).
+            let k = rng.gen_range((lo >> 29).max(1)..=i64::from(EXACT));
+            let z1_lo = (lo + k - 1) / k; // ceil: K·z_1 ≥ 2^(B−1)
+            let z1_hi = ((lo + (lo >> 1) - 1) / k).min(lim); // K·z_1 < 2^(B−1) + 2^(B−2)
+            if z1_lo > z1_hi {
+                continue;
+            }
+            let s = if rng.gen() { 1 } else { -1 };
+            let z1 = s * rng.gen_range(z1_lo..=z1_hi);
+            let z0 = s * rng.gen_range(0..(lo >> 2).min(lim));
+            // |z| ≤ 2^29 and K ≤ 2^15 − 1: every value fits in i32.
+            let (k, z0, z1) = (k as i32, z0 as i32, z1 as i32);
+            let rows = [[1, -k, z0, 0, 0], [0, 1, z1, k, 0], [0, 0, 0, 1, 0]];
+            let r = rng.gen_range(0..3usize);
+            let v = core::array::from_fn(|i| Vertex::from_bits(rows[(i + r) % 3]));
+            let Ok(t) = Triangle::new_static(v) else {
+                continue;
+            };
+            let Ok(vp) = Viewport::new(1, 1) else {
+                continue;
+            };
+            set.push(&t, vp, centre(vp));
+            let (xs, ys) = (rng.gen_range(0..256), rng.gen_range(0..256));
+            set.push(&t, vp, ScreenPos { xs, ys });
+        }
+    }
+}

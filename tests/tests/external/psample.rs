@@ -301,7 +301,9 @@ fn rtl_planar_unit_pipe2_passes_every_committed_record() {
 /// for every j = 0..29 and both signs, a tie (E_k = 0) on an edge whose a is ±2^j and one on an
 /// edge with a = 0 and b = ±2^j, covered for each sign; for every t = 1..58 an edge value
 /// E_k = +2^t and one −2^t; covered samples whose depth exponent is below −33, saturated at
-/// both ends; depths clamped at both ends at every shift f + 33 = 20..62 (near: ..61). A unit's one-bit-off zero and sign tests of E, a and b meet these (docs/mutation.md).
+/// both ends; depths clamped at both ends at every shift f + 33 = 20..62 (near: ..61); a
+/// covered depth of exactly 0 at every shift 4..19 (the range test's mask on the accumulator's
+/// low bits). A unit's one-bit-off zero and sign tests of E, a and b meet these (docs/mutation.md).
 #[test]
 fn committed_planar_records_hold_the_directed_cases() {
     let set = committed().join("unit");
@@ -312,6 +314,7 @@ fn committed_planar_records_hold_the_directed_cases() {
     let mut e_bits = std::collections::BTreeSet::new();
     let mut saturated = std::collections::BTreeSet::new();
     let mut clamped = std::collections::BTreeSet::new();
+    let mut zero = std::collections::BTreeSet::new();
     for (i, o) in ins.iter().zip(&outs) {
         let covered = o[0] & 1 == 1;
         for k in 0..3 {
@@ -333,6 +336,9 @@ fn committed_planar_records_hold_the_directed_cases() {
         }
         if covered && [0x7fff_fffe, 0x8000_0000].contains(&o[1]) {
             clamped.insert((i32::from(f) + 33, o[1]));
+        }
+        if covered && o[1] == 0 {
+            zero.insert(i32::from(f) + 33);
         }
     }
     for j in 0..=29u32 {
@@ -369,6 +375,12 @@ fn committed_planar_records_hold_the_directed_cases() {
                 "no covered sample clamped to {d:#x} at the depth shift f + 33 = {amt}"
             );
         }
+    }
+    for amt in 4..=19 {
+        assert!(
+            zero.contains(&amt),
+            "no covered sample of depth 0 at the depth shift f + 33 = {amt}: {zero:?}"
+        );
     }
 }
 

@@ -12,9 +12,12 @@ clock keeps it, so the outputs agree on every input sequence and the mutant is e
 Nothing here assumes a record domain; a check that fails proves nothing (the mutant goes on to
 ``dprove``).
 
-The classes come from the copies' structure with the select input at 0: registers whose next
-values are the same AND node once every register is replaced by its class's head (constants
-folded) join one class, until nothing more joins. Registers that start at 0 and load the same
+The classes come from the copies' names and structure with the select input at 0: each gate
+register starts in the class of the gold register the AIGER map names alike (the copies are one
+netlist, so the pair is equal in every reachable state of mutant 0; a miter of two million ANDs
+would otherwise take one structural round per pipeline stage to pair them), then registers
+whose next values are the same AND node once every register is replaced by its class's head
+(constants folded) join one class, until nothing more joins. Registers that start at 0 and load the same
 function of equal values are equal in every reachable state, so these classes hold by
 construction for mutant 0; a counterexample ABC still finds splits the classes it tells apart
 (van Eijk's refinement). The same classes then serve every mutant: only the select input, and
@@ -79,7 +82,7 @@ def _lit(val: List[int], x: int) -> int:
 class Corr:
     """Register classes of one build's miter and the combinational check built from them."""
 
-    def __init__(self, aig: Aig, sel: Sequence[int]):
+    def __init__(self, aig: Aig, sel: Sequence[int], pairs: Optional[Dict[int, int]] = None):
         self.aig = aig
         self.sel = list(sel)                 # the select input's literals, LSB first
         zs = {s >> 1 for s in sel}
@@ -94,6 +97,9 @@ class Corr:
         self.selonly = [j for j in range(aig.nl) if not free[aig.next[j] >> 1]]
         self._skip = set(self.selonly)
         self.rep: List[int] = list(range(aig.nl))   # a register's class head, or -1 (0)
+        for j, g in (pairs or {}).items():           # gate's latch -> gold's (module docs)
+            if j not in self._skip and g not in self._skip and self.rep[g] == g:
+                self.rep[j] = g
         self.structural()
 
     def _compress(self) -> None:
@@ -252,11 +258,12 @@ Binary = Callable[[str, Dict[int, int]], bytes]
 
 
 def classes(aig: Aig, sel: Sequence[int], work: Path, binary: Binary,
-            timeout: float) -> Optional[Corr]:
-    """The classes of ``aig`` (select literals ``sel``) under which the check of mutant 0
-    holds, or None when refinement does not reach them in ``_ROUNDS`` rounds of at most
-    ``timeout`` seconds. ``binary(text, ties)`` writes the binary AIGER ABC reads."""
-    c = Corr(aig, sel)
+            timeout: float, pairs: Optional[Dict[int, int]] = None) -> Optional[Corr]:
+    """The classes of ``aig`` (select literals ``sel``; ``pairs``: registers named alike in the
+    two copies, gate's latch index -> gold's) under which the check of mutant 0 holds, or None
+    when refinement does not reach them in ``_ROUNDS`` rounds of at most ``timeout`` seconds.
+    ``binary(text, ties)`` writes the binary AIGER ABC reads."""
+    c = Corr(aig, sel, pairs)
     f, cx = work / "corr0.aig", work / "corr0.cex"
     for _ in range(_ROUNDS):
         cx.unlink(missing_ok=True)
@@ -265,4 +272,6 @@ def classes(aig: Aig, sel: Sequence[int], work: Path, binary: Binary,
             return c
         if got is None or not cx.is_file() or c.refine(_cex(cx)) == 0:
             return None
+        # registers split from a wrong class join the one their next values now share
+        c.structural()
     return None

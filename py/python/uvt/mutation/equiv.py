@@ -80,13 +80,15 @@ def wrapper(b: Build, pts: List[Tuple[str, str, int]], unit: str, name: str) -> 
 
 
 def _aigs(repo: Path, b: Build, muts: List[Mutation], count: int, netlist: Path,
-          work: Path) -> Tuple[str, List[int]]:
+          work: Path) -> Tuple[str, List[int], Dict[int, int]]:
     """The miter of the unit and every mutation of ``muts`` (of a list of ``count``) as ASCII
     AIGER, from one Yosys process (module docs): the unit with the mutations behind its select
     input (MCY's way) mapped to gates, one copy with the select input at 0 (gold) and one with
     it free (gate), each in its architectural view, in a miter (``miter -equiv``), every
-    register starting at 0. Returns the file's text and the AIGER literal of each select bit
-    (LSB first): :func:`tie` fixes them to one mutant."""
+    register starting at 0. Returns the file's text, the AIGER literal of each select bit
+    (LSB first; :func:`tie` fixes them to one mutant) and the pairs of registers the map names
+    alike in the two copies (gate's latch index -> gold's: :func:`corr.classes` starts from
+    them)."""
     work.mkdir(parents=True, exist_ok=True)
     top = b.top
     pts = ports(netlist, top)
@@ -96,7 +98,13 @@ def _aigs(repo: Path, b: Build, muts: List[Mutation], count: int, netlist: Path,
                                  .replace(" unit_i (", f" unit_i (.mutsel({w}'d0), ", 1))
     (work / "gate.v").write_text(wrapper(b, pts, "mut_u", "gate").replace("(\n", "(\n" + sel, 1)
                                  .replace(" unit_i (", " unit_i (.mutsel(mutsel), ", 1))
-    (work / "apply.txt").write_text("".join(m.selected(w) + "\n" for m in muts))
+    # A miter built for more mutants serves a later run for fewer (the sets killed some since)
+    # while nothing else changed: the stamp below still holds.
+    want = [m.selected(w) for m in muts]
+    apply = work / "apply.txt"
+    held = set(apply.read_text().splitlines()) if apply.is_file() else set()
+    if not held.issuperset(want):
+        apply.write_text("".join(x + "\n" for x in want))
     aag, amap = work / "miter.aag", work / "miter.map"
     # The second techmap maps the miter's own compare cells; the copies are gates already.
     script = [_read(b), f"script {work / 'apply.txt'}\nopt_clean\ntechmap\nopt_clean\n"
@@ -114,23 +122,32 @@ def _aigs(repo: Path, b: Build, muts: List[Mutation], count: int, netlist: Path,
     st = work / "aig.stamp"
     if not (aag.is_file() and amap.is_file() and st.is_file() and st.read_text() == stamp):
         st.unlink(missing_ok=True)
+        if set(apply.read_text().splitlines()) != set(want):
+            apply.write_text("".join(x + "\n" for x in want))
+            return _aigs(repo, b, muts, count, netlist, work)
         p = subprocess.run(["yosys", "-q", "-s", str(ys)], cwd=repo, capture_output=True,
                            text=True)
         if p.returncode != 0 or not aag.is_file():
             raise MutationError(f"{b.name}: yosys {ys} failed:\n{p.stdout[-2000:]}"
                                 f"{p.stderr[-2000:]}")
         st.write_text(stamp)
-    # The map names input k (the k-th input line) "input k bit name".
+    # The map names input k (the k-th input line) "input k bit name", latch j "latch j bit
+    # name" (once per name it carries: "gold.unit_i.s4_gx" and "gate.unit_i.s4_gx").
     text = aag.read_text()
     lines = text.split("\n", 1 + int(text.split()[2]))
     lits = [0] * w
+    named: Dict[str, Dict[Tuple[str, str], int]] = {"gold": {}, "gate": {}}
     for row in amap.read_text().splitlines():
         f = row.split()
         if f[0] == "input" and f[3] == "in_mutsel":
             lits[int(f[2])] = int(lines[1 + int(f[1])])
+        elif f[0] == "latch" and f[3][:4] in named:
+            named[f[3][:4]][(f[3][4:], f[2])] = int(f[1])
     if 0 in lits:
         raise MutationError(f"{b.name}: {amap} does not name every bit of in_mutsel")
-    return text, lits
+    gold = named["gold"]
+    pairs = {j: gold[k] for k, j in named["gate"].items() if k in gold and gold[k] != j}
+    return text, lits, pairs
 
 
 def tie(aag: str, lits: List[int], k: int) -> bytes:
@@ -200,11 +217,11 @@ def prove(repo: Path, b: Build, held: List[Mutation], muts: List[Mutation], coun
     ids = {m.id for m in held}
     if any(m.id not in ids for m in muts):
         raise MutationError(f"{b.name}: a mutant to prove is not in the miter")
-    aag, lits = _aigs(repo, b, held, count, netlist, work)
+    aag, lits, pairs = _aigs(repo, b, held, count, netlist, work)
     first = max(timeout, 60.0)
     # Mutant 0 (the unit against itself) must prove by a step, or that step's verdicts mean
     # nothing on this build.
-    cr = corr.classes(corr.Aig(aag), lits, work, binary, first)
+    cr = corr.classes(corr.Aig(aag), lits, work, binary, first, pairs)
     check = cr.text() if cr is not None else None
     seq = _dprove(work / "m0.aig", tie(aag, lits, 0), first) == "proven"
     if check is None and not seq:
