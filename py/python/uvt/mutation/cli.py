@@ -5,7 +5,8 @@
   build's mutants go to ``host/report/mutation/<build>.jsonl`` as soon as it is done (a mutant
   that survives again keeps the ``prove`` and ``stream`` verdicts of the file it replaces).
 - ``prove``: try to prove each survivor equivalent (``--engine abc``: on one miter per build
-  Yosys maps, register correspondence by ABC's ``iprove``, then ABC's ``dprove``; ``sat``:
+  Yosys maps, register correspondence by ABC's ``iprove``, the unrolled region, then ABC's
+  ``dprove`` (``--steps``); ``sat``:
   Yosys's ``sat -tempinduct`` on one miter per mutant; ``--timeout`` seconds each).
 - ``stream``: run each survivor still unproven through the seeded stream on Dask
   (``--records``; units with a stream runner).
@@ -86,6 +87,10 @@ def _parser() -> argparse.ArgumentParser:
                                       help="abc: one miter per build; per mutant register "
                                            "correspondence (ABC's iprove), then ABC's dprove; "
                                            "sat: one miter per mutant, Yosys's sat -tempinduct")
+    sub.choices["prove"].add_argument(
+        "--steps", default=",".join(equiv.STEPS), metavar="STEP,STEP",
+        help="--engine abc: the steps tried per mutant, in their order (corr: register "
+             "correspondence; unroll: the unrolled region; dprove: ABC's dprove)")
     sub.choices["prove"].add_argument("--depth", type=int, default=120,
                                       help="largest induction length (--engine sat)")
     sub.choices["prove"].add_argument("--retry", action="store_true",
@@ -191,7 +196,8 @@ def _prove(repo: Path, b, a, work: Path, per: Path) -> None:
         try:
             # The file is saved every 20 verdicts, so an interrupted run keeps what it decided.
             for n, (k, v) in enumerate(equiv.prove(repo, b, alive, muts, a.mutants, net, d,
-                                                   a.timeout, a.jobs)):
+                                                   a.timeout, a.jobs,
+                                                   a.steps.split(","))):
                 byid[k]["equivalent"] = v
                 if n % 20 == 19:
                     report.save(per, b.name, rows)

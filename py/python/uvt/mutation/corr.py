@@ -75,6 +75,16 @@ class Aig:
             val[a >> 1] = (val[b >> 1] ^ (b & 1)) & (val[c >> 1] ^ (c & 1))
 
 
+def and_deltas(out: bytearray, lhs: int, a: int, b: int) -> None:
+    """Append binary AIGER's encoding of the AND ``lhs = a & b`` (``lhs > a >= b``): the two
+    deltas ``lhs - a`` and ``a - b``, seven bits a byte, low first."""
+    for d in (lhs - a, a - b):
+        while d >= 0x80:
+            out.append((d & 0x7F) | 0x80)
+            d >>= 7
+        out.append(d)
+
+
 def _lit(val: List[int], x: int) -> int:
     return val[x >> 1] ^ (x & 1)
 

@@ -11,7 +11,11 @@ number (:func:`tie`, on the AIGER text: no second Yosys run), then:
 
 1. register correspondence (:mod:`.corr`): the registers of the two copies paired by structure,
    the miter made combinational, one ABC ``iprove``: unsatisfiable means equivalent;
-2. otherwise ABC's ``dprove``: bounded model checking from the all-zero state, then sequential
+2. otherwise the unrolled region (:mod:`.unroll`): the registers the mutation reaches and the
+   stages before them kept as registers over the clocks the region spans, the rest cut to free
+   inputs, one ABC ``iprove`` (a proof that needs a reachable-state fact such as a divider's
+   remainder below its divisor, made a few stages earlier);
+3. otherwise ABC's ``dprove``: bounded model checking from the all-zero state, then sequential
    simplification (signal correspondence), induction, interpolation and property-directed
    reachability.
 
@@ -34,9 +38,9 @@ import shutil
 import subprocess
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
-from typing import Dict, Iterator, List, Tuple
+from typing import Dict, Iterator, List, Sequence, Tuple
 
-from . import corr
+from . import corr, unroll
 from .design import Mutation, _read, sel_width
 from .errors import MutationError
 from .units import Build
@@ -98,16 +102,11 @@ def _aigs(repo: Path, b: Build, muts: List[Mutation], count: int, netlist: Path,
                                  .replace(" unit_i (", f" unit_i (.mutsel({w}'d0), ", 1))
     (work / "gate.v").write_text(wrapper(b, pts, "mut_u", "gate").replace("(\n", "(\n" + sel, 1)
                                  .replace(" unit_i (", " unit_i (.mutsel(mutsel), ", 1))
-    # A miter built for more mutants serves a later run for fewer (the sets killed some since)
-    # while nothing else changed: the stamp below still holds.
     want = [m.selected(w) for m in muts]
     apply = work / "apply.txt"
-    held = set(apply.read_text().splitlines()) if apply.is_file() else set()
-    if not held.issuperset(want):
-        apply.write_text("".join(x + "\n" for x in want))
     aag, amap = work / "miter.aag", work / "miter.map"
     # The second techmap maps the miter's own compare cells; the copies are gates already.
-    script = [_read(b), f"script {work / 'apply.txt'}\nopt_clean\ntechmap\nopt_clean\n"
+    script = [_read(b), f"script {apply}\nopt_clean\ntechmap\nopt_clean\n"
               f"rename {top} mut_u\nread_verilog {work / 'gold.v'}\n"
               f"read_verilog {work / 'gate.v'}\nflatten gold gate\n"
               "miter -equiv gold gate miter\nhierarchy -top miter\nflatten\ntechmap\n"
@@ -115,22 +114,27 @@ def _aigs(repo: Path, b: Build, muts: List[Mutation], count: int, netlist: Path,
               f"write_aiger -ascii -zinit -map {amap} {aag}\n"]
     ys = work / "aig.ys"
     ys.write_text("".join(script))
-    # Kept while the script, the wrappers and the sources are unchanged (minutes per build).
-    stamp = hashlib.sha256("".join(script).encode() + b"".join(
-        f.read_bytes() for f in [work / "gold.v", work / "gate.v", work / "apply.txt",
-                                 *(repo / s for s in b.source_paths())])).hexdigest()
+
+    def stamp() -> str:
+        # the script, the wrappers, the mutations applied and the sources
+        return hashlib.sha256("".join(script).encode() + b"".join(
+            f.read_bytes() for f in [work / "gold.v", work / "gate.v", apply,
+                                     *(repo / s for s in b.source_paths())])).hexdigest()
+
+    # Kept while nothing above changed (minutes of Yosys per build); a miter built for more
+    # mutants serves a later run for fewer (the sets killed some since).
     st = work / "aig.stamp"
-    if not (aag.is_file() and amap.is_file() and st.is_file() and st.read_text() == stamp):
+    held = set(apply.read_text().splitlines()) if apply.is_file() else set()
+    if not (held.issuperset(want) and aag.is_file() and amap.is_file() and st.is_file()
+            and st.read_text() == stamp()):
         st.unlink(missing_ok=True)
-        if set(apply.read_text().splitlines()) != set(want):
-            apply.write_text("".join(x + "\n" for x in want))
-            return _aigs(repo, b, muts, count, netlist, work)
+        apply.write_text("".join(x + "\n" for x in want))
         p = subprocess.run(["yosys", "-q", "-s", str(ys)], cwd=repo, capture_output=True,
                            text=True)
         if p.returncode != 0 or not aag.is_file():
             raise MutationError(f"{b.name}: yosys {ys} failed:\n{p.stdout[-2000:]}"
                                 f"{p.stderr[-2000:]}")
-        st.write_text(stamp)
+        st.write_text(stamp())
     # The map names input k (the k-th input line) "input k bit name", latch j "latch j bit
     # name" (once per name it carries: "gold.unit_i.s4_gx" and "gate.unit_i.s4_gx").
     text = aag.read_text()
@@ -179,11 +183,7 @@ def binary(aag: str, sub: Dict[int, int]) -> bytes:
         a, c = sub.get(a, a), sub.get(c, c)
         if a < c:
             a, c = c, a
-        for d in (lhs - a, a - c):
-            while d >= 0x80:
-                out.append((d & 0x7F) | 0x80)
-                d >>= 7
-            out.append(d)
+        corr.and_deltas(out, lhs, a, c)
     return bytes(out)
 
 
@@ -204,37 +204,52 @@ def verdict(text: str) -> str:
     return "undecided"
 
 
+STEPS = ("corr", "unroll", "dprove")
+
+
 def prove(repo: Path, b: Build, held: List[Mutation], muts: List[Mutation], count: int,
-          netlist: Path, work: Path, timeout: float, jobs: int) -> Iterator[Tuple[int, str]]:
+          netlist: Path, work: Path, timeout: float, jobs: int,
+          steps: Sequence[str] = STEPS) -> Iterator[Tuple[int, str]]:
     """Per mutant of ``muts`` (of a list of ``count``; ``netlist``: a netlist of the build,
     read for the port list), as each ends: the verdict on its miter (:func:`_aigs` of the
-    mutants ``held``, which include ``muts``; :func:`tie`), first by register correspondence,
-    then by ABC's ``dprove`` (module docs): ``"proven"``, ``"differs"`` (free inputs found that
-    tell them apart) or ``"undecided"`` (no verdict within ``timeout`` seconds per step).
-    ``jobs`` ABC processes at a time."""
+    mutants ``held``, which include ``muts``; :func:`tie`) by the ``steps`` of :data:`STEPS`
+    in that order: register correspondence, the unrolled region (:mod:`.unroll`), ABC's
+    ``dprove`` (module docs): ``"proven"``, ``"differs"`` (inputs found that tell them apart)
+    or ``"undecided"`` (no verdict within ``timeout`` seconds per step). ``jobs`` ABC processes
+    at a time."""
     if shutil.which("yosys-abc") is None:
         raise MutationError("yosys-abc not found (Debian package yosys; tests/run.sh installs it)")
+    bad = [s for s in steps if s not in STEPS]
+    if bad or not steps:
+        raise MutationError(f"steps {','.join(steps)}: each one of {', '.join(STEPS)}")
     ids = {m.id for m in held}
     if any(m.id not in ids for m in muts):
         raise MutationError(f"{b.name}: a mutant to prove is not in the miter")
     aag, lits, pairs = _aigs(repo, b, held, count, netlist, work)
     first = max(timeout, 60.0)
     # Mutant 0 (the unit against itself) must prove by a step, or that step's verdicts mean
-    # nothing on this build.
-    cr = corr.classes(corr.Aig(aag), lits, work, binary, first, pairs)
-    check = cr.text() if cr is not None else None
-    seq = _dprove(work / "m0.aig", tie(aag, lits, 0), first) == "proven"
-    if check is None and not seq:
+    # nothing on this build. The unrolled region builds on the correspondence's classes.
+    need_cr = "corr" in steps or "unroll" in steps
+    cr = corr.classes(corr.Aig(aag), lits, work, binary, first, pairs) if need_cr else None
+    check = cr.text() if cr is not None and "corr" in steps else None
+    cone = unroll.Cone(cr) if cr is not None and "unroll" in steps else None
+    seq = "dprove" in steps and _dprove(work / "m0.aig", tie(aag, lits, 0), first) == "proven"
+    if cr is None and not seq:
         raise Unprovable(f"{b.name}: neither register correspondence nor ABC's dprove proves "
                          f"the unit equivalent to itself (the select input at 0) in {first:.0f} "
                          f"s ({work})")
 
     def one(m: Mutation) -> Tuple[int, str]:
-        if cr is not None and check is not None and corr.iprove(
+        if check is not None and corr.iprove(
                 binary(check, cr.ties(m.id)), work / f"c{m.id}.aig", timeout) is True:
             return m.id, "proven"
+        got = "undecided"
+        if cone is not None:
+            got = unroll.prove(cone, m.id, work, timeout)
+            if got != "undecided":
+                return m.id, got
         if not seq:
-            return m.id, "undecided"
+            return m.id, got
         return m.id, _dprove(work / f"m{m.id}.aig", tie(aag, lits, m.id), timeout)
 
     with ThreadPoolExecutor(max_workers=jobs) as ex:
