@@ -96,12 +96,13 @@ class Cone:
                     todo.append(w)
         return out
 
-    def support(self, lit: int) -> Tuple[Set[int], List[int]]:
-        """Latch indices and AND variables (in no order) the combinational cone of ``lit``
-        reads, stopping at latches and inputs."""
+    def support(self, lits: Iterable[int]) -> Tuple[Set[int], List[int]]:
+        """Latch indices and AND variables (in no order) the combinational cones of ``lits``
+        read, stopping at latches and inputs (each node once, however many cones share it)."""
         g = self.c.aig
         lo, hi = g.ni + 1, g.ni + g.nl
-        latches, ands, seen, todo = set(), [], set(), [lit >> 1]
+        latches, ands, seen = set(), [], set()
+        todo = [x >> 1 for x in lits]
         while todo:
             v = todo.pop()
             if v in seen or v == 0:
@@ -193,7 +194,7 @@ def check(cone: Cone, k: int, back: int, cap: int = CAP) -> Tuple[Optional[bytes
 
     def preds(h: int) -> Set[int]:
         if h not in sup:
-            sup[h] = cone.support(g.next[h])
+            sup[h] = cone.support([g.next[h]])
         return {head[x] for x in sup[h][0] if head[x] >= 0}
 
     # the region holds the cone and, for each register of it, the class it left (its partner
@@ -231,20 +232,18 @@ def check(cone: Cone, k: int, back: int, cap: int = CAP) -> Tuple[Optional[bytes
             stack += [(p, False) for p in preds(h) if p in region and state.get(p) != 2]
     depth = 1 + max(level.values(), default=0)
     # the ANDs each clock needs, in the miter's (topological) order
-    roots = [g.next[h] for h in region] + list(g.outs)
-    need: Set[int] = set()
-    for r in roots:
-        need.update(cone.support(r)[1])
+    # one walk for every clock's cone: the region's next values and the outputs
+    read, need = cone.support([g.next[h] for h in region] + list(g.outs))
     if len(need) * (depth + 1) > cap:
         return None, 0
     order = sorted(need)
+    cut = {head[x] for x in read if head[x] >= 0} - region
     sel = select(c.sel, k)
     bld = _Builder()
     cut_pi: Dict[Tuple[int, int], int] = {}
     lo = g.ni + 1
     prev: Dict[int, int] = {}                     # region head -> its literal at this clock
     trig = 0
-    cut_seen: Set[int] = set()
     ins = {x >> 1 for x in g.inputs}
     for t in range(depth + 1):
         val: Dict[int, int] = {0: 0}
@@ -274,11 +273,7 @@ def check(cone: Cone, k: int, back: int, cap: int = CAP) -> Tuple[Optional[bytes
             out = bld.land(out ^ 1, lit(o) ^ 1) ^ 1
         trig = bld.land(trig ^ 1, out ^ 1) ^ 1
         prev = {h: lit(g.next[h]) for h in region}
-    for r in g.outs:
-        cut_seen |= {head[x] for x in cone.support(r)[0] if head[x] >= 0} - region
-    for h in region:
-        cut_seen |= preds(h) - region
-    return bld.binary(trig), len(cut_seen)
+    return bld.binary(trig), len(cut)
 
 
 def prove(cone: Cone, k: int, work: Path, timeout: float,
